@@ -1,0 +1,35 @@
+// The POV-Ray 3.7 scene language importer: scanner -> directives (#include, #declare,
+// #if, #while, #macro) -> expressions -> objects and materials -> scene::Scene.
+// GRAMMAR.md beside this file lists the supported subset.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/log.h"
+#include "scene/scene.h"
+
+namespace glint::pov {
+
+struct ParseOptions {
+    // Searched after the scene file's own folder, in order; the CLI appends
+    // /usr/share/povray-3.7/include when it exists.
+    std::vector<std::string> include_dirs;
+    double clock = 0;
+    // image_width / image_height as the scene sees them.
+    int image_width = 320;
+    int image_height = 240;
+    // Resource limits: exceeded limits are errors, never hangs.
+    long long max_loop_iterations = 10'000'000;  // per #while/#for loop
+    int max_include_depth = 64;
+    int max_macro_depth = 256;
+    long long max_tokens = 2'000'000'000;
+};
+
+// Throws glint::Error (ErrorKind::Scene or MissingFile) with the FileLoc of the problem.
+scene::Scene parse_file(const std::string& path, const ParseOptions& options, Diagnostics& diag);
+// `name` is used as the file name in locations.
+scene::Scene parse_string(const std::string& text, const std::string& name,
+                          const ParseOptions& options, Diagnostics& diag);
+
+}  // namespace glint::pov

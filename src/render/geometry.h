@@ -1,0 +1,31 @@
+// Everything that can be hit, built from the IR once per render: shapes in object space
+// behind their transforms, CSG trees, clipping, and a SAH BVH over the top-level objects.
+// Integrators only see intersect() and occluded().
+#pragma once
+
+#include <memory>
+
+#include "core/log.h"
+#include "render/ray.h"
+#include "scene/features.h"
+#include "scene/scene.h"
+
+namespace glint::render {
+
+class Geometry {
+public:
+    virtual ~Geometry() = default;
+
+    // Closest hit with 0 < t < ray.tmax. Deterministic: equal t ties break by object order.
+    virtual bool intersect(const Ray& ray, Hit* hit) const = 0;
+    // Any hit with 0 < t < ray.tmax by an object without kNoShadow.
+    virtual bool occluded(const Ray& ray) const = 0;
+    virtual Bounds3 bounds() const = 0;  // may be infinite (planes)
+};
+
+// Degenerate input (zero-area triangles, non-finite vertices, empty meshes) is skipped with a
+// warning; invalid input throws glint::Error.
+std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,
+                                         const scene::Features& features, Diagnostics& diag);
+
+}  // namespace glint::render

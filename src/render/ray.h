@@ -1,0 +1,41 @@
+// Rays and surface hits: the contract between geometry (shapes, BVH, CSG) and integrators.
+#pragma once
+
+#include <cstdint>
+
+#include "core/math.h"
+
+namespace glint::render {
+
+struct Ray {
+    Vec3 origin;
+    Vec3 dir;  // not necessarily normalized; t is in units of dir
+    double tmax = kInfinity;
+};
+
+// Object flags that integrators consult (POV-Ray object modifiers).
+enum ObjectFlags : uint32_t {
+    kNoShadow = 1u << 0,
+    kNoImage = 1u << 1,
+    kNoReflection = 1u << 2,
+    kDoubleIlluminate = 1u << 3,
+};
+
+struct Hit {
+    double t = kInfinity;
+    Vec3 p;        // world-space hit point
+    Vec3 p_error;  // absolute error bound of p, for offset_ray_origin()
+    // Geometric normal, world space, unit length, pointing out of the solid the surface
+    // bounds (flipped for `inverse` and for surfaces a CSG difference cuts with). Integrators
+    // compare it with the ray direction to know whether a ray enters or leaves.
+    Vec3 ng;
+    // Shading normal (interpolated for smooth triangles), unit length, same side as ng.
+    Vec3 n;
+    Vec2 uv;             // surface parameterization (uv_mapping); valid if has_uv
+    bool has_uv = false;
+    int material = -1;   // resolved Scene::materials id (CSG inheritance applied)
+    uint32_t flags = 0;  // ObjectFlags
+    int object = -1;     // index of the top-level scene object that was hit
+};
+
+}  // namespace glint::render

@@ -1,0 +1,32 @@
+// POV-Ray colors carry two transparency channels beside RGB: filter (light passes tinted by
+// the color) and transmit (light passes untinted). Every pigment evaluates to a ColorFT.
+#pragma once
+
+#include "core/math.h"
+
+namespace glint::scene {
+
+struct ColorFT {
+    Color rgb;
+    double filter = 0;
+    double transmit = 0;
+
+    constexpr ColorFT() = default;
+    constexpr ColorFT(Color c, double f = 0, double t = 0) : rgb(c), filter(f), transmit(t) {}
+    constexpr bool operator==(const ColorFT&) const = default;
+
+    constexpr ColorFT operator+(const ColorFT& o) const {
+        return {rgb + o.rgb, filter + o.filter, transmit + o.transmit};
+    }
+    constexpr ColorFT operator*(double s) const { return {rgb * s, filter * s, transmit * s}; }
+    // Fraction of light that passes through at all.
+    constexpr double transparency() const { return filter + transmit; }
+    bool opaque() const { return filter == 0 && transmit == 0; }
+};
+
+// Linear interpolation used by color maps: a + (b - a) * t on all five channels.
+constexpr ColorFT lerp(const ColorFT& a, const ColorFT& b, double t) {
+    return a * (1 - t) + b * t;
+}
+
+}  // namespace glint::scene

@@ -1,0 +1,131 @@
+#include "scene/features.h"
+
+namespace glint::scene {
+namespace {
+
+class Analyzer {
+public:
+    Analyzer(const Scene& s, Features* f) : scene_(s), f_(*f) {}
+
+    void run() {
+        f_.lights = !scene_.lights.empty();
+        for (const Light& l : scene_.lights) {
+            if (!l.shadowless) f_.shadows = true;
+            if (l.kind == LightKind::Spot) f_.spot_lights = true;
+            if (l.parallel) f_.parallel_lights = true;
+            if (l.area) f_.area_lights = true;
+            if (l.fade_distance > 0 && l.fade_power > 0) f_.light_fading = true;
+        }
+        if (scene_.sky_sphere) {
+            f_.sky_sphere = true;
+            for (const Pigment& p : scene_.sky_sphere->pigments) pigment(p);
+        }
+        std::vector<bool> used(scene_.materials.size(), false);
+        for (const Object& o : scene_.objects) object(o, &used);
+        for (size_t i = 0; i < used.size(); ++i)
+            if (used[i]) material(scene_.materials[i]);
+    }
+
+private:
+    void object(const Object& o, std::vector<bool>* used) {
+        f_.shapes[o.shape.index()] = true;
+        if (o.material >= 0) (*used)[o.material] = true;
+        if (!o.bounded_by.empty() || !o.clipped_by.empty()) f_.clipping = true;
+        if (const auto* csg = std::get_if<Csg>(&o.shape)) {
+            f_.csg = true;
+            for (const Object& c : csg->children) object(c, used);
+        }
+        if (const auto* m = std::get_if<MeshRef>(&o.shape)) {
+            for (const MeshFace& face : scene_.meshes[m->mesh].faces)
+                if (face.material >= 0) (*used)[face.material] = true;
+        }
+        for (const Object& c : o.clipped_by) object(c, used);
+    }
+
+    void material(const Material& m) {
+        const Finish& f = m.texture.finish;
+        if (!f.reflection.min.is_black() || !f.reflection.max.is_black()) f_.reflection = true;
+        if (f.phong > 0 || f.specular > 0) f_.highlights = true;
+        if (m.interior.fade_distance > 0) f_.interior_fading = true;
+        bool transparent = pigment(m.texture.pigment);
+        if (transparent) {
+            f_.transparency = true;
+            if (m.interior.ior != 1.0) f_.refraction = true;
+        }
+        if (m.texture.normal.kind != PatternKind::Plain) f_.normals = true;
+    }
+
+    // Returns whether the pigment can be anything but opaque.
+    bool pigment(const Pigment& p) {
+        bool transparent = !p.color.opaque();
+        if (p.uv_mapping) f_.uv_mapping = true;
+        switch (p.kind) {
+            case PatternKind::Checker: f_.checker = true; break;
+            case PatternKind::Gradient: f_.gradient = true; break;
+            case PatternKind::ImageMap:
+                f_.image_textures = true;
+                // Images may carry alpha; filter/transmit_all also make them transparent.
+                transparent = true;
+                break;
+            case PatternKind::Plain: break;
+        }
+        for (const ColorMapEntry& e : p.color_map)
+            if (!e.color.opaque()) transparent = true;
+        for (const Pigment& e : p.entries) transparent |= pigment(e);
+        return transparent;
+    }
+
+    const Scene& scene_;
+    Features& f_;
+};
+
+}  // namespace
+
+Features analyze(const Scene& scene) {
+    Features f;
+    Analyzer(scene, &f).run();
+    return f;
+}
+
+std::vector<std::string> Features::used() const {
+    std::vector<std::string> out;
+    static const Shape kSamples[] = {Sphere{}, Plane{}, Box{}, Cylinder{}, Cone{}, Disc{},
+                                     Torus{}, Triangle{}, SmoothTriangle{}, MeshRef{}, Csg{}};
+    for (size_t i = 0; i < shapes.size(); ++i)
+        if (shapes[i] && i != kSamples[10].index()) out.push_back(shape_name(kSamples[i]));
+    auto add = [&](bool on, const char* name) {
+        if (on) out.push_back(name);
+    };
+    add(csg, "csg");
+    add(clipping, "clipped_by/bounded_by");
+    add(lights, "lights");
+    add(shadows, "shadows");
+    add(spot_lights, "spot lights");
+    add(parallel_lights, "parallel lights");
+    add(area_lights, "area lights");
+    add(light_fading, "light fading");
+    add(reflection, "reflection");
+    add(refraction, "refraction");
+    add(transparency, "transparency");
+    add(interior_fading, "interior fade");
+    add(highlights, "phong/specular highlights");
+    add(image_textures, "image textures");
+    add(uv_mapping, "uv_mapping");
+    add(checker, "checker");
+    add(gradient, "gradient");
+    add(normals, "normal perturbation");
+    add(sky_sphere, "sky_sphere");
+    return out;
+}
+
+std::vector<std::string> Features::skipped() const {
+    std::vector<std::string> out;
+    if (!image_textures) out.push_back("texture system (no image textures)");
+    if (!lights) out.push_back("light sampling (no lights)");
+    else if (!shadows) out.push_back("shadow rays (all lights shadowless)");
+    if (!secondary_rays()) out.push_back("secondary rays (nothing reflects or refracts)");
+    if (!highlights) out.push_back("highlight evaluation (no phong/specular)");
+    return out;
+}
+
+}  // namespace glint::scene

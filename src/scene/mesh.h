@@ -1,0 +1,31 @@
+// Triangle meshes (POV-Ray mesh/mesh2, OBJ). Indexed so that a million triangles cost a few
+// dozen bytes each; per-face material ids point into Scene::materials.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/error.h"
+#include "core/math.h"
+
+namespace glint::scene {
+
+struct MeshFace {
+    std::array<int, 3> v{-1, -1, -1};
+    std::array<int, 3> n{-1, -1, -1};   // -1: flat (use the geometric normal)
+    std::array<int, 3> uv{-1, -1, -1};  // -1: no texture coordinates
+    int material = -1;                  // -1: the mesh object's material
+};
+
+struct Mesh {
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;
+    std::vector<Vec2> uvs;
+    std::vector<MeshFace> faces;
+    // POV-Ray's inside_vector: lets a closed mesh take part in CSG.
+    bool has_inside_vector = false;
+    Vec3 inside_vector{0, 0, 1};
+    FileLoc loc;
+};
+
+}  // namespace glint::scene

@@ -1,0 +1,50 @@
+// The whole scene as plain data: what an importer produces and what the renderer prepares
+// from. Entities link by integer ids (materials, meshes). Defaults match POV-Ray 3.7.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/camera.h"
+#include "scene/color.h"
+#include "scene/light.h"
+#include "scene/mesh.h"
+#include "scene/shape.h"
+#include "scene/texture.h"
+
+namespace glint::scene {
+
+struct GlobalSettings {
+    Color ambient_light{1, 1, 1};
+    int max_trace_level = 5;
+    double adc_bailout = 1.0 / 255.0;
+    // assumed_gamma as given; unset means POV-Ray's default for the #version.
+    std::optional<double> assumed_gamma;
+    int noise_generator = 2;
+    FileLoc loc;
+};
+
+struct SkySphere {
+    // Layered: pigments[0] is the bottom layer, later ones are laid over it.
+    std::vector<Pigment> pigments;
+    Transform transform;
+    Color emission{1, 1, 1};
+    FileLoc loc;
+};
+
+struct Scene {
+    double version = 3.7;  // the #version in force at the end of parsing
+    Camera camera;
+    std::vector<Light> lights;
+    std::vector<Object> objects;
+    std::vector<Material> materials;
+    std::vector<Mesh> meshes;
+    GlobalSettings global;
+    ColorFT background{Color(0, 0, 0)};
+    std::optional<SkySphere> sky_sphere;
+    // Files the scene was read from (main file first), for messages and `glint ir`.
+    std::vector<std::string> source_files;
+};
+
+}  // namespace glint::scene

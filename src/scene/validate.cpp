@@ -1,0 +1,150 @@
+#include "scene/validate.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+
+namespace glint::scene {
+namespace {
+
+[[noreturn]] void fail(const FileLoc& loc, const std::string& message) {
+    throw Error(ErrorKind::Scene, loc, message);
+}
+
+void check_finite(const Vec3& v, const FileLoc& loc, const char* what) {
+    if (!is_finite(v)) fail(loc, std::string(what) + " is not a finite vector");
+}
+
+void check_finite(double v, const FileLoc& loc, const char* what) {
+    if (!std::isfinite(v)) fail(loc, std::string(what) + " is not a finite number");
+}
+
+class Validator {
+public:
+    explicit Validator(const Scene& s) : scene_(s) {}
+
+    void run() {
+        camera(scene_.camera);
+        for (const Light& l : scene_.lights) light(l);
+        for (const Material& m : scene_.materials) material(m);
+        for (const Object& o : scene_.objects) object(o, /*top_level=*/true);
+    }
+
+private:
+    void camera(const Camera& c) {
+        check_finite(c.location, c.loc, "camera location");
+        check_finite(c.direction, c.loc, "camera direction");
+        check_finite(c.right, c.loc, "camera right");
+        check_finite(c.up, c.loc, "camera up");
+        if (length_squared(c.direction) == 0) fail(c.loc, "camera direction has zero length");
+        if (length_squared(c.right) == 0) fail(c.loc, "camera right vector has zero length");
+        if (length_squared(c.up) == 0) fail(c.loc, "camera up vector has zero length");
+        if (length_squared(cross(c.right, c.up)) == 0)
+            fail(c.loc, "camera right and up vectors are parallel");
+    }
+
+    void light(const Light& l) {
+        check_finite(l.location, l.loc, "light location");
+        if (!std::isfinite(l.color.r) || !std::isfinite(l.color.g) || !std::isfinite(l.color.b))
+            fail(l.loc, "light color is not finite");
+        if ((l.parallel || l.kind != LightKind::Point) && l.point_at == l.location)
+            fail(l.loc, "light point_at equals its location: the direction is undefined");
+        if (l.fade_distance < 0) fail(l.loc, "fade_distance must not be negative");
+    }
+
+    void material(const Material& m) {
+        const Finish& f = m.texture.finish;
+        check_finite(f.diffuse, f.loc, "diffuse");
+        if (f.phong_size < 0) fail(f.loc, "phong_size must not be negative");
+        if (f.roughness < 0) fail(f.loc, "roughness must not be negative");
+        if (!(m.interior.ior > 0)) fail(m.loc, "ior must be positive");
+        pigment(m.texture.pigment);
+    }
+
+    void pigment(const Pigment& p) {
+        if (p.kind == PatternKind::ImageMap && p.params.image.resolved_path.empty())
+            fail(p.params.image.loc, "image_map file '" + p.params.image.file + "' not resolved");
+        for (const Pigment& e : p.entries) pigment(e);
+    }
+
+    void object(const Object& o, bool top_level) {
+        if (top_level && o.material < 0)
+            fail(o.loc, "internal: top-level object without a material");
+        if (o.material >= static_cast<int>(scene_.materials.size()))
+            fail(o.loc, "material id out of range");
+        std::visit([&](const auto& s) { shape(s, o.loc); }, o.shape);
+        for (const Object& c : o.bounded_by) object(c, false);
+        for (const Object& c : o.clipped_by) object(c, false);
+    }
+
+    void shape(const Sphere& s, const FileLoc& loc) {
+        check_finite(s.center, loc, "sphere center");
+        if (!(s.radius > 0)) fail(loc, "sphere radius must be positive");
+    }
+    void shape(const Plane& s, const FileLoc& loc) {
+        check_finite(s.normal, loc, "plane normal");
+        check_finite(s.distance, loc, "plane distance");
+        if (length_squared(s.normal) == 0) fail(loc, "plane normal has zero length");
+    }
+    void shape(const Box& s, const FileLoc& loc) {
+        check_finite(s.corner1, loc, "box corner");
+        check_finite(s.corner2, loc, "box corner");
+    }
+    void shape(const Cylinder& s, const FileLoc& loc) {
+        check_finite(s.base, loc, "cylinder base");
+        check_finite(s.cap, loc, "cylinder cap");
+        if (!(s.radius > 0)) fail(loc, "cylinder radius must be positive");
+        if (s.base == s.cap) fail(loc, "cylinder base and cap points coincide");
+    }
+    void shape(const Cone& s, const FileLoc& loc) {
+        check_finite(s.base, loc, "cone base");
+        check_finite(s.cap, loc, "cone cap");
+        if (s.base_radius < 0 || s.cap_radius < 0) fail(loc, "cone radius must not be negative");
+        if (s.base_radius == 0 && s.cap_radius == 0) fail(loc, "cone has two zero radii");
+        if (s.base == s.cap) fail(loc, "cone base and cap points coincide");
+    }
+    void shape(const Disc& s, const FileLoc& loc) {
+        check_finite(s.center, loc, "disc center");
+        if (length_squared(s.normal) == 0) fail(loc, "disc normal has zero length");
+        if (!(s.radius > 0)) fail(loc, "disc radius must be positive");
+        if (s.hole_radius < 0) fail(loc, "disc hole radius must not be negative");
+    }
+    void shape(const Torus& s, const FileLoc& loc) {
+        if (!(s.major > 0) || !(s.minor > 0)) fail(loc, "torus radii must be positive");
+    }
+    void shape(const Triangle& s, const FileLoc& loc) {
+        for (const Vec3& p : s.p) check_finite(p, loc, "triangle vertex");
+    }
+    void shape(const SmoothTriangle& s, const FileLoc& loc) {
+        for (const Vec3& p : s.p) check_finite(p, loc, "smooth_triangle vertex");
+    }
+    void shape(const MeshRef& s, const FileLoc& loc) {
+        if (s.mesh < 0 || s.mesh >= static_cast<int>(scene_.meshes.size()))
+            fail(loc, "internal: mesh id out of range");
+        const Mesh& m = scene_.meshes[s.mesh];
+        const int nv = static_cast<int>(m.positions.size());
+        const int nn = static_cast<int>(m.normals.size());
+        const int nt = static_cast<int>(m.uvs.size());
+        const int nm = static_cast<int>(scene_.materials.size());
+        for (const MeshFace& f : m.faces) {
+            for (int i = 0; i < 3; ++i) {
+                if (f.v[i] < 0 || f.v[i] >= nv) fail(m.loc, "mesh vertex index out of range");
+                if (f.n[i] >= nn) fail(m.loc, "mesh normal index out of range");
+                if (f.uv[i] >= nt) fail(m.loc, "mesh uv index out of range");
+            }
+            if (f.material >= nm) fail(m.loc, "mesh material index out of range");
+        }
+    }
+    void shape(const Csg& s, const FileLoc&) {
+        for (const Object& c : s.children) object(c, false);
+    }
+
+    const Scene& scene_;
+};
+
+}  // namespace
+
+void validate(const Scene& scene) { Validator(scene).run(); }
+
+}  // namespace glint::scene
