@@ -1,0 +1,340 @@
+#include "render/shapes/object_node.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "core/float.h"
+#include "render/shapes/mesh_prim.h"
+#include "render/shapes/shapes.h"
+
+namespace glint::render {
+
+void transform_hit(const Transform& xf, LocalHit* h) {
+    const auto& m = xf.matrix().m;
+    Vec3 e;
+    for (int i = 0; i < 3; ++i)
+        e[i] = (1 + gamma(3)) * (std::fabs(m[i][0]) * h->p_error.x +
+                                 std::fabs(m[i][1]) * h->p_error.y +
+                                 std::fabs(m[i][2]) * h->p_error.z);
+    h->p_error = e + xf.point_error(h->p);
+    h->p = xf.point(h->p);
+    h->ng = normalize(xf.normal(h->ng));
+    h->n = normalize(xf.normal(h->n));
+}
+
+namespace {
+
+uint32_t object_flags(const scene::Object& o) {
+    uint32_t f = 0;
+    if (o.no_shadow) f |= kNoShadow;
+    if (o.no_image) f |= kNoImage;
+    if (o.no_reflection) f |= kNoReflection;
+    if (o.double_illuminate) f |= kDoubleIlluminate;
+    return f;
+}
+
+Bounds3 overlap(const Bounds3& a, const Bounds3& b) { return {max(a.lo, b.lo), min(a.hi, b.hi)}; }
+
+const Bounds3 kEverywhere{Vec3(-kInfinity), Vec3(kInfinity)};
+
+struct Builder {
+    const scene::Scene& scene;
+    Diagnostics& diag;
+
+    std::unique_ptr<Primitive> primitive(const scene::Object& obj, Transform* frame) {
+        const char* why = nullptr;
+        std::unique_ptr<Primitive> p;
+        *frame = Transform();
+        std::visit(
+            [&](const auto& s) {
+                using T = std::decay_t<decltype(s)>;
+                if constexpr (std::is_same_v<T, scene::Sphere>) {
+                    p = make_sphere(s);
+                    if (!(s.radius != 0) || !std::isfinite(s.radius) || !is_finite(s.center))
+                        why = "sphere with zero or non-finite radius or centre";
+                } else if constexpr (std::is_same_v<T, scene::Plane>) {
+                    if (!(length_squared(s.normal) > 0) || !is_finite(s.normal) ||
+                        !std::isfinite(s.distance))
+                        why = "plane with a zero or non-finite normal";
+                    else
+                        p = make_plane(s);
+                } else if constexpr (std::is_same_v<T, scene::Box>) {
+                    if (!is_finite(s.corner1) || !is_finite(s.corner2))
+                        why = "box with non-finite corners";
+                    else
+                        p = make_box(s);
+                } else if constexpr (std::is_same_v<T, scene::Cylinder>) {
+                    p = make_cylinder(s, frame, &why);
+                } else if constexpr (std::is_same_v<T, scene::Cone>) {
+                    p = make_cone(s, frame, &why);
+                } else if constexpr (std::is_same_v<T, scene::Disc>) {
+                    p = make_disc(s, frame, &why);
+                } else if constexpr (std::is_same_v<T, scene::Torus>) {
+                    if (!(s.major > 0) || !(s.minor > 0) || !std::isfinite(s.major) ||
+                        !std::isfinite(s.minor))
+                        why = "torus with non-positive or non-finite radii";
+                    else
+                        p = make_torus(s);
+                } else if constexpr (std::is_same_v<T, scene::Triangle>) {
+                    p = make_triangle(s.p, nullptr);
+                    if (!p) why = "degenerate triangle (zero area or non-finite vertices)";
+                } else if constexpr (std::is_same_v<T, scene::SmoothTriangle>) {
+                    p = make_triangle(s.p, s.n);
+                    if (!p) why = "degenerate smooth_triangle (zero area or non-finite vertices)";
+                } else if constexpr (std::is_same_v<T, scene::MeshRef>) {
+                    if (s.mesh < 0 || s.mesh >= static_cast<int>(scene.meshes.size()))
+                        throw Error(ErrorKind::Scene, obj.loc, "mesh reference out of range");
+                    p = make_mesh(scene.meshes[s.mesh], diag);
+                    if (!p) why = "mesh without usable triangles";
+                }
+            },
+            obj.shape);
+        if (why) {
+            diag.warning(obj.loc, std::string(why) + ": object skipped");
+            return nullptr;
+        }
+        return p;
+    }
+};
+
+}  // namespace
+
+std::unique_ptr<ObjectNode> ObjectNode::build(const scene::Object& obj,
+                                              const scene::Scene& scene, Diagnostics& diag) {
+    std::unique_ptr<ObjectNode> node(new ObjectNode());
+    node->inverse_ = obj.inverse;
+    node->material_ = obj.material;
+    node->flags_ = object_flags(obj);
+    Transform frame;
+    if (const auto* csg = std::get_if<scene::Csg>(&obj.shape)) {
+        node->is_csg_ = true;
+        node->op_ = csg->op;
+        for (size_t i = 0; i < csg->children.size(); ++i) {
+            auto child = build(csg->children[i], scene, diag);
+            if (child) {
+                node->children_.push_back(std::move(child));
+                continue;
+            }
+            // A missing child removes nothing from a union, merge or cut; an intersection with
+            // it, or a difference of it, is empty.
+            bool essential = csg->op == scene::CsgOp::Intersection ||
+                             (csg->op == scene::CsgOp::Difference && i == 0);
+            if (essential) return nullptr;
+        }
+        if (node->children_.empty()) return nullptr;
+    } else {
+        Builder b{scene, diag};
+        node->prim_ = b.primitive(obj, &frame);
+        if (!node->prim_) return nullptr;
+    }
+    node->xf_ = frame.then(obj.transform);
+    node->identity_ = node->xf_.is_identity();
+    for (const auto& b : obj.bounded_by)
+        if (auto n = build(b, scene, diag)) node->bounded_by_.push_back(std::move(n));
+    for (const auto& c : obj.clipped_by) {
+        auto n = build(c, scene, diag);
+        if (!n) return nullptr;  // clipping by nothing leaves nothing
+        node->clipped_by_.push_back(std::move(n));
+    }
+    node->compute_bounds();
+    return node;
+}
+
+void ObjectNode::compute_bounds() {
+    Bounds3 local;
+    if (prim_) {
+        local = prim_->bounds();
+    } else if (op_ == scene::CsgOp::Intersection) {
+        local = kEverywhere;
+        for (const auto& c : children_) local = overlap(local, c->bounds());
+    } else if (op_ == scene::CsgOp::Difference) {
+        local = children_[0]->bounds();
+    } else {
+        for (const auto& c : children_) local.extend(c->bounds());
+    }
+    bounds_ = local.empty() ? local : xf_.bounds(local);
+    if (inverse_) bounds_ = kEverywhere;
+    for (const auto& c : clipped_by_) bounds_ = overlap(bounds_, c->bounds());
+}
+
+void ObjectNode::finish(LocalHit* h) const {
+    if (!identity_) transform_hit(xf_, h);
+    if (inverse_) {
+        h->ng = -h->ng;
+        h->n = -h->n;
+    }
+    if (h->material < 0) h->material = material_;
+    h->flags |= flags_;
+}
+
+bool ObjectNode::passes_bound(const Ray& ray) const {
+    for (const auto& b : bounded_by_) {
+        LocalHit h;
+        if (!b->intersect(ray, kInfinity, false, &h) && !b->inside(ray.origin)) return false;
+    }
+    return true;
+}
+
+bool ObjectNode::passes_clip(const Vec3& p) const {
+    for (const auto& c : clipped_by_)
+        if (!c->inside(p)) return false;
+    return true;
+}
+
+bool ObjectNode::intersect(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const {
+    if (shadow && (flags_ & kNoShadow)) return false;
+    if (!bounded_by_.empty() && !passes_bound(ray)) return false;
+    if (clipped_by_.empty()) return intersect_unclipped(ray, tmax, shadow, hit);
+    std::vector<LocalHit> all;
+    intersect_all_unclipped(ray, tmax, &all);
+    bool found = false;
+    for (auto& h : all) {
+        if (h.t >= tmax || (found && h.t >= hit->t)) continue;
+        if (shadow && (h.flags & kNoShadow)) continue;
+        if (!passes_clip(h.p)) continue;
+        *hit = h;
+        found = true;
+    }
+    return found;
+}
+
+void ObjectNode::intersect_all(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const {
+    if (!bounded_by_.empty() && !passes_bound(ray)) return;
+    if (clipped_by_.empty()) {
+        intersect_all_unclipped(ray, tmax, hits);
+        return;
+    }
+    size_t first = hits->size();
+    intersect_all_unclipped(ray, tmax, hits);
+    auto keep = std::remove_if(hits->begin() + first, hits->end(),
+                               [&](const LocalHit& h) { return !passes_clip(h.p); });
+    hits->erase(keep, hits->end());
+}
+
+bool ObjectNode::inside(const Vec3& p) const {
+    if (!passes_clip(p)) return false;
+    bool in = inside_local(identity_ ? p : xf_.inverse_point(p));
+    return inverse_ ? !in : in;
+}
+
+namespace {
+Ray to_local(const Transform& xf, bool identity, const Ray& ray) {
+    if (identity) return ray;
+    return {xf.inverse_point(ray.origin), xf.inverse_vector(ray.dir), ray.tmax};
+}
+}  // namespace
+
+bool ObjectNode::intersect_unclipped(const Ray& ray, double tmax, bool shadow,
+                                     LocalHit* hit) const {
+    if (!intersect_local(to_local(xf_, identity_, ray), tmax, shadow, hit)) return false;
+    finish(hit);
+    return true;
+}
+
+void ObjectNode::intersect_all_unclipped(const Ray& ray, double tmax,
+                                         std::vector<LocalHit>* hits) const {
+    size_t first = hits->size();
+    intersect_all_local(to_local(xf_, identity_, ray), tmax, hits);
+    for (size_t i = first; i < hits->size(); ++i) finish(&(*hits)[i]);
+}
+
+bool ObjectNode::csg_keeps(size_t i, const Vec3& p) const {
+    switch (op_) {
+        case scene::CsgOp::Union:
+            return true;
+        case scene::CsgOp::Merge:
+            for (size_t j = 0; j < children_.size(); ++j)
+                if (j != i && children_[j]->inside(p)) return false;
+            return true;
+        case scene::CsgOp::Intersection:
+            for (size_t j = 0; j < children_.size(); ++j)
+                if (j != i && !children_[j]->inside(p)) return false;
+            return true;
+        case scene::CsgOp::Difference:
+            // POV-Ray: a - b - c = a * inverse(b) * inverse(c).
+            if (i != 0 && !children_[0]->inside(p)) return false;
+            for (size_t j = 1; j < children_.size(); ++j)
+                if (j != i && children_[j]->inside(p)) return false;
+            return true;
+    }
+    return true;
+}
+
+bool ObjectNode::intersect_local(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const {
+    if (prim_) return prim_->intersect(ray, tmax, hit);
+    bool found = false;
+    if (op_ == scene::CsgOp::Union) {
+        for (const auto& c : children_) {
+            // Later children must be strictly closer: ties go to the earlier child.
+            if (c->intersect(ray, found ? hit->t : tmax, shadow, hit)) found = true;
+        }
+        return found;
+    }
+    std::vector<LocalHit> hits;
+    for (size_t i = 0; i < children_.size(); ++i) {
+        hits.clear();
+        children_[i]->intersect_all(ray, found ? hit->t : tmax, &hits);
+        std::sort(hits.begin(), hits.end(),
+                  [](const LocalHit& a, const LocalHit& b) { return a.t < b.t; });
+        for (auto& h : hits) {
+            if (shadow && (h.flags & kNoShadow)) continue;
+            if (!csg_keeps(i, h.p)) continue;
+            if (op_ == scene::CsgOp::Difference && i > 0) {
+                h.ng = -h.ng;
+                h.n = -h.n;
+            }
+            *hit = h;
+            found = true;
+            break;
+        }
+    }
+    return found;
+}
+
+void ObjectNode::intersect_all_local(const Ray& ray, double tmax,
+                                     std::vector<LocalHit>* hits) const {
+    if (prim_) {
+        prim_->intersect_all(ray, tmax, hits);
+        return;
+    }
+    for (size_t i = 0; i < children_.size(); ++i) {
+        size_t first = hits->size();
+        children_[i]->intersect_all(ray, tmax, hits);
+        if (op_ == scene::CsgOp::Union) continue;
+        size_t w = first;
+        for (size_t k = first; k < hits->size(); ++k) {
+            LocalHit h = (*hits)[k];
+            if (!csg_keeps(i, h.p)) continue;
+            if (op_ == scene::CsgOp::Difference && i > 0) {
+                h.ng = -h.ng;
+                h.n = -h.n;
+            }
+            (*hits)[w++] = h;
+        }
+        hits->resize(w);
+    }
+}
+
+bool ObjectNode::inside_local(const Vec3& p) const {
+    if (prim_) return prim_->inside(p);
+    switch (op_) {
+        case scene::CsgOp::Union:
+        case scene::CsgOp::Merge:
+            for (const auto& c : children_)
+                if (c->inside(p)) return true;
+            return false;
+        case scene::CsgOp::Intersection:
+            for (const auto& c : children_)
+                if (!c->inside(p)) return false;
+            return true;
+        case scene::CsgOp::Difference:
+            if (!children_[0]->inside(p)) return false;
+            for (size_t j = 1; j < children_.size(); ++j)
+                if (children_[j]->inside(p)) return false;
+            return true;
+    }
+    return false;
+}
+
+}  // namespace glint::render

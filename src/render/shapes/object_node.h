@@ -1,0 +1,67 @@
+// One scene object prepared for intersection: a primitive or a CSG tree behind its transform,
+// with `inverse`, clipped_by, bounded_by, material inheritance and object flags applied.
+// Geometry (geometry.cpp) holds one per top-level object; CSG nodes hold their children.
+// All queries take a ray and points in the node's parent space.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "core/log.h"
+#include "core/transform.h"
+#include "render/shapes/primitive.h"
+#include "scene/scene.h"
+
+namespace glint::render {
+
+class ObjectNode {
+public:
+    // Builds the node for `obj`; returns nullptr (after a warning) for objects that cannot be
+    // hit at all (degenerate shapes, empty meshes). Throws glint::Error on invalid input.
+    static std::unique_ptr<ObjectNode> build(const scene::Object& obj, const scene::Scene& scene,
+                                             Diagnostics& diag);
+
+    // Closest hit with 0 < t < tmax. With `shadow`, surfaces of no_shadow objects are ignored
+    // (they still shape CSG results).
+    bool intersect(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
+    // Every surviving hit with 0 < t < tmax, unsorted.
+    void intersect_all(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const;
+    bool inside(const Vec3& p) const;
+    const Bounds3& bounds() const { return bounds_; }  // parent space; may be infinite
+    uint32_t flags() const { return flags_; }
+
+private:
+    ObjectNode() = default;
+    // The node's own surfaces before clipping, in parent space.
+    bool intersect_unclipped(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
+    void intersect_all_unclipped(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const;
+    // In object space (the ray already transformed).
+    bool intersect_local(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
+    void intersect_all_local(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const;
+    bool inside_local(const Vec3& p) const;
+    bool csg_keeps(size_t child, const Vec3& p) const;
+    bool passes_bound(const Ray& ray) const;
+    bool passes_clip(const Vec3& p) const;
+    // Object space -> parent space, with inverse/material/flags applied.
+    void finish(LocalHit* h) const;
+    void compute_bounds();
+
+    Transform xf_;
+    bool identity_ = true;
+    std::unique_ptr<Primitive> prim_;  // leaf, or:
+    bool is_csg_ = false;
+    scene::CsgOp op_ = scene::CsgOp::Union;
+    std::vector<std::unique_ptr<ObjectNode>> children_;
+    bool inverse_ = false;
+    int material_ = -1;
+    uint32_t flags_ = 0;
+    std::vector<std::unique_ptr<ObjectNode>> bounded_by_;
+    std::vector<std::unique_ptr<ObjectNode>> clipped_by_;
+    Bounds3 bounds_;
+};
+
+// Carries an object-space hit into the parent space of `xf`: the point with its error bound
+// (pbrt-v4 Transform::operator()(Point3fi)), normals by the inverse transpose, renormalized.
+void transform_hit(const Transform& xf, LocalHit* h);
+
+}  // namespace glint::render

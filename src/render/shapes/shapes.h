@@ -1,0 +1,27 @@
+// Factories for the primitives of the IR's shape variant, each in its own object space
+// (POV-Ray's definitions). Shapes given by end points (cylinder, cone, disc) come back with the
+// frame that places their canonical form, which the caller composes with the object transform.
+#pragma once
+
+#include <memory>
+
+#include "core/transform.h"
+#include "render/shapes/primitive.h"
+#include "scene/mesh.h"
+#include "scene/shape.h"
+
+namespace glint::render {
+
+std::unique_ptr<Primitive> make_sphere(const scene::Sphere& s);
+std::unique_ptr<Primitive> make_plane(const scene::Plane& s);
+std::unique_ptr<Primitive> make_box(const scene::Box& s);
+// Canonical cylinder/cone along +z from z=0 to z=1; `frame` maps it into object space.
+// Returns nullptr for degenerate input (zero length or radius), with `*why` set.
+std::unique_ptr<Primitive> make_cylinder(const scene::Cylinder& s, Transform* frame,
+                                         const char** why);
+std::unique_ptr<Primitive> make_cone(const scene::Cone& s, Transform* frame, const char** why);
+std::unique_ptr<Primitive> make_disc(const scene::Disc& s, Transform* frame, const char** why);
+std::unique_ptr<Primitive> make_torus(const scene::Torus& s);
+std::unique_ptr<Primitive> make_triangle(const Vec3 p[3], const Vec3* normals);
+
+}  // namespace glint::render

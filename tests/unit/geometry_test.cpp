@@ -1,0 +1,120 @@
+// build_geometry() end to end: hit fields, transforms, ties, flags, material inheritance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/float.h"
+#include "geom_test_util.h"
+
+namespace glint {
+namespace {
+
+using render::Hit;
+using test::build;
+using test::build_one;
+using test::object;
+using test::ray;
+using test::scene_of;
+
+TEST(Geometry, SphereHitFields) {
+    auto g = build_one(scene::Sphere{{0, 0, 0}, 2});
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0, 0, -10}, {0, 0, 1}), &h));
+    EXPECT_DOUBLE_EQ(h.t, 8);
+    EXPECT_DOUBLE_EQ(h.p.z, -2);
+    EXPECT_DOUBLE_EQ(h.ng.z, -1);
+    EXPECT_DOUBLE_EQ(h.n.z, -1);
+    EXPECT_EQ(h.object, 0);
+    EXPECT_EQ(h.material, 0);
+    EXPECT_TRUE(h.has_uv);
+    EXPECT_GT(h.p_error.z, 0);
+    EXPECT_LT(h.p_error.z, 1e-14);
+}
+
+TEST(Geometry, UnnormalizedDirectionKeepsTUnits) {
+    auto g = build_one(scene::Sphere{{0, 0, 0}, 1});
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0, 0, -5}, {0, 0, 4}), &h));
+    EXPECT_DOUBLE_EQ(h.t, 1);
+}
+
+TEST(Geometry, TmaxLimitsHits) {
+    auto g = build_one(scene::Sphere{{0, 0, 0}, 1});
+    Hit h;
+    EXPECT_FALSE(g->intersect(ray({0, 0, -5}, {0, 0, 1}, 3.9), &h));
+    EXPECT_TRUE(g->intersect(ray({0, 0, -5}, {0, 0, 1}, 4.1), &h));
+    EXPECT_FALSE(g->occluded(ray({0, 0, -5}, {0, 0, 1}, 3.9)));
+    EXPECT_TRUE(g->occluded(ray({0, 0, -5}, {0, 0, 1}, 4.1)));
+}
+
+TEST(Geometry, ScaledTranslatedSphere) {
+    Transform xf = Transform::scale({2, 1, 1}).then(Transform::translate({10, 0, 0}));
+    auto g = build_one(scene::Sphere{{0, 0, 0}, 1}, xf);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0, 0, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 8, 1e-12);
+    EXPECT_NEAR(h.ng.x, -1, 1e-12);
+    // On the ellipsoid's flank the normal is the inverse-transpose of the sphere's.
+    ASSERT_TRUE(g->intersect(ray({10 + std::sqrt(2.0), 5, 0}, {0, -1, 0}), &h));
+    Vec3 expect = normalize(Vec3(std::sqrt(0.5) / 2, std::sqrt(0.5), 0));
+    EXPECT_NEAR(h.ng.x, expect.x, 1e-12);
+    EXPECT_NEAR(h.ng.y, expect.y, 1e-12);
+    EXPECT_NEAR(length(h.n), 1, 1e-14);
+}
+
+TEST(Geometry, PlaneInsideAndHit) {
+    auto g = build_one(scene::Plane{{0, 1, 0}, -1});
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({3, 5, 2}, {0, -2, 0}), &h));
+    EXPECT_DOUBLE_EQ(h.t, 3);
+    EXPECT_EQ(h.p.y, -1);
+    EXPECT_EQ(h.ng.y, 1);
+    EXPECT_FALSE(h.has_uv);
+    EXPECT_FALSE(g->intersect(ray({3, 5, 2}, {1, 0, 0}), &h));
+    EXPECT_TRUE(std::isinf(g->bounds().hi.x));
+}
+
+TEST(Geometry, BoxFaces) {
+    auto g = build_one(scene::Box{{-1, -2, -3}, {1, 2, 3}});
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0, 0, -10}, {0, 0, 1}), &h));
+    EXPECT_EQ(h.t, 7);
+    EXPECT_EQ(h.ng, Vec3(0, 0, -1));
+    ASSERT_TRUE(g->intersect(ray({0, 0, 0}, {0, 1, 0}), &h));
+    EXPECT_EQ(h.t, 2);
+    EXPECT_EQ(h.ng, Vec3(0, 1, 0));
+    EXPECT_EQ(h.p, Vec3(0, 2, 0));
+}
+
+TEST(Geometry, ClosestObjectAndTieByIndex) {
+    auto s = scene_of({object(scene::Sphere{{0, 0, 5}, 1}, {}, 1),
+                       object(scene::Sphere{{0, 0, 2}, 1}, {}, 2),
+                       object(scene::Box{{-1, -1, 1}, {1, 1, 3}}, {}, 3)});
+    auto g = build(s);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0, 0, -10}, {0, 0, 1}), &h));
+    EXPECT_EQ(h.t, 11);
+    // Sphere 1 and the box touch z = 1 at the same t: the lower index wins.
+    EXPECT_EQ(h.object, 1);
+    EXPECT_EQ(h.material, 2);
+}
+
+TEST(Geometry, NoShadowObjectsDoNotOcclude) {
+    auto s = scene_of({object(scene::Sphere{{0, 0, 0}, 1})});
+    s.objects[0].no_shadow = true;
+    auto g = build(s);
+    Hit h;
+    EXPECT_TRUE(g->intersect(ray({0, 0, -5}, {0, 0, 1}), &h));
+    EXPECT_EQ(h.flags & render::kNoShadow, render::kNoShadow);
+    EXPECT_FALSE(g->occluded(ray({0, 0, -5}, {0, 0, 1})));
+}
+
+TEST(Geometry, EmptySceneHitsNothing) {
+    auto g = build(scene_of({}));
+    Hit h;
+    EXPECT_FALSE(g->intersect(ray({0, 0, 0}, {0, 0, 1}), &h));
+    EXPECT_FALSE(g->occluded(ray({0, 0, 0}, {0, 0, 1})));
+}
+
+}  // namespace
+}  // namespace glint
