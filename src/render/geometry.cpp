@@ -2,8 +2,10 @@
 // into a SAH BVH, unbounded ones (planes, inverse objects) are tested one by one.
 #include "render/geometry.h"
 
+#include <climits>
 #include <vector>
 
+#include "render/accel/bvh.h"
 #include "render/shapes/object_node.h"
 
 namespace glint::render {
@@ -13,30 +15,51 @@ class SceneGeometry final : public Geometry {
 public:
     SceneGeometry(std::vector<std::unique_ptr<ObjectNode>> nodes, std::vector<int> ids)
         : nodes_(std::move(nodes)), ids_(std::move(ids)) {
-        for (const auto& n : nodes_) bounds_.extend(n->bounds());
+        std::vector<Bounds3> boxes;
+        for (size_t i = 0; i < nodes_.size(); ++i) {
+            const Bounds3& b = nodes_[i]->bounds();
+            bounds_.extend(b);
+            boxes.push_back(b);
+            if (b.is_infinite()) unbounded_.push_back(static_cast<int>(i));
+        }
+        bvh_ = Bvh(boxes, 2);
     }
 
     bool intersect(const Ray& ray, Hit* hit) const override {
         LocalHit best;
-        int best_id = -1;
-        for (size_t i = 0; i < nodes_.size(); ++i) {
+        int best_i = INT_MAX;
+        // Equal t: the lower object index wins, so the result does not depend on the order in
+        // which the BVH visits objects.
+        auto visit = [&](int i, double& tmax) {
             LocalHit h;
-            double tmax = best_id < 0 ? ray.tmax : best.t;
-            if (nodes_[i]->intersect(ray, tmax, false, &h)) {
+            bool found = best_i != INT_MAX;
+            double limit = found ? next_up(best.t) : tmax;
+            if (nodes_[i]->intersect(ray, limit, false, &h) &&
+                (!found || h.t < best.t || i < best_i)) {
                 best = h;
-                best_id = ids_[i];
+                best_i = i;
+                tmax = h.t;
             }
-        }
-        if (best_id < 0) return false;
-        to_hit(best, best_id, hit);
+            return false;
+        };
+        double tmax = ray.tmax;
+        bvh_.traverse(ray, tmax, visit);
+        for (int i : unbounded_) visit(i, tmax);
+        if (best_i == INT_MAX) return false;
+        to_hit(best, ids_[best_i], hit);
         return true;
     }
 
     bool occluded(const Ray& ray) const override {
-        for (const auto& n : nodes_) {
+        auto visit = [&](int i, double&) {
+            if (nodes_[i]->flags() & kNoShadow) return false;
             LocalHit h;
-            if (n->intersect(ray, ray.tmax, true, &h)) return true;
-        }
+            return nodes_[i]->intersect(ray, ray.tmax, true, &h);
+        };
+        double tmax = ray.tmax;
+        if (bvh_.traverse(ray, tmax, visit)) return true;
+        for (int i : unbounded_)
+            if (visit(i, tmax)) return true;
         return false;
     }
 
@@ -57,7 +80,9 @@ private:
     }
 
     std::vector<std::unique_ptr<ObjectNode>> nodes_;
-    std::vector<int> ids_;
+    std::vector<int> ids_;  // scene object index of each node
+    std::vector<int> unbounded_;
+    Bvh bvh_;
     Bounds3 bounds_;
 };
 

@@ -19,6 +19,4 @@ std::unique_ptr<Primitive> make_disc(const scene::Disc&, Transform*, const char*
     missing("disc");
 }
 std::unique_ptr<Primitive> make_torus(const scene::Torus&) { missing("torus"); }
-std::unique_ptr<Primitive> make_triangle(const Vec3*, const Vec3*) { missing("triangle"); }
-std::unique_ptr<Primitive> make_mesh(const scene::Mesh&, Diagnostics&) { missing("mesh"); }
 }  // namespace glint::render

@@ -1,0 +1,157 @@
+// mesh / mesh2 (POV-Ray 3.7 manual 2.4.2.2-3) and OBJ meshes: the faces of a scene::Mesh
+// behind their own BVH in object space.
+#include "render/shapes/mesh_prim.h"
+
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "render/accel/bvh.h"
+#include "render/shapes/triangle.h"
+
+namespace glint::render {
+namespace {
+
+class MeshPrim final : public Primitive {
+public:
+    MeshPrim(const scene::Mesh& mesh, std::vector<int> faces)
+        : mesh_(mesh), faces_(std::move(faces)) {
+        std::vector<Bounds3> boxes(faces_.size());
+        for (size_t i = 0; i < faces_.size(); ++i)
+            for (int k = 0; k < 3; ++k) boxes[i].extend(vertex(faces_[i], k));
+        bvh_ = Bvh(boxes, 4);
+        if (mesh.has_inside_vector && length_squared(mesh.inside_vector) > 0)
+            inside_dir_ = mesh.inside_vector;
+    }
+
+    Bounds3 bounds() const override { return bvh_.bounds(); }
+
+    bool intersect(const Ray& ray, double tmax, LocalHit* hit) const override {
+        RayShear shear(ray);
+        TriangleHit best;
+        int best_face = -1;
+        double t = tmax;
+        bvh_.traverse(ray, t, [&](int i, double& tm) {
+            TriangleHit th;
+            int f = faces_[i];
+            // Equal t: the lower face index wins, whatever the traversal order.
+            double limit = best_face < 0 ? tm : next_up(tm);
+            if (intersect_triangle(shear, vertex(f, 0), vertex(f, 1), vertex(f, 2), limit, &th) &&
+                (best_face < 0 || th.t < best.t || f < best_face)) {
+                best = th;
+                best_face = f;
+                tm = th.t;
+            }
+            return false;
+        });
+        if (best_face < 0) return false;
+        fill(best_face, best, hit);
+        return true;
+    }
+
+    void intersect_all(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const override {
+        RayShear shear(ray);
+        double t = tmax;
+        bvh_.traverse(ray, t, [&](int i, double&) {
+            TriangleHit th;
+            int f = faces_[i];
+            if (intersect_triangle(shear, vertex(f, 0), vertex(f, 1), vertex(f, 2), tmax, &th))
+                fill(f, th, &hits->emplace_back());
+            return false;
+        });
+    }
+
+    // POV-Ray (mesh.cpp, Mesh::Inside): a point is inside when a ray from it along
+    // inside_vector crosses the surface an odd number of times. Without one, never inside.
+    bool inside(const Vec3& p) const override {
+        if (!inside_dir_) return false;
+        Ray ray{p, *inside_dir_, kInfinity};
+        RayShear shear(ray);
+        int crossings = 0;
+        double t = kInfinity;
+        bvh_.traverse(ray, t, [&](int i, double&) {
+            TriangleHit th;
+            int f = faces_[i];
+            if (intersect_triangle(shear, vertex(f, 0), vertex(f, 1), vertex(f, 2), kInfinity,
+                                   &th))
+                ++crossings;
+            return false;
+        });
+        return crossings % 2 == 1;
+    }
+
+private:
+    const Vec3& vertex(int face, int k) const {
+        return mesh_.positions[mesh_.faces[face].v[k]];
+    }
+
+    void fill(int f, const TriangleHit& th, LocalHit* h) const {
+        const scene::MeshFace& face = mesh_.faces[f];
+        const Vec3 &p0 = vertex(f, 0), &p1 = vertex(f, 1), &p2 = vertex(f, 2);
+        h->t = th.t;
+        h->p = triangle_point(p0, p1, p2, th.b, &h->p_error);
+        h->ng = normalize(cross(p1 - p0, p2 - p0));
+        h->n = h->ng;
+        if (face.n[0] >= 0 && face.n[1] >= 0 && face.n[2] >= 0) {
+            Vec3 n = mesh_.normals[face.n[0]] * th.b[0] + mesh_.normals[face.n[1]] * th.b[1] +
+                     mesh_.normals[face.n[2]] * th.b[2];
+            double len = length(n);
+            if (len > 0 && std::isfinite(len)) {
+                n = n / len;
+                h->n = dot(n, h->ng) < 0 ? -n : n;
+            }
+        }
+        h->has_uv = face.uv[0] >= 0 && face.uv[1] >= 0 && face.uv[2] >= 0;
+        if (h->has_uv)
+            h->uv = mesh_.uvs[face.uv[0]] * th.b[0] + mesh_.uvs[face.uv[1]] * th.b[1] +
+                    mesh_.uvs[face.uv[2]] * th.b[2];
+        h->material = face.material;
+    }
+
+    // A copy: the geometry must not depend on the scene outliving it.
+    scene::Mesh mesh_;
+    std::vector<int> faces_;  // usable faces of mesh_
+    Bvh bvh_;
+    std::optional<Vec3> inside_dir_;
+};
+
+}  // namespace
+
+std::unique_ptr<Primitive> make_mesh(const scene::Mesh& mesh, Diagnostics& diag) {
+    std::vector<int> usable;
+    int degenerate = 0, bad_index = 0;
+    int np = static_cast<int>(mesh.positions.size());
+    int nn = static_cast<int>(mesh.normals.size());
+    int nuv = static_cast<int>(mesh.uvs.size());
+    for (size_t f = 0; f < mesh.faces.size(); ++f) {
+        const scene::MeshFace& face = mesh.faces[f];
+        bool ok = true;
+        for (int k = 0; k < 3; ++k) {
+            ok = ok && face.v[k] >= 0 && face.v[k] < np && face.n[k] < nn && face.uv[k] < nuv;
+        }
+        if (!ok) {
+            ++bad_index;
+            continue;
+        }
+        const Vec3 &p0 = mesh.positions[face.v[0]], &p1 = mesh.positions[face.v[1]],
+                   &p2 = mesh.positions[face.v[2]];
+        Vec3 c = cross(p1 - p0, p2 - p0);
+        if (!is_finite(p0) || !is_finite(p1) || !is_finite(p2) || !is_finite(c) ||
+            !(length_squared(c) > 0)) {
+            ++degenerate;
+            continue;
+        }
+        usable.push_back(static_cast<int>(f));
+    }
+    if (degenerate > 0)
+        diag.warning(mesh.loc, std::to_string(degenerate) +
+                                   " degenerate mesh triangle(s) (zero area or non-finite "
+                                   "vertices) skipped");
+    if (bad_index > 0)
+        diag.warning(mesh.loc,
+                     std::to_string(bad_index) + " mesh triangle(s) with invalid indices skipped");
+    if (usable.empty()) return nullptr;
+    return std::make_unique<MeshPrim>(mesh, std::move(usable));
+}
+
+}  // namespace glint::render
