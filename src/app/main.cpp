@@ -1,6 +1,53 @@
-#include <iostream>
+// glint: the command-line front end. It only parses flags and dispatches; each subcommand
+// lives in its own file (render_command.cpp, ir_command.cpp, compare_command.cpp).
+#include <CLI/CLI.hpp>
 
-int main() {
-    std::cerr << "glint: the CLI is under construction\n";
-    return 1;
+#include <cstdio>
+#include <exception>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+
+int main(int argc, char** argv) {
+    using namespace glint::app;
+    CLI::App app("glint: renders POV-Ray 3.7 scenes", "glint");
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "glint 0.1.0");
+
+    RenderArgs render_args;
+    IrArgs ir_args;
+    CompareArgs compare_args;
+    CLI::App* render = add_render_command(app, render_args);
+    CLI::App* ir = add_ir_command(app, ir_args);
+    CLI::App* compare = add_compare_command(app, compare_args);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        // CLI11's own exit codes differ from the contract: every usage error is 1.
+        app.exit(e);
+        return kExitUsage;
+    }
+
+    try {
+        if (render->parsed()) return run_render(render_args);
+        if (ir->parsed()) return run_ir(ir_args);
+        if (compare->parsed()) return run_compare(compare_args);
+    } catch (const glint::Error& e) {
+        return report_error(e);
+    } catch (const std::bad_alloc&) {
+        std::fputs("glint: error: out of memory\n", stderr);
+        return kExitRender;
+    } catch (const std::exception& e) {
+        // Library code throws glint::Error; anything else is a bug, reported as a render failure.
+        std::fprintf(stderr, "glint: error: internal error: %s\n", e.what());
+        return kExitRender;
+    }
+    return kExitUsage;
 }

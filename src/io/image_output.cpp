@@ -1,9 +1,161 @@
 #include "io/image_output.h"
 
+#include <OpenImageIO/imageio.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <vector>
+
 #include "core/error.h"
+#include "io/color_encoding.h"
 
 namespace glint::io {
-void write_image(const render::Image&, const std::string& path, const OutputEncoding&) {
-    throw Error(ErrorKind::Output, {}, "image output not written yet: " + path);
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct FormatInfo {
+    const char* extension;
+    const char* oiio_name;
+    bool is_float;        // scene-referred: linear values, no OpenColorIO
+    unsigned max_value;   // integer formats: the code value of 1.0
+    bool supports_alpha;
+};
+
+constexpr FormatInfo kFormats[] = {
+    {"png", "png", false, 255, true},         {"jpg", "jpeg", false, 255, false},
+    {"jpeg", "jpeg", false, 255, false},      {"tif", "tiff", false, 65535, true},
+    {"tiff", "tiff", false, 65535, true},     {"exr", "openexr", true, 0, true},
+    {"hdr", "hdr", true, 0, false},
+};
+
+const FormatInfo& format_info(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    if (!ext.empty() && ext[0] == '.') ext.erase(0, 1);
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    for (const FormatInfo& f : kFormats)
+        if (ext == f.extension) return f;
+    throw Error(ErrorKind::Output, {},
+                "unsupported output format '" + (ext.empty() ? std::string("(none)") : ext) +
+                    "' for " + path + " (use .png, .exr, .tif, .hdr or .jpg)");
 }
+
+// Removes the temporary file unless the write succeeded and it was renamed.
+class TempFile {
+public:
+    explicit TempFile(std::string path) : path_(std::move(path)) {}
+    ~TempFile() {
+        if (!path_.empty()) {
+            std::error_code ec;
+            fs::remove(path_, ec);
+        }
+    }
+    TempFile(const TempFile&) = delete;
+    TempFile& operator=(const TempFile&) = delete;
+    const std::string& path() const { return path_; }
+    void release() { path_.clear(); }
+
+private:
+    std::string path_;
+};
+
+float finite_or_zero(float v) {
+    if (std::isnan(v)) return 0.0f;
+    if (std::isinf(v)) return v > 0 ? std::numeric_limits<float>::max()
+                                     : -std::numeric_limits<float>::max();
+    return v;
+}
+
+}  // namespace
+
+std::string output_format_for(const std::string& path) { return format_info(path).oiio_name; }
+
+void write_image(const render::Image& image, const std::string& path,
+                 const OutputEncoding& encoding) {
+    const FormatInfo& format = format_info(path);
+    if (image.width <= 0 || image.height <= 0 ||
+        image.rgba.size() != static_cast<size_t>(image.width) * image.height * 4)
+        throw Error(ErrorKind::Output, {}, "cannot write " + path + ": the image is empty");
+
+    const int channels = (encoding.alpha && format.supports_alpha) ? 4 : 3;
+    const size_t pixels = static_cast<size_t>(image.width) * image.height;
+    OIIO::TypeDesc type = format.is_float           ? OIIO::TypeDesc::FLOAT
+                          : format.max_value == 255 ? OIIO::TypeDesc::UINT8
+                                                    : OIIO::TypeDesc::UINT16;
+    OIIO::ImageSpec spec(image.width, image.height, channels, type);
+    if (channels == 4) spec.alpha_channel = 3;
+
+    // Pixel data in the file's own type, so OpenImageIO does no conversion of its own.
+    std::vector<float> float_data;
+    std::vector<uint8_t> u8_data;
+    std::vector<uint16_t> u16_data;
+    const void* data = nullptr;
+    if (format.is_float) {
+        spec.attribute("oiio:ColorSpace", "Linear");
+        float_data.resize(pixels * channels);
+        for (size_t i = 0; i < pixels; ++i)
+            for (int c = 0; c < channels; ++c)
+                float_data[i * channels + c] = finite_or_zero(image.rgba[i * 4 + c]);
+        data = float_data.data();
+    } else {
+        if (encoding.transfer == OutputEncoding::Transfer::Srgb)
+            spec.attribute("oiio:ColorSpace", "sRGB");
+        else if (encoding.transfer == OutputEncoding::Transfer::Gamma)
+            spec.attribute("oiio:Gamma", static_cast<float>(encoding.gamma));
+        if (format.max_value == 255) spec.attribute("CompressionQuality", 95);
+        std::vector<float> rgb = encode_rgb(image, encoding);
+        // Alpha is coverage, stored linearly (POV-Ray's IntEncode without a curve).
+        auto code = [&](size_t i, int c) {
+            float v = c < 3 ? rgb[i * 3 + c] : image.rgba[i * 4 + 3];
+            return quantize(v, format.max_value);
+        };
+        if (format.max_value == 255) {
+            u8_data.resize(pixels * channels);
+            for (size_t i = 0; i < pixels; ++i)
+                for (int c = 0; c < channels; ++c)
+                    u8_data[i * channels + c] = static_cast<uint8_t>(code(i, c));
+            data = u8_data.data();
+        } else {
+            u16_data.resize(pixels * channels);
+            for (size_t i = 0; i < pixels; ++i)
+                for (int c = 0; c < channels; ++c)
+                    u16_data[i * channels + c] = static_cast<uint16_t>(code(i, c));
+            data = u16_data.data();
+        }
+    }
+
+    // The temporary sits beside the target so the rename stays on one file system.
+    TempFile temp(path + ".tmp-" + std::to_string(static_cast<long>(::getpid())));
+    auto fail = [&](const std::string& why) {
+        return Error(ErrorKind::Output, {}, "cannot write " + path + ": " + why);
+    };
+    {
+        std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(format.oiio_name);
+        if (!out) throw fail("OpenImageIO has no " + std::string(format.oiio_name) + " writer");
+        if (!out->open(temp.path(), spec)) {
+            std::string why = out->geterror();
+            throw fail(why.empty() ? "cannot create the file" : why);
+        }
+        bool ok = out->write_image(type, data);
+        std::string why = ok ? std::string() : out->geterror();
+        if (!out->close() && ok) {
+            ok = false;
+            why = out->geterror();
+        }
+        if (!ok) throw fail(why.empty() ? "write failed" : why);
+    }
+    std::error_code ec;
+    fs::rename(temp.path(), path, ec);
+    if (ec) throw fail(ec.message());
+    temp.release();
+}
+
 }  // namespace glint::io

@@ -9,15 +9,29 @@
 
 namespace glint::io {
 
-// How linear film values become file values for 8/16-bit formats. Float formats (exr, hdr)
-// always get linear values and never load a color configuration.
+// How film values become file values for 8/16-bit formats. Float formats (exr, hdr)
+// always get the film values unchanged and never load a color configuration.
+//
+// Film values live in the scene's working space: linear when working_gamma is 1 (POV-Ray 3.7
+// with assumed_gamma 1), otherwise power-law encoded with working_gamma (assumed_gamma 2.2
+// makes POV-Ray light raw 0..1 numbers as they are). Encoding first decodes the working
+// space (v^working_gamma), then applies `transfer`; this is POV-Ray 3.7's
+// TranscodingGammaCurve (source/base/image/colourspace.cpp).
 struct OutputEncoding {
     enum class Transfer { Linear, Srgb, Gamma } transfer = Transfer::Srgb;
-    double gamma = 2.2;  // Transfer::Gamma
-    bool alpha = false;  // write an alpha channel (POV-Ray +UA)
+    double gamma = 2.2;          // Transfer::Gamma: file value = v^(1/gamma)
+    double working_gamma = 1.0;  // film value v is linear after v^working_gamma
+    bool alpha = false;          // write an alpha channel (POV-Ray +UA)
 };
 
-// Throws glint::Error(ErrorKind::Output) naming the path and the reason.
+// The OpenImageIO format name for the path's extension (case-insensitive): png, openexr,
+// tiff, hdr, jpeg. Throws Error(Output) "unsupported output format" for anything else, so the
+// CLI can refuse a bad name before it renders.
+std::string output_format_for(const std::string& path);
+
+// Throws glint::Error(ErrorKind::Output) naming the path and the reason. Writes
+// `<path>.tmp-<pid>` beside the target and renames it; on failure the temporary is removed.
+// PNG and JPEG get 8 bits, TIFF 16 bits per channel, EXR and HDR 32-bit float.
 void write_image(const render::Image& image, const std::string& path,
                  const OutputEncoding& encoding);
 

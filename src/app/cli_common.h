@@ -1,0 +1,36 @@
+// What every glint subcommand shares: the exit codes of the CLI contract (README lists them),
+// turning glint::Error into a message and an exit code, the interrupt flag set by
+// SIGINT/SIGTERM, and the include search path.
+#pragma once
+
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+
+namespace glint::app {
+
+constexpr int kExitOk = 0;
+constexpr int kExitUsage = 1;
+constexpr int kExitScene = 2;
+constexpr int kExitMissingFile = 3;
+constexpr int kExitRender = 4;
+constexpr int kExitOutput = 5;
+constexpr int kExitDiffer = 6;
+constexpr int kExitInterrupted = 130;
+
+int exit_code_for(ErrorKind kind);
+
+// Prints format_error(e) on stderr and returns the exit code for its kind.
+int report_error(const Error& e);
+
+// The first SIGINT/SIGTERM sets the flag (the renderer stops at the next tile and nothing is
+// written); a second one terminates at once with the default action.
+void install_signal_handlers();
+const std::atomic<bool>& cancel_flag();
+
+// The user's -I folders, then /usr/share/povray-3.7/include when it exists.
+std::vector<std::string> include_search_path(const std::vector<std::string>& user_dirs);
+
+}  // namespace glint::app

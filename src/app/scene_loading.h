@@ -1,0 +1,24 @@
+// Reading a scene for a subcommand: checks the file, builds ParseOptions from the flags
+// (search path, clock, image size), prints the parser's warnings on stderr, validates.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace glint::app {
+
+struct SceneRequest {
+    std::string path;
+    std::vector<std::string> include_dirs;  // the user's -I folders
+    double clock = 0;
+    int width = 320;
+    int height = 240;
+};
+
+// Throws glint::Error. Warnings go to stderr as `file:line:col: warning: ...` as they come;
+// informational messages only when `verbose`.
+scene::Scene load_scene(const SceneRequest& request, bool verbose);
+
+}  // namespace glint::app
