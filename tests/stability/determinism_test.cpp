@@ -1,0 +1,41 @@
+// VALIDATION.md case 18: the demo scene (reflection, refraction, shadows, image texture)
+// renders to the same film bit for bit with 1 and 2 threads, twice each.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstring>
+
+#include "stability_support.h"
+
+namespace glint::stability {
+namespace {
+
+long differing_values(const render::Image& a, const render::Image& b) {
+    if (a.rgba.size() != b.rgba.size())
+        return static_cast<long>(std::max(a.rgba.size(), b.rgba.size()));
+    long n = 0;
+    for (size_t i = 0; i < a.rgba.size(); ++i)
+        if (std::memcmp(&a.rgba[i], &b.rgba[i], sizeof(float)) != 0) ++n;
+    return n;
+}
+
+TEST(StabilityDeterminism, SameFilmAtOneAndTwoThreads) {
+    pov::ParseOptions options;
+    options.include_dirs = {"/usr/share/povray-3.7/include"};
+    Diagnostics diag;
+    const scene::Scene scene =
+        pov::parse_file(std::string(GLINT_SOURCE_DIR) + "/scenes/demo.pov", options, diag);
+    const render::Image first = render_scene(scene, 320, 240, 1);
+    ASSERT_EQ(first.rgba.size(), size_t{320 * 240 * 4});
+    const int runs[] = {2, 1, 2};
+    for (int threads : runs) {
+        const render::Image again = render_scene(scene, 320, 240, threads);
+        const long n = differing_values(first, again);
+        std::printf("demo.pov, %d thread(s) vs 1 thread: differing float values = %ld of %zu "
+                    "(bound 0)\n", threads, n, first.rgba.size());
+        EXPECT_EQ(n, 0) << threads << " threads";
+    }
+}
+
+}  // namespace
+}  // namespace glint::stability

@@ -1,0 +1,83 @@
+// VALIDATION.md case 2: a ground plane seen from 1e5 units away at grazing angles shows no
+// acne. The plane is lit by a parallel light and reflects a uniform background, so every plane
+// pixel has the same colour; an acne pixel is a plane pixel whose 8-bit colour differs from the
+// plane's median colour by more than 1/255 in some channel (a shadow or reflection ray that
+// re-hit the plane it left).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+
+#include "stability_support.h"
+
+namespace glint::stability {
+namespace {
+
+constexpr int kWidth = 320;
+constexpr int kHeight = 240;
+// Plane pixels are those whose primary ray meets the plane within this distance; beyond it the
+// pixel footprint spans more than the whole scene and the horizon row is excluded as well.
+constexpr double kMaxDistance = 1e6;
+
+struct AcneResult {
+    long plane_pixels = 0;
+    long acne = 0;
+    std::array<int, 3> median{0, 0, 0};
+};
+
+AcneResult measure(const scene::Scene& scene, const render::Image& image) {
+    std::vector<std::array<int, 3>> colors;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const CameraRay ray = primary_ray(scene.camera, x, y, image.width, image.height);
+            if (ray.dir.y >= 0) continue;
+            const double t = -ray.origin.y / ray.dir.y;
+            if (t > kMaxDistance) continue;
+            const float* px = image.pixel(x, y);
+            colors.push_back({to_8bit(px[0]), to_8bit(px[1]), to_8bit(px[2])});
+        }
+    }
+    AcneResult result;
+    result.plane_pixels = static_cast<long>(colors.size());
+    if (colors.empty()) return result;
+    for (int c = 0; c < 3; ++c) {
+        std::vector<int> channel;
+        for (const auto& col : colors) channel.push_back(col[c]);
+        std::nth_element(channel.begin(), channel.begin() + channel.size() / 2, channel.end());
+        result.median[c] = channel[channel.size() / 2];
+    }
+    for (const auto& col : colors) {
+        for (int c = 0; c < 3; ++c) {
+            if (std::abs(col[c] - result.median[c]) > 1) {
+                ++result.acne;
+                break;
+            }
+        }
+    }
+    return result;
+}
+
+TEST(StabilityGroundPlane, NoAcneAtGrazingAnglesFromFarAway) {
+    struct Variant {
+        const char* name;
+        const char* prelude;
+    };
+    const Variant variants[] = {
+        {"distance 1e5, height 50", "#declare Distance = 1e5; #declare Height = 50;"},
+        {"distance 1e5, height 1", "#declare Distance = 1e5; #declare Height = 1;"},
+        {"distance 1e5, height 0.01", "#declare Distance = 1e5; #declare Height = 0.01;"},
+    };
+    for (const Variant& v : variants) {
+        const scene::Scene scene = load_scene("ground_plane.pov", v.prelude, kWidth, kHeight);
+        const render::Image image = render_scene(scene, kWidth, kHeight);
+        EXPECT_EQ(count_nonfinite(image), 0) << v.name;
+        const AcneResult r = measure(scene, image);
+        std::printf("%s: acne pixels = %ld of %ld plane pixels (bound 0); plane colour %d,%d,%d\n",
+                    v.name, r.acne, r.plane_pixels, r.median[0], r.median[1], r.median[2]);
+        EXPECT_GT(r.plane_pixels, kWidth * kHeight / 4) << v.name;
+        EXPECT_EQ(r.acne, 0) << v.name;
+    }
+}
+
+}  // namespace
+}  // namespace glint::stability

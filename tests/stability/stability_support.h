@@ -1,0 +1,93 @@
+// Shared helpers of the stability suite (VALIDATION.md's extreme cases): load a scene from
+// tests/stability/scenes with a few #declare'd parameters in front, render it through the
+// library into the linear float film, and measure images (8-bit encoding, finite values,
+// primary rays as the camera contract in scene/camera.h defines them).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "core/log.h"
+#include "formats/pov/parser.h"
+#include "render/render.h"
+#include "scene/scene.h"
+
+namespace glint::stability {
+
+inline std::string scenes_dir() { return std::string(GLINT_SOURCE_DIR) + "/tests/stability/scenes"; }
+
+// Parses `#declare`s given in `prelude`, then #includes scenes_dir()/file, so that one scene
+// file serves every parameter value the test needs.
+inline scene::Scene load_scene(const std::string& file, const std::string& prelude,
+                               int width, int height) {
+    pov::ParseOptions options;
+    options.include_dirs = {scenes_dir()};
+    options.image_width = width;
+    options.image_height = height;
+    Diagnostics diag;
+    const std::string text = prelude + "\n#include \"" + file + "\"\n";
+    return pov::parse_string(text, scenes_dir() + "/prelude_" + file, options, diag);
+}
+
+inline render::Image render_scene(const scene::Scene& scene, int width, int height,
+                                  int threads = 0) {
+    render::RenderOptions options;
+    options.width = width;
+    options.height = height;
+    options.aa = render::AaMode::None;
+    options.threads = threads;
+    Diagnostics diag;
+    return render::render(scene, options, diag).image;
+}
+
+inline render::Image render_file(const std::string& file, const std::string& prelude,
+                                 int width, int height, int threads = 0) {
+    return render_scene(load_scene(file, prelude, width, height), width, height, threads);
+}
+
+// 8-bit output value of a linear film value: gamma 2.2, POV-Ray's default File_Gamma for
+// scenes with assumed_gamma 1.0 (reference manual 3.2.8.5 "File_Gamma").
+inline int to_8bit(float linear) {
+    const double v = std::clamp(static_cast<double>(linear), 0.0, 1.0);
+    return static_cast<int>(std::lround(std::pow(v, 1.0 / 2.2) * 255.0));
+}
+
+// Largest 8-bit channel difference at pixel (x, y).
+inline int diff_8bit(const render::Image& a, const render::Image& b, int x, int y) {
+    int d = 0;
+    for (int c = 0; c < 3; ++c)
+        d = std::max(d, std::abs(to_8bit(a.pixel(x, y)[c]) - to_8bit(b.pixel(x, y)[c])));
+    return d;
+}
+
+// Fraction of pixels whose largest 8-bit channel difference is <= tolerance.
+inline double fraction_within(const render::Image& a, const render::Image& b, int tolerance) {
+    long within = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+            if (diff_8bit(a, b, x, y) <= tolerance) ++within;
+    return static_cast<double>(within) / (static_cast<double>(a.width) * a.height);
+}
+
+inline long count_nonfinite(const render::Image& image) {
+    return std::count_if(image.rgba.begin(), image.rgba.end(),
+                         [](float v) { return !std::isfinite(v); });
+}
+
+// The primary ray through the centre of pixel (x, y), per the contract in scene/camera.h.
+struct CameraRay {
+    Vec3 origin;
+    Vec3 dir;  // normalized
+};
+inline CameraRay primary_ray(const scene::Camera& cam, int x, int y, int width, int height) {
+    const double sx = (x + 0.5) / width - 0.5;
+    const double sy = 0.5 - (y + 0.5) / height;
+    if (cam.kind == scene::CameraKind::Orthographic)
+        return {cam.location + cam.right * sx + cam.up * sy, normalize(cam.direction)};
+    return {cam.location, normalize(cam.direction + cam.right * sx + cam.up * sy)};
+}
+
+}  // namespace glint::stability
