@@ -25,3 +25,10 @@ std::unique_ptr<Primitive> make_torus(const scene::Torus& s);
 std::unique_ptr<Primitive> make_triangle(const Vec3 p[3], const Vec3* normals);
 
 }  // namespace glint::render
+
+namespace glint::render {
+// The frame whose z axis is `axis` (not normalized: canonical z = 1 lands on origin + axis),
+// x and y unit and perpendicular (Duff et al. 2017, "Building an Orthonormal Basis,
+// Revisited"). Throws glint::Error if `axis` is zero.
+Transform axis_frame(const Vec3& origin, const Vec3& axis);
+}  // namespace glint::render
