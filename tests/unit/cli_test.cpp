@@ -1,0 +1,164 @@
+// The CLI contract from the outside: exit codes, `glint compare` output, and that failures
+// leave no output file. Runs the built glint binary (GLINT_BINARY).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "io/image_compare.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RunResult {
+    int exit_code = -1;
+    std::string out;  // stdout
+    std::string err;  // stderr
+};
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+class CliTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("glint_cli_test_" + std::to_string(::getpid()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    RunResult run(const std::string& args) {
+        std::string cmd = std::string("'") + GLINT_BINARY + "' " + args + " >'" +
+                          (dir_ / "stdout.txt").string() + "' 2>'" +
+                          (dir_ / "stderr.txt").string() + "'";
+        int status = std::system(cmd.c_str());
+        RunResult r;
+        r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        r.out = slurp(dir_ / "stdout.txt");
+        r.err = slurp(dir_ / "stderr.txt");
+        fs::remove(dir_ / "stdout.txt");
+        fs::remove(dir_ / "stderr.txt");
+        return r;
+    }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    void write_text(const std::string& name, const std::string& text) {
+        std::ofstream(dir_ / name) << text;
+    }
+    // Files in the test folder other than the inputs we made.
+    int count_files() const {
+        int n = 0;
+        for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir_)) ++n;
+        return n;
+    }
+
+    fs::path dir_;
+};
+
+glint::io::Rgb8Image flat(int w, int h, unsigned char v) {
+    glint::io::Rgb8Image img;
+    img.width = w;
+    img.height = h;
+    img.rgb.assign(static_cast<size_t>(w) * h * 3, v);
+    return img;
+}
+
+}  // namespace
+
+TEST_F(CliTest, NoSubcommandIsAUsageError) {
+    EXPECT_EQ(run("").exit_code, 1);
+    EXPECT_EQ(run("frobnicate").exit_code, 1);
+    EXPECT_EQ(run("render").exit_code, 1);  // SCENE and -o are required
+    EXPECT_EQ(run("--help").exit_code, 0);
+}
+
+TEST_F(CliTest, CompareAgreeingImagesExitsZero) {
+    glint::io::Rgb8Image a = flat(10, 10, 100);
+    glint::io::Rgb8Image b = a;
+    b.rgb[0] = 102;  // within the default tolerance of 2
+    glint::io::write_rgb8_png(a, path("a.png"));
+    glint::io::write_rgb8_png(b, path("b.png"));
+    RunResult r = run("compare '" + path("a.png") + "' '" + path("b.png") + "'");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.out, "within=1.000000 rmse=0.1155 max=2@0,0 pixels=100\n");
+}
+
+TEST_F(CliTest, CompareDifferingImagesExitsSixAndWritesDiff) {
+    glint::io::Rgb8Image a = flat(10, 10, 100);
+    glint::io::Rgb8Image b = a;
+    for (int i = 0; i < 2; ++i) b.rgb[i * 3 + 1] = 110;  // 2 of 100 pixels off by 10
+    glint::io::write_rgb8_png(a, path("a.png"));
+    glint::io::write_rgb8_png(b, path("b.png"));
+    RunResult r = run("compare '" + path("a.png") + "' '" + path("b.png") + "' --diff '" +
+                      path("d.png") + "'");
+    EXPECT_EQ(r.exit_code, 6);
+    EXPECT_EQ(r.out.rfind("within=0.980000 ", 0), 0u) << r.out;
+    ASSERT_TRUE(fs::exists(path("d.png")));
+    glint::io::Rgb8Image d = glint::io::read_rgb8(path("d.png"));
+    EXPECT_EQ(d.rgb[1], 255);
+    EXPECT_EQ(d.rgb[0], 0);
+    // A lower bar lets the same pair pass.
+    EXPECT_EQ(run("compare '" + path("a.png") + "' '" + path("b.png") + "' --min-fraction 0.98")
+                  .exit_code,
+              0);
+    EXPECT_EQ(run("compare '" + path("a.png") + "' '" + path("b.png") + "' --tolerance 10")
+                  .exit_code,
+              0);
+}
+
+TEST_F(CliTest, CompareSizeMismatchAndMissingFile) {
+    glint::io::write_rgb8_png(flat(4, 4, 0), path("a.png"));
+    glint::io::write_rgb8_png(flat(4, 5, 0), path("b.png"));
+    RunResult r = run("compare '" + path("a.png") + "' '" + path("b.png") + "'");
+    EXPECT_EQ(r.exit_code, 6);
+    EXPECT_NE(r.err.find("sizes differ"), std::string::npos) << r.err;
+    EXPECT_EQ(run("compare '" + path("a.png") + "' '" + path("none.png") + "'").exit_code, 3);
+}
+
+TEST_F(CliTest, RenderMissingSceneExitsThreeWithoutOutput) {
+    RunResult r = run("render '" + path("none.pov") + "' -o '" + path("out.png") + "'");
+    EXPECT_EQ(r.exit_code, 3) << r.err;
+    EXPECT_NE(r.err.find("none.pov"), std::string::npos);
+    EXPECT_EQ(count_files(), 0);
+}
+
+TEST_F(CliTest, RenderRejectsBadOutputBeforeRendering) {
+    write_text("s.pov", "#version 3.7;\nsphere { 0, 1 }\n");
+    RunResult r = run("render '" + path("s.pov") + "' -o '" + path("out.bmp") + "'");
+    EXPECT_EQ(r.exit_code, 5) << r.err;
+    EXPECT_NE(r.err.find("unsupported output format"), std::string::npos) << r.err;
+    r = run("render '" + path("s.pov") + "' -o '" + path("no/such/folder/out.png") + "'");
+    EXPECT_EQ(r.exit_code, 5) << r.err;
+    EXPECT_EQ(count_files(), 1);  // only s.pov
+}
+
+TEST_F(CliTest, RenderRejectsBadFlags) {
+    write_text("s.pov", "#version 3.7;\nsphere { 0, 1 }\n");
+    std::string base = "render '" + path("s.pov") + "' -o '" + path("o.png") + "' ";
+    EXPECT_EQ(run(base + "--aa bogus").exit_code, 1);
+    EXPECT_EQ(run(base + "--aa grid:0").exit_code, 1);
+    EXPECT_EQ(run(base + "--aa adaptive:x").exit_code, 1);
+    EXPECT_EQ(run(base + "--width 0").exit_code, 1);
+    EXPECT_EQ(run(base + "--progress sometimes").exit_code, 1);
+    EXPECT_EQ(run(base + "--threads -1").exit_code, 1);
+    EXPECT_EQ(count_files(), 1);
+}
+
+TEST_F(CliTest, SceneErrorHasLocationSourceLineAndCaret) {
+    write_text("bad.pov", "#version 3.7;\nsphere { 0, 1\n  pigment { rgb 1 }\n  finsh { ambient 1 }\n}\n");
+    RunResult r = run("render '" + path("bad.pov") + "' -o '" + path("o.png") + "'");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    std::string where = path("bad.pov") + ":4:3: error: ";
+    EXPECT_NE(r.err.find(where), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("\n    finsh { ambient 1 }\n    ^\n"), std::string::npos) << r.err;
+    EXPECT_EQ(count_files(), 1);
+}
