@@ -1,0 +1,475 @@
+// Every intersection routine against closed forms, plus VALIDATION.md cases 5 (axis-aligned
+// rays through box faces and edges), 6 (grazing triangles) and 9 (camera inside a sphere).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/float.h"
+#include "geom_test_util.h"
+#include "render/shapes/mesh_prim.h"
+#include "render/shapes/object_node.h"
+#include "render/shapes/shapes.h"
+#include "render/shapes/triangle.h"
+
+namespace glint {
+namespace {
+
+using render::Hit;
+using render::LocalHit;
+using test::build_one;
+using test::ray;
+
+bool finite_hit(const Hit& h) {
+    return std::isfinite(h.t) && is_finite(h.p) && is_finite(h.ng) && is_finite(h.n) &&
+           is_finite(h.p_error) && std::isfinite(h.uv.x) && std::isfinite(h.uv.y);
+}
+
+void expect_vec(const Vec3& a, const Vec3& b, double tol) {
+    EXPECT_NEAR(a.x, b.x, tol);
+    EXPECT_NEAR(a.y, b.y, tol);
+    EXPECT_NEAR(a.z, b.z, tol);
+}
+
+// ---- sphere ------------------------------------------------------------------------------
+
+TEST(Sphere, OffAxisChord) {
+    auto g = build_one(scene::Sphere{{1, 2, 3}, 2});
+    Hit h;
+    // Line at distance 1 from the centre: half chord sqrt(3).
+    ASSERT_TRUE(g->intersect(ray({-10, 3, 3}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 11 - std::sqrt(3.0), 1e-14);
+    expect_vec(h.ng, normalize(Vec3(-std::sqrt(3.0), 1, 0)), 1e-14);
+    EXPECT_FALSE(g->intersect(ray({-10, 4.0001, 3}, {1, 0, 0}), &h));
+}
+
+TEST(Sphere, UvFollowsPovRay) {
+    auto g = build_one(scene::Sphere{{0, 0, 0}, 1});
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({5, 0, 0}, {-1, 0, 0}), &h));  // +x: u 0, v 0.5
+    EXPECT_NEAR(h.uv.x, 0, 1e-12);
+    EXPECT_NEAR(h.uv.y, 0.5, 1e-12);
+    ASSERT_TRUE(g->intersect(ray({0, 0, 5}, {0, 0, -1}), &h));  // +z: u 0.25
+    EXPECT_NEAR(h.uv.x, 0.25, 1e-12);
+    ASSERT_TRUE(g->intersect(ray({0, 5, 0}, {0, -1, 0}), &h));  // north pole: v 1
+    EXPECT_NEAR(h.uv.y, 1, 1e-12);
+}
+
+// VALIDATION.md case 9: every ray from the centre hits at t within 4 ulp of the radius.
+TEST(Sphere, CameraInsideHitsAtRadius) {
+    std::mt19937_64 rng(9);
+    std::normal_distribution<double> nd;
+    int bad = 0, total = 0;
+    for (double r : {1e-4, 0.3, 1.0, 7.0, 1e4}) {
+        for (Vec3 c : {Vec3(0, 0, 0), Vec3(0.5, -3, 2), Vec3(1e3, 1e3, -1e3)}) {
+            auto g = build_one(scene::Sphere{c, r});
+            for (int i = 0; i < 2000; ++i) {
+                Vec3 d = normalize(Vec3(nd(rng), nd(rng), nd(rng)));
+                Hit h;
+                ++total;
+                if (!g->intersect(ray(c, d), &h)) {
+                    ++bad;
+                    continue;
+                }
+                double ulp = next_up(r) - r;
+                if (std::fabs(h.t - r) > 4 * ulp) ++bad;
+            }
+        }
+    }
+    EXPECT_EQ(bad, 0) << "of " << total;
+}
+
+// ---- box ---------------------------------------------------------------------------------
+
+// VALIDATION.md case 5: rays along the axes with the other direction components exactly 0,
+// through faces, along faces and along edges. Analytic count: 2 if the ray's line meets the
+// closed box, else 0.
+TEST(Box, AxisAlignedRaysFacesAndEdges) {
+    auto prim = render::make_box(scene::Box{{-1, -1, -1}, {1, 1, 1}});
+    const double coords[] = {-2, -1, -0.5, 0, 0.5, 1, 2};
+    int checked = 0;
+    for (int axis = 0; axis < 3; ++axis)
+        for (double sign : {-1.0, 1.0})
+            for (double a : coords)
+                for (double b : coords) {
+                    Vec3 o, d;
+                    o[axis] = -5 * sign;
+                    o[(axis + 1) % 3] = a;
+                    o[(axis + 2) % 3] = b;
+                    d[axis] = sign;
+                    std::vector<LocalHit> hits;
+                    prim->intersect_all(ray(o, d), kInfinity, &hits);
+                    int expect = (std::fabs(a) <= 1 && std::fabs(b) <= 1) ? 2 : 0;
+                    EXPECT_EQ(static_cast<int>(hits.size()), expect) << axis << " " << a << " " << b;
+                    for (const auto& h : hits) {
+                        EXPECT_TRUE(std::isfinite(h.t) && is_finite(h.p) && is_finite(h.ng));
+                        EXPECT_EQ(std::fabs(h.p[axis]), 1.0);
+                        EXPECT_TRUE(h.t == 4 || h.t == 6);
+                    }
+                    ++checked;
+                }
+    EXPECT_EQ(checked, 3 * 2 * 49);
+}
+
+TEST(Box, DiagonalRayThroughEdge) {
+    auto prim = render::make_box(scene::Box{{-1, -1, -1}, {1, 1, 1}});
+    std::vector<LocalHit> hits;
+    // Through the edge x = 1, y = 1 exactly: it touches the box in one point.
+    prim->intersect_all(ray({0, 2, 0}, {1, -1, 0}), kInfinity, &hits);
+    ASSERT_EQ(hits.size(), 2u);
+    EXPECT_EQ(hits[0].t, 1);
+    EXPECT_EQ(hits[1].t, 1);
+    for (const auto& h : hits) EXPECT_TRUE(is_finite(h.p) && is_finite(h.ng));
+}
+
+TEST(Box, InsideAndUv) {
+    auto prim = render::make_box(scene::Box{{1, 1, 1}, {-1, -1, -1}});
+    EXPECT_TRUE(prim->inside({0, 0, 0}));
+    EXPECT_TRUE(prim->inside({1, 1, 1}));
+    EXPECT_FALSE(prim->inside({1.01, 0, 0}));
+    LocalHit h;
+    ASSERT_TRUE(prim->intersect(ray({0, 0, -5}, {0, 0, 1}), kInfinity, &h));
+    // POV-Ray's SIDE_Z_0 face: u = 1 - x/4 with x normalized to [0, 1]: 1 - 0.5/4.
+    EXPECT_NEAR(h.uv.x, 1 - 0.125, 1e-15);
+    EXPECT_NEAR(h.uv.y, 1.0 / 3 + 0.5 / 3, 1e-15);
+}
+
+// ---- cylinder, cone, disc ------------------------------------------------------------------
+
+TEST(Cylinder, SideAndCaps) {
+    scene::Cylinder c{{0, 0, 0}, {0, 2, 0}, 1, false};
+    auto g = build_one(c);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({-5, 1, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 4, 1e-14);
+    expect_vec(h.ng, {-1, 0, 0}, 1e-14);
+    ASSERT_TRUE(g->intersect(ray({0.5, 5, 0}, {0, -1, 0}), &h));
+    EXPECT_NEAR(h.t, 3, 1e-14);
+    expect_vec(h.ng, {0, 1, 0}, 1e-14);
+    ASSERT_TRUE(g->intersect(ray({0.5, -5, 0.1}, {0, 1, 0}), &h));
+    EXPECT_NEAR(h.t, 5, 1e-14);
+    expect_vec(h.ng, {0, -1, 0}, 1e-14);
+    // From inside: the far side.
+    ASSERT_TRUE(g->intersect(ray({0, 1, 0}, {0, 0, 1}), &h));
+    EXPECT_NEAR(h.t, 1, 1e-14);
+    expect_vec(h.ng, {0, 0, 1}, 1e-14);
+}
+
+TEST(Cylinder, OpenHasNoCaps) {
+    scene::Cylinder c{{0, 0, 0}, {0, 2, 0}, 1, true};
+    auto g = build_one(c);
+    Hit h;
+    EXPECT_FALSE(g->intersect(ray({0.5, 5, 0}, {0, -1, 0}), &h));
+    // Slanted ray through the open top hits the inside wall.
+    ASSERT_TRUE(g->intersect(ray({0, 3, 0}, {1, -1, 0}), &h));
+    EXPECT_NEAR(h.t, 1, 1e-14);
+    expect_vec(h.ng, {1, 0, 0}, 1e-14);  // outward, facing away from the ray
+}
+
+TEST(Cylinder, ArbitraryAxis) {
+    Vec3 a(1, 1, 1), b(3, 4, 5);
+    scene::Cylinder c{a, b, 0.5, false};
+    auto g = build_one(c);
+    Vec3 axis = normalize(b - a);
+    Vec3 perp = normalize(cross(axis, Vec3(0, 0, 1)));
+    Vec3 mid = (a + b) * 0.5;
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray(mid + perp * 10, -perp), &h));
+    EXPECT_NEAR(h.t, 9.5, 1e-12);
+    expect_vec(h.ng, perp, 1e-12);
+    // Along the axis from beyond the cap.
+    ASSERT_TRUE(g->intersect(ray(b + axis * 2, -axis), &h));
+    EXPECT_NEAR(h.t, 2, 1e-12);
+    expect_vec(h.ng, axis, 1e-12);
+}
+
+TEST(Cone, SideApexAndBase) {
+    scene::Cone c{{0, 0, 0}, 1, {0, 1, 0}, 0, false};
+    auto g = build_one(c);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({-5, 0.5, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 4.5, 1e-14);
+    expect_vec(h.ng, normalize(Vec3(-1, 1, 0)), 1e-14);
+    ASSERT_TRUE(g->intersect(ray({0.2, -5, 0}, {0, 1, 0}), &h));
+    EXPECT_NEAR(h.t, 5, 1e-14);
+    expect_vec(h.ng, {0, -1, 0}, 1e-14);
+    ASSERT_TRUE(g->intersect(ray({0, 5, 0}, {0, -1, 0}), &h));  // the apex
+    EXPECT_NEAR(h.t, 4, 1e-9);
+    EXPECT_TRUE(finite_hit(h));
+    EXPECT_FALSE(g->intersect(ray({-5, 1.01, 0}, {1, 0, 0}), &h));
+}
+
+TEST(Cone, Frustum) {
+    // Radius 2 at y = 0 to radius 1 at y = 2: at y = 1 radius 1.5.
+    scene::Cone c{{0, 0, 0}, 2, {0, 2, 0}, 1, true};
+    auto g = build_one(c);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0, 1, -5}, {0, 0, 1}), &h));
+    EXPECT_NEAR(h.t, 3.5, 1e-14);
+    expect_vec(h.ng, normalize(Vec3(0, 0.5, -1)), 1e-14);
+    EXPECT_FALSE(g->intersect(ray({0.1, 5, 0}, {0, -1, 0}), &h));  // open
+}
+
+TEST(Disc, RingAndHole) {
+    scene::Disc d{{0, 1, 0}, {0, 2, 0}, 2, 1};
+    auto g = build_one(d);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({1.5, 5, 0}, {0, -1, 0}), &h));
+    EXPECT_NEAR(h.t, 4, 1e-14);
+    expect_vec(h.ng, {0, 1, 0}, 1e-14);
+    EXPECT_FALSE(g->intersect(ray({0.5, 5, 0}, {0, -1, 0}), &h));
+    EXPECT_FALSE(g->intersect(ray({2.5, 5, 0}, {0, -1, 0}), &h));
+    ASSERT_TRUE(g->intersect(ray({0, -5, -1.5}, {0, 1, 0}), &h));  // from below
+    expect_vec(h.ng, {0, 1, 0}, 1e-14);
+}
+
+// ---- torus -------------------------------------------------------------------------------
+
+TEST(Torus, FourHitsAlongX) {
+    auto prim = render::make_torus(scene::Torus{2, 0.5, false});
+    std::vector<LocalHit> hits;
+    prim->intersect_all(ray({-5, 0, 0}, {1, 0, 0}), kInfinity, &hits);
+    ASSERT_EQ(hits.size(), 4u);
+    const double expect[] = {2.5, 3.5, 6.5, 7.5};
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(hits[i].t, expect[i], 1e-13);
+    expect_vec(hits[0].ng, {-1, 0, 0}, 1e-13);
+    expect_vec(hits[1].ng, {1, 0, 0}, 1e-13);
+    EXPECT_TRUE(prim->inside({2, 0, 0}));
+    EXPECT_FALSE(prim->inside({0, 0, 0}));
+}
+
+TEST(Torus, TopOfTubeAndScaledDirection) {
+    auto g = build_one(scene::Torus{2, 0.5, false});
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0, 5, 2}, {0, -3, 0}), &h));
+    EXPECT_NEAR(h.t, 1.5, 1e-14);
+    expect_vec(h.ng, {0, 1, 0}, 1e-13);
+}
+
+// Near-tangent rays over the top of the tube (y -> 0.5 from below) must keep both hits: the
+// chord length follows the closed form 2 sqrt(r^2 - y^2) per tube crossing.
+TEST(Torus, SilhouetteRaysKeepTheirHits) {
+    auto prim = render::make_torus(scene::Torus{2, 0.5, false});
+    for (double gap : {1e-2, 1e-4, 1e-6, 1e-8, 1e-10}) {
+        double y = 0.5 - gap;
+        std::vector<LocalHit> hits;
+        prim->intersect_all(ray({-5, y, 0}, {1, 0, 0}), kInfinity, &hits);
+        ASSERT_EQ(hits.size(), 4u) << gap;
+        double half = std::sqrt(0.25 - y * y);
+        EXPECT_NEAR(hits[0].t, 3 - half, 1e-7) << gap;
+        EXPECT_NEAR(hits[1].t, 3 + half, 1e-7) << gap;
+        for (const auto& hh : hits) EXPECT_TRUE(is_finite(hh.p) && is_finite(hh.ng));
+    }
+    std::vector<LocalHit> hits;
+    prim->intersect_all(ray({-5, 0.5 + 1e-9, 0}, {1, 0, 0}), kInfinity, &hits);
+    EXPECT_EQ(hits.size(), 0u);
+}
+
+TEST(Torus, RandomRaysLandOnTheSurface) {
+    std::mt19937_64 rng(4);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (double scale : {1e-3, 1.0, 1e3}) {
+        auto prim = render::make_torus(scene::Torus{2 * scale, 0.7 * scale, false});
+        int hits_seen = 0;
+        for (int i = 0; i < 3000; ++i) {
+            Vec3 o(u(rng) * 6 * scale, u(rng) * 6 * scale, u(rng) * 6 * scale);
+            Vec3 target(u(rng) * 2.7 * scale, u(rng) * 0.7 * scale, u(rng) * 2.7 * scale);
+            std::vector<LocalHit> hits;
+            prim->intersect_all(ray(o, target - o), kInfinity, &hits);
+            for (const auto& h : hits) {
+                ++hits_seen;
+                double w = std::sqrt(h.p.x * h.p.x + h.p.z * h.p.z) - 2 * scale;
+                double dist = std::fabs(std::sqrt(w * w + h.p.y * h.p.y) - 0.7 * scale);
+                ASSERT_LE(dist, 1e-12 * scale);
+                // The point the ray parameter gives is on the surface too.
+                Vec3 q = o + (target - o) * h.t;
+                ASSERT_LE(length(q - h.p), 1e-9 * scale);
+            }
+        }
+        EXPECT_GT(hits_seen, 1000);
+    }
+}
+
+// ---- triangles ---------------------------------------------------------------------------
+
+TEST(Triangle, ClosedFormHit) {
+    scene::Triangle tri{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}};
+    auto g = build_one(tri);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0.25, 0.25, 2}, {0, 0, -1}), &h));
+    EXPECT_DOUBLE_EQ(h.t, 2);
+    expect_vec(h.p, {0.25, 0.25, 0}, 1e-15);
+    expect_vec(h.ng, {0, 0, 1}, 0);
+    EXPECT_FALSE(g->intersect(ray({0.6, 0.6, 2}, {0, 0, -1}), &h));
+}
+
+TEST(SmoothTriangle, InterpolatedNormalOnNgSide) {
+    scene::SmoothTriangle tri{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+                              {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}};
+    auto g = build_one(tri);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0.5, 0, 2}, {0, 0, -1}), &h));
+    expect_vec(h.n, normalize(Vec3(0.5, 0, 1)), 1e-14);
+    // Vertex normals on the other side are flipped to ng's side.
+    scene::SmoothTriangle flip{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+                               {{0, 0, -1}, {0, 0, -1}, {0, 0, -1}}};
+    g = build_one(flip);
+    ASSERT_TRUE(g->intersect(ray({0.2, 0.2, 2}, {0, 0, -1}), &h));
+    expect_vec(h.n, {0, 0, 1}, 0);
+}
+
+// VALIDATION.md case 6: grazing and edge-on triangles: no NaN, barycentrics in [0, 1].
+TEST(Triangle, GrazingAndEdgeOn) {
+    Vec3 p[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    int hits = 0;
+    for (double dz : {0.0, 1e-7, -1e-7, 1e-12, -1e-12}) {
+        for (double y0 : {0.0, 0.1, 0.5, 1.0}) {
+            render::Ray r{{-1, y0, 0}, {1, 0, dz}, kInfinity};
+            r.origin.z = -dz;  // crosses z = 0 at x = 0
+            render::RayShear s(r);
+            render::TriangleHit th;
+            if (render::intersect_triangle(s, p[0], p[1], p[2], kInfinity, &th)) {
+                ++hits;
+                ASSERT_TRUE(std::isfinite(th.t));
+                for (double b : th.b) {
+                    ASSERT_GE(b, 0);
+                    ASSERT_LE(b, 1);
+                }
+            }
+            // In the plane itself (dz = 0): edge-on, no hit and no NaN.
+            if (dz == 0) EXPECT_FALSE(render::intersect_triangle(s, p[0], p[1], p[2],
+                                                                  kInfinity, &th));
+        }
+    }
+    EXPECT_GT(hits, 0);
+}
+
+// Rays through a shared edge or vertex of a fan never fall through (watertightness).
+TEST(Triangle, WatertightFan) {
+    scene::Mesh m;
+    const int k = 7;
+    m.positions.push_back({0, 0, 0});
+    for (int i = 0; i < k; ++i) {
+        double a = 2 * kPi * i / k;
+        m.positions.push_back({std::cos(a), std::sin(a), 0});
+    }
+    for (int i = 0; i < k; ++i) {
+        scene::MeshFace f;
+        f.v = {0, 1 + i, 1 + (i + 1) % k};
+        m.faces.push_back(f);
+    }
+    Diagnostics diag;
+    auto prim = render::make_mesh(m, diag);
+    ASSERT_TRUE(prim);
+    std::mt19937_64 rng(6);
+    std::uniform_real_distribution<double> u(-3, 3);
+    int leaks = 0;
+    for (int i = 0; i < 20000; ++i) {
+        // Aim at the centre vertex or at a point on a spoke edge.
+        Vec3 target = (i % 2) ? Vec3(0, 0, 0) : m.positions[1 + i % k] * (0.3 + 0.6 * (i % 5) / 5);
+        Vec3 o(u(rng), u(rng), 1 + std::fabs(u(rng)));
+        LocalHit h;
+        if (!prim->intersect(ray(o, target - o), kInfinity, &h)) ++leaks;
+    }
+    EXPECT_EQ(leaks, 0);
+}
+
+// ---- meshes ------------------------------------------------------------------------------
+
+scene::Mesh unit_square() {
+    scene::Mesh m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    m.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    scene::MeshFace a, b;
+    a.v = {0, 1, 2};
+    a.uv = {0, 1, 2};
+    b.v = {0, 2, 3};
+    b.uv = {0, 2, 3};
+    b.material = 2;
+    m.faces = {a, b};
+    return m;
+}
+
+TEST(Mesh, UvAndPerFaceMaterial) {
+    scene::Scene s = test::scene_of({test::object(scene::MeshRef{0}, {}, 1)});
+    s.meshes.push_back(unit_square());
+    auto g = test::build(s);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0.75, 0.25, 1}, {0, 0, -1}), &h));
+    EXPECT_EQ(h.material, 1);  // face without its own: the object's
+    EXPECT_TRUE(h.has_uv);
+    EXPECT_NEAR(h.uv.x, 0.75, 1e-15);
+    EXPECT_NEAR(h.uv.y, 0.25, 1e-15);
+    ASSERT_TRUE(g->intersect(ray({0.25, 0.75, 1}, {0, 0, -1}), &h));
+    EXPECT_EQ(h.material, 2);
+}
+
+TEST(Mesh, InterpolatedNormals) {
+    scene::Mesh m = unit_square();
+    m.normals = {{0, 0, 1}, {1, 0, 1}};
+    m.faces[0].n = {0, 1, 1};
+    Diagnostics diag;
+    auto prim = render::make_mesh(m, diag);
+    LocalHit h;
+    ASSERT_TRUE(prim->intersect(ray({1, 0.5, 1}, {0, 0, -1}), kInfinity, &h));
+    expect_vec(h.n, normalize(Vec3(1, 0, 1)), 1e-14);
+}
+
+TEST(Mesh, DegenerateFacesSkippedWithWarning) {
+    scene::Mesh m = unit_square();
+    m.positions.push_back({kInfinity, 0, 0});
+    m.positions.push_back({std::nan(""), 0, 0});
+    scene::MeshFace zero, inf, nan;
+    zero.v = {0, 1, 1};
+    inf.v = {0, 1, 4};
+    nan.v = {5, 1, 2};
+    m.faces.push_back(zero);
+    m.faces.push_back(inf);
+    m.faces.push_back(nan);
+    Diagnostics diag;
+    auto prim = render::make_mesh(m, diag);
+    ASSERT_TRUE(prim);
+    EXPECT_GE(diag.warning_count(), 1);
+    LocalHit h;
+    EXPECT_TRUE(prim->intersect(ray({0.5, 0.4, 1}, {0, 0, -1}), kInfinity, &h));
+    EXPECT_TRUE(is_finite(prim->bounds().lo) && is_finite(prim->bounds().hi));
+}
+
+TEST(Mesh, EmptyMeshIsSkippedNotFatal) {
+    scene::Scene s = test::scene_of({test::object(scene::MeshRef{0})});
+    s.meshes.emplace_back();
+    Diagnostics diag;
+    auto g = render::build_geometry(s, scene::analyze(s), diag);
+    EXPECT_GE(diag.warning_count(), 1);
+    Hit h;
+    EXPECT_FALSE(g->intersect(ray({0, 0, 1}, {0, 0, -1}), &h));
+}
+
+TEST(Mesh, InsideVectorParity) {
+    // A closed unit cube from 12 triangles.
+    scene::Mesh m;
+    for (int i = 0; i < 8; ++i) m.positions.push_back({double(i & 1), double(i >> 1 & 1),
+                                                        double(i >> 2 & 1)});
+    const int quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                             {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+    for (const auto& q : quads) {
+        scene::MeshFace a, b;
+        a.v = {q[0], q[1], q[2]};
+        b.v = {q[0], q[2], q[3]};
+        m.faces.push_back(a);
+        m.faces.push_back(b);
+    }
+    Diagnostics diag;
+    auto without = render::make_mesh(m, diag);
+    EXPECT_FALSE(without->inside({0.5, 0.5, 0.5}));
+    m.has_inside_vector = true;
+    m.inside_vector = {0.3, 0.2, 1};
+    auto with = render::make_mesh(m, diag);
+    EXPECT_TRUE(with->inside({0.5, 0.5, 0.5}));
+    EXPECT_TRUE(with->inside({0.1, 0.9, 0.2}));
+    EXPECT_FALSE(with->inside({1.5, 0.5, 0.5}));
+    EXPECT_FALSE(with->inside({0.5, 0.5, -0.5}));
+}
+
+}  // namespace
+}  // namespace glint
