@@ -1,9 +1,73 @@
 #include "render/render.h"
 
+#include <chrono>
+#include <memory>
+
 #include "core/error.h"
+#include "render/camera.h"
+#include "render/geometry.h"
+#include "render/integrators/driver.h"
+#include "render/integrators/whitted.h"
+#include "render/textures/image_texture.h"
 
 namespace glint::render {
-RenderResult render(const scene::Scene&, const RenderOptions&, Diagnostics&) {
-    throw Error(ErrorKind::Render, {}, "renderer not written yet");
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
+
+// Features the Whitted integrator does not implement yet are announced, never silently
+// rendered as something else.
+void warn_unsupported(const scene::Scene& scene, const scene::Features& f, Diagnostics& diag) {
+    if (f.area_lights) {
+        for (const scene::Light& l : scene.lights)
+            if (l.area)
+                diag.warning(l.loc, "area_light is not supported yet; rendered as a point light");
+    }
+    if (f.normals) {
+        for (const scene::Material& m : scene.materials)
+            if (m.texture.normal.kind != scene::PatternKind::Plain) {
+                diag.warning(m.texture.normal.loc,
+                             "normal perturbation is not supported yet; the surface is smooth");
+                break;
+            }
+    }
+    for (const scene::Material& m : scene.materials) {
+        if (m.texture.pigment.params.turbulence) {
+            diag.warning(m.texture.pigment.loc, "turbulence is not supported yet; ignored");
+            break;
+        }
+    }
+}
+
+}  // namespace
+
+RenderResult render(const scene::Scene& scene, const RenderOptions& options, Diagnostics& diag) {
+    auto t0 = std::chrono::steady_clock::now();
+    RenderResult result;
+    result.features = scene::analyze(scene);
+    const scene::Features& features = result.features;
+    warn_unsupported(scene, features, diag);
+
+    std::unique_ptr<Geometry> geometry = build_geometry(scene, features, diag);
+    // The texture system is opened only for scenes with image maps.
+    std::unique_ptr<TextureCache> textures;
+    if (features.image_textures) {
+        textures = std::make_unique<TextureCache>(image_gamma(scene));
+        textures->preload(scene);
+    }
+    Whitted whitted(scene, features, *geometry, textures.get());
+    Camera camera(scene.camera, options.width, options.height);
+    DriverSettings settings;
+    if (scene.global.assumed_gamma) settings.working_gamma = *scene.global.assumed_gamma;
+    result.prepare_seconds = seconds_since(t0);
+
+    auto t1 = std::chrono::steady_clock::now();
+    RadianceFn radiance = [&whitted](const Ray& ray) { return whitted.li(ray); };
+    result.image = run_tiles(camera, options, settings, radiance);
+    result.render_seconds = seconds_since(t1);
+    return result;
+}
+
 }  // namespace glint::render

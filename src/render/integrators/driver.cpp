@@ -1,0 +1,185 @@
+#include "render/integrators/driver.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <cfloat>
+#include <cmath>
+#include <vector>
+
+#include "core/error.h"
+
+namespace glint::render {
+namespace {
+
+// The film accepts only finite, non-negative values.
+float sanitize(double v) {
+    if (!(v > 0.0)) return 0.0f;  // negative or NaN
+    if (v > FLT_MAX) return FLT_MAX;
+    return static_cast<float>(v);
+}
+
+struct Tile {
+    int x0, y0, x1, y1;  // [x0, x1) x [y0, y1)
+};
+
+class TileRenderer {
+public:
+    TileRenderer(const Camera& camera, const RenderOptions& options,
+                 const DriverSettings& settings, const RadianceFn& radiance, Image* image)
+        : camera_(camera), opt_(options), settings_(settings), radiance_(radiance),
+          image_(image) {}
+
+    void render(const Tile& t) const {
+        switch (opt_.aa) {
+            case AaMode::None: none(t); break;
+            case AaMode::Grid: grid(t); break;
+            case AaMode::Adaptive: adaptive(t); break;
+        }
+    }
+
+private:
+    Color sample(double x, double y) const { return radiance_(camera_.generate(x, y)); }
+
+    void store(int x, int y, const Color& c) const {
+        float* p = image_->pixel(x, y);
+        p[0] = sanitize(c.r);
+        p[1] = sanitize(c.g);
+        p[2] = sanitize(c.b);
+        p[3] = 1.0f;
+    }
+
+    void none(const Tile& t) const {
+        for (int y = t.y0; y < t.y1; ++y)
+            for (int x = t.x0; x < t.x1; ++x) store(x, y, sample(x, y));
+    }
+
+    void grid(const Tile& t) const {
+        int n = std::max(1, opt_.grid_n);
+        for (int y = t.y0; y < t.y1; ++y) {
+            for (int x = t.x0; x < t.x1; ++x) {
+                Color sum;
+                for (int j = 0; j < n; ++j)
+                    for (int i = 0; i < n; ++i)
+                        sum += sample(x + (i + 0.5) / n - 0.5, y + (j + 0.5) / n - 0.5);
+                store(x, y, sum / static_cast<double>(n * n));
+            }
+        }
+    }
+
+    // Color as compared by adaptive AA: linear, then encoded with antialias_gamma 2.5.
+    Color aa_encode(const Color& c) const {
+        auto enc = [&](double v) {
+            if (!(v > 0.0)) return 0.0;
+            if (settings_.working_gamma != 1.0) v = std::pow(v, settings_.working_gamma);
+            return std::pow(v, 1.0 / 2.5);
+        };
+        return Color(enc(c.r), enc(c.g), enc(c.b));
+    }
+
+    bool differs(const Color& a, const Color& b) const {
+        Color ea = aa_encode(a), eb = aa_encode(b);
+        double d = std::fabs(ea.r - eb.r) + std::fabs(ea.g - eb.g) + std::fabs(ea.b - eb.b);
+        return d >= opt_.aa_threshold;
+    }
+
+    // SupersampleOnePixel: aa_depth x aa_depth grid plus the centre sample, averaged.
+    void supersample(double x, double y, Color* col) const {
+        int depth = std::max(1, opt_.aa_depth);
+        double step = 1.0 / depth;
+        double range = 0.5 - step * 0.5;
+        for (int j = 0; j < depth; ++j)
+            for (int i = 0; i < depth; ++i) *col += sample(x - range + i * step, y - range + j * step);
+        *col = *col / static_cast<double>(depth * depth + 1);
+    }
+
+    // POV-Ray's sampling method 1 (tracetask.cpp NonAdaptiveSupersamplingM1): each pixel is
+    // compared with its left and top neighbours inside the block (plus a border row and
+    // column traced but never supersampled); differing pixels are supersampled once.
+    void adaptive(const Tile& t) const {
+        int w = t.x1 - t.x0 + 1, h = t.y1 - t.y0 + 1;
+        std::vector<Color> px(static_cast<size_t>(w) * h);
+        std::vector<char> done(static_cast<size_t>(w) * h, 0);
+        auto at = [&](int x, int y) -> size_t { return (y - t.y0 + 1) * w + (x - t.x0 + 1); };
+        for (int x = t.x0; x < t.x1; ++x) {
+            px[at(x, t.y0 - 1)] = sample(x, t.y0 - 1);
+            done[at(x, t.y0 - 1)] = 1;
+        }
+        for (int y = t.y0; y < t.y1; ++y) {
+            px[at(t.x0 - 1, y)] = sample(t.x0 - 1, y);
+            done[at(t.x0 - 1, y)] = 1;
+            for (int x = t.x0; x < t.x1; ++x) {
+                px[at(x, y)] = sample(x, y);
+                bool sample_left = !done[at(x - 1, y)];
+                bool sample_top = !done[at(x, y - 1)];
+                bool left_diff = differs(px[at(x - 1, y)], px[at(x, y)]);
+                bool top_diff = differs(px[at(x, y - 1)], px[at(x, y)]);
+                sample_left = sample_left && left_diff;
+                sample_top = sample_top && top_diff;
+                bool sample_cur = left_diff || top_diff;
+                if (sample_left) supersample(x - 1, y, &px[at(x - 1, y)]);
+                if (sample_top) supersample(x, y - 1, &px[at(x, y - 1)]);
+                if (sample_cur) supersample(x, y, &px[at(x, y)]);
+                if (sample_left) done[at(x - 1, y)] = 1;
+                if (sample_top) done[at(x, y - 1)] = 1;
+                if (sample_cur) done[at(x, y)] = 1;
+            }
+        }
+        for (int y = t.y0; y < t.y1; ++y)
+            for (int x = t.x0; x < t.x1; ++x) store(x, y, px[at(x, y)]);
+    }
+
+    const Camera& camera_;
+    const RenderOptions& opt_;
+    const DriverSettings& settings_;
+    const RadianceFn& radiance_;
+    Image* image_;
+};
+
+}  // namespace
+
+Image run_tiles(const Camera& camera, const RenderOptions& options,
+                const DriverSettings& settings, const RadianceFn& radiance) {
+    if (options.width <= 0 || options.height <= 0) {
+        throw Error(ErrorKind::Usage, {}, "image size must be positive");
+    }
+    Image image;
+    image.width = options.width;
+    image.height = options.height;
+    image.rgba.assign(static_cast<size_t>(options.width) * options.height * 4, 0.0f);
+
+    std::vector<Tile> tiles;
+    for (int y = 0; y < options.height; y += kBlockSize)
+        for (int x = 0; x < options.width; x += kBlockSize)
+            tiles.push_back({x, y, std::min(x + kBlockSize, options.width),
+                             std::min(y + kBlockSize, options.height)});
+
+    TileRenderer renderer(camera, options, settings, radiance, &image);
+    std::atomic<size_t> finished{0};
+    std::atomic<bool> cancelled{false};
+    auto body = [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t i = range.begin(); i != range.end(); ++i) {
+            if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
+                cancelled = true;
+                return;
+            }
+            renderer.render(tiles[i]);
+            size_t n = ++finished;
+            if (options.progress) options.progress(static_cast<double>(n) / tiles.size());
+        }
+    };
+    int threads = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), body,
+                          tbb::simple_partitioner());
+    });
+    if (cancelled || (options.cancel && options.cancel->load())) {
+        throw Error(ErrorKind::Cancelled, {}, "render cancelled");
+    }
+    return image;
+}
+
+}  // namespace glint::render

@@ -1,0 +1,32 @@
+// The tile driver: splits the image into POV-Ray-sized blocks, renders them on oneTBB worker
+// threads, reports progress, honours cancellation and applies anti-aliasing. It only knows a
+// per-ray radiance function, so any integrator (Whitted now, the path tracer later) plugs in.
+// Every pixel depends only on its own samples (and, for adaptive AA, on its fixed block), so
+// the image is bit-identical whatever the thread count.
+#pragma once
+
+#include <functional>
+
+#include "render/camera.h"
+#include "render/image.h"
+#include "render/render.h"
+
+namespace glint::render {
+
+// Radiance along a camera ray. Must be thread-safe (called concurrently).
+using RadianceFn = std::function<Color(const Ray& ray)>;
+
+// POV-Ray's render_block_size default: adaptive AA compares pixels within such blocks.
+constexpr int kBlockSize = 32;
+
+struct DriverSettings {
+    // Working gamma of the colors the radiance function returns: adaptive AA compares colors
+    // after POV-Ray's antialias_gamma (2.5) encoding of linear values.
+    double working_gamma = 1.0;
+};
+
+// Throws Error(ErrorKind::Cancelled) when options.cancel is set during the render.
+Image run_tiles(const Camera& camera, const RenderOptions& options,
+                const DriverSettings& settings, const RadianceFn& radiance);
+
+}  // namespace glint::render

@@ -1,0 +1,386 @@
+#include "render/integrators/whitted.h"
+
+#include <cmath>
+
+#include "core/float.h"
+
+namespace glint::render {
+namespace {
+
+constexpr double kPovEpsilon = 1.0e-10;  // configbackend.h EPSILON
+// Shadow rays end this fraction short of the light so the light's own position never counts.
+constexpr double kShadowEnd = 1.0 - 1.0e-9;
+
+using scene::ColorFT;
+
+// POV-Ray's greyscale weights (base/types.h RED/GREEN/BLUE_INTENSITY).
+double greyscale(const Color& c) { return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b; }
+
+// Light that passes a layer: rgb * filter + transmit (Colour::rgbTransm).
+Color rgb_transm(const ColorFT& c) {
+    return Color(c.rgb.r * c.filter + c.transmit, c.rgb.g * c.filter + c.transmit,
+                 c.rgb.b * c.filter + c.transmit);
+}
+
+bool pigment_can_be_transparent(const scene::Pigment& p) {
+    if (!p.color.opaque()) return true;
+    if (p.kind == scene::PatternKind::ImageMap) return true;  // alpha, filter/transmit all
+    for (const scene::ColorMapEntry& e : p.color_map)
+        if (!e.color.opaque()) return true;
+    for (const scene::Pigment& e : p.entries)
+        if (pigment_can_be_transparent(e)) return true;
+    return false;
+}
+
+PatternPoint pattern_point(const Hit& hit) { return {hit.p, hit.uv, hit.has_uv}; }
+
+}  // namespace
+
+bool Whitted::Interiors::contains(int obj) const {
+    for (int i = 0; i < count; ++i)
+        if (object[i] == obj) return true;
+    return false;
+}
+
+bool Whitted::Interiors::remove(int obj) {
+    for (int i = count - 1; i >= 0; --i) {
+        if (object[i] == obj) {
+            for (int j = i; j + 1 < count; ++j) {
+                object[j] = object[j + 1];
+                ior[j] = ior[j + 1];
+            }
+            --count;
+            return true;
+        }
+    }
+    return false;
+}
+
+void Whitted::Interiors::append(int obj, double value) {
+    if (count == kMax) return;  // deeper nesting than any sane scene: ignore the innermost
+    object[count] = obj;
+    ior[count] = value;
+    ++count;
+}
+
+Whitted::Whitted(const scene::Scene& scene, const scene::Features& features,
+                 const Geometry& geometry, const TextureCache* textures)
+    : scene_(scene),
+      features_(features),
+      geometry_(geometry),
+      pigments_(textures),
+      lights_(prepare_lights(scene.lights)),
+      max_level_(scene.global.max_trace_level),
+      adc_bailout_(scene.global.adc_bailout),
+      legacy_(scene.version < 3.7) {
+    finishes_.reserve(scene.materials.size());
+    for (const scene::Material& m : scene.materials) {
+        finishes_.emplace_back(m.texture.finish);
+        opaque_.push_back(!pigment_can_be_transparent(m.texture.pigment));
+    }
+}
+
+Color Whitted::li(const Ray& ray) const {
+    RayState state;
+    state.primary = true;
+    return trace(ray, 1.0, state, false);
+}
+
+bool Whitted::find_hit(const Ray& ray, const RayState& state, Hit* hit) const {
+    // NoSomethingFlagRayObjectCondition: image rays skip no_image objects, reflection rays
+    // skip no_reflection ones. Skipped surfaces are stepped over.
+    uint32_t skip = 0;
+    if (state.image_ray()) skip |= kNoImage;
+    if (state.reflection) skip |= kNoReflection;
+    Ray r = ray;
+    double travelled = 0;
+    for (int i = 0; i < 64; ++i) {
+        if (!geometry_.intersect(r, hit)) return false;
+        if (!(hit->flags & skip)) {
+            hit->t += travelled;
+            return true;
+        }
+        Vec3 origin = offset_ray_origin(hit->p, hit->p_error, hit->ng, r.dir);
+        travelled += length(origin - r.origin) / length(r.dir);
+        r.tmax = r.tmax - hit->t;
+        r.origin = origin;
+        if (!(r.tmax > 0)) return false;
+    }
+    return false;
+}
+
+Color Whitted::trace(const Ray& ray, double weight, const RayState& in, bool continued) const {
+    // TraceRay: max_trace_level and adc_bailout end the recursion with black.
+    if (in.level >= max_level_ || weight < adc_bailout_) return Color();
+    Hit hit;
+    bool found = find_hit(ray, in, &hit);
+    RayState state = in;
+    if (!continued) ++state.level;
+    if (!found) return sky(ray.dir);
+    return shade(ray, hit, weight, state);
+}
+
+Color Whitted::fade(const scene::Interior& interior, double depth) const {
+    // ComputeLightedTexture: fade_power >= 1000 means exponential attenuation.
+    if (interior.fade_power >= 1000) {
+        double d = depth / interior.fade_distance;
+        return Color(std::exp(-(1.0 - interior.fade_color.r) * d),
+                     std::exp(-(1.0 - interior.fade_color.g) * d),
+                     std::exp(-(1.0 - interior.fade_color.b) * d));
+    }
+    double att = 1.0 + std::pow(depth / interior.fade_distance, interior.fade_power);
+    return interior.fade_color + (Color(1.0) - interior.fade_color) / att;
+}
+
+double Whitted::relative_ior(const RayState& state, int object, double ior) const {
+    // ComputeRelativeIOR (used by fresnel reflection).
+    const Interiors& in = state.interiors;
+    if (in.count == 0) return ior;
+    if (in.contains(object)) {
+        if (in.count == 1) return 1.0 / ior;
+        return in.ior[in.count - 1] / ior;
+    }
+    return ior / in.ior[in.count - 1];
+}
+
+Color Whitted::shade(const Ray& ray, const Hit& hit, double weight, const RayState& state) const {
+    if (hit.material < 0 || hit.material >= static_cast<int>(scene_.materials.size()))
+        return Color();
+    const scene::Material& mat = scene_.materials[hit.material];
+    const ClassicFinish& f = finishes_[hit.material];
+
+    // ComputeTextureColour: the normal faces the incoming ray.
+    Vec3 n = hit.n;
+    if (dot(n, ray.dir) > 0.0) n = -n;
+
+    ColorFT pig;
+    bool colour_found = pigments_.evaluate(mat.texture.pigment, pattern_point(hit), &pig);
+
+    // ComputeLightedTexture, single layer.
+    double refl_weight = weight;
+    double cos_incidence = -dot(ray.dir, n);
+    Color reflec = f.reflects()
+                       ? reflectivity(f, cos_incidence,
+                                      relative_ior(state, hit.object, mat.interior.ior),
+                                      &refl_weight)
+                       : Color();
+    if (f.reflect_metallic != 0.0) {
+        double x = std::fabs(std::acos(std::clamp(cos_incidence, -1.0, 1.0))) / (kPi / 2);
+        double fr = std::min(1.0, std::max(0.0, 0.014567225 / ((x - 1.12) * (x - 1.12)) -
+                                                    0.011612903));
+        double k = f.reflect_metallic * (1.0 - fr);
+        reflec = Color(reflec.r * (1.0 + k * (pig.rgb.r - 1.0)),
+                       reflec.g * (1.0 + k * (pig.rgb.g - 1.0)),
+                       reflec.b * (1.0 + k * (pig.rgb.b - 1.0)));
+    }
+    // The layer's own brightness is reduced by its transparency; 3.6 scenes keep the old
+    // (bogus, but compatible) formula.
+    double att = legacy_ ? 1.0 - (pig.filter * pig.rgb.max() + pig.transmit)
+                         : 1.0 - pig.filter - pig.transmit;
+
+    Color result = pig.rgb * f.ambient * scene_.global.ambient_light * att;
+    result += pig.rgb * f.emission * att;
+
+    if (features_.lights && (f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0)) {
+        bool double_illuminate = (hit.flags & kDoubleIlluminate) != 0;
+        for (const PreparedLight& light : lights_) {
+            LightSample ls;
+            if (!light.sample(hit.p, &ls)) continue;
+            // Light on the far side of the surface from the viewer.
+            if (!double_illuminate && dot(n, ls.dir) < kPovEpsilon) continue;
+            Color lc = ls.color;
+            if (features_.shadows && light.casts_shadows()) {
+                lc = lc * shadow_filter(hit.p, hit, ls, state);
+                if (!(std::fabs(lc.r) > kPovEpsilon || std::fabs(lc.g) > kPovEpsilon ||
+                      std::fabs(lc.b) > kPovEpsilon))
+                    continue;
+            }
+            result += diffuse_term(f, n, ls.dir, pig.rgb, lc, att);
+            if (f.phong > 0.0) result += phong_term(f, n, ls.dir, ray.dir, pig.rgb, lc);
+            if (f.specular > 0.0) result += specular_term(f, n, ls.dir, ray.dir, pig.rgb, lc);
+        }
+    }
+
+    // New filter color and remaining translucency.
+    Color fil_col(1.0);
+    if (colour_found) {
+        fil_col = rgb_transm(pig);
+        if (f.conserve_energy && f.reflects()) {
+            fil_col *= Color(std::min(1.0, 1.0 - reflec.r), std::min(1.0, 1.0 - reflec.g),
+                             std::min(1.0, 1.0 - reflec.b));
+        }
+    }
+    double trans = std::min(1.0, std::fabs(greyscale(fil_col)));
+
+    bool tir = false;
+    if (trans > adc_bailout_ && features_.secondary_rays()) {
+        double w1 = std::max(std::fabs(fil_col.r), std::max(std::fabs(fil_col.g),
+                                                            std::fabs(fil_col.b)));
+        Color rfr;
+        tir = refract(ray, hit, n, weight * w1, state, &rfr);
+        Color att_col(1.0);
+        const scene::Interior& interior = mat.interior;
+        if (state.interiors.contains(hit.object) && std::fabs(interior.fade_distance) > kPovEpsilon)
+            att_col = fade(interior, hit.t);
+        if (tir || !colour_found)
+            result += att_col * rfr;
+        else
+            result += att_col * rfr * fil_col;
+    }
+
+    // Reflection; after total internal reflection the mirror ray was already traced.
+    if (!tir && !reflec.is_black()) {
+        Color rfl = reflect(ray, hit, n, refl_weight, state);
+        if (f.reflect_exponent != 1.0) {
+            rfl = Color(std::pow(rfl.r, f.reflect_exponent), std::pow(rfl.g, f.reflect_exponent),
+                        std::pow(rfl.b, f.reflect_exponent));
+        }
+        result += reflec * rfl;
+    }
+    return result;
+}
+
+Color Whitted::reflect(const Ray& ray, const Hit& hit, const Vec3& n, double weight,
+                       const RayState& state) const {
+    // ComputeReflection: mirror about the (unperturbed) normal.
+    Vec3 d = ray.dir + n * (-2.0 * dot(ray.dir, n));
+    d = normalize(d);
+    Ray r;
+    r.dir = d;
+    r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, d);
+    RayState next = state;
+    next.primary = false;
+    next.reflection = true;  // SetFlags(ReflectionRay, ray): refraction flag is kept
+    return trace(r, weight, next, false);
+}
+
+bool Whitted::refract(const Ray& ray, const Hit& hit, const Vec3& n, double weight,
+                      const RayState& state, Color* out) const {
+    const double ior_obj = scene_.materials[hit.material].interior.ior;
+    RayState next = state;
+    next.primary = false;
+    next.refraction = true;  // SetFlags(RefractionRay, ray): reflection flag is kept
+    Interiors& in = next.interiors;
+    // ComputeRefraction: relative ior from the interiors the ray traverses; nested objects
+    // count as outside their container, overlaps belong to the last one entered.
+    double ior;
+    if (in.count == 0) {
+        in.append(hit.object, ior_obj);
+        ior = 1.0 / ior_obj;
+    } else if (in.object[in.count - 1] == hit.object) {
+        in.remove(hit.object);
+        ior = in.count == 0 ? ior_obj : ior_obj / in.ior[in.count - 1];
+    } else if (in.remove(hit.object)) {
+        ior = 1.0;
+    } else {
+        ior = in.ior[in.count - 1] / ior_obj;
+        in.append(hit.object, ior_obj);
+    }
+
+    Ray r;
+    if (std::fabs(ior - 1.0) < kPovEpsilon) {
+        // Same medium on both sides: the ray continues without counting a trace level.
+        r.dir = ray.dir;
+        r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
+        *out = trace(r, weight, next, true);
+        return false;
+    }
+    // TraceRefractionRay (Heckbert's method); n faces the incoming ray.
+    double c = -dot(ray.dir, n);
+    double t = 1.0 + ior * ior * (c * c - 1.0);
+    if (t < 0.0) {
+        *out = reflect(ray, hit, n, weight, state);
+        return true;
+    }
+    t = ior * c - std::sqrt(t);
+    r.dir = normalize(ray.dir * ior + n * t);
+    r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
+    *out = trace(r, weight, next, false);
+    return false;
+}
+
+Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls,
+                             const RayState& eye) const {
+    const Vec3 target = p + ls.dir * ls.distance;
+    Ray r;
+    r.origin = offset_ray_origin(p, at.p_error, at.ng, ls.dir);
+    r.dir = target - r.origin;
+    r.tmax = kShadowEnd;
+    if (!features_.transparency) return geometry_.occluded(r) ? Color() : Color(1.0);
+
+    // TracePointLightShadowRay: walk through transparent objects, filtering the light.
+    Color colour(1.0);
+    for (int i = 0; i < 64; ++i) {
+        Hit hit;
+        if (!geometry_.intersect(r, &hit)) return colour;
+        if (!(hit.flags & kNoShadow)) {
+            if (hit.material < 0 || opaque_[hit.material]) return Color();
+            // ComputeShadowColour / ComputeShadowTexture.
+            const scene::Material& mat = scene_.materials[hit.material];
+            ColorFT pig;
+            Color filter(1.0);
+            if (pigments_.evaluate(mat.texture.pigment, pattern_point(hit), &pig))
+                filter = rgb_transm(pig);
+            const scene::Interior& interior = mat.interior;
+            // The shadow ray carries the eye ray's interiors (it is copied from it).
+            if (eye.interiors.contains(hit.object) && interior.fade_power > 0.0 &&
+                std::fabs(interior.fade_distance) > kPovEpsilon) {
+                filter *= fade(interior, hit.t * length(r.dir));
+            }
+            colour *= filter;
+            if (std::fabs(colour.r) < kPovEpsilon && std::fabs(colour.g) < kPovEpsilon &&
+                std::fabs(colour.b) < kPovEpsilon)
+                return Color();
+        }
+        r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
+        r.dir = target - r.origin;
+        r.tmax = kShadowEnd;
+        if (dot(r.dir, ls.dir) <= 0.0) return colour;
+    }
+    return colour;
+}
+
+Color Whitted::sky(const Vec3& dir) const {
+    const ColorFT& bg = scene_.background;
+    const scene::SkySphere* sky = scene_.sky_sphere ? &*scene_.sky_sphere : nullptr;
+    Vec3 d = normalize(dir);
+    if (legacy_) {
+        // ComputeSky for pre-3.7 scenes.
+        if (!sky || sky->pigments.empty()) return bg.rgb;
+        Vec3 p = sky->transform.is_identity() ? d : sky->transform.inverse_point(d);
+        Color col;
+        Color frgb(1.0);
+        double ff = 1.0, ft = 1.0;
+        double trans = 1.0;
+        for (int i = static_cast<int>(sky->pigments.size()) - 1; i >= 0; --i) {
+            ColorFT c;
+            pigments_.evaluate(sky->pigments[i], {p, {}, false}, &c);
+            double att = trans * (1.0 - c.filter - c.transmit);
+            col += c.rgb * att;
+            frgb *= c.rgb;
+            ff *= c.filter;
+            ft *= c.transmit;
+            trans = std::fabs(ff) + std::fabs(ft);
+        }
+        col *= sky->emission;
+        return col + bg.rgb * (frgb * ff + Color(ft));
+    }
+    // 3.7: the sky sphere behaves like a layered texture over the background.
+    Color col;
+    Color fil(1.0);
+    if (sky && !sky->pigments.empty()) {
+        Vec3 p = sky->transform.is_identity() ? d : sky->transform.inverse_point(d);
+        for (int i = static_cast<int>(sky->pigments.size()) - 1; i >= 0; --i) {
+            ColorFT c;
+            pigments_.evaluate(sky->pigments[i], {p, {}, false}, &c);
+            double att = 1.0 - c.filter - c.transmit;
+            col += c.rgb * att * fil * sky->emission;
+            fil *= rgb_transm(c);
+        }
+    }
+    // Without an alpha channel the background's filter and transmit are ignored.
+    col += bg.rgb * fil;
+    return col;
+}
+
+}  // namespace glint::render

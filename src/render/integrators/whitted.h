@@ -1,0 +1,75 @@
+// The Whitted integrator: POV-Ray 3.7's classic lighting model (trace.cpp TraceRay,
+// ComputeLightedTexture, ComputeShadowColour, ComputeReflection/Refraction, ComputeSky) as one
+// per-ray function the tile driver calls. Prepared once per render; read-only while rendering.
+#pragma once
+
+#include <vector>
+
+#include "render/geometry.h"
+#include "render/lights/light.h"
+#include "render/materials/classic_finish.h"
+#include "render/textures/pigment.h"
+#include "scene/features.h"
+#include "scene/scene.h"
+
+namespace glint::render {
+
+class Whitted {
+public:
+    // `textures` may be null when the scene has no image maps. All references must outlive
+    // the integrator.
+    Whitted(const scene::Scene& scene, const scene::Features& features, const Geometry& geometry,
+            const TextureCache* textures);
+
+    // Radiance (in POV-Ray's working color space) arriving along a primary ray.
+    Color li(const Ray& ray) const;
+
+private:
+    // The objects a ray is inside, innermost last (POV-Ray's ray interior list); bounded so
+    // rays stay allocation-free.
+    struct Interiors {
+        static constexpr int kMax = 16;
+        int object[kMax];
+        double ior[kMax];
+        int count = 0;
+        bool contains(int obj) const;
+        bool remove(int obj);
+        void append(int obj, double ior);
+    };
+    // POV-Ray's Ray flags that decide no_image/no_reflection visibility.
+    struct RayState {
+        bool primary = false;
+        bool reflection = false;
+        bool refraction = false;
+        int level = 0;  // trace level before this ray (POV-Ray's ticket.traceLevel)
+        Interiors interiors;
+        bool image_ray() const { return primary || (refraction && !reflection); }
+    };
+
+    Color trace(const Ray& ray, double weight, const RayState& state, bool continued) const;
+    bool find_hit(const Ray& ray, const RayState& state, Hit* hit) const;
+    Color shade(const Ray& ray, const Hit& hit, double weight, const RayState& state) const;
+    Color shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls,
+                        const RayState& eye) const;
+    Color reflect(const Ray& ray, const Hit& hit, const Vec3& n, double weight,
+                  const RayState& state) const;
+    // Returns true on total internal reflection.
+    bool refract(const Ray& ray, const Hit& hit, const Vec3& n, double weight,
+                 const RayState& state, Color* out) const;
+    Color sky(const Vec3& dir) const;
+    Color fade(const scene::Interior& interior, double depth) const;
+    double relative_ior(const RayState& state, int object, double ior) const;
+
+    const scene::Scene& scene_;
+    const scene::Features& features_;
+    const Geometry& geometry_;
+    PigmentEvaluator pigments_;
+    std::vector<PreparedLight> lights_;
+    std::vector<ClassicFinish> finishes_;
+    std::vector<bool> opaque_;  // per material: the pigment can never let light through
+    int max_level_;
+    double adc_bailout_;
+    bool legacy_;  // #version < 3.7: POV-Ray's 3.6 transparency and sky formulas
+};
+
+}  // namespace glint::render

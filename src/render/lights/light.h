@@ -1,0 +1,37 @@
+// Light sources as the Whitted integrator sees them: for a surface point, the direction to the
+// light, how far the shadow ray must go and the light's color after spot and distance
+// attenuation (POV-Ray 3.7: Trace::ComputeOneWhiteLightRay, lighting/point.cpp Attenuate_Light).
+#pragma once
+
+#include <vector>
+
+#include "scene/light.h"
+
+namespace glint::render {
+
+struct LightSample {
+    Vec3 dir;         // unit vector from the point towards the light
+    double distance;  // along dir to the light (for parallel lights: to the light's plane)
+    Color color;      // attenuated light color
+};
+
+class PreparedLight {
+public:
+    explicit PreparedLight(const scene::Light& light);
+
+    // False when the light cannot reach the point (outside a spot cone, behind a cylinder
+    // light), in which case POV-Ray skips it entirely.
+    bool sample(const Vec3& p, LightSample* out) const;
+    bool casts_shadows() const { return !light_.shadowless; }
+    const scene::Light& light() const { return light_; }
+
+private:
+    scene::Light light_;
+    Vec3 direction_;      // normalized point_at - location (spot, parallel, cylinder)
+    double cos_radius_;   // spot: cosine of the full-intensity half-angle
+    double cos_falloff_;  // spot: cosine of the zero-intensity half-angle
+};
+
+std::vector<PreparedLight> prepare_lights(const std::vector<scene::Light>& lights);
+
+}  // namespace glint::render

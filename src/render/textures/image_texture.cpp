@@ -1,0 +1,156 @@
+#include "render/textures/image_texture.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+
+#include "core/error.h"
+
+namespace glint::render {
+namespace {
+
+double srgb_decode(double v) {
+    // IEC 61966-2-1, the default file gamma of 8-bit images in POV-Ray 3.7.
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+// Collects image maps from a pigment tree.
+void collect(const scene::Pigment& p, std::vector<const scene::ImageMap*>* out) {
+    if (p.kind == scene::PatternKind::ImageMap) out->push_back(&p.params.image);
+    for (const scene::Pigment& e : p.entries) collect(e, out);
+}
+
+}  // namespace
+
+ImageGamma image_gamma(const scene::Scene& scene) {
+    ImageGamma g;
+    if (scene.global.assumed_gamma) {
+        g.working_gamma = *scene.global.assumed_gamma;
+        g.mode = scene.version < 3.7 ? ImageGamma::Mode::Legacy36 : ImageGamma::Mode::V37;
+    } else if (scene.version < 3.7) {
+        g.mode = ImageGamma::Mode::None;
+        g.working_gamma = 1.0;
+    } else {
+        g.mode = ImageGamma::Mode::V37;
+        g.working_gamma = 1.0;
+    }
+    return g;
+}
+
+std::shared_ptr<const ImageTexture> ImageTexture::load(const scene::ImageMap& map,
+                                                       const ImageGamma& gamma) {
+    const std::string& path = map.resolved_path.empty() ? map.file : map.resolved_path;
+    OIIO::ImageSpec config;
+    // POV-Ray works with unassociated alpha for PNG and friends.
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(path, &config);
+    if (!in) {
+        throw Error(ErrorKind::MissingFile, map.loc,
+                    "cannot read image '" + map.file + "': " + OIIO::geterror());
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    int w = spec.width, h = spec.height, nc = spec.nchannels;
+    if (w <= 0 || h <= 0 || nc <= 0) {
+        throw Error(ErrorKind::MissingFile, map.loc, "image '" + map.file + "' is empty");
+    }
+    std::vector<float> raw(static_cast<size_t>(w) * h * nc);
+    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, raw.data())) {
+        throw Error(ErrorKind::MissingFile, map.loc,
+                    "cannot decode image '" + map.file + "': " + in->geterror());
+    }
+    bool is_float = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
+                    spec.format.basetype == OIIO::TypeDesc::HALF ||
+                    spec.format.basetype == OIIO::TypeDesc::DOUBLE;
+    int alpha_channel = spec.alpha_channel;
+    if (alpha_channel < 0 && (nc == 2 || nc == 4)) alpha_channel = nc - 1;
+    int color_channels = nc >= 3 ? 3 : 1;
+    std::string colorspace = spec.get_string_attribute("oiio:ColorSpace");
+    float file_gamma = spec.get_float_attribute("oiio:Gamma", 0.0f);
+    in->close();
+
+    // Transfer function from file values to the working space (POV-Ray 3.7 parstxtr.cpp,
+    // Parse_Image: defaultGamma / workingGamma per gamma mode; `gamma G` overrides).
+    auto decode = [&](double v) -> double {
+        if (is_float) return v;  // linear formats are not gamma-adjusted
+        double linear;
+        if (map.gamma > 0) {
+            linear = std::pow(std::max(v, 0.0), map.gamma);
+        } else {
+            switch (gamma.mode) {
+                case ImageGamma::Mode::None: return v;
+                case ImageGamma::Mode::Legacy36:
+                    if (file_gamma > 0 && colorspace != "sRGB") {
+                        linear = std::pow(std::max(v, 0.0), static_cast<double>(file_gamma));
+                        break;
+                    }
+                    return v;  // default gamma = working gamma: values are used as stored
+                case ImageGamma::Mode::V37:
+                default:
+                    if (file_gamma > 0 && colorspace != "sRGB" && colorspace.rfind("Gamma", 0) == 0)
+                        linear = std::pow(std::max(v, 0.0), static_cast<double>(file_gamma));
+                    else
+                        linear = srgb_decode(v);
+                    break;
+            }
+        }
+        if (gamma.mode == ImageGamma::Mode::None || gamma.working_gamma == 1.0) return linear;
+        return std::pow(std::max(linear, 0.0), 1.0 / gamma.working_gamma);
+    };
+    // 8-bit images have 256 distinct values: tabulate the transfer function.
+    float table[256];
+    bool tabulate = spec.format.basetype == OIIO::TypeDesc::UINT8;
+    if (tabulate)
+        for (int i = 0; i < 256; ++i) table[i] = static_cast<float>(decode(i / 255.0));
+    auto convert = [&](float v) -> float {
+        if (tabulate) {
+            int i = static_cast<int>(std::lround(v * 255.0f));
+            return table[std::clamp(i, 0, 255)];
+        }
+        return static_cast<float>(decode(v));
+    };
+
+    auto tex = std::make_shared<ImageTexture>();
+    tex->width_ = w;
+    tex->height_ = h;
+    tex->data_.resize(static_cast<size_t>(w) * h * 5);
+    for (size_t i = 0; i < static_cast<size_t>(w) * h; ++i) {
+        const float* s = &raw[i * nc];
+        float* d = &tex->data_[i * 5];
+        if (color_channels == 3) {
+            d[0] = convert(s[0]);
+            d[1] = convert(s[1]);
+            d[2] = convert(s[2]);
+        } else {
+            d[0] = d[1] = d[2] = convert(s[0]);
+        }
+        d[3] = 0;  // filter
+        d[4] = alpha_channel >= 0 ? 1.0f - s[alpha_channel] : 0.0f;  // transmit
+    }
+    return tex;
+}
+
+std::string TextureCache::key(const scene::ImageMap& map) {
+    const std::string& path = map.resolved_path.empty() ? map.file : map.resolved_path;
+    return path + "\n" + std::to_string(map.gamma);
+}
+
+void TextureCache::add(const scene::ImageMap& map) {
+    std::string k = key(map);
+    if (images_.count(k)) return;
+    images_[k] = ImageTexture::load(map, gamma_);
+}
+
+void TextureCache::preload(const scene::Scene& scene) {
+    std::vector<const scene::ImageMap*> maps;
+    for (const scene::Material& m : scene.materials) collect(m.texture.pigment, &maps);
+    if (scene.sky_sphere)
+        for (const scene::Pigment& p : scene.sky_sphere->pigments) collect(p, &maps);
+    for (const scene::ImageMap* m : maps) add(*m);
+}
+
+const ImageTexture* TextureCache::find(const scene::ImageMap& map) const {
+    auto it = images_.find(key(map));
+    return it == images_.end() ? nullptr : it->second.get();
+}
+
+}  // namespace glint::render

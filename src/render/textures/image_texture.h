@@ -1,0 +1,68 @@
+// Images behind image_map pigments: read once per render through OpenImageIO (only when the
+// scene uses image maps), decoded into POV-Ray's working color space, and looked up with
+// POV-Ray 3.7's mapping and interpolation rules (source/backend/support/imageutil.cpp).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "core/log.h"
+#include "scene/scene.h"
+
+namespace glint::render {
+
+// How 8-bit (and other) image files are decoded, from the scene's #version and
+// assumed_gamma (POV-Ray 3.7 parser: gammaMode in tokenize.cpp/parse.cpp).
+struct ImageGamma {
+    enum class Mode {
+        None,      // pre-3.7 scene without assumed_gamma: file values used as stored
+        Legacy36,  // pre-3.7 scene with assumed_gamma: files are taken to be in working gamma
+        V37,       // 3.7 scene: decode the file's gamma (sRGB by default), encode working gamma
+    };
+    Mode mode = Mode::V37;
+    double working_gamma = 1.0;
+};
+
+ImageGamma image_gamma(const scene::Scene& scene);
+
+class ImageTexture {
+public:
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // Texel (x, y), row 0 at the top: r, g, b, filter, transmit (transmit = 1 - alpha).
+    const float* texel(int x, int y) const {
+        return &data_[(static_cast<size_t>(y) * width_ + x) * 5];
+    }
+
+    // Throws Error(MissingFile) if the file cannot be read.
+    static std::shared_ptr<const ImageTexture> load(const scene::ImageMap& map,
+                                                    const ImageGamma& gamma);
+
+private:
+    int width_ = 0;
+    int height_ = 0;
+    std::vector<float> data_;
+};
+
+// All images of one render, keyed by resolved path and gamma override; filled at prepare time
+// so the render threads only read.
+class TextureCache {
+public:
+    explicit TextureCache(ImageGamma gamma) : gamma_(gamma) {}
+    // Loads every image map reachable from the scene's materials and sky sphere.
+    void preload(const scene::Scene& scene);
+    // nullptr if `map` was not preloaded.
+    const ImageTexture* find(const scene::ImageMap& map) const;
+    size_t size() const { return images_.size(); }
+
+private:
+    void add(const scene::ImageMap& map);
+    static std::string key(const scene::ImageMap& map);
+    ImageGamma gamma_;
+    std::map<std::string, std::shared_ptr<const ImageTexture>> images_;
+};
+
+}  // namespace glint::render

@@ -1,0 +1,74 @@
+// Camera rays: POV-Ray's pixel-centre mapping (tracepixel.cpp CreateCameraRay) for perspective
+// and orthographic cameras.
+#include <gtest/gtest.h>
+
+#include "render/camera.h"
+
+namespace glint::render {
+namespace {
+
+scene::Camera basic_camera() {
+    scene::Camera c;
+    c.location = Vec3(0, 0, -5);
+    c.direction = Vec3(0, 0, 1);
+    c.right = Vec3(4.0 / 3.0, 0, 0);
+    c.up = Vec3(0, 1, 0);
+    return c;
+}
+
+TEST(Camera, CentrePixelOfOddImageLooksAlongDirection) {
+    Camera cam(basic_camera(), 5, 3);
+    Ray r = cam.generate(2, 1);
+    EXPECT_NEAR(r.dir.x, 0.0, 1e-15);
+    EXPECT_NEAR(r.dir.y, 0.0, 1e-15);
+    EXPECT_NEAR(r.dir.z, 1.0, 1e-15);
+    EXPECT_EQ(r.origin, Vec3(0, 0, -5));
+}
+
+TEST(Camera, TopLeftPixelCentre) {
+    const int w = 320, h = 240;
+    Camera cam(basic_camera(), w, h);
+    double sx, sy;
+    cam.screen(0, 0, &sx, &sy);
+    EXPECT_DOUBLE_EQ(sx, -0.5 + 0.5 / w);
+    EXPECT_DOUBLE_EQ(sy, 0.5 - 0.5 / h);
+    Ray r = cam.generate(0, 0);
+    Vec3 expected = normalize(Vec3((4.0 / 3.0) * sx, sy, 1.0));
+    EXPECT_NEAR(r.dir.x, expected.x, 1e-14);
+    EXPECT_NEAR(r.dir.y, expected.y, 1e-14);
+    EXPECT_NEAR(r.dir.z, expected.z, 1e-14);
+    EXPECT_LT(r.dir.x, 0);  // left
+    EXPECT_GT(r.dir.y, 0);  // top
+}
+
+TEST(Camera, BottomRightPixelCentre) {
+    const int w = 320, h = 240;
+    Camera cam(basic_camera(), w, h);
+    double sx, sy;
+    cam.screen(w - 1, h - 1, &sx, &sy);
+    EXPECT_DOUBLE_EQ(sx, 0.5 - 0.5 / w);
+    EXPECT_DOUBLE_EQ(sy, -0.5 + 0.5 / h);
+}
+
+TEST(Camera, DirectionsAreUnitLength) {
+    Camera cam(basic_camera(), 64, 48);
+    for (int y = 0; y < 48; y += 7)
+        for (int x = 0; x < 64; x += 9) EXPECT_NEAR(length(cam.generate(x, y).dir), 1.0, 1e-14);
+}
+
+TEST(Camera, OrthographicMovesOriginNotDirection) {
+    scene::Camera c = basic_camera();
+    c.kind = scene::CameraKind::Orthographic;
+    c.right = Vec3(8, 0, 0);
+    c.up = Vec3(0, 6, 0);
+    Camera cam(c, 4, 4);
+    Ray r = cam.generate(0, 3);
+    // sx = 0.5/4 - 0.5 = -0.375, sy = (3 - 2.5)/4 - 0.5 = -0.375
+    EXPECT_NEAR(r.origin.x, -3.0, 1e-14);
+    EXPECT_NEAR(r.origin.y, -2.25, 1e-14);
+    EXPECT_NEAR(r.origin.z, -5.0, 1e-14);
+    EXPECT_EQ(r.dir, Vec3(0, 0, 1));
+}
+
+}  // namespace
+}  // namespace glint::render

@@ -1,0 +1,248 @@
+// Pigment evaluation against POV-Ray 3.7's definitions: checker parity, gradient wrapping,
+// color_map interpolation, the default map, pattern transforms and image_map lookups.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "render/textures/pigment.h"
+
+namespace glint::render {
+namespace {
+
+using scene::ColorFT;
+using scene::Pigment;
+
+Pigment plain(Color c) {
+    Pigment p;
+    p.color = ColorFT(c);
+    return p;
+}
+
+ColorFT eval(const PigmentEvaluator& e, const Pigment& p, Vec3 at) {
+    ColorFT c;
+    EXPECT_TRUE(e.evaluate(p, {at, {}, false}, &c));
+    return c;
+}
+
+TEST(Pigment, PlainColor) {
+    PigmentEvaluator e(nullptr);
+    Pigment p;
+    p.color = ColorFT(Color(0.2, 0.4, 0.6), 0.1, 0.3);
+    ColorFT c = eval(e, p, Vec3(5, 6, 7));
+    EXPECT_EQ(c, p.color);
+}
+
+TEST(Pigment, CheckerParity) {
+    PigmentEvaluator e(nullptr);
+    Pigment p;
+    p.kind = scene::PatternKind::Checker;
+    p.entries = {plain(Color(1, 0, 0)), plain(Color(0, 0, 1))};
+    EXPECT_EQ(eval(e, p, Vec3(0.5, 0.5, 0.5)).rgb, Color(1, 0, 0));
+    EXPECT_EQ(eval(e, p, Vec3(1.5, 0.5, 0.5)).rgb, Color(0, 0, 1));
+    EXPECT_EQ(eval(e, p, Vec3(1.5, 1.5, 0.5)).rgb, Color(1, 0, 0));
+    EXPECT_EQ(eval(e, p, Vec3(-0.5, 0.5, 0.5)).rgb, Color(0, 0, 1));
+    // POV-Ray nudges by EPSILON: a point a hair below an integer counts as on it.
+    EXPECT_EQ(eval(e, p, Vec3(1.0 - 1e-12, 0.5, 0.5)).rgb, Color(0, 0, 1));
+}
+
+TEST(Pigment, CheckerDefaultsToBlueAndGreen) {
+    PigmentEvaluator e(nullptr);
+    Pigment p;
+    p.kind = scene::PatternKind::Checker;
+    EXPECT_EQ(eval(e, p, Vec3(0.5, 0.5, 0.5)).rgb, Color(0, 0, 1));
+    EXPECT_EQ(eval(e, p, Vec3(1.5, 0.5, 0.5)).rgb, Color(0, 1, 0));
+}
+
+TEST(Pigment, CheckerScaledByTransform) {
+    PigmentEvaluator e(nullptr);
+    Pigment p;
+    p.kind = scene::PatternKind::Checker;
+    p.entries = {plain(Color(1, 1, 1)), plain(Color(0, 0, 0))};
+    p.transform = Transform::scale(Vec3(2, 2, 2));
+    EXPECT_EQ(eval(e, p, Vec3(1.5, 0.5, 0.5)).rgb, Color(1, 1, 1));  // still cell 0
+    EXPECT_EQ(eval(e, p, Vec3(2.5, 0.5, 0.5)).rgb, Color(0, 0, 0));
+}
+
+TEST(Pigment, GradientDefaultMapIsBlackToWhite) {
+    PigmentEvaluator e(nullptr);
+    Pigment p;
+    p.kind = scene::PatternKind::Gradient;
+    p.params.vector = Vec3(1, 0, 0);
+    ColorFT c = eval(e, p, Vec3(0.25, 9, 9));
+    EXPECT_NEAR(c.rgb.r, 0.25, 1e-12);
+    EXPECT_NEAR(c.rgb.g, 0.25, 1e-12);
+    // Negative values wrap into [0, 1): -0.25 -> 0.75.
+    EXPECT_NEAR(eval(e, p, Vec3(-0.25, 0, 0)).rgb.r, 0.75, 1e-12);
+    // Values above 1 wrap: 1.5 -> 0.5.
+    EXPECT_NEAR(eval(e, p, Vec3(1.5, 0, 0)).rgb.r, 0.5, 1e-12);
+}
+
+TEST(Pigment, ColorMapInterpolatesAllChannels) {
+    PigmentEvaluator e(nullptr);
+    Pigment p;
+    p.kind = scene::PatternKind::Gradient;
+    p.params.vector = Vec3(0, 1, 0);
+    p.color_map = {{0.2, ColorFT(Color(1, 0, 0), 0.0, 0.0)},
+                   {0.6, ColorFT(Color(0, 0, 1), 0.4, 0.8)}};
+    // Below the first entry: the first color; above the last: the last.
+    EXPECT_EQ(eval(e, p, Vec3(0, 0.1, 0)).rgb, Color(1, 0, 0));
+    EXPECT_EQ(eval(e, p, Vec3(0, 0.9, 0)).rgb, Color(0, 0, 1));
+    ColorFT mid = eval(e, p, Vec3(0, 0.3, 0));  // a quarter of the way
+    EXPECT_NEAR(mid.rgb.r, 0.75, 1e-12);
+    EXPECT_NEAR(mid.rgb.b, 0.25, 1e-12);
+    EXPECT_NEAR(mid.filter, 0.1, 1e-12);
+    EXPECT_NEAR(mid.transmit, 0.2, 1e-12);
+}
+
+TEST(Pigment, FrequencyAndPhase) {
+    Pigment p;
+    p.kind = scene::PatternKind::Gradient;
+    p.params.vector = Vec3(1, 0, 0);
+    p.params.frequency = 2;
+    p.params.phase = 0.1;
+    // fmod(0.3 * 2 + 0.1, 1.00001)
+    EXPECT_NEAR(PigmentEvaluator::pattern_value(p, Vec3(0.3, 0, 0)), 0.7, 1e-12);
+    p.params.wave = scene::WaveType::Triangle;
+    EXPECT_NEAR(PigmentEvaluator::pattern_value(p, Vec3(0.3, 0, 0)), 0.6, 1e-12);
+}
+
+TEST(Pigment, NestedEntriesSeeTheParentSpace) {
+    PigmentEvaluator e(nullptr);
+    Pigment inner;
+    inner.kind = scene::PatternKind::Checker;
+    inner.entries = {plain(Color(1, 1, 1)), plain(Color(0, 0, 0))};
+    Pigment outer;
+    outer.kind = scene::PatternKind::Checker;
+    outer.entries = {inner, plain(Color(1, 0, 0))};
+    outer.transform = Transform::scale(Vec3(10, 10, 10));
+    // Outer cell 0 everywhere in [0, 10)^3; the inner checker there runs at 1/10 scale too.
+    EXPECT_EQ(eval(e, outer, Vec3(2.5, 2.5, 2.5)).rgb, Color(1, 1, 1));
+    EXPECT_EQ(eval(e, outer, Vec3(5.5, 2.5, 2.5)).rgb, Color(1, 1, 1));
+    EXPECT_EQ(eval(e, outer, Vec3(15.5, 2.5, 2.5)).rgb, Color(1, 0, 0));
+}
+
+TEST(Pigment, UvMappingUsesSurfaceCoordinates) {
+    PigmentEvaluator e(nullptr);
+    Pigment p;
+    p.kind = scene::PatternKind::Gradient;
+    p.params.vector = Vec3(1, 0, 0);
+    p.uv_mapping = true;
+    ColorFT c;
+    ASSERT_TRUE(e.evaluate(p, {Vec3(0.9, 0, 0), Vec2(0.25, 0.5), true}, &c));
+    EXPECT_NEAR(c.rgb.r, 0.25, 1e-12);
+    EXPECT_THROW(e.evaluate(p, {Vec3(0.9, 0, 0), Vec2(), false}, &c), Error);
+}
+
+class ImageMapTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        path_ = (std::filesystem::temp_directory_path() /
+                 ("glint_pigment_test_" + std::to_string(::getpid()) + ".png"))
+                    .string();
+        // 2 x 2 RGBA: top row red, green; bottom row blue, white half transparent.
+        const unsigned char px[16] = {255, 0, 0, 255, 0, 255, 0, 255,
+                                      0, 0, 255, 255, 255, 255, 255, 128};
+        auto out = OIIO::ImageOutput::create(path_);
+        ASSERT_TRUE(out);
+        OIIO::ImageSpec spec(2, 2, 4, OIIO::TypeDesc::UINT8);
+        ASSERT_TRUE(out->open(path_, spec));
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, px));
+        out->close();
+    }
+    void TearDown() override { std::remove(path_.c_str()); }
+
+    Pigment image_pigment() const {
+        Pigment p;
+        p.kind = scene::PatternKind::ImageMap;
+        p.params.image.file = path_;
+        p.params.image.resolved_path = path_;
+        return p;
+    }
+
+    std::string path_;
+};
+
+TEST_F(ImageMapTest, PlanarMapPutsTheImageOnTheUnitSquare) {
+    Pigment p = image_pigment();
+    scene::Scene s;
+    s.materials.resize(1);
+    s.materials[0].texture.pigment = p;
+    TextureCache cache(image_gamma(s));  // 3.7 scene: sRGB decoded
+    cache.preload(s);
+    ASSERT_EQ(cache.size(), 1u);
+    PigmentEvaluator e(&cache);
+    // Image y runs up: the top row is at y in [0.5, 1).
+    EXPECT_EQ(eval(e, p, Vec3(0.25, 0.75, 0)).rgb, Color(1, 0, 0));
+    EXPECT_EQ(eval(e, p, Vec3(0.75, 0.75, 0)).rgb, Color(0, 1, 0));
+    EXPECT_EQ(eval(e, p, Vec3(0.25, 0.25, 0)).rgb, Color(0, 0, 1));
+    ColorFT w = eval(e, p, Vec3(0.75, 0.25, 0));
+    EXPECT_EQ(w.rgb, Color(1, 1, 1));
+    EXPECT_NEAR(w.transmit, 1.0 - 128.0 / 255.0, 1e-6);
+    // Repeats without `once`.
+    EXPECT_EQ(eval(e, p, Vec3(1.25, -0.25, 0)).rgb, Color(1, 0, 0));  // = (0.25, 0.75)
+}
+
+TEST_F(ImageMapTest, OnceLeavesTheOutsideClear) {
+    Pigment p = image_pigment();
+    p.params.image.once = true;
+    scene::Scene s;
+    s.materials.resize(1);
+    s.materials[0].texture.pigment = p;
+    TextureCache cache(image_gamma(s));
+    cache.preload(s);
+    PigmentEvaluator e(&cache);
+    ColorFT c;
+    EXPECT_FALSE(e.evaluate(p, {Vec3(1.25, 0.5, 0), {}, false}, &c));
+    EXPECT_EQ(c.transmit, 1.0);
+}
+
+TEST_F(ImageMapTest, GammaDecodingFollowsTheSceneVersion) {
+    // A mid-grey texel through the bilinear path would mix; use a one-texel lookup instead.
+    const unsigned char grey[4] = {128, 128, 128, 255};
+    auto out = OIIO::ImageOutput::create(path_);
+    OIIO::ImageSpec spec(1, 1, 4, OIIO::TypeDesc::UINT8);
+    ASSERT_TRUE(out->open(path_, spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, grey));
+    out->close();
+    Pigment p = image_pigment();
+    scene::Scene s;
+    s.materials.resize(1);
+    s.materials[0].texture.pigment = p;
+    {
+        TextureCache cache(image_gamma(s));  // 3.7, no assumed_gamma: linear working space
+        cache.preload(s);
+        PigmentEvaluator e(&cache);
+        double v = 128.0 / 255.0;
+        EXPECT_NEAR(eval(e, p, Vec3(0.5, 0.5, 0)).rgb.r, std::pow((v + 0.055) / 1.055, 2.4), 1e-6);
+    }
+    s.version = 3.6;  // no assumed_gamma: gamma handling off, values used as stored
+    TextureCache legacy(image_gamma(s));
+    legacy.preload(s);
+    PigmentEvaluator e(&legacy);
+    EXPECT_NEAR(eval(e, p, Vec3(0.5, 0.5, 0)).rgb.r, 128.0 / 255.0, 1e-6);
+}
+
+TEST_F(ImageMapTest, BilinearInterpolationBlendsNeighbours) {
+    Pigment p = image_pigment();
+    p.params.image.interpolate = 2;
+    p.params.image.once = true;
+    scene::Scene s;
+    s.version = 3.6;
+    s.materials.resize(1);
+    s.materials[0].texture.pigment = p;
+    TextureCache cache(image_gamma(s));
+    cache.preload(s);
+    PigmentEvaluator e(&cache);
+    // Exactly between the centres of the top texels (red and green).
+    ColorFT c = eval(e, p, Vec3(0.5, 0.75, 0));
+    EXPECT_NEAR(c.rgb.r, 0.5, 1e-6);
+    EXPECT_NEAR(c.rgb.g, 0.5, 1e-6);
+    EXPECT_NEAR(c.rgb.b, 0.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace glint::render
