@@ -1,5 +1,252 @@
+// Text form of the IR. Stable: fixed field order, numbers with up to 6 significant digits
+// (so tests do not depend on the last bits), default-valued fields omitted where noted, every
+// entity with the file:line:col it came from. Indentation shows nesting.
 #include "formats/common/ir_printer.h"
 
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
 namespace glint::formats {
-std::string print_ir(const scene::Scene&) { return "(ir printer not written yet)\n"; }
+
+namespace {
+
+using namespace glint::scene;
+
+std::string num(double v) {
+    if (v == 0) return "0";  // no "-0"
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+std::string vec(const Vec3& v) { return "<" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ">"; }
+std::string rgb(const Color& c) { return "rgb <" + num(c.r) + ", " + num(c.g) + ", " + num(c.b) + ">"; }
+std::string rgbft(const ColorFT& c) {
+    if (c.filter == 0 && c.transmit == 0) return rgb(c.rgb);
+    return "rgbft <" + num(c.rgb.r) + ", " + num(c.rgb.g) + ", " + num(c.rgb.b) + ", " +
+           num(c.filter) + ", " + num(c.transmit) + ">";
+}
+std::string where(const FileLoc& l) { return l.valid() ? "  @" + l.to_string() : ""; }
+
+std::string matrix(const Transform& t) {
+    if (t.is_identity()) return "identity";
+    const Matrix4& m = t.matrix();
+    std::string s = "matrix [";
+    for (int r = 0; r < 3; ++r) {
+        if (r) s += "; ";
+        for (int c = 0; c < 4; ++c) s += (c ? " " : "") + num(m.m[r][c]);
+    }
+    return s + "]";
+}
+
+class Printer {
+public:
+    std::ostringstream out;
+
+    void line(int depth, const std::string& s) { out << std::string(depth * 2, ' ') << s << '\n'; }
+
+    void pigment(int d, const std::string& label, const Pigment& p) {
+        switch (p.kind) {
+            case PatternKind::Plain:
+                line(d, label + " " + rgbft(p.color) + tail(p));
+                return;
+            case PatternKind::Checker:
+                line(d, label + " checker" + tail(p));
+                for (const auto& e : p.entries) pigment(d + 1, "entry", e);
+                return;
+            case PatternKind::Gradient:
+                line(d, label + " gradient " + vec(p.params.vector) + tail(p));
+                break;
+            case PatternKind::ImageMap: {
+                const ImageMap& im = p.params.image;
+                line(d, label + " image_map " + im.type + " \"" + im.file + "\" -> \"" +
+                            im.resolved_path + "\" map_type " + std::to_string(im.map_type) +
+                            (im.once ? " once" : "") + " interpolate " +
+                            std::to_string(im.interpolate) + " filter_all " + num(im.filter_all) +
+                            " transmit_all " + num(im.transmit_all) +
+                            (im.gamma != 0 ? " gamma " + num(im.gamma) : "") + tail(p));
+                break;
+            }
+        }
+        params(d + 1, p.params);
+        if (!p.color_map.empty()) {
+            line(d + 1, "color_map");
+            for (const auto& e : p.color_map) line(d + 2, "[" + num(e.value) + " " + rgbft(e.color) + "]");
+        }
+    }
+
+    static std::string tail(const Pigment& p) {
+        std::string s;
+        if (p.uv_mapping) s += " uv_mapping";
+        if (!p.transform.is_identity()) s += " transform " + matrix(p.transform);
+        return s;
+    }
+
+    void params(int d, const PatternParams& pp) {
+        std::string s;
+        if (pp.frequency != 1) s += " frequency " + num(pp.frequency);
+        if (pp.phase != 0) s += " phase " + num(pp.phase);
+        static const char* kWaves[] = {"ramp", "triangle", "sine", "scallop", "cubic", "poly"};
+        if (pp.wave != WaveType::Ramp)
+            s += std::string(" wave ") + kWaves[static_cast<int>(pp.wave)] + " " + num(pp.wave_exponent);
+        if (pp.turbulence)
+            s += " turbulence " + vec(pp.turbulence->amount) + " octaves " +
+                 std::to_string(pp.turbulence->octaves) + " omega " + num(pp.turbulence->omega) +
+                 " lambda " + num(pp.turbulence->lambda);
+        if (!s.empty()) line(d, "params" + s);
+    }
+
+    void finish(int d, const Finish& f) {
+        std::string s = "finish ambient " + rgb(f.ambient) + " diffuse " + num(f.diffuse) +
+                        " brilliance " + num(f.brilliance) + " phong " + num(f.phong) +
+                        " phong_size " + num(f.phong_size) + " specular " + num(f.specular) +
+                        " roughness " + num(f.roughness) + " metallic " + num(f.metallic);
+        if (!f.emission.is_black()) s += " emission " + rgb(f.emission);
+        if (f.conserve_energy) s += " conserve_energy";
+        if (f.crand != 0) s += " crand " + num(f.crand);
+        line(d, s);
+        const Reflection& r = f.reflection;
+        if (!r.min.is_black() || !r.max.is_black() || r.fresnel || r.metallic != 0 ||
+            r.exponent != 1 || r.falloff != 1)
+            line(d + 1, "reflection min " + rgb(r.min) + " max " + rgb(r.max) + " falloff " +
+                            num(r.falloff) + (r.fresnel ? " fresnel" : "") + " metallic " +
+                            num(r.metallic) + " exponent " + num(r.exponent));
+    }
+
+    void material(int i, const Material& m) {
+        line(0, "material " + std::to_string(i) + where(m.loc));
+        pigment(1, "pigment", m.texture.pigment);
+        if (m.texture.normal.kind != PatternKind::Plain || m.texture.normal.amount != 0)
+            line(1, "normal kind " + std::to_string(static_cast<int>(m.texture.normal.kind)) +
+                        " amount " + num(m.texture.normal.amount));
+        finish(1, m.texture.finish);
+        const Interior& in = m.interior;
+        Interior def;
+        if (in.ior != def.ior || in.dispersion != def.dispersion || in.caustics != def.caustics ||
+            in.fade_distance != def.fade_distance || in.fade_power != def.fade_power ||
+            !(in.fade_color == def.fade_color))
+            line(1, "interior ior " + num(in.ior) + " dispersion " + num(in.dispersion) +
+                        " caustics " + num(in.caustics) + " fade_distance " + num(in.fade_distance) +
+                        " fade_power " + num(in.fade_power) + " fade_color " + rgb(in.fade_color));
+        if (!m.pbr.derived) {
+            const Pbr& p = m.pbr;
+            line(1, "pbr base " + rgb(p.base_color) + " metallic " + num(p.metallic) + " roughness " +
+                        num(p.roughness) + " specular " + num(p.specular) + " ior " + num(p.ior) +
+                        " transmission " + num(p.transmission) + " alpha " + num(p.alpha));
+        }
+    }
+
+    static std::string shape(const Shape& s) {
+        return std::visit(
+            [](const auto& v) -> std::string {
+                using T = std::decay_t<decltype(v)>;
+                if constexpr (std::is_same_v<T, Sphere>) return "sphere " + vec(v.center) + " " + num(v.radius);
+                else if constexpr (std::is_same_v<T, Plane>) return "plane " + vec(v.normal) + " " + num(v.distance);
+                else if constexpr (std::is_same_v<T, Box>) return "box " + vec(v.corner1) + " " + vec(v.corner2);
+                else if constexpr (std::is_same_v<T, Cylinder>)
+                    return "cylinder " + vec(v.base) + " " + vec(v.cap) + " " + num(v.radius) + (v.open ? " open" : "");
+                else if constexpr (std::is_same_v<T, Cone>)
+                    return "cone " + vec(v.base) + " " + num(v.base_radius) + " " + vec(v.cap) + " " +
+                           num(v.cap_radius) + (v.open ? " open" : "");
+                else if constexpr (std::is_same_v<T, Disc>)
+                    return "disc " + vec(v.center) + " " + vec(v.normal) + " " + num(v.radius) + " " + num(v.hole_radius);
+                else if constexpr (std::is_same_v<T, Torus>)
+                    return "torus " + num(v.major) + " " + num(v.minor) + (v.sturm ? " sturm" : "");
+                else if constexpr (std::is_same_v<T, Triangle>)
+                    return "triangle " + vec(v.p[0]) + " " + vec(v.p[1]) + " " + vec(v.p[2]);
+                else if constexpr (std::is_same_v<T, SmoothTriangle>)
+                    return "smooth_triangle " + vec(v.p[0]) + " " + vec(v.n[0]) + " " + vec(v.p[1]) + " " +
+                           vec(v.n[1]) + " " + vec(v.p[2]) + " " + vec(v.n[2]);
+                else if constexpr (std::is_same_v<T, MeshRef>) return "mesh_ref " + std::to_string(v.mesh);
+                else {
+                    static const char* kOps[] = {"union", "merge", "intersection", "difference"};
+                    return std::string(kOps[static_cast<int>(v.op)]) + " (" +
+                           std::to_string(v.children.size()) + " children)";
+                }
+            },
+            s);
+    }
+
+    void object(int d, const Object& o, const std::string& label) {
+        std::string s = label + shape(o.shape) + " material " + std::to_string(o.material);
+        if (o.inverse) s += " inverse";
+        if (o.hollow) s += " hollow";
+        if (o.no_shadow) s += " no_shadow";
+        if (o.no_image) s += " no_image";
+        if (o.no_reflection) s += " no_reflection";
+        if (o.double_illuminate) s += " double_illuminate";
+        if (!o.name.empty()) s += " name " + o.name;
+        line(d, s + where(o.loc));
+        if (!o.transform.is_identity()) line(d + 1, "transform " + matrix(o.transform));
+        for (const auto& b : o.bounded_by) object(d + 1, b, "bounded_by ");
+        for (const auto& c : o.clipped_by) object(d + 1, c, "clipped_by ");
+        if (auto csg = std::get_if<Csg>(&o.shape))
+            for (const auto& c : csg->children) object(d + 1, c, "");
+    }
+
+    void light(int i, const Light& l) {
+        static const char* kKinds[] = {"point", "spotlight", "cylinder"};
+        std::string s = "light " + std::to_string(i) + " " + kKinds[static_cast<int>(l.kind)] +
+                        " location " + vec(l.location) + " color " + rgb(l.color);
+        if (l.kind != LightKind::Point || l.parallel)
+            s += " point_at " + vec(l.point_at);
+        if (l.kind != LightKind::Point)
+            s += " radius " + num(l.radius) + " falloff " + num(l.falloff) + " tightness " + num(l.tightness);
+        if (l.parallel) s += " parallel";
+        if (l.shadowless) s += " shadowless";
+        if (l.fade_distance != 0 || l.fade_power != 0)
+            s += " fade_distance " + num(l.fade_distance) + " fade_power " + num(l.fade_power);
+        line(0, s + where(l.loc));
+        if (l.area) {
+            const AreaLight& a = *l.area;
+            line(1, "area_light " + vec(a.axis1) + " " + vec(a.axis2) + " " + std::to_string(a.size1) +
+                        " " + std::to_string(a.size2) + " adaptive " + std::to_string(a.adaptive) +
+                        (a.jitter ? " jitter" : "") + (a.circular ? " circular" : "") +
+                        (a.orient ? " orient" : ""));
+        }
+    }
+};
+
+}  // namespace
+
+std::string print_ir(const scene::Scene& s) {
+    Printer p;
+    p.line(0, "version " + num(s.version));
+    for (const auto& f : s.source_files) p.line(0, "source \"" + f + "\"");
+    const GlobalSettings& g = s.global;
+    p.line(0, "global_settings assumed_gamma " +
+                  (g.assumed_gamma ? num(*g.assumed_gamma) : std::string("default")) +
+                  " ambient_light " + rgb(g.ambient_light) + " max_trace_level " +
+                  std::to_string(g.max_trace_level) + " adc_bailout " + num(g.adc_bailout) +
+                  " noise_generator " + std::to_string(g.noise_generator));
+    const Camera& c = s.camera;
+    p.line(0, std::string("camera ") +
+                  (c.kind == CameraKind::Perspective ? "perspective" : "orthographic") +
+                  where(c.loc));
+    p.line(1, "location " + vec(c.location));
+    p.line(1, "direction " + vec(c.direction));
+    p.line(1, "right " + vec(c.right));
+    p.line(1, "up " + vec(c.up));
+    p.line(1, "sky " + vec(c.sky) + " angle " + num(c.angle));
+    p.line(0, "background " + rgbft(s.background));
+    if (s.sky_sphere) {
+        p.line(0, "sky_sphere emission " + rgb(s.sky_sphere->emission) + " transform " +
+                      matrix(s.sky_sphere->transform) + where(s.sky_sphere->loc));
+        for (const auto& pg : s.sky_sphere->pigments) p.pigment(1, "pigment", pg);
+    }
+    for (size_t i = 0; i < s.lights.size(); ++i) p.light(static_cast<int>(i), s.lights[i]);
+    for (size_t i = 0; i < s.materials.size(); ++i) p.material(static_cast<int>(i), s.materials[i]);
+    for (size_t i = 0; i < s.meshes.size(); ++i) {
+        const Mesh& m = s.meshes[i];
+        p.line(0, "mesh " + std::to_string(i) + " positions " + std::to_string(m.positions.size()) +
+                      " normals " + std::to_string(m.normals.size()) + " uvs " +
+                      std::to_string(m.uvs.size()) + " faces " + std::to_string(m.faces.size()) +
+                      (m.has_inside_vector ? " inside_vector " + vec(m.inside_vector) : "") +
+                      where(m.loc));
+    }
+    for (size_t i = 0; i < s.objects.size(); ++i)
+        p.object(0, s.objects[i], "object " + std::to_string(i) + " ");
+    return p.out.str();
+}
+
 }  // namespace glint::formats

@@ -1,0 +1,227 @@
+// The camera, resolved the way POV-Ray 3.7 does for #version >= 3.5 (Parse_Camera in
+// source/backend/parser/parse.cpp): modifiers are collected first and then applied in a fixed
+// order (right, direction, angle, up, sky, location, look_at, orthographic sizing,
+// transforms), so the result does not depend on the order they were written in.
+// Also global_settings, background and sky_sphere.
+#include <cmath>
+
+#include "formats/pov/parser_impl.h"
+
+namespace glint::pov {
+
+namespace {
+constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON in these tests
+}
+
+void Parser::parse_camera_body(scene::Camera& cam) {
+    cam.loc = loc();
+    const Token& first = peek();
+    if (first.kind == TokKind::Word && lookup(first.text)) {
+        const Symbol& s = use_symbol(next());
+        auto c = std::get_if<scene::Camera>(&s.value);
+        if (!c) fail("expected a camera, got " + value_kind_name(s.value));
+        cam = *c;
+        // A copied camera only takes transforms (POV-Ray 3.5+).
+        Transform tr;
+        while (parse_transform_item(tr)) {
+        }
+        cam.location = tr.point(cam.location);
+        cam.direction = tr.vector(cam.direction);
+        cam.right = tr.vector(cam.right);
+        cam.up = tr.vector(cam.up);
+        cam.sky = tr.vector(cam.sky);
+        return;
+    }
+    scene::Camera n = cam;
+    std::optional<Vec3> look_at, up, right;
+    std::optional<double> angle;
+    Transform tr;
+    for (;;) {
+        const Token& t = next();
+        if (t.is_symbol('}') || t.kind == TokKind::End) {
+            unget();
+            break;
+        }
+        const std::string w = t.kind == TokKind::Word && !lookup(t.text) ? t.text : std::string();
+        if (w == "perspective") {
+            n.kind = scene::CameraKind::Perspective;
+        } else if (w == "orthographic") {
+            n.kind = scene::CameraKind::Orthographic;
+        } else if (w == "fisheye" || w == "ultra_wide_angle" || w == "omnimax" ||
+                   w == "panoramic" || w == "spherical" || w == "cylinder" ||
+                   w == "mesh_camera") {
+            unsupported("the '" + w + "' camera");
+        } else if (w == "angle") {
+            FileLoc l = loc();
+            double a = n.kind == scene::CameraKind::Orthographic ? allow_float(0) : parse_float();
+            if (a < 0) fail_at(l, "negative viewing angle");
+            angle = a;
+        } else if (w == "location") {
+            n.location = parse_vector();
+        } else if (w == "look_at") {
+            look_at = parse_vector();
+        } else if (w == "direction") {
+            n.direction = parse_vector();
+        } else if (w == "up") {
+            up = parse_vector();
+        } else if (w == "right") {
+            right = parse_vector();
+        } else if (w == "sky") {
+            n.sky = parse_vector();
+        } else if (w == "focal_point") {
+            parse_vector();  // only used by focal blur
+        } else if (w == "aperture") {
+            if (parse_float() != 0) unsupported("focal blur (aperture)");
+        } else if (w == "blur_samples") {
+            parse_float();
+            if (accept(",")) parse_float();
+        } else if (w == "confidence" || w == "variance") {
+            parse_float();
+        } else if (w == "normal" || w == "bokeh") {
+            unsupported("camera '" + w + "'");
+        } else {
+            unget();
+            Transform delta;
+            if (!parse_transform_item(delta))
+                fail("expected a camera item (location, look_at, angle, ...), got " +
+                     describe(next()));
+            tr = tr.then(delta);
+        }
+    }
+    if (up) n.up = *up;
+    if (right) n.right = *right;
+    if (angle) {
+        FileLoc l = n.loc;
+        if (*angle >= 180) fail_at(l, "the viewing angle must be smaller than 180 degrees");
+        if (*angle > 0) {
+            // direction length so that `right` spans `angle` degrees (parse.cpp).
+            double dl = length(n.right) / std::tan(*angle * kPi / 360.0) / 2.0;
+            n.direction = normalize(n.direction) * dl;
+        }
+        n.angle = *angle;
+    }
+    Vec3 target = look_at.value_or(Vec3(0, 0, 1));
+    if (look_at) {
+        double dl = length(n.direction), ul = length(n.up), rl = length(n.right);
+        double handedness = dot(cross(n.up, n.direction), n.right);
+        Vec3 d = *look_at - n.location;
+        if (length_squared(d) < kEpsilon)
+            fail_at(n.loc, "the camera location and look_at point must be different");
+        n.direction = normalize(d);
+        Vec3 saved_right = n.right;
+        n.right = cross(n.sky, n.direction);
+        if (std::fabs(n.right.x) < kEpsilon && std::fabs(n.right.y) < kEpsilon &&
+            std::fabs(n.right.z) < kEpsilon) {
+            diag.warning(n.loc, "camera look_at direction and sky are parallel; keeping right");
+            n.right = saved_right;
+        }
+        n.right = normalize(n.right);
+        n.up = cross(n.direction, n.right);
+        n.direction = n.direction * dl;
+        n.right = n.right * (handedness > 0 ? rl : -rl);
+        n.up = n.up * ul;
+    }
+    if (n.kind == scene::CameraKind::Orthographic && ((!up && !right) || angle)) {
+        // Size the orthographic view like the perspective one at the look_at distance.
+        double k1 = length(target - n.location), k2 = length(n.direction);
+        if (k1 > kEpsilon && k2 > kEpsilon) {
+            n.right = n.right * (k1 / k2);
+            n.up = n.up * (k1 / k2);
+        }
+    }
+    n.location = tr.point(n.location);
+    n.direction = tr.vector(n.direction);
+    n.right = tr.vector(n.right);
+    n.up = tr.vector(n.up);
+    n.sky = tr.vector(n.sky);
+    cam = n;
+}
+
+static void skip_block_tokens(Parser& p, const std::string& what) {
+    p.expect_open(what.c_str());
+    int depth = 1;
+    while (depth > 0) {
+        const Token& c = p.next();
+        if (c.kind == TokKind::End) p.fail("unterminated '" + what + "' block");
+        if (c.is_symbol('{')) ++depth;
+        if (c.is_symbol('}')) --depth;
+    }
+}
+
+void Parser::parse_global_settings() {
+    expect_open("global_settings");
+    FileLoc o = loc();
+    scene.global.loc = o;
+    for (;;) {
+        const Token& t = next();
+        if (t.is_symbol('}')) return;
+        if (t.kind == TokKind::End) expect_close("global_settings", o);
+        const std::string w = t.kind == TokKind::Word ? t.text : std::string();
+        if (w == "assumed_gamma") {
+            scene.global.assumed_gamma = parse_float();
+        } else if (w == "ambient_light") {
+            scene.global.ambient_light = parse_rgb();
+        } else if (w == "max_trace_level") {
+            scene.global.max_trace_level = static_cast<int>(parse_float());
+        } else if (w == "adc_bailout") {
+            scene.global.adc_bailout = parse_float();
+        } else if (w == "noise_generator") {
+            scene.global.noise_generator = static_cast<int>(parse_float());
+        } else if (w == "radiosity" || w == "photons" || w == "subsurface") {
+            diag.warning(loc(), "global_settings '" + w + "' is not supported and is ignored");
+            skip_block_tokens(*this, w);
+        } else if (w == "charset") {
+            diag.warning(loc(), "global_settings 'charset' is ignored");
+            next();
+        } else if (w == "max_intersections" || w == "number_of_waves" || w == "irid_wavelength" ||
+                   w == "hf_gray_16" || w == "mm_per_unit") {
+            diag.warning(loc(), "global_settings '" + w + "' is ignored");
+            if (w == "irid_wavelength") parse_rgb();
+            else allow_float(0);
+        } else {
+            fail("expected a global_settings item (assumed_gamma, max_trace_level, ...), got " +
+                 describe(t));
+        }
+    }
+}
+
+void Parser::parse_background() {
+    expect_open("background");
+    FileLoc o = loc();
+    scene.background = parse_color();
+    expect_close("background", o);
+}
+
+void Parser::parse_sky_sphere() {
+    expect_open("sky_sphere");
+    FileLoc o = loc();
+    scene::SkySphere sky;
+    sky.loc = o;
+    for (;;) {
+        const Token& t = next();
+        if (t.is_symbol('}')) break;
+        if (t.kind == TokKind::End) expect_close("sky_sphere", o);
+        if (t.is("pigment")) {
+            expect_open("pigment");
+            FileLoc po = loc();
+            scene::Pigment p;
+            p.loc = po;
+            parse_pigment_body(p);
+            expect_close("pigment", po);
+            sky.pigments.push_back(p);
+        } else if (t.is("emission")) {
+            sky.emission = parse_rgb();
+        } else {
+            unget();
+            Transform delta;
+            if (!parse_transform_item(delta))
+                fail("expected pigment, emission or a transform in sky_sphere, got " +
+                     describe(next()));
+            sky.transform = sky.transform.then(delta);
+        }
+    }
+    if (sky.pigments.empty()) fail_at(o, "sky_sphere needs at least one pigment");
+    scene.sky_sphere = std::move(sky);
+}
+
+}  // namespace glint::pov

@@ -1,0 +1,533 @@
+// Objects (reference manual 3.4 "Objects"; parse.cpp in POV-Ray): finite and infinite shapes,
+// CSG, meshes, light sources and the object modifiers. Transforms after a texture move the
+// texture with the object, as POV-Ray does.
+#include <cmath>
+#include <unordered_set>
+
+#include "formats/pov/parser_impl.h"
+
+namespace glint::pov {
+
+namespace {
+
+const std::unordered_set<std::string>& object_keywords() {
+    static const std::unordered_set<std::string> k = {
+        "sphere", "plane", "box", "cylinder", "cone", "disc", "torus", "triangle",
+        "smooth_triangle", "mesh", "mesh2", "union", "merge", "intersection", "difference",
+        "object", "light_source"};
+    return k;
+}
+
+const std::unordered_set<std::string>& unsupported_objects() {
+    static const std::unordered_set<std::string> k = {
+        "blob", "height_field", "isosurface", "julia_fractal", "lathe", "parametric", "polygon",
+        "prism", "quadric", "cubic", "quartic", "poly", "polynomial", "sor", "sphere_sweep",
+        "superellipsoid", "text", "bicubic_patch", "ovus", "lemon", "light_group"};
+    return k;
+}
+
+void transform_light(scene::Light& l, const Transform& t) {
+    l.location = t.point(l.location);
+    l.point_at = t.point(l.point_at);
+    if (l.area) {
+        l.area->axis1 = t.vector(l.area->axis1);
+        l.area->axis2 = t.vector(l.area->axis2);
+    }
+}
+
+// Textures of CSG children are in world space too: they follow every enclosing transform.
+void transform_child_textures(PovObject& o, const Transform& t) {
+    if (o.texture) transform_texture(*o.texture, t);
+    for (auto& c : o.children) transform_child_textures(c, t);
+}
+
+}  // namespace
+
+bool Parser::is_object_keyword(const Token& t) const {
+    return t.kind == TokKind::Word && !lookup(t.text) && object_keywords().count(t.text) > 0;
+}
+
+void Parser::apply_transform(PovObject& o, const Transform& t) {
+    o.obj.transform = o.obj.transform.then(t);
+    if (o.texture) transform_texture(*o.texture, t);
+    for (auto& c : o.children) transform_child_textures(c, t);
+    for (auto& l : o.lights) transform_light(l, t);
+    for (auto& b : o.obj.bounded_by) b.transform = b.transform.then(t);
+    for (auto& c : o.obj.clipped_by) c.transform = c.transform.then(t);
+}
+
+static scene::Object plain_object(const PovObject& p) {
+    scene::Object o = p.obj;
+    if (auto csg = std::get_if<scene::Csg>(&o.shape)) {
+        csg->children.clear();
+        for (const auto& c : p.children) csg->children.push_back(plain_object(c));
+    }
+    o.material = -1;
+    return o;
+}
+
+static void parse_mesh_triangle(Parser& p, scene::Mesh& mesh, bool smooth) {
+    p.expect_open(smooth ? "smooth_triangle" : "triangle");
+    FileLoc o = p.loc();
+    scene::MeshFace f;
+    for (int i = 0; i < 3; ++i) {
+        if (i > 0) p.skip_comma();
+        f.v[i] = static_cast<int>(mesh.positions.size());
+        mesh.positions.push_back(p.parse_vector());
+        if (smooth) {
+            p.skip_comma();
+            f.n[i] = static_cast<int>(mesh.normals.size());
+            mesh.normals.push_back(p.parse_vector());
+        }
+    }
+    for (;;) {
+        if (p.accept("uv_vectors")) {
+            for (int i = 0; i < 3; ++i) {
+                if (i > 0) p.skip_comma();
+                Num n = p.parse_num(2);
+                f.uv[i] = static_cast<int>(mesh.uvs.size());
+                mesh.uvs.push_back({n.v[0], n.v[1]});
+            }
+        } else if (p.accept("texture")) {
+            p.expect_open("texture");
+            FileLoc to = p.loc();
+            scene::Texture t = p.parse_texture_body();
+            p.expect_close("texture", to);
+            f.material = p.add_material(t, scene::Interior{}, to);
+        } else {
+            break;
+        }
+    }
+    p.expect_close(smooth ? "smooth_triangle" : "triangle", o);
+    mesh.faces.push_back(f);
+}
+
+// mesh2 sections: `name { count, item, item, ... }`.
+template <typename F>
+static void parse_counted(Parser& p, const char* name, F item) {
+    p.expect_open(name);
+    FileLoc o = p.loc();
+    int n = static_cast<int>(p.parse_float());
+    if (n < 0) p.fail(std::string("negative count in ") + name);
+    for (int i = 0; i < n; ++i) {
+        p.skip_comma();
+        item(i);
+    }
+    p.expect_close(name, o);
+}
+
+static void parse_mesh2(Parser& p, scene::Mesh& mesh) {
+    std::vector<int> textures;
+    auto idx3 = [&](const char* what, int limit) {
+        Vec3 v = p.parse_vector();
+        std::array<int, 3> r{static_cast<int>(v.x), static_cast<int>(v.y), static_cast<int>(v.z)};
+        for (int k : r)
+            if (k < 0 || k >= limit)
+                p.fail(std::string(what) + " index " + std::to_string(k) + " is out of range (0.." +
+                       std::to_string(limit - 1) + ")");
+        return r;
+    };
+    for (;;) {
+        if (p.accept("vertex_vectors")) {
+            parse_counted(p, "vertex_vectors", [&](int) { mesh.positions.push_back(p.parse_vector()); });
+        } else if (p.accept("normal_vectors")) {
+            parse_counted(p, "normal_vectors", [&](int) { mesh.normals.push_back(p.parse_vector()); });
+        } else if (p.accept("uv_vectors")) {
+            parse_counted(p, "uv_vectors", [&](int) {
+                Num n = p.parse_num(2);
+                mesh.uvs.push_back({n.v[0], n.v[1]});
+            });
+        } else if (p.accept("texture_list")) {
+            parse_counted(p, "texture_list", [&](int) {
+                p.expect("texture", "in texture_list");
+                p.expect_open("texture");
+                FileLoc to = p.loc();
+                scene::Texture t = p.parse_texture_body();
+                p.expect_close("texture", to);
+                textures.push_back(p.add_material(t, scene::Interior{}, to));
+            });
+        } else if (p.accept("face_indices")) {
+            int nv = static_cast<int>(mesh.positions.size());
+            parse_counted(p, "face_indices", [&](int) {
+                scene::MeshFace f;
+                f.v = idx3("vertex", nv);
+                if (p.peek().is(",") && !textures.empty()) {
+                    p.skip_comma();
+                    if (p.next_is_expression_start() && p.peek().kind != TokKind::Symbol) {
+                        int t = static_cast<int>(p.parse_float());
+                        if (t < 0 || t >= static_cast<int>(textures.size()))
+                            p.fail("texture index out of range");
+                        f.material = textures[t];
+                        if (p.accept(",")) {
+                            if (p.peek().kind == TokKind::Number) {
+                                p.parse_float();  // per-vertex textures: the first one is used
+                                p.skip_comma();
+                                p.parse_float();
+                            } else {
+                                p.unget();
+                            }
+                        }
+                    }
+                }
+                mesh.faces.push_back(f);
+            });
+        } else if (p.accept("normal_indices")) {
+            int nn = static_cast<int>(mesh.normals.size());
+            size_t i = 0;
+            parse_counted(p, "normal_indices", [&](int) {
+                auto r = idx3("normal", nn);
+                if (i < mesh.faces.size()) mesh.faces[i].n = r;
+                ++i;
+            });
+        } else if (p.accept("uv_indices")) {
+            int nu = static_cast<int>(mesh.uvs.size());
+            size_t i = 0;
+            parse_counted(p, "uv_indices", [&](int) {
+                auto r = idx3("uv", nu);
+                if (i < mesh.faces.size()) mesh.faces[i].uv = r;
+                ++i;
+            });
+        } else {
+            break;
+        }
+    }
+    // Without normal_indices, mesh2 uses the normal with the vertex's index (POV-Ray rule).
+    if (!mesh.normals.empty()) {
+        for (auto& f : mesh.faces)
+            if (f.n[0] < 0 && mesh.normals.size() == mesh.positions.size()) f.n = f.v;
+    }
+    if (!mesh.uvs.empty()) {
+        for (auto& f : mesh.faces)
+            if (f.uv[0] < 0 && mesh.uvs.size() == mesh.positions.size()) f.uv = f.v;
+    }
+}
+
+bool Parser::parse_object(const Token& kw, PovObject& out) {
+    if (kw.kind != TokKind::Word || lookup(kw.text)) return false;
+    const std::string w = kw.text;
+    if (unsupported_objects().count(w)) unsupported("the '" + w + "' object");
+    if (!object_keywords().count(w)) return false;
+    FileLoc kloc = loc();
+    expect_open(w.c_str());
+    FileLoc o = loc();
+    PovObject po;
+    po.obj.loc = kloc;
+    // `sphere { Ident ... }`, `object { Ident ... }`: start from a declared object.
+    const Token& first = peek();
+    if (first.kind == TokKind::Word && lookup(first.text)) {
+        const Symbol& s = use_symbol(next());
+        if (auto obj = std::get_if<std::shared_ptr<const PovObject>>(&s.value)) {
+            po = **obj;
+            if (po.obj.name.empty()) po.obj.name = first.text;
+            if (w != "object" && !po.is_light && shape_name(po.obj.shape) != w &&
+                !(w == "union" || w == "merge" || w == "intersection" || w == "difference"))
+                fail("'" + first.text + "' is a " + shape_name(po.obj.shape) + ", not a " + w);
+            parse_object_mods(po, w.c_str(), o);
+            out = std::move(po);
+            return true;
+        }
+        if (w == "object")
+            fail("expected an object identifier, got " + value_kind_name(s.value) + " '" +
+                 first.text + "'");
+        unget();
+    }
+    if (w == "sphere") {
+        scene::Sphere s;
+        s.center = parse_vector();
+        skip_comma();
+        s.radius = parse_float();
+        po.obj.shape = s;
+    } else if (w == "plane") {
+        scene::Plane s;
+        FileLoc l = loc();
+        Vec3 n = parse_vector();
+        if (length(n) < 1e-10) fail_at(l, "degenerate plane normal");
+        s.normal = normalize(n);  // POV-Ray normalizes the normal, not the distance
+        skip_comma();
+        s.distance = parse_float();
+        po.obj.shape = s;
+    } else if (w == "box") {
+        scene::Box s;
+        s.corner1 = parse_vector();
+        skip_comma();
+        s.corner2 = parse_vector();
+        po.obj.shape = s;
+    } else if (w == "cylinder") {
+        scene::Cylinder s;
+        s.base = parse_vector();
+        skip_comma();
+        s.cap = parse_vector();
+        skip_comma();
+        s.radius = parse_float();
+        po.obj.shape = s;
+    } else if (w == "cone") {
+        scene::Cone s;
+        s.base = parse_vector();
+        skip_comma();
+        s.base_radius = parse_float();
+        skip_comma();
+        s.cap = parse_vector();
+        skip_comma();
+        s.cap_radius = parse_float();
+        po.obj.shape = s;
+    } else if (w == "disc") {
+        scene::Disc s;
+        s.center = parse_vector();
+        skip_comma();
+        Vec3 n = parse_vector();
+        if (length(n) < 1e-10) fail("degenerate disc normal");
+        s.normal = normalize(n);
+        skip_comma();
+        s.radius = parse_float();
+        skip_comma();
+        if (next_is_expression_start()) s.hole_radius = parse_float();
+        po.obj.shape = s;
+    } else if (w == "torus") {
+        scene::Torus s;
+        s.major = parse_float();
+        skip_comma();
+        s.minor = parse_float();
+        po.obj.shape = s;
+    } else if (w == "triangle") {
+        scene::Triangle s;
+        for (int i = 0; i < 3; ++i) {
+            if (i > 0) skip_comma();
+            s.p[i] = parse_vector();
+        }
+        po.obj.shape = s;
+    } else if (w == "smooth_triangle") {
+        scene::SmoothTriangle s;
+        for (int i = 0; i < 3; ++i) {
+            if (i > 0) skip_comma();
+            s.p[i] = parse_vector();
+            skip_comma();
+            s.n[i] = parse_vector();
+        }
+        po.obj.shape = s;
+    } else if (w == "mesh" || w == "mesh2") {
+        scene::Mesh mesh;
+        mesh.loc = kloc;
+        if (w == "mesh") {
+            for (;;) {
+                if (accept("triangle")) parse_mesh_triangle(*this, mesh, false);
+                else if (accept("smooth_triangle")) parse_mesh_triangle(*this, mesh, true);
+                else break;
+            }
+        } else {
+            parse_mesh2(*this, mesh);
+        }
+        if (accept("inside_vector")) {
+            mesh.has_inside_vector = true;
+            mesh.inside_vector = parse_vector();
+        }
+        if (mesh.faces.empty()) fail_at(kloc, "the " + w + " has no triangles");
+        scene.meshes.push_back(std::move(mesh));
+        po.obj.shape = scene::MeshRef{static_cast<int>(scene.meshes.size()) - 1};
+    } else if (w == "union" || w == "merge" || w == "intersection" || w == "difference") {
+        scene::Csg csg;
+        csg.op = w == "union" ? scene::CsgOp::Union : w == "merge" ? scene::CsgOp::Merge
+               : w == "intersection" ? scene::CsgOp::Intersection : scene::CsgOp::Difference;
+        po.obj.shape = csg;
+        for (;;) {
+            const Token& t = next();
+            PovObject child;
+            if (!parse_object(t, child)) {
+                unget();
+                break;
+            }
+            for (auto& l : child.lights) po.lights.push_back(l);
+            child.lights.clear();
+            if (!child.is_light) po.children.push_back(std::move(child));
+        }
+    } else if (w == "light_source") {
+        scene::Light l;
+        l.loc = kloc;
+        po.is_light = true;
+        parse_light_body(l, po);
+        po.lights.push_back(l);
+        out = std::move(po);
+        return true;
+    } else {  // object { sphere { ... } mods }
+        const Token& t = next();
+        if (!parse_object(t, po)) fail("expected an object identifier or object, got " + describe(t));
+    }
+    parse_object_mods(po, w.c_str(), o);
+    out = std::move(po);
+    return true;
+}
+
+void Parser::parse_light_body(scene::Light& l, PovObject& o) {
+    (void)o;
+    FileLoc opened = loc();
+    l.location = parse_vector();
+    skip_comma();
+    l.color = parse_rgb();
+    Transform tr;
+    for (;;) {
+        const Token& t = next();
+        if (t.is_symbol('}')) break;
+        const std::string w = t.kind == TokKind::Word ? t.text : std::string();
+        if (w == "spotlight") l.kind = scene::LightKind::Spot;
+        else if (w == "cylinder") l.kind = scene::LightKind::Cylinder;
+        else if (w == "point_at") l.point_at = parse_vector();
+        else if (w == "radius") l.radius = parse_float();
+        else if (w == "falloff") l.falloff = parse_float();
+        else if (w == "tightness") l.tightness = parse_float();
+        else if (w == "parallel") l.parallel = allow_float(1) != 0;
+        else if (w == "shadowless") l.shadowless = allow_float(1) != 0;
+        else if (w == "fade_distance") l.fade_distance = parse_float();
+        else if (w == "fade_power") l.fade_power = parse_float();
+        else if (w == "media_interaction" || w == "media_attenuation") allow_float(1);
+        else if (w == "circular" || w == "orient" || w == "jitter") {
+            if (!l.area) fail("'" + w + "' needs an area_light");
+            bool on = allow_float(1) != 0;
+            if (w == "circular") l.area->circular = on;
+            if (w == "orient") l.area->orient = on;
+            if (w == "jitter") l.area->jitter = on;
+        } else if (w == "adaptive") {
+            if (!l.area) fail("'adaptive' needs an area_light");
+            l.area->adaptive = static_cast<int>(parse_float());
+        } else if (w == "area_light") {
+            scene::AreaLight a;
+            a.axis1 = parse_vector();
+            skip_comma();
+            a.axis2 = parse_vector();
+            skip_comma();
+            a.size1 = static_cast<int>(parse_float());
+            skip_comma();
+            a.size2 = static_cast<int>(parse_float());
+            if (a.size1 < 1 || a.size2 < 1) fail("area_light sizes must be at least 1");
+            l.area = a;
+        } else if (w == "looks_like" || w == "projected_through" || w == "photons") {
+            unsupported("light_source '" + w + "'");
+        } else {
+            unget();
+            Transform delta;
+            if (!parse_transform_item(delta)) {
+                if (t.kind == TokKind::End)
+                    expect_close("light_source", opened);
+                fail("expected a light_source item (spotlight, area_light, ...), got " +
+                     describe(next()));
+            }
+            tr = tr.then(delta);
+        }
+    }
+    transform_light(l, tr);
+}
+
+void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& opened) {
+    auto flag = [&]() { return allow_float(1) != 0; };
+    auto ensure_texture = [&]() -> scene::Texture& {
+        if (!o.texture) {
+            o.texture = default_texture_;
+            o.texture->loc = loc();
+        }
+        return *o.texture;
+    };
+    for (;;) {
+        const Token& t = next();
+        if (t.is_symbol('}')) return;
+        if (t.kind == TokKind::End) expect_close(what, opened);
+        const std::string w = t.kind == TokKind::Word && !lookup(t.text) ? t.text : std::string();
+        if (w == "texture") {
+            expect_open("texture");
+            FileLoc lo = loc();
+            o.texture = parse_texture_body();
+            expect_close("texture", lo);
+        } else if (w == "pigment") {
+            expect_open("pigment");
+            FileLoc lo = loc();
+            parse_pigment_body(ensure_texture().pigment);
+            expect_close("pigment", lo);
+        } else if (w == "finish") {
+            expect_open("finish");
+            FileLoc lo = loc();
+            parse_finish_body(ensure_texture().finish);
+            expect_close("finish", lo);
+        } else if (w == "normal") {
+            expect_open("normal");
+            FileLoc lo = loc();
+            parse_normal_body(ensure_texture().normal);
+            expect_close("normal", lo);
+        } else if (w == "interior") {
+            expect_open("interior");
+            FileLoc lo = loc();
+            scene::Interior in = o.interior.value_or(scene::Interior{});
+            parse_interior_body(in);
+            o.interior = in;
+            expect_close("interior", lo);
+        } else if (w == "material") {
+            expect_open("material");
+            FileLoc lo = loc();
+            MaterialValue m = parse_material_body();
+            expect_close("material", lo);
+            if (m.texture) o.texture = m.texture;
+            if (m.interior) o.interior = m.interior;
+        } else if (w == "inverse") {
+            o.obj.inverse = !o.obj.inverse;
+        } else if (w == "hollow") {
+            o.obj.hollow = flag();
+        } else if (w == "no_shadow") {
+            o.obj.no_shadow = flag();
+        } else if (w == "no_image") {
+            o.obj.no_image = flag();
+        } else if (w == "no_reflection") {
+            o.obj.no_reflection = flag();
+        } else if (w == "double_illuminate") {
+            o.obj.double_illuminate = flag();
+        } else if (w == "no_radiosity") {
+            flag();
+        } else if (w == "sturm") {
+            bool on = flag();
+            if (auto tor = std::get_if<scene::Torus>(&o.obj.shape)) tor->sturm = on;
+        } else if (w == "open") {
+            bool on = flag();
+            if (auto c = std::get_if<scene::Cylinder>(&o.obj.shape)) c->open = on;
+            else if (auto k = std::get_if<scene::Cone>(&o.obj.shape)) k->open = on;
+            else fail("'open' applies to cylinders and cones only");
+        } else if (w == "bounded_by" || w == "clipped_by") {
+            bool bounded = w == "bounded_by";
+            expect_open(w.c_str());
+            FileLoc lo = loc();
+            auto& dst = bounded ? o.obj.bounded_by : o.obj.clipped_by;
+            if (accept(bounded ? "clipped_by" : "bounded_by")) {
+                dst = bounded ? o.obj.clipped_by : o.obj.bounded_by;
+            } else {
+                dst.clear();
+                for (;;) {
+                    const Token& c = next();
+                    PovObject child;
+                    if (!parse_object(c, child)) {
+                        unget();
+                        break;
+                    }
+                    dst.push_back(plain_object(child));
+                }
+            }
+            expect_close(w.c_str(), lo);
+        } else if (w == "photons" || w == "radiosity") {
+            diag.warning(loc(), std::string("'") + w + "' settings are ignored");
+            expect_open(w.c_str());
+            int depth = 1;
+            while (depth > 0) {
+                const Token& c = next();
+                if (c.kind == TokKind::End) fail("unterminated '" + w + "' block");
+                if (c.is_symbol('{')) ++depth;
+                if (c.is_symbol('}')) --depth;
+            }
+        } else if (w == "uv_mapping" || w == "interior_texture" || w == "split_union" ||
+                   w == "cutaway_textures") {
+            unsupported("object modifier '" + w + "'");
+        } else {
+            unget();
+            Transform delta;
+            if (!parse_transform_item(delta))
+                fail(std::string("expected an object modifier or '}' to close the ") + what +
+                     " opened at " + std::to_string(opened.line) + ":" +
+                     std::to_string(opened.column) + ", got " + describe(next()));
+            apply_transform(o, delta);
+        }
+    }
+}
+
+}  // namespace glint::pov

@@ -1,0 +1,227 @@
+// Entry points of the POV-Ray importer and the top level of a scene file: statements,
+// #declare values, #default, and the placement of finished objects into scene::Scene
+// (where POV-Ray's default texture and the material ids are settled).
+#include "formats/pov/parser.h"
+
+#include <filesystem>
+#include <unordered_set>
+
+#include "formats/pov/parser_impl.h"
+
+namespace glint::pov {
+
+namespace fs = std::filesystem;
+
+int Parser::add_material(const scene::Texture& t, const scene::Interior& in, const FileLoc& l) {
+    scene::Material m;
+    m.texture = t;
+    m.interior = in;
+    m.loc = l;
+    scene.materials.push_back(std::move(m));
+    return static_cast<int>(scene.materials.size()) - 1;
+}
+
+// Children without a texture or interior of their own inherit (material -1); those with one
+// get a material completed from what they inherit.
+static scene::Object to_ir(Parser& p, const PovObject& po, const scene::Texture& inh_tex,
+                           const scene::Interior& inh_in, bool top) {
+    scene::Object o = po.obj;
+    const scene::Texture& tex = po.texture ? *po.texture : inh_tex;
+    const scene::Interior& in = po.interior ? *po.interior : inh_in;
+    if (top || po.texture || po.interior)
+        o.material = p.add_material(tex, in, po.texture ? po.texture->loc : po.obj.loc);
+    else
+        o.material = -1;
+    if (auto csg = std::get_if<scene::Csg>(&o.shape)) {
+        csg->children.clear();
+        csg->children.reserve(po.children.size());
+        for (const auto& c : po.children) csg->children.push_back(to_ir(p, c, tex, in, false));
+    }
+    return o;
+}
+
+void Parser::place_object(PovObject o) {
+    for (auto& l : o.lights) scene.lights.push_back(l);
+    if (o.is_light) return;
+    scene::Texture def = default_texture_;
+    def.loc = o.obj.loc;
+    scene.objects.push_back(to_ir(*this, o, def, scene::Interior{}, true));
+}
+
+Value Parser::parse_rvalue() {
+    const Token& t = next();
+    if (t.kind == TokKind::Word) {
+        if (lookup(t.text)) {
+            const Symbol& s = use_symbol(t);
+            if (!std::holds_alternative<Num>(s.value) &&
+                !std::holds_alternative<std::string>(s.value))
+                return s.value;
+            unget();
+            return parse_expression_value();
+        }
+        const std::string w = t.text;
+        PovObject po;
+        if (parse_object(t, po)) return std::make_shared<const PovObject>(std::move(po));
+        auto braced = [&](auto body) {
+            expect_open(w.c_str());
+            FileLoc o = loc();
+            auto v = body();
+            expect_close(w.c_str(), o);
+            return v;
+        };
+        if (w == "texture") return braced([&] { return parse_texture_body(); });
+        if (w == "pigment")
+            return braced([&] {
+                scene::Pigment p = default_texture_.pigment;
+                p.loc = loc();
+                parse_pigment_body(p);
+                return p;
+            });
+        if (w == "finish")
+            return braced([&] {
+                scene::Finish f = default_texture_.finish;
+                f.loc = loc();
+                parse_finish_body(f);
+                return f;
+            });
+        if (w == "normal")
+            return braced([&] {
+                scene::Normal n = default_texture_.normal;
+                n.loc = loc();
+                parse_normal_body(n);
+                return n;
+            });
+        if (w == "interior")
+            return braced([&] {
+                scene::Interior in;
+                parse_interior_body(in);
+                return in;
+            });
+        if (w == "material") return braced([&] { return parse_material_body(); });
+        if (w == "camera")
+            return braced([&] {
+                scene::Camera c;
+                parse_camera_body(c);
+                return c;
+            });
+        if (w == "transform") return braced([&] { return parse_transform_body(); });
+        static const std::unordered_set<std::string> kUnsupported = {
+            "array", "function", "spline", "fog", "media", "rainbow", "sky_sphere", "density",
+            "color_map", "colour_map", "pigment_map", "normal_map", "texture_map", "slope_map",
+            "density_map", "material_map", "background", "light_group"};
+        if (kUnsupported.count(w)) unsupported("declaring '" + w + "'");
+    }
+    unget();
+    return parse_expression_value();
+}
+
+void Parser::parse_default() {
+    expect_open("#default");
+    FileLoc o = loc();
+    for (;;) {
+        const Token& t = next();
+        if (t.is_symbol('}') || t.kind == TokKind::End) {
+            unget();
+            break;
+        }
+        const std::string w = t.text;
+        if (w == "texture") {
+            expect_open("texture");
+            FileLoc lo = loc();
+            default_texture_ = parse_texture_body();
+            expect_close("texture", lo);
+        } else if (w == "pigment") {
+            expect_open("pigment");
+            FileLoc lo = loc();
+            parse_pigment_body(default_texture_.pigment);
+            expect_close("pigment", lo);
+        } else if (w == "finish") {
+            expect_open("finish");
+            FileLoc lo = loc();
+            parse_finish_body(default_texture_.finish);
+            expect_close("finish", lo);
+        } else if (w == "normal") {
+            expect_open("normal");
+            FileLoc lo = loc();
+            parse_normal_body(default_texture_.normal);
+            expect_close("normal", lo);
+        } else {
+            fail("expected texture, pigment, finish or normal in #default, got " + describe(t));
+        }
+    }
+    expect_close("#default", o);
+}
+
+static void parse_statements(Parser& p) {
+    for (;;) {
+        const Token& t = p.next();
+        if (t.kind == TokKind::End) return;
+        if (t.kind == TokKind::Word && !p.lookup(t.text)) {
+            const std::string& w = t.text;
+            if (w == "camera") {
+                p.expect_open("camera");
+                FileLoc o = p.loc();
+                scene::Camera cam;
+                p.parse_camera_body(cam);
+                p.expect_close("camera", o);
+                p.scene.camera = cam;
+                continue;
+            }
+            if (w == "global_settings") { p.parse_global_settings(); continue; }
+            if (w == "background") { p.parse_background(); continue; }
+            if (w == "sky_sphere") { p.parse_sky_sphere(); continue; }
+            if (w == "fog" || w == "media" || w == "rainbow" || w == "light_group")
+                p.unsupported("'" + w + "'");
+            PovObject o;
+            if (p.parse_object(t, o)) {
+                p.place_object(std::move(o));
+                continue;
+            }
+        }
+        if (t.kind == TokKind::Word && p.lookup(t.text))
+            p.fail("an identifier cannot stand alone here: write object { " + t.text +
+                   " } (or camera { ... }) , got '" + t.text + "'");
+        if (t.kind == TokKind::Word)
+            p.fail("unknown keyword or identifier '" + t.text + "'");
+        p.fail("expected an object, light_source, camera or directive, got " + describe(t));
+    }
+}
+
+scene::Scene Parser::parse_main_file(const std::string& path) {
+    if (!fs::is_regular_file(path))
+        throw Error(ErrorKind::MissingFile, FileLoc{std::make_shared<const std::string>(path), 0, 0},
+                    "cannot read the scene file '" + path + "'");
+    fs::path p(path);
+    scene_dir_ = p.has_parent_path() ? p.parent_path().string() : std::string(".");
+    int idx = load_file(path, false, FileLoc{});
+    frames_.push_back(Frame{idx, 0});
+    cur_file_ = idx;
+    parse_statements(*this);
+    scene.version = version;
+    return std::move(scene);
+}
+
+scene::Scene Parser::parse_main_string(const std::string& text, const std::string& name) {
+    fs::path p(name);
+    scene_dir_ = p.has_parent_path() ? p.parent_path().string() : std::string(".");
+    int idx = add_source(text, name, false);
+    scene.source_files.push_back(name);
+    frames_.push_back(Frame{idx, 0});
+    cur_file_ = idx;
+    parse_statements(*this);
+    scene.version = version;
+    return std::move(scene);
+}
+
+scene::Scene parse_file(const std::string& path, const ParseOptions& options, Diagnostics& diag) {
+    Parser p(options, diag);
+    return p.parse_main_file(path);
+}
+
+scene::Scene parse_string(const std::string& text, const std::string& name,
+                          const ParseOptions& options, Diagnostics& diag) {
+    Parser p(options, diag);
+    return p.parse_main_string(text, name);
+}
+
+}  // namespace glint::pov

@@ -1,0 +1,195 @@
+// The POV-Ray importer's parser state, shared by the files that implement its layers:
+//   token_stream.cpp  tokens from the #include stack, directives, macro calls, conditionals
+//   expressions.cpp   float/vector/color/string expressions
+//   materials.cpp     texture, pigment, finish, normal, interior, color maps
+//   objects.cpp       shapes, CSG, meshes, lights, object modifiers
+//   camera.cpp        camera resolution, global_settings, background, sky_sphere
+//   parser.cpp        the top-level loop and placement of objects into the scene
+// Internal to formats/pov; the public entry points are in parser.h.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "core/log.h"
+#include "formats/pov/parser.h"
+#include "formats/pov/scanner.h"
+#include "formats/pov/value.h"
+#include "scene/scene.h"
+
+namespace glint::pov {
+
+// Thrown for a feature glint does not implement yet. Inside the standard include files a
+// declaration that throws this is skipped and its identifier marked unusable.
+class Unsupported : public Error {
+public:
+    Unsupported(FileLoc loc, const std::string& message)
+        : Error(ErrorKind::Scene, std::move(loc), message) {}
+};
+
+struct SourceFile {
+    std::shared_ptr<const std::string> name;
+    std::string dir;  // folder of the file, for #include and image_map lookups
+    std::vector<Token> tokens;
+    bool system = false;  // a standard include (outside the scene's folder)
+};
+
+enum class CondKind { If, While, For, Switch };
+
+struct Cond {
+    CondKind kind;
+    FileLoc loc;
+    size_t restart = 0;  // While: token index of the condition; For: first body token
+    long long iterations = 0;
+    std::string var;      // For: loop variable
+    double end = 0, step = 1;
+    double switch_value = 0;
+};
+
+struct Frame {
+    int file = 0;
+    size_t pos = 0;
+    bool is_macro = false;
+    bool pushed_scope = false;
+    std::vector<Cond> conds;
+    FileLoc call_loc;  // macro call or #include
+};
+
+// Pattern transforms map pattern space to world, so later transforms compose after them;
+// sub-pigments (checker entries) move with their parent as in POV-Ray's Transform_Pigment.
+void transform_pigment(scene::Pigment& p, const Transform& t);
+void transform_texture(scene::Texture& tex, const Transform& t);
+
+class Parser {
+public:
+    Parser(const ParseOptions& options, Diagnostics& diag);
+
+    scene::Scene parse_main_file(const std::string& path);
+    scene::Scene parse_main_string(const std::string& text, const std::string& name);
+
+    // ---- token layer (token_stream.cpp)
+    const Token& next();   // the next grammar token; directives and macro calls are handled
+    const Token& peek() { next(); unget(); return *cur_; }
+    void unget() { ungot_ = true; }
+    FileLoc loc() const { return loc_of(cur_file_, *cur_); }  // of the last token
+    FileLoc loc_of(int file, const Token& t) const {
+        return FileLoc{files_[file]->name, t.line, t.column};
+    }
+    bool accept(const char* word);        // consumes the token if it is `word`
+    void expect(const char* word, const char* context);
+    void expect_open(const char* what);   // '{'; remembers where for the matching '}'
+    void expect_close(const char* what, const FileLoc& opened);
+    [[noreturn]] void fail(const std::string& message) const;
+    [[noreturn]] void fail_at(const FileLoc& loc, const std::string& message) const;
+    [[noreturn]] void unsupported(const std::string& what) const;
+    bool in_system_file() const;
+    const SourceFile& current_file() const { return *files_[cur_file_]; }
+
+    // Identifiers.
+    const Symbol* lookup(const std::string& name) const;
+    // Finds `name` or fails (unknown identifier / unusable declaration).
+    const Symbol& use_symbol(const Token& t);
+    void declare(const std::string& name, Value v, const FileLoc& loc, bool local);
+    bool is_identifier(const Token& t) const {
+        return t.kind == TokKind::Word && lookup(t.text) != nullptr;
+    }
+
+    // ---- expressions (expressions.cpp)
+    Num parse_num(int terms);  // an expression promoted to `terms` components
+    double parse_float();
+    Vec3 parse_vector();
+    std::string parse_string();
+    Value parse_expression_value();  // a number or a string
+    // Color after an optional `color`/`colour` keyword: rgb/rgbf/.../red/... or expression.
+    scene::ColorFT parse_color();
+    Color parse_rgb();
+    bool next_is_expression_start();
+    double allow_float(double fallback);  // an optional float (POV-Ray's Allow_Float)
+    void skip_comma() { accept(","); }
+
+    // ---- materials (materials.cpp)
+    scene::Texture default_texture() const { return default_texture_; }
+    scene::Texture parse_texture_body();      // after texture {
+    void parse_pigment_body(scene::Pigment& p);  // after pigment {
+    void parse_finish_body(scene::Finish& f);    // after finish {
+    void parse_normal_body(scene::Normal& n);    // after normal {
+    void parse_interior_body(scene::Interior& in);
+    MaterialValue parse_material_body();
+    std::vector<scene::ColorMapEntry> parse_color_map_body();
+    void parse_image_map_body(scene::ImageMap& im);
+    // A transform keyword (translate/rotate/scale/matrix/transform) if the next token is one.
+    bool parse_transform_item(Transform& t);
+    Transform parse_transform_body();
+    std::string resolve_file(const std::string& name, const FileLoc& loc) const;
+
+    // ---- objects (objects.cpp)
+    bool is_object_keyword(const Token& t) const;
+    // Parses an object statement whose keyword was just read; false if `kw` is not one.
+    bool parse_object(const Token& kw, PovObject& out);
+    void parse_object_mods(PovObject& o, const char* what, const FileLoc& opened);
+    void apply_transform(PovObject& o, const Transform& t);
+    void parse_light_body(scene::Light& l, PovObject& o);
+
+    // ---- camera and scene settings (camera.cpp)
+    void parse_camera_body(scene::Camera& cam);
+    void parse_global_settings();
+    void parse_background();
+    void parse_sky_sphere();
+
+    // ---- top level (parser.cpp)
+    void place_object(PovObject o);
+    int add_material(const scene::Texture& t, const scene::Interior& in, const FileLoc& loc);
+    // What a #declare right-hand side can be: object, texture, expression, ...
+    Value parse_rvalue();
+    void parse_default();
+
+    const ParseOptions& options;
+    Diagnostics& diag;
+    scene::Scene scene;
+    double version = 3.7;
+    scene::Texture default_texture_;
+
+private:
+    // token_stream.cpp internals
+    int load_file(const std::string& path, bool system, const FileLoc& from);
+    int add_source(const std::string& text, const std::string& name, bool system);
+    const Token& raw();        // next token of the top frame, no processing
+    bool handle_directive(const Token& d, int file);
+    void handle_declare(bool local, const FileLoc& dloc);
+    void handle_include(const FileLoc& dloc);
+    void handle_macro_def(const FileLoc& dloc);
+    void call_macro(const Macro& m, const FileLoc& loc);
+    void handle_if(const FileLoc& dloc, int mode);  // 0 #if, 1 #ifdef, 2 #ifndef
+    void handle_else(const Token& d);
+    void handle_end(const FileLoc& dloc);
+    void handle_while(const FileLoc& dloc);
+    void handle_for(const FileLoc& dloc);
+    void handle_switch(const FileLoc& dloc);
+    void handle_break(const FileLoc& dloc);
+    void handle_message(const std::string& kind, const FileLoc& dloc);
+    double parse_cond_paren();
+    // Skips raw tokens to the #else/#elseif/#end (etc.) that closes the current level.
+    std::string skip_block(bool stop_at_else, bool stop_at_case, const FileLoc& opened,
+                           int depth = 0);
+    void skip_declaration(size_t frames, size_t pos, size_t scopes, size_t conds);
+    std::string read_name(const char* context);
+
+    std::vector<std::unique_ptr<SourceFile>> files_;
+    std::unordered_map<std::string, int> file_cache_;
+    std::vector<Frame> frames_;
+    std::vector<std::unordered_map<std::string, Symbol>> scopes_;
+    const Token* cur_ = nullptr;
+    int cur_file_ = 0;
+    bool ungot_ = false;
+    long long token_count_ = 0;
+    int macro_depth_ = 0;
+    std::string scene_dir_;
+    Token end_token_;
+    Token fake_end_;  // ends a #declare value at the next statement directive
+    size_t declare_frame_ = size_t(-1);
+};
+
+}  // namespace glint::pov

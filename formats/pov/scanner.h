@@ -1,0 +1,45 @@
+// The first stage of the POV-Ray importer: characters -> tokens with line/column. Comments
+// (// and nested /* */) vanish here; `#word` becomes one Directive token so the directive layer
+// (token_stream.cpp) can recognise it without looking at whitespace.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+
+namespace glint::pov {
+
+enum class TokKind : unsigned char {
+    Word,       // keyword or identifier: text
+    Number,     // number
+    String,     // text (escapes resolved)
+    Symbol,     // text: one of { } ( ) [ ] < > , ; = + - * / . ? : ! & | <= >= !=
+    Directive,  // text: the word after '#'
+    End,        // end of the file
+};
+
+struct Token {
+    TokKind kind = TokKind::End;
+    std::string text;
+    double number = 0;
+    int line = 0;
+    int column = 0;
+
+    bool is(const char* s) const {
+        return (kind == TokKind::Word || kind == TokKind::Symbol) && text == s;
+    }
+    bool is_symbol(char c) const {
+        return kind == TokKind::Symbol && text.size() == 1 && text[0] == c;
+    }
+};
+
+// Throws glint::Error (ErrorKind::Scene) for an unterminated comment or string or a stray
+// character, at its location in `file`.
+std::vector<Token> scan(const std::string& text, const std::shared_ptr<const std::string>& file);
+
+// A human-readable description of a token for messages: "'sphere'", "the number 3", ...
+std::string describe(const Token& t);
+
+}  // namespace glint::pov

@@ -1,0 +1,633 @@
+// The directive layer: tokens come from a stack of frames (the main file, #include files,
+// macro bodies). Directives are executed as they are met, the way POV-Ray's tokenizer does:
+// #while jumps back to its condition at #end, a false #if skips raw tokens to its #else/#end,
+// a macro call pushes a frame at the macro body and #end pops it.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "formats/pov/parser_impl.h"
+
+namespace glint::pov {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool opens_block(const std::string& d) {
+    return d == "if" || d == "ifdef" || d == "ifndef" || d == "while" || d == "for" ||
+           d == "switch" || d == "macro";
+}
+
+// Directives that start a new statement: while a #declare's right-hand side is being read,
+// meeting one of these ends the value (see Parser::next).
+bool starts_statement(const std::string& d) {
+    return opens_block(d) || d == "declare" || d == "local" || d == "include" ||
+           d == "undef" || d == "default" || d == "version" || d == "debug" ||
+           d == "warning" || d == "error";
+}
+
+}  // namespace
+
+Parser::Parser(const ParseOptions& opts, Diagnostics& d) : options(opts), diag(d) {
+    scopes_.emplace_back();  // global
+    end_token_.kind = TokKind::End;
+    fake_end_.kind = TokKind::Symbol;
+    fake_end_.text = ";";
+}
+
+int Parser::add_source(const std::string& text, const std::string& name, bool system) {
+    auto sf = std::make_unique<SourceFile>();
+    sf->name = std::make_shared<const std::string>(name);
+    fs::path p(name);
+    sf->dir = p.has_parent_path() ? p.parent_path().string() : std::string(".");
+    sf->system = system;
+    sf->tokens = scan(text, sf->name);
+    files_.push_back(std::move(sf));
+    return static_cast<int>(files_.size()) - 1;
+}
+
+int Parser::load_file(const std::string& path, bool system, const FileLoc& from) {
+    auto it = file_cache_.find(path);
+    if (it != file_cache_.end()) return it->second;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(ErrorKind::MissingFile, from, "cannot read '" + path + "'");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    int idx = add_source(ss.str(), path, system);
+    file_cache_[path] = idx;
+    bool seen = false;
+    for (const auto& s : scene.source_files) seen = seen || s == path;
+    if (!seen) scene.source_files.push_back(path);
+    return idx;
+}
+
+bool Parser::in_system_file() const { return !frames_.empty() && files_[cur_file_]->system; }
+
+void Parser::fail(const std::string& message) const { fail_at(loc(), message); }
+
+void Parser::fail_at(const FileLoc& l, const std::string& message) const {
+    throw Error(ErrorKind::Scene, l, message);
+}
+
+void Parser::unsupported(const std::string& what) const {
+    throw Unsupported(loc(), what + " is not supported yet");
+}
+
+// ---------------------------------------------------------------- raw tokens
+
+const Token& Parser::raw() {
+    for (;;) {
+        Frame& f = frames_.back();
+        const Token& t = files_[f.file]->tokens[f.pos];
+        if (t.kind != TokKind::End) {
+            ++f.pos;
+            cur_ = &t;
+            cur_file_ = f.file;
+            return t;
+        }
+        if (!f.conds.empty()) {
+            const Cond& c = f.conds.back();
+            fail_at(c.loc, "this directive has no matching #end before the end of the file");
+        }
+        if (f.is_macro) fail_at(f.call_loc, "the macro called here has no #end");
+        if (frames_.size() == 1) {
+            cur_ = &t;
+            cur_file_ = f.file;
+            return t;
+        }
+        if (f.pushed_scope) scopes_.pop_back();
+        frames_.pop_back();
+    }
+}
+
+const Token& Parser::next() {
+    for (;;) {
+        if (ungot_) {
+            ungot_ = false;
+            return *cur_;
+        }
+        // A #declare value ends where the next statement-opening directive begins.
+        if (declare_frame_ == frames_.size()) {
+            const Frame& f = frames_.back();
+            const Token& t = files_[f.file]->tokens[f.pos];
+            if (t.kind == TokKind::Directive && starts_statement(t.text)) {
+                fake_end_.line = t.line;
+                fake_end_.column = t.column;
+                cur_ = &fake_end_;
+                cur_file_ = f.file;
+                return fake_end_;
+            }
+        }
+        const Token& t = raw();
+        if (++token_count_ > options.max_tokens)
+            fail("the scene exceeds the token limit (" + std::to_string(options.max_tokens) + ")");
+        if (t.kind == TokKind::Directive) {
+            handle_directive(t, cur_file_);
+            continue;
+        }
+        if (t.kind == TokKind::Word) {
+            const Symbol* s = lookup(t.text);
+            if (s && !s->unusable) {
+                if (auto m = std::get_if<std::shared_ptr<const Macro>>(&s->value)) {
+                    auto keep = *m;
+                    call_macro(*keep, loc());
+                    continue;
+                }
+            }
+        }
+        return t;
+    }
+}
+
+bool Parser::accept(const char* word) {
+    const Token& t = next();
+    if (t.is(word)) return true;
+    unget();
+    return false;
+}
+
+void Parser::expect(const char* word, const char* context) {
+    const Token& t = next();
+    if (!t.is(word))
+        fail(std::string("expected '") + word + "' " + context + ", got " + describe(t));
+}
+
+void Parser::expect_open(const char* what) {
+    const Token& t = next();
+    if (!t.is_symbol('{'))
+        fail(std::string("expected '{' after '") + what + "', got " + describe(t));
+}
+
+void Parser::expect_close(const char* what, const FileLoc& opened) {
+    const Token& t = next();
+    if (!t.is_symbol('}'))
+        fail(std::string("expected '}' to close the ") + what + " opened at " +
+             std::to_string(opened.line) + ":" + std::to_string(opened.column) + ", got " +
+             describe(t));
+}
+
+// ---------------------------------------------------------------- identifiers
+
+const Symbol* Parser::lookup(const std::string& name) const {
+    for (size_t i = scopes_.size(); i-- > 0;) {
+        auto it = scopes_[i].find(name);
+        if (it != scopes_[i].end()) return &it->second;
+    }
+    return nullptr;
+}
+
+const Symbol& Parser::use_symbol(const Token& t) {
+    const Symbol* s = lookup(t.text);
+    if (!s) fail("unknown identifier '" + t.text + "'");
+    if (s->unusable) {
+        Error e(ErrorKind::Scene, loc(),
+                "'" + t.text + "' cannot be used: its declaration was skipped (" +
+                    s->unusable_reason + ")");
+        e.with_note(s->loc, "the unsupported feature in the declaration of '" + t.text + "'");
+        throw e;
+    }
+    return *s;
+}
+
+void Parser::declare(const std::string& name, Value v, const FileLoc& l, bool local) {
+    auto& scope = local ? scopes_.back() : scopes_.front();
+    Symbol& s = scope[name];
+    s.value = std::move(v);
+    s.loc = l;
+    s.unusable = false;
+    s.unusable_reason.clear();
+}
+
+std::string Parser::read_name(const char* context) {
+    const Token& t = raw();
+    if (t.kind != TokKind::Word)
+        fail(std::string("expected an identifier after ") + context + ", got " + describe(t));
+    return t.text;
+}
+
+// ---------------------------------------------------------------- directives
+
+bool Parser::handle_directive(const Token& d, int file) {
+    FileLoc dloc = loc_of(file, d);
+    const std::string& k = d.text;
+    if (k == "declare" || k == "local") {
+        handle_declare(k == "local", dloc);
+    } else if (k == "include") {
+        handle_include(dloc);
+    } else if (k == "if") {
+        handle_if(dloc, 0);
+    } else if (k == "ifdef") {
+        handle_if(dloc, 1);
+    } else if (k == "ifndef") {
+        handle_if(dloc, 2);
+    } else if (k == "else" || k == "elseif") {
+        handle_else(d);
+    } else if (k == "end") {
+        handle_end(dloc);
+    } else if (k == "while") {
+        handle_while(dloc);
+    } else if (k == "for") {
+        handle_for(dloc);
+    } else if (k == "switch") {
+        handle_switch(dloc);
+    } else if (k == "case") {
+        // Reached by falling through from the previous case: POV-Ray runs on.
+        parse_cond_paren();
+    } else if (k == "range") {
+        expect("(", "after #range");
+        parse_float();
+        skip_comma();
+        parse_float();
+        expect(")", "to close #range");
+    } else if (k == "break") {
+        handle_break(dloc);
+    } else if (k == "macro") {
+        handle_macro_def(dloc);
+    } else if (k == "undef") {
+        std::string name = read_name("#undef");
+        for (size_t i = scopes_.size(); i-- > 0;)
+            if (scopes_[i].erase(name)) break;
+    } else if (k == "debug" || k == "warning" || k == "error") {
+        handle_message(k, dloc);
+    } else if (k == "version") {
+        size_t saved = declare_frame_;
+        declare_frame_ = frames_.size();
+        double v = parse_float();
+        accept(";");
+        declare_frame_ = saved;
+        version = v;
+        scene.version = v;
+    } else if (k == "default") {
+        parse_default();
+    } else if (k == "fopen" || k == "fclose" || k == "read" || k == "write" ||
+               k == "statistics" || k == "render") {
+        throw Unsupported(dloc, "#" + k + " is not supported yet");
+    } else {
+        fail_at(dloc, "unknown directive '#" + k + "'");
+    }
+    return true;
+}
+
+void Parser::handle_declare(bool local, const FileLoc& dloc) {
+    std::string name = read_name(local ? "#local" : "#declare");
+    FileLoc nloc = loc();
+    const Token& eq = next();
+    if (!eq.is_symbol('=')) fail("expected '=' after '" + name + "', got " + describe(eq));
+    Frame& f = frames_.back();
+    size_t nframes = frames_.size(), start = f.pos, nscopes = scopes_.size();
+    size_t nconds = f.conds.size();
+    bool tolerant = files_[f.file]->system && !f.is_macro;
+    size_t saved = declare_frame_;
+    declare_frame_ = frames_.size();
+    try {
+        Value v = parse_rvalue();
+        declare_frame_ = saved;
+        declare(name, std::move(v), nloc, local);
+    } catch (const Unsupported& e) {
+        declare_frame_ = saved;
+        if (!tolerant) throw;
+        // A standard include may declare things glint cannot read yet; the scene fails only
+        // if it uses them (POV-Ray's includes are large, most scenes use a few names).
+        skip_declaration(nframes, start, nscopes, nconds);
+        Symbol s;
+        s.value = Num::scalar(0);
+        s.loc = e.loc();
+        s.unusable = true;
+        s.unusable_reason = e.what();
+        (local ? scopes_.back() : scopes_.front())[name] = std::move(s);
+        diag.warning(nloc, "skipped the declaration of '" + name + "': " + e.what());
+    }
+    (void)dloc;
+    accept(";");
+}
+
+void Parser::skip_declaration(size_t nframes, size_t start, size_t nscopes, size_t nconds) {
+    while (frames_.size() > nframes) frames_.pop_back();
+    while (scopes_.size() > nscopes) scopes_.pop_back();
+    Frame& f = frames_.back();
+    f.conds.resize(nconds);
+    f.pos = start;
+    ungot_ = false;
+    const auto& toks = files_[f.file]->tokens;
+    int depth = 0;
+    bool opened = false;
+    while (toks[f.pos].kind != TokKind::End) {
+        const Token& t = toks[f.pos];
+        if (depth == 0 && t.kind == TokKind::Directive) return;
+        ++f.pos;
+        if (t.kind != TokKind::Symbol) continue;
+        char c = t.text[0];
+        if (t.text.size() != 1) continue;
+        if (c == '{' || c == '(' || c == '[') {
+            ++depth;
+            opened = opened || c == '{';
+        } else if (c == '}' || c == ')' || c == ']') {
+            --depth;
+            if (depth <= 0 && c == '}' && opened) return;
+        } else if (c == ';' && depth == 0) {
+            --f.pos;  // leave the ';' for the caller
+            return;
+        }
+    }
+}
+
+void Parser::handle_include(const FileLoc& dloc) {
+    std::string name = parse_string();
+    FileLoc sloc = loc();
+    int non_macro = 0;
+    for (const auto& f : frames_) non_macro += f.is_macro ? 0 : 1;
+    if (non_macro >= options.max_include_depth)
+        fail_at(dloc, "#include nested deeper than " + std::to_string(options.max_include_depth) +
+                          " files");
+    std::vector<std::pair<std::string, bool>> dirs;
+    dirs.push_back({files_[cur_file_]->dir, files_[cur_file_]->system});
+    dirs.push_back({scene_dir_, false});
+    for (const auto& d : options.include_dirs) dirs.push_back({d, true});
+    std::string found;
+    bool system = false;
+    if (fs::path(name).is_absolute()) {
+        if (fs::is_regular_file(name)) found = name;
+    } else {
+        for (const auto& [dir, sys] : dirs) {
+            fs::path p = fs::path(dir) / name;
+            if (fs::is_regular_file(p)) {
+                found = p.lexically_normal().string();
+                // A folder the user lists that is the scene's own folder is not "system".
+                system = sys && fs::weakly_canonical(dir) != fs::weakly_canonical(scene_dir_);
+                break;
+            }
+        }
+    }
+    if (found.empty())
+        throw Error(ErrorKind::MissingFile, sloc, "cannot find include file '" + name + "'");
+    int idx = load_file(found, system, sloc);
+    files_[idx]->system = files_[idx]->system || system;
+    Frame f;
+    f.file = idx;
+    f.pos = 0;
+    f.pushed_scope = true;
+    f.call_loc = dloc;
+    scopes_.emplace_back();
+    frames_.push_back(std::move(f));
+}
+
+void Parser::handle_macro_def(const FileLoc& dloc) {
+    auto m = std::make_shared<Macro>();
+    m->name = read_name("#macro");
+    m->loc = dloc;
+    const Token& p = raw();
+    if (!p.is_symbol('(')) fail("expected '(' after the macro name, got " + describe(p));
+    for (;;) {
+        const Token& t = raw();
+        if (t.is_symbol(')')) break;
+        if (t.is_symbol(',')) continue;
+        if (t.kind != TokKind::Word) fail("expected a parameter name, got " + describe(t));
+        if (t.text == "optional") unsupported("optional macro parameters");
+        m->params.push_back(t.text);
+    }
+    m->file = frames_.back().file;
+    m->body = frames_.back().pos;
+    skip_block(false, false, dloc, 0);
+    Symbol& s = scopes_.front()[m->name];
+    s.value = std::shared_ptr<const Macro>(m);
+    s.loc = dloc;
+    s.unusable = false;
+}
+
+void Parser::call_macro(const Macro& m, const FileLoc& cloc) {
+    if (macro_depth_ >= options.max_macro_depth)
+        fail_at(cloc, "macro calls nested deeper than " + std::to_string(options.max_macro_depth) +
+                          " (runaway recursion?)");
+    expect("(", ("after the macro name '" + m.name + "'").c_str());
+    std::unordered_map<std::string, Symbol> args;
+    size_t saved = declare_frame_;
+    declare_frame_ = size_t(-1);
+    for (size_t i = 0; i < m.params.size(); ++i) {
+        if (i > 0) expect(",", "between macro arguments");
+        Symbol s;
+        s.loc = loc();
+        s.value = parse_rvalue();
+        args[m.params[i]] = std::move(s);
+    }
+    declare_frame_ = saved;
+    const Token& t = next();
+    if (!t.is_symbol(')'))
+        fail("expected ')' after the " + std::to_string(m.params.size()) + " argument(s) of macro '" +
+             m.name + "', got " + describe(t));
+    scopes_.push_back(std::move(args));
+    Frame f;
+    f.file = m.file;
+    f.pos = m.body;
+    f.is_macro = true;
+    f.pushed_scope = true;
+    f.call_loc = cloc;
+    frames_.push_back(std::move(f));
+    ++macro_depth_;
+}
+
+double Parser::parse_cond_paren() {
+    expect("(", "before the condition");
+    double v = parse_float();
+    expect(")", "after the condition");
+    return v;
+}
+
+std::string Parser::skip_block(bool stop_at_else, bool stop_at_case, const FileLoc& opened,
+                               int depth) {
+    Frame& f = frames_.back();
+    const auto& toks = files_[f.file]->tokens;
+    for (;;) {
+        const Token& t = toks[f.pos];
+        if (t.kind == TokKind::End)
+            fail_at(opened, "this directive has no matching #end before the end of the file");
+        ++f.pos;
+        if (t.kind != TokKind::Directive) continue;
+        const std::string& d = t.text;
+        if (opens_block(d)) {
+            ++depth;
+        } else if (d == "end") {
+            if (depth == 0) return d;
+            --depth;
+        } else if (depth == 0) {
+            if (stop_at_else && (d == "else" || d == "elseif")) return d;
+            if (stop_at_case && (d == "case" || d == "range" || d == "else")) return d;
+        }
+    }
+}
+
+void Parser::handle_if(const FileLoc& dloc, int mode) {
+    bool c;
+    if (mode == 0) {
+        c = parse_cond_paren() != 0;
+    } else {
+        const Token& p = raw();
+        if (!p.is_symbol('(')) fail("expected '(' after #ifdef/#ifndef, got " + describe(p));
+        std::string name = read_name("#ifdef");
+        const Token& q = raw();
+        if (!q.is_symbol(')')) fail("expected ')' after the identifier, got " + describe(q));
+        c = lookup(name) != nullptr;
+        if (mode == 2) c = !c;
+    }
+    for (;;) {
+        if (c) {
+            frames_.back().conds.push_back(Cond{CondKind::If, dloc});
+            return;
+        }
+        std::string s = skip_block(true, false, dloc);
+        if (s == "end") return;
+        if (s == "else") {
+            frames_.back().conds.push_back(Cond{CondKind::If, dloc});
+            return;
+        }
+        c = parse_cond_paren() != 0;  // #elseif
+    }
+}
+
+void Parser::handle_else(const Token& d) {
+    auto& conds = frames_.back().conds;
+    FileLoc dloc = loc();
+    if (!conds.empty() && conds.back().kind == CondKind::Switch && d.text == "else") return;
+    if (conds.empty() || conds.back().kind != CondKind::If)
+        fail_at(dloc, "#" + d.text + " without a matching #if");
+    FileLoc opened = conds.back().loc;
+    skip_block(false, false, opened);
+    frames_.back().conds.pop_back();
+}
+
+void Parser::handle_end(const FileLoc& dloc) {
+    Frame& f = frames_.back();
+    if (f.conds.empty()) {
+        if (!f.is_macro) fail_at(dloc, "#end without a matching #if, #while, #for, #switch or #macro");
+        if (f.pushed_scope) scopes_.pop_back();
+        frames_.pop_back();
+        --macro_depth_;
+        return;
+    }
+    Cond& c = f.conds.back();
+    switch (c.kind) {
+        case CondKind::If:
+        case CondKind::Switch:
+            f.conds.pop_back();
+            return;
+        case CondKind::While: {
+            if (++c.iterations >= options.max_loop_iterations)
+                fail_at(c.loc, "#while loop ran more than " +
+                                   std::to_string(options.max_loop_iterations) + " iterations");
+            size_t after = f.pos;
+            f.pos = c.restart;
+            if (parse_cond_paren() == 0) {
+                frames_.back().conds.pop_back();
+                frames_.back().pos = after;
+            }
+            return;
+        }
+        case CondKind::For: {
+            if (++c.iterations >= options.max_loop_iterations)
+                fail_at(c.loc, "#for loop ran more than " +
+                                   std::to_string(options.max_loop_iterations) + " iterations");
+            const Symbol* s = lookup(c.var);
+            const Num* n = s ? std::get_if<Num>(&s->value) : nullptr;
+            if (!n) fail_at(c.loc, "the #for loop variable '" + c.var + "' is no longer a float");
+            double v = n->v[0] + c.step;
+            declare(c.var, Num::scalar(v), c.loc, true);
+            bool more = c.step > 0 ? v <= c.end + 1e-10 : v >= c.end - 1e-10;
+            if (more)
+                f.pos = c.restart;
+            else
+                f.conds.pop_back();
+            return;
+        }
+    }
+}
+
+void Parser::handle_while(const FileLoc& dloc) {
+    size_t restart = frames_.back().pos;
+    if (parse_cond_paren() != 0) {
+        Cond c{CondKind::While, dloc};
+        c.restart = restart;
+        frames_.back().conds.push_back(c);
+    } else {
+        skip_block(false, false, dloc);
+    }
+}
+
+void Parser::handle_for(const FileLoc& dloc) {
+    expect("(", "after #for");
+    const Token& t = next();
+    if (t.kind != TokKind::Word) fail("expected the loop variable after '#for (', got " + describe(t));
+    std::string var = t.text;
+    expect(",", "after the #for variable");
+    double start = parse_float();
+    expect(",", "after the #for start value");
+    double end = parse_float();
+    double step = 1;
+    if (accept(",")) step = parse_float();
+    expect(")", "to close #for");
+    if (step == 0) fail_at(dloc, "#for step must not be zero");
+    declare(var, Num::scalar(start), dloc, true);
+    bool run = step > 0 ? start <= end + 1e-10 : start >= end - 1e-10;
+    if (!run) {
+        skip_block(false, false, dloc);
+        return;
+    }
+    Cond c{CondKind::For, dloc};
+    c.restart = frames_.back().pos;
+    c.var = var;
+    c.end = end;
+    c.step = step;
+    frames_.back().conds.push_back(c);
+}
+
+void Parser::handle_switch(const FileLoc& dloc) {
+    double v = parse_cond_paren();
+    Cond c{CondKind::Switch, dloc};
+    c.switch_value = v;
+    frames_.back().conds.push_back(c);
+    for (;;) {
+        std::string s = skip_block(false, true, dloc);
+        if (s == "end") {
+            frames_.back().conds.pop_back();
+            return;
+        }
+        if (s == "else") return;
+        if (s == "case") {
+            // POV-Ray compares with a small tolerance (EPSILON in tokenize.cpp).
+            if (std::fabs(parse_cond_paren() - v) < 1e-10) return;
+        } else {
+            expect("(", "after #range");
+            double lo = parse_float();
+            skip_comma();
+            double hi = parse_float();
+            expect(")", "to close #range");
+            if (v >= lo && v <= hi) return;
+        }
+    }
+}
+
+void Parser::handle_break(const FileLoc& dloc) {
+    auto& conds = frames_.back().conds;
+    int above = 0;
+    for (size_t i = conds.size(); i-- > 0; ++above) {
+        if (conds[i].kind == CondKind::Switch) {
+            FileLoc opened = conds[i].loc;
+            conds.resize(i + 1);
+            skip_block(false, false, opened, above);
+            frames_.back().conds.pop_back();
+            return;
+        }
+    }
+    fail_at(dloc, "#break outside a #switch");
+}
+
+void Parser::handle_message(const std::string& kind, const FileLoc& dloc) {
+    std::string text = parse_string();
+    if (kind == "error") throw Error(ErrorKind::Scene, dloc, "#error: " + text);
+    if (kind == "warning")
+        diag.warning(dloc, text);
+    else
+        diag.info(text);
+}
+
+}  // namespace glint::pov

@@ -1,0 +1,80 @@
+// Values held by POV-Ray identifiers (#declare/#local) and produced by expressions: numbers
+// with 1 to 5 components (float, uv, vector, 4d, color), strings, and the scene entities an
+// identifier can name. Objects are kept in an importer-side form (PovObject) until they are
+// placed in the scene, because their textures still change with later modifiers.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/error.h"
+#include "core/transform.h"
+#include "scene/camera.h"
+#include "scene/light.h"
+#include "scene/shape.h"
+#include "scene/texture.h"
+
+namespace glint::pov {
+
+// POV-Ray's EXPRESS: up to five components; `terms` says how many are meaningful
+// (1 float, 2 uv, 3 vector, 4 4-d vector, 5 color rgbft).
+struct Num {
+    double v[5] = {0, 0, 0, 0, 0};
+    int terms = 1;
+
+    static Num scalar(double f) { return Num{{f, f, f, f, f}, 1}; }
+    static Num vec(const Vec3& p) { return Num{{p.x, p.y, p.z, 0, 0}, 3}; }
+    Vec3 vec3() const { return {v[0], v[1], v[2]}; }
+    // POV-Ray's Promote_Express: a float fills every component, a vector pads with zeros.
+    void promote(int n) {
+        if (terms >= n) return;
+        for (int i = terms; i < n; ++i) v[i] = terms == 1 ? v[0] : 0.0;
+        terms = n;
+    }
+};
+
+// An object as the importer holds it: the IR object (shape, transform, flags; for CSG the
+// children live in `children` until placement) plus its optional texture and interior and the
+// lights it contains (light_source inside a union moves with the union).
+struct PovObject {
+    scene::Object obj;
+    std::vector<PovObject> children;
+    std::optional<scene::Texture> texture;
+    std::optional<scene::Interior> interior;
+    std::vector<scene::Light> lights;
+    bool is_light = false;  // a bare light_source: only lights[0] matters
+};
+
+struct MaterialValue {
+    std::optional<scene::Texture> texture;
+    std::optional<scene::Interior> interior;
+};
+
+struct Macro {
+    std::string name;
+    std::vector<std::string> params;
+    int file = -1;      // index into the parser's source files
+    size_t body = 0;    // token index of the first body token
+    FileLoc loc;
+};
+
+using Value = std::variant<Num, std::string, std::shared_ptr<const PovObject>, scene::Texture,
+                           scene::Pigment, scene::Finish, scene::Normal, scene::Interior,
+                           MaterialValue, scene::Camera, Transform, std::shared_ptr<const Macro>>;
+
+// "a float", "a texture", ... for messages like "expected a float, got a texture".
+std::string value_kind_name(const Value& v);
+
+struct Symbol {
+    Value value;
+    FileLoc loc;
+    // Set when a declaration in a standard include used an unsupported feature: the name
+    // exists, but using it is an error that points at both places.
+    bool unusable = false;
+    std::string unusable_reason;
+};
+
+}  // namespace glint::pov
