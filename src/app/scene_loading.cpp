@@ -37,10 +37,7 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose) {
     options.image_width = request.width;
     options.image_height = request.height;
     Diagnostics diag([verbose](const Diagnostic& d) { print_diagnostic(d, verbose); });
-    // TEMPORARY until formats/pov defines parse_file (being written now): keeps glint linking.
-    (void)diag;
-    throw Error(ErrorKind::Render, {}, "the POV-Ray parser is not built yet");
-    scene::Scene scene;
+    scene::Scene scene = pov::parse_file(request.path, options, diag);
     scene::validate(scene);
     return scene;
 }
