@@ -80,7 +80,7 @@ double srgb_decode(double c) {
 // "inside <...>" state (where '>' closes the vector instead of comparing).
 class ExprParser {
 public:
-    explicit ExprParser(Parser& p) : p_(p) {}
+    explicit ExprParser(Parser& p, int vector_depth = 0) : p_(p), vector_depth_(vector_depth) {}
 
     Value expr() {
         Value c = logical();
@@ -553,6 +553,11 @@ Num Parser::parse_num(int terms) {
 
 double Parser::parse_float() {
     ExprParser e(*this);
+    return e.as_float(e.expr(), "a float");
+}
+
+double Parser::parse_float_in_angle_brackets() {
+    ExprParser e(*this, 1);
     return e.as_float(e.expr(), "a float");
 }
 

@@ -63,7 +63,7 @@ bool Parser::parse_transform_item(Transform& t) {
         double m[12];
         for (int i = 0; i < 12; ++i) {
             if (i > 0) expect(",", "between matrix values");
-            m[i] = parse_float();  // components stop at ',' (no '>' comparisons at top level)
+            m[i] = parse_float_in_angle_brackets();
         }
         expect(">", "to close the matrix");
         try {

@@ -100,6 +100,7 @@ public:
     // ---- expressions (expressions.cpp)
     Num parse_num(int terms);  // an expression promoted to `terms` components
     double parse_float();
+    double parse_float_in_angle_brackets();  // where '>' closes instead of comparing
     Vec3 parse_vector();
     std::string parse_string();
     Value parse_expression_value();  // a number or a string
