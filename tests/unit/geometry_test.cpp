@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "core/float.h"
 #include "geom_test_util.h"
@@ -114,6 +115,77 @@ TEST(Geometry, EmptySceneHitsNothing) {
     Hit h;
     EXPECT_FALSE(g->intersect(ray({0, 0, 0}, {0, 0, 1}), &h));
     EXPECT_FALSE(g->occluded(ray({0, 0, 0}, {0, 0, 1})));
+}
+
+
+// Rays leaving hit points through offset_ray_origin() never re-hit the surface they leave, at
+// any scale or distance from the origin (the integrators' contract: tmin 0, no epsilons).
+struct AcneCase {
+    const char* name;
+    scene::Shape shape;
+    bool convex;  // closed convex solid: outward rays escape, inward rays cross the interior
+    bool two_sided_flat;  // flat surface: no re-hit in either direction
+};
+
+int acne_failures(const AcneCase& c, double scale, Vec3 shift, int* spawned) {
+    // A skewed frame: rotated and non-uniformly scaled, then placed.
+    Transform xf = Transform::rotate_xyz_degrees({20, 35, -40})
+                       .then(Transform::scale(Vec3(1, 0.6, 1.7) * scale))
+                       .then(Transform::rotate_axis({1, 2, 3}, 17))
+                       .then(Transform::translate(shift));
+    auto g = build_one(c.shape, xf);
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> nd;
+    int fails = 0;
+    for (int i = 0; i < 1000; ++i) {
+        Vec3 o = shift + normalize(Vec3(nd(rng), nd(rng) + 2, nd(rng))) * (5 * scale);
+        Vec3 target = shift + Vec3(nd(rng), nd(rng), nd(rng)) * (0.4 * scale);
+        Hit h;
+        if (!g->intersect(ray(o, target - o), &h)) continue;
+        for (int k = 0; k < 8; ++k) {
+            Vec3 w = normalize(Vec3(nd(rng), nd(rng), nd(rng)));
+            Vec3 po = offset_ray_origin(h.p, h.p_error, h.ng, w);
+            Hit h2;
+            bool again = g->intersect(ray(po, w), &h2);
+            ++*spawned;
+            bool outward = dot(w, h.ng) > 0;
+            if (c.two_sided_flat) {
+                fails += again;
+            } else if (c.convex && outward) {
+                fails += again;
+            } else if (c.convex) {
+                // Inward: the far side, well away from the origin.
+                fails += !again || h2.t < 1e-6 * scale;
+            } else {
+                fails += again && h2.t < 1e-6 * scale;
+            }
+        }
+    }
+    return fails;
+}
+
+TEST(Geometry, NoSelfIntersectionAtAnyScale) {
+    std::vector<AcneCase> cases = {
+        {"sphere", scene::Sphere{{0.1, 0.2, 0.3}, 1}, true, false},
+        {"box", scene::Box{{-1, -0.7, -1.2}, {0.9, 1, 1}}, true, false},
+        {"cylinder", scene::Cylinder{{0, -1, 0}, {0.2, 1, 0.1}, 0.8, false}, true, false},
+        {"cone", scene::Cone{{0, -1, 0}, 1, {0, 1, 0}, 0.3, false}, true, false},
+        {"plane", scene::Plane{{0.2, 1, 0.1}, 0.05}, false, false},
+        {"torus", scene::Torus{0.9, 0.35, false}, false, false},
+        {"disc", scene::Disc{{0, 0, 0}, {0.3, 1, 0.2}, 1.5, 0.2}, false, true},
+        {"triangle", scene::Triangle{{{-2, -0.3, -1}, {2, 0.2, -1.5}, {0, 0.1, 2}}}, false,
+         true},
+    };
+    for (const auto& c : cases) {
+        for (double scale : {1e-4, 1.0, 1e4}) {
+            for (Vec3 shift : {Vec3(0, 0, 0), Vec3(1e5, -1e5, 1e5)}) {
+                int spawned = 0;
+                int fails = acne_failures(c, scale, shift, &spawned);
+                EXPECT_EQ(fails, 0) << c.name << " scale " << scale << " shift " << shift.x;
+                EXPECT_GT(spawned, 1000) << c.name;
+            }
+        }
+    }
 }
 
 }  // namespace

@@ -10,15 +10,26 @@
 
 namespace glint::render {
 
-void transform_hit(const Transform& xf, LocalHit* h) {
-    const auto& m = xf.matrix().m;
-    Vec3 e;
+namespace {
+// |M| e for the linear part of M: how an error box maps through the transform.
+Vec3 map_error(const Matrix4& mat, const Vec3& e) {
+    const auto& m = mat.m;
+    Vec3 r;
     for (int i = 0; i < 3; ++i)
-        e[i] = (1 + gamma(3)) * (std::fabs(m[i][0]) * h->p_error.x +
-                                 std::fabs(m[i][1]) * h->p_error.y +
-                                 std::fabs(m[i][2]) * h->p_error.z);
-    h->p_error = e + xf.point_error(h->p);
-    h->p = xf.point(h->p);
+        r[i] = (1 + gamma(3)) *
+               (std::fabs(m[i][0]) * e.x + std::fabs(m[i][1]) * e.y + std::fabs(m[i][2]) * e.z);
+    return r;
+}
+}  // namespace
+
+void transform_hit(const Transform& xf, LocalHit* h) {
+    Vec3 p = xf.point(h->p);
+    // The bound covers the forward transform of the point and its error, and also the rounding
+    // that taking a ray origin near p back into object space will add (mapped to this space):
+    // a secondary ray offset by it is still on the right side once it is in object space.
+    Vec3 back = map_error(xf.matrix(), xf.inverse().point_error(p));
+    h->p_error = map_error(xf.matrix(), h->p_error) + xf.point_error(h->p) + back;
+    h->p = p;
     h->ng = normalize(xf.normal(h->ng));
     h->n = normalize(xf.normal(h->n));
 }
