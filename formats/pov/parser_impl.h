@@ -102,6 +102,7 @@ public:
     double parse_float();
     double parse_float_in_angle_brackets();  // where '>' closes instead of comparing
     Vec3 parse_vector();
+    bool try_literal_vector(Vec3& out);
     std::string parse_string();
     Value parse_expression_value();  // a number or a string
     // Color after an optional `color`/`colour` keyword: rgb/rgbf/.../red/... or expression.
