@@ -164,7 +164,7 @@ void ObjectNode::compute_bounds() {
     } else {
         for (const auto& c : children_) local.extend(c->bounds());
     }
-    bounds_ = local.empty() ? local : xf_.bounds(local);
+    bounds_ = (local.empty() || identity_) ? local : xf_.bounds(local);
     if (inverse_) bounds_ = kEverywhere;
     for (const auto& c : clipped_by_) bounds_ = overlap(bounds_, c->bounds());
 }

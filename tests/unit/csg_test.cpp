@@ -1,0 +1,198 @@
+// CSG (POV-Ray 3.7 manual 2.4.4): union, merge, intersection, difference, inverse, and
+// clipped_by / bounded_by, through build_geometry().
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geom_test_util.h"
+
+namespace glint {
+namespace {
+
+using render::Hit;
+using test::build;
+using test::object;
+using test::ray;
+using test::scene_of;
+
+scene::Object csg(scene::CsgOp op, std::vector<scene::Object> children, int material = 0) {
+    scene::Csg c;
+    c.op = op;
+    c.children = std::move(children);
+    return object(std::move(c), {}, material);
+}
+
+scene::Object sphere(Vec3 c, double r, int material = -1) {
+    return object(scene::Sphere{c, r}, {}, material);
+}
+
+scene::Object box(Vec3 a, Vec3 b, int material = -1) {
+    return object(scene::Box{a, b}, {}, material);
+}
+
+// Sphere A at the origin minus sphere B at x = 1: the solid is the part of A left of B.
+TEST(Csg, DifferenceOfTwoSpheres) {
+    auto g = build(scene_of({csg(scene::CsgOp::Difference,
+                                 {sphere({0, 0, 0}, 1, 1), sphere({1, 0, 0}, 1, 2)})}));
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({-5, 0, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 4, 1e-14);
+    EXPECT_EQ(h.material, 1);
+    // From the right the ray passes B's removed volume and meets B's surface inside A at x = 0;
+    // the cutting surface's normal is flipped to point out of the remaining solid (+x).
+    ASSERT_TRUE(g->intersect(ray({5, 0, 0}, {-1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 5, 1e-14);
+    EXPECT_NEAR(h.ng.x, 1, 1e-14);
+    EXPECT_NEAR(h.n.x, 1, 1e-14);
+    EXPECT_EQ(h.material, 2);
+    // Far off the overlap: only A's left cap remains, the rest of B is never hit.
+    EXPECT_FALSE(g->intersect(ray({1.5, 5, 0}, {0, -1, 0}), &h));
+    // At x = 0.6 the column through A lies inside B (A: |y| <= 0.8, B: |y| <= 0.917).
+    EXPECT_FALSE(g->intersect(ray({0.6, 5, 0}, {0, -1, 0}), &h));
+    // At x = -0.5 it is untouched: enters at y = sqrt(0.75).
+    ASSERT_TRUE(g->intersect(ray({-0.5, 5, 0}, {0, -1, 0}), &h));
+    EXPECT_NEAR(h.t, 5 - std::sqrt(0.75), 1e-14);
+}
+
+TEST(Csg, IntersectionOfBoxes) {
+    auto g = build(scene_of({csg(scene::CsgOp::Intersection,
+                                 {box({-1, -1, -1}, {1, 1, 1}), box({0, 0, 0}, {2, 2, 2})})}));
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({-5, 0.5, 0.5}, {1, 0, 0}), &h));
+    EXPECT_EQ(h.t, 5);
+    EXPECT_EQ(h.ng, Vec3(-1, 0, 0));
+    ASSERT_TRUE(g->intersect(ray({5, 0.5, 0.5}, {-1, 0, 0}), &h));
+    EXPECT_EQ(h.t, 4);
+    EXPECT_EQ(h.ng, Vec3(1, 0, 0));
+    EXPECT_FALSE(g->intersect(ray({-5, -0.5, 0.5}, {1, 0, 0}), &h));
+    // The bounds are the overlap.
+    EXPECT_EQ(g->bounds().lo, Vec3(0, 0, 0));
+    EXPECT_EQ(g->bounds().hi, Vec3(1, 1, 1));
+}
+
+TEST(Csg, InverseFlipsNormalsAndInside) {
+    auto s = scene_of({sphere({0, 0, 0}, 1, 0)});
+    s.objects[0].inverse = true;
+    auto g = build(s);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0, 0, -5}, {0, 0, 1}), &h));
+    EXPECT_NEAR(h.t, 4, 1e-14);
+    EXPECT_NEAR(h.ng.z, 1, 1e-14);  // points into the sphere: out of the inverse solid
+    EXPECT_TRUE(std::isinf(g->bounds().hi.x));
+    // Intersection of a box with an inverse sphere: a box with a spherical hole.
+    scene::Object hole = sphere({0, 0, 0}, 0.5);
+    hole.inverse = true;
+    g = build(scene_of({csg(scene::CsgOp::Intersection, {box({-1, -1, -1}, {1, 1, 1}), hole})}));
+    ASSERT_TRUE(g->intersect(ray({0, 0, 0}, {0, 0, 1}), &h));
+    EXPECT_NEAR(h.t, 0.5, 1e-14);
+    EXPECT_NEAR(h.ng.z, -1, 1e-14);
+}
+
+TEST(Csg, MergeRemovesInternalSurfacesUnionKeepsThem) {
+    std::vector<scene::Object> two = {sphere({0, 0, 0}, 1), sphere({1, 0, 0}, 1)};
+    auto u = build(scene_of({csg(scene::CsgOp::Union, two)}));
+    auto m = build(scene_of({csg(scene::CsgOp::Merge, two)}));
+    Hit h;
+    // From inside the overlap going -x: the union meets B's surface at x = 0 first.
+    ASSERT_TRUE(u->intersect(ray({0.5, 0, 0}, {-1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 0.5, 1e-14);
+    ASSERT_TRUE(m->intersect(ray({0.5, 0, 0}, {-1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 1.5, 1e-14);
+    EXPECT_NEAR(h.ng.x, -1, 1e-14);
+}
+
+TEST(Csg, MaterialInheritanceAndFlags) {
+    auto s = scene_of({csg(scene::CsgOp::Union, {sphere({0, 0, 0}, 1), sphere({0, 0, 5}, 1, 3)}, 2)});
+    s.objects[0].no_shadow = true;
+    s.objects[0].double_illuminate = true;
+    auto g = build(s);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0, 0, -5}, {0, 0, 1}), &h));
+    EXPECT_EQ(h.material, 2);  // inherited from the union
+    EXPECT_EQ(h.flags, render::kNoShadow | render::kDoubleIlluminate);
+    ASSERT_TRUE(g->intersect(ray({0, 0, 3}, {0, 0, 1}), &h));
+    EXPECT_EQ(h.material, 3);  // its own
+    EXPECT_FALSE(g->occluded(ray({0, 0, -5}, {0, 0, 1})));
+}
+
+TEST(Csg, NoShadowChildStillShapesTheResult) {
+    scene::Object cutter = sphere({1, 0, 0}, 1);
+    cutter.no_shadow = true;
+    auto g = build(scene_of({csg(scene::CsgOp::Difference, {sphere({0, 0, 0}, 1), cutter})}));
+    // The cut surface belongs to the no_shadow child: a shadow ray through it from the right
+    // meets nothing else that casts shadows until A's left side.
+    EXPECT_TRUE(g->occluded(ray({5, 0, 0}, {-1, 0, 0})));
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({5, 0, 0}, {-1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 5, 1e-14);
+    EXPECT_FALSE(g->occluded(ray({5, 0, 0}, {-1, 0, 0}, 5.5)));
+}
+
+TEST(Csg, ClippedByKeepsSurfaceInsideClip) {
+    scene::Object s = sphere({0, 0, 0}, 1, 0);
+    s.clipped_by.push_back(object(scene::Plane{{0, 1, 0}, 0}));  // keep y < 0
+    auto g = build(scene_of({s}));
+    Hit h;
+    // The top half is gone: the ray meets the inside of the bottom half.
+    ASSERT_TRUE(g->intersect(ray({0, 5, 0}, {0, -1, 0}), &h));
+    EXPECT_NEAR(h.t, 6, 1e-14);
+    EXPECT_NEAR(h.ng.y, -1, 1e-14);
+    EXPECT_LE(g->bounds().hi.y, 1.0 + 1e-12);
+}
+
+TEST(Csg, BoundedByMissMeansNoHit) {
+    scene::Object s = sphere({0, 0, 0}, 1, 0);
+    s.bounded_by.push_back(box({-2, -2, -2}, {2, 0.5, 2}));
+    auto g = build(scene_of({s}));
+    Hit h;
+    EXPECT_TRUE(g->intersect(ray({0, 5, 0}, {0, -1, 0}), &h));  // passes the bound lower down
+    // POV-Ray semantics: a ray that misses the bound misses the object, even where the object
+    // pokes out of it.
+    EXPECT_FALSE(g->intersect(ray({-5, 0.9, 0}, {1, 0, 0}), &h));
+    EXPECT_TRUE(g->intersect(ray({-5, 0.1, 0}, {1, 0, 0}), &h));
+}
+
+TEST(Csg, NestedTransformsCompose) {
+    scene::Object inner = sphere({0, 0, 0}, 1);
+    inner.transform = Transform::translate({2, 0, 0});
+    scene::Object u = csg(scene::CsgOp::Union, {inner}, 1);
+    u.transform = Transform::scale({2, 2, 2}).then(Transform::translate({0, 0, 10}));
+    auto g = build(scene_of({u}));
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({4, 0, 0}, {0, 0, 1}), &h));
+    EXPECT_NEAR(h.t, 8, 1e-13);
+    EXPECT_NEAR(h.ng.z, -1, 1e-13);
+}
+
+TEST(Csg, DifferenceWithMeshInsideVector) {
+    // A box minus a closed mesh cube (inside by parity along inside_vector).
+    scene::Scene s;
+    s.materials.resize(2);
+    scene::Mesh m;
+    for (int i = 0; i < 8; ++i)
+        m.positions.push_back({double(i & 1) - 0.5, double(i >> 1 & 1) - 0.5,
+                               double(i >> 2 & 1) - 0.5});
+    const int quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                             {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+    for (const auto& q : quads) {
+        scene::MeshFace a, b;
+        a.v = {q[0], q[1], q[2]};
+        b.v = {q[0], q[2], q[3]};
+        m.faces.push_back(a);
+        m.faces.push_back(b);
+    }
+    m.has_inside_vector = true;
+    m.inside_vector = {0.1, 0.2, 1};
+    s.meshes.push_back(m);
+    s.objects.push_back(
+        csg(scene::CsgOp::Difference, {box({-1, -1, -1}, {1, 1, 1}), object(scene::MeshRef{0}, {}, -1)}));
+    auto g = build(s);
+    Hit h;
+    // From the centre (inside the removed cube) the first surviving surface is the cube's face.
+    ASSERT_TRUE(g->intersect(ray({0.1, 0.05, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 0.4, 1e-14);
+    EXPECT_NEAR(std::fabs(h.ng.x), 1, 1e-14);
+}
+
+}  // namespace
+}  // namespace glint
