@@ -1,10 +1,15 @@
 // The CLI contract from the outside: exit codes, `glint compare` output, and that failures
 // leave no output file. Runs the built glint binary (GLINT_BINARY).
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
+#include <sstream>
+#include <thread>
+#include <vector>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -161,4 +166,95 @@ TEST_F(CliTest, SceneErrorHasLocationSourceLineAndCaret) {
     EXPECT_NE(r.err.find(where), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("\n    finsh { ambient 1 }\n    ^\n"), std::string::npos) << r.err;
     EXPECT_EQ(count_files(), 1);
+}
+
+namespace {
+
+constexpr const char* kSmallScene =
+    "#version 3.7;\n"
+    "global_settings { assumed_gamma 1 }\n"
+    "camera { location <0, 1, -4> look_at 0 }\n"
+    "light_source { <3, 5, -3> rgb 1 }\n"
+    "sphere { 0, 1 pigment { rgb <1, 0.4, 0.2> } finish { phong 0.5 } }\n"
+    "plane { y, -1 pigment { checker rgb 1 rgb 0.2 } }\n";
+
+}  // namespace
+
+TEST_F(CliTest, ProgressLinesAreMonotoneAndEndAtOne) {
+    write_text("s.pov", kSmallScene);
+    RunResult r = run("render '" + path("s.pov") + "' -o '" + path("o.png") +
+                      "' --progress=lines --width 64 --height 48");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::istringstream lines(r.err);
+    std::string line, last_line;
+    double last = -1;
+    int count = 0;
+    while (std::getline(lines, line)) {
+        last_line = line;
+        ASSERT_EQ(line.rfind("progress ", 0), 0u) << "unexpected stderr line: " << line;
+        double f = std::stod(line.substr(9));
+        EXPECT_GT(f, last);
+        EXPECT_LE(f, 1.0);
+        last = f;
+        ++count;
+    }
+    EXPECT_GE(count, 1);
+    EXPECT_EQ(last_line, "progress 1.00");
+    EXPECT_TRUE(fs::exists(path("o.png")));
+}
+
+TEST_F(CliTest, NoProgressWhenNotATerminal) {
+    write_text("s.pov", kSmallScene);
+    RunResult r = run("render '" + path("s.pov") + "' -o '" + path("o.png") +
+                      "' --width 32 --height 24");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(r.out, "");
+}
+
+TEST_F(CliTest, VerbosePrintsFeaturesAndTimings) {
+    write_text("s.pov", kSmallScene);
+    RunResult r = run("render '" + path("s.pov") + "' -o '" + path("o.exr") +
+                      "' -v --width 32 --height 24");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("features used: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("sphere"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("skipped: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("time: parse "), std::string::npos) << r.err;
+    glint::io::Rgb8Image img = glint::io::read_rgb8(path("o.exr"));
+    EXPECT_EQ(img.width, 32);
+    EXPECT_EQ(img.height, 24);
+}
+
+TEST_F(CliTest, InterruptExits130WithoutOutput) {
+    // A render far too large to finish in the time before the signal.
+    write_text("s.pov", kSmallScene);
+    std::string out = path("o.png");
+    std::string scene = path("s.pov");
+    pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        std::freopen("/dev/null", "w", stderr);
+        execl(GLINT_BINARY, GLINT_BINARY, "render", scene.c_str(), "-o", out.c_str(), "--width",
+              "4000", "--height", "4000", "--aa", "grid:8", "--threads", "1", "--progress",
+              "none", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    kill(pid, SIGINT);
+    int status = 0;
+    // The renderer must notice within a few seconds; give up (and fail) after 20.
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    pid_t done = 0;
+    while ((done = waitpid(pid, &status, WNOHANG)) == 0 &&
+           std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    if (done == 0) {
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        FAIL() << "glint did not stop within 20 s of SIGINT";
+    }
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    EXPECT_EQ(count_files(), 1);  // only s.pov: no image, no temporary
 }
