@@ -92,15 +92,23 @@ public:
         return cond != 0 ? a : b;
     }
 
-    Num num(const Value& v, const char* what) {
+    // `at`: where the value began, for the message; else the last token read.
+    Num num(const Value& v, const char* what, const FileLoc& at = {}) {
         if (auto n = std::get_if<Num>(&v)) return *n;
-        p_.fail(std::string("expected ") + what + ", got " + value_kind_name(v));
+        fail(at, std::string("expected ") + what + ", got " + value_kind_name(v));
     }
-    double as_float(const Value& v, const char* what) {
-        Num n = num(v, what);
-        if (n.terms != 1) p_.fail(std::string("expected ") + what + " (a float), got " +
-                                  value_kind_name(v));
+    double as_float(const Value& v, const char* what, const FileLoc& at = {}) {
+        Num n = num(v, what, at);
+        if (n.terms != 1) fail(at, std::string("expected ") + what + ", got " + value_kind_name(v));
         return n.v[0];
+    }
+    [[noreturn]] void fail(const FileLoc& at, const std::string& msg) {
+        if (at.valid()) p_.fail_at(at, msg);
+        p_.fail(msg);
+    }
+    FileLoc start() {
+        p_.peek();
+        return p_.loc();
     }
 
     Value logical() {
@@ -127,7 +135,7 @@ public:
                 (t.text == "<" || t.text == "<=" || t.text == "=" || t.text == "!=" ||
                  t.text == ">=" || (t.text == ">" && vector_depth_ == 0))) {
                 std::string op = t.text;
-                double x = as_float(a, "a float to compare");
+                double x = as_float(a, "a float to compare (vectors cannot be compared)");
                 double y = as_float(additive(), "a float to compare");
                 bool r = op == "<" ? x < y : op == "<=" ? x <= y : op == ">" ? x > y
                        : op == ">=" ? x >= y : op == "=" ? std::fabs(x - y) < 1e-10
@@ -173,11 +181,12 @@ public:
             const Token& t = p_.next();
             if (t.is("*") || t.is("/")) {
                 char op = t.text[0];
+                FileLoc op_loc = p_.loc();
                 Num x = num(a, "a number before '*' or '/'");
                 Num y = num(unary(), "a number after '*' or '/'");
                 if (op == '/') {
                     for (int i = 0; i < y.terms; ++i)
-                        if (y.v[i] == 0) p_.fail("division by zero");
+                        if (y.v[i] == 0) p_.fail_at(op_loc, "division by zero");
                 }
                 a = combine(x, y, op);
             } else {
@@ -546,19 +555,22 @@ Value Parser::parse_expression_value() { return ExprParser(*this).expr(); }
 
 Num Parser::parse_num(int terms) {
     ExprParser e(*this);
-    Num n = e.num(e.expr(), terms == 1 ? "a float" : terms == 3 ? "a vector" : "a number");
+    FileLoc at = e.start();
+    Num n = e.num(e.expr(), terms == 1 ? "a float" : terms == 3 ? "a vector" : "a number", at);
     n.promote(terms);
     return n;
 }
 
 double Parser::parse_float() {
     ExprParser e(*this);
-    return e.as_float(e.expr(), "a float");
+    FileLoc at = e.start();
+    return e.as_float(e.expr(), "a float", at);
 }
 
 double Parser::parse_float_in_angle_brackets() {
     ExprParser e(*this, 1);
-    return e.as_float(e.expr(), "a float");
+    FileLoc at = e.start();
+    return e.as_float(e.expr(), "a float", at);
 }
 
 // Meshes are long lists of literal vectors; reading `<n, n, n>` straight from the token array

@@ -43,7 +43,8 @@ public:
                 ++i_;
                 while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t')) ++i_;
                 size_t b = i_;
-                while (i_ < s_.size() && is_word_char(s_[i_])) ++i_;
+                if (i_ < s_.size() && is_word_start(s_[i_]))
+                    while (i_ < s_.size() && is_word_char(s_[i_])) ++i_;
                 if (b == i_) fail(t.line, t.column, "expected a directive name after '#'");
                 t.kind = TokKind::Directive;
                 t.text.assign(s_, b, i_ - b);
