@@ -273,7 +273,14 @@ bool ObjectNode::csg_keeps(size_t i, const Vec3& p) const {
 }
 
 bool ObjectNode::intersect_local(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const {
-    if (prim_) return prim_->intersect(ray, tmax, hit);
+    if (prim_) {
+        // A fresh hit: primitives fill only the geometric fields, so material and flags
+        // left in *hit by an earlier (farther) sibling must not leak into this one.
+        LocalHit h;
+        if (!prim_->intersect(ray, tmax, &h)) return false;
+        *hit = h;
+        return true;
+    }
     bool found = false;
     if (op_ == scene::CsgOp::Union) {
         for (const auto& c : children_) {
