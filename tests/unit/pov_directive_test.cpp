@@ -1,0 +1,196 @@
+// The POV-Ray directive layer: #declare/#local, #if family, loops, macros, #switch,
+// #include with its search path, limits, and the tolerant handling of standard includes.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "tests/unit/pov_test_util.h"
+
+namespace glint::pov {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::error_of;
+using testing::parse;
+
+double radius(const scene::Scene& s, size_t i) {
+    return std::get<scene::Sphere>(s.objects.at(i).shape).radius;
+}
+
+TEST(PovDirective, WhileForAndConditionals) {
+    auto s = parse(
+        "#declare I = 0;\n"
+        "#while (I < 3) sphere { 0, I + 1 } #declare I = I + 1; #end\n"
+        "#for (J, 10, 12, 2) sphere { 0, J } #end\n"
+        "#if (I = 3) sphere { 0, 100 } #elseif (1) sphere { 0, 200 } #else sphere { 0, 300 } #end\n"
+        "#if (0) sphere { 0, 1000 } #elseif (1) sphere { 0, 400 } #end\n"
+        "#ifdef (I) sphere { 0, 500 } #end #ifndef (Nope) sphere { 0, 600 } #end\n"
+        "#ifdef (Nope) sphere { 0, 9 } #else sphere { 0, 700 } #end\n");
+    std::vector<double> r;
+    for (size_t i = 0; i < s.objects.size(); ++i) r.push_back(radius(s, i));
+    EXPECT_EQ(r, (std::vector<double>{1, 2, 3, 10, 12, 100, 400, 500, 600, 700}));
+}
+
+TEST(PovDirective, NestedLoopsAndDeclaresWithoutSemicolon) {
+    auto s = parse(
+        "#declare A = union { sphere { 0, 1 } }\n"
+        "#declare B = object { A }\n"
+        "#declare N = 0;\n"
+        "#while (N < 2) #declare M = 0; #while (M < 2) object { B } #declare M = M + 1; #end\n"
+        "#declare N = N + 1; #end\n");
+    EXPECT_EQ(s.objects.size(), 4u);
+}
+
+TEST(PovDirective, SwitchCaseRangeBreak) {
+    auto pick = [](double v) {
+        auto s = parse("#switch (" + std::to_string(v) +
+                       ")\n #case (1) sphere { 0, 10 } #break\n"
+                       " #range (2, 4) sphere { 0, 20 } #break\n"
+                       " #case (5) sphere { 0, 30 }\n"  // falls through to #else
+                       " #else sphere { 0, 40 }\n#end");
+        std::vector<double> r;
+        for (size_t i = 0; i < s.objects.size(); ++i) r.push_back(radius(s, i));
+        return r;
+    };
+    EXPECT_EQ(pick(1), (std::vector<double>{10}));
+    EXPECT_EQ(pick(3), (std::vector<double>{20}));
+    EXPECT_EQ(pick(5), (std::vector<double>{30, 40}));
+    EXPECT_EQ(pick(9), (std::vector<double>{40}));
+}
+
+TEST(PovDirective, MacrosReturnValuesAndObjectsWithLocalScope) {
+    auto s = parse(
+        "#macro Twice(V) #local T = V * 2; T #end\n"
+        "#macro Ball(R) sphere { 0, R } #end\n"
+        "#macro Pick(A) #if (A > 0) 1 #else 2 #end #end\n"
+        "#declare X = Twice(3);\n"
+        "sphere { 0, X }\n"
+        "Ball(Twice(2))\n"
+        "sphere { 0, Pick(5) + Pick(-1) * 10 }\n"
+        "#ifdef (T) sphere { 0, 999 } #end\n");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_EQ(radius(s, 0), 6);
+    EXPECT_EQ(radius(s, 1), 4);
+    EXPECT_EQ(radius(s, 2), 21);
+}
+
+TEST(PovDirective, UndefVersionDebugDefault) {
+    Diagnostics diag;
+    auto s = parse_string(
+        "#version 3.6;\n#declare A = 1;\n#undef A\n#ifndef (A) sphere { 0, 1 } #end\n"
+        "#warning \"careful\"\n#default { finish { ambient 0.3 } }\nsphere { 0, 2 }",
+        "t.pov", {}, diag);
+    EXPECT_DOUBLE_EQ(s.version, 3.6);
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_EQ(s.materials[s.objects[1].material].texture.finish.ambient, Color(0.3, 0.3, 0.3));
+    EXPECT_EQ(s.materials[s.objects[0].material].texture.finish.ambient, Color(0.1, 0.1, 0.1));
+    ASSERT_EQ(diag.warning_count(), 1);
+    EXPECT_EQ(diag.all()[0].message, "careful");
+    EXPECT_EQ(diag.all()[0].loc.line, 5);
+}
+
+TEST(PovDirective, Errors) {
+    EXPECT_EQ(error_of("sphere{0,1}\n  #error \"stop here\""), "2:3: #error: stop here");
+    EXPECT_EQ(error_of("#if (1) sphere{0,1}\n"), "1:1: this directive has no matching #end before the end of the file");
+    EXPECT_EQ(error_of("#end"), "1:1: #end without a matching #if, #while, #for, #switch or #macro");
+    EXPECT_EQ(error_of("#frobnicate"), "1:1: unknown directive '#frobnicate'");
+    EXPECT_EQ(error_of("#declare X = 1;\n#declare Y = X + Z;"), "2:18: unknown identifier 'Z'");
+    ParseOptions small;
+    small.max_loop_iterations = 100;
+    EXPECT_EQ(error_of("#while (1) #end", small), "1:1: #while loop ran more than 100 iterations");
+    EXPECT_EQ(error_of("#macro R(N) R(N + 1) #end\nsphere { 0, R(1) }"),
+              "1:13: macro calls nested deeper than 256 (runaway recursion?)");
+}
+
+class PovIncludeTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        root = fs::temp_directory_path() /
+               ("glint_pov_inc_" + std::to_string(::getpid()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(root / "scene");
+        fs::create_directories(root / "sys");
+    }
+    void TearDown() override { fs::remove_all(root); }
+    void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+    scene::Scene parse_scene(const std::string& text) {
+        write(root / "scene" / "main.pov", text);
+        ParseOptions o;
+        o.include_dirs.push_back((root / "sys").string());
+        Diagnostics diag;
+        return parse_file((root / "scene" / "main.pov").string(), o, diag);
+    }
+    fs::path root;
+};
+
+TEST_F(PovIncludeTest, SearchPathOrderAndScopes) {
+    write(root / "sys" / "lib.inc", "#declare Size = 2;\n#local Hidden = 5;\n");
+    write(root / "scene" / "local.inc", "#declare Size2 = Size * 10;\n");
+    auto s = parse_scene("#include \"lib.inc\"\n#include \"local.inc\"\n"
+                         "sphere { 0, Size2 }\n#ifdef (Hidden) sphere { 0, 1 } #end\n");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(radius(s, 0), 20);
+    EXPECT_EQ(s.source_files.size(), 3u);
+}
+
+TEST_F(PovIncludeTest, MissingIncludeIsMissingFileAtTheString) {
+    try {
+        parse_scene("sphere { 0, 1 }\n#include   \"nope.inc\"\n");
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::MissingFile);
+        EXPECT_EQ(e.loc().line, 2);
+        EXPECT_EQ(e.loc().column, 12);
+        EXPECT_STREQ(e.what(), "cannot find include file 'nope.inc'");
+    }
+}
+
+TEST_F(PovIncludeTest, StandardIncludeSkipsUnsupportedDeclarations) {
+    write(root / "sys" / "std.inc",
+          "#declare Good = 1;\n#declare Bad = pigment { bozo color_map { [0 rgb 0] } }\n"
+          "#declare Also = texture { pigment { rgb 1 } }\n");
+    auto s = parse_scene("#include \"std.inc\"\nsphere { 0, Good texture { Also } }\n");
+    EXPECT_EQ(s.objects.size(), 1u);
+    try {
+        parse_scene("#include \"std.inc\"\nsphere { 0, 1 pigment { Bad } }\n");
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.loc().line, 2);
+        EXPECT_EQ(e.loc().column, 25);
+        EXPECT_NE(std::string(e.what()).find("'Bad' cannot be used"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("the 'bozo' pattern is not supported yet"),
+                  std::string::npos);
+        EXPECT_EQ(e.note_loc().line, 2);
+        EXPECT_NE(e.note_loc().filename().find("std.inc"), std::string::npos);
+    }
+}
+
+TEST_F(PovIncludeTest, SceneOwnFilesAreStrict) {
+    write(root / "scene" / "mine.inc", "#declare Bad = pigment { bozo }\n");
+    try {
+        parse_scene("#include \"mine.inc\"\n");
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.loc().line, 1);
+        EXPECT_EQ(e.loc().column, 26);
+        EXPECT_STREQ(e.what(), "the 'bozo' pattern is not supported yet");
+    }
+}
+
+TEST_F(PovIncludeTest, IncludeDepthLimit) {
+    write(root / "scene" / "self.inc", "#include \"self.inc\"\n");
+    write(root / "scene" / "main.pov", "#include \"self.inc\"\n");
+    ParseOptions o;
+    o.max_include_depth = 8;
+    Diagnostics diag;
+    try {
+        parse_file((root / "scene" / "main.pov").string(), o, diag);
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "#include nested deeper than 8 files");
+    }
+}
+
+}  // namespace
+}  // namespace glint::pov
