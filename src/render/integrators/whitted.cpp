@@ -308,7 +308,10 @@ Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls
     r.tmax = kShadowEnd;
     if (!features_.transparency) return geometry_.occluded(r) ? Color() : Color(1.0);
 
-    // TracePointLightShadowRay: walk through transparent objects, filtering the light.
+    // TracePointLightShadowRay: walk through transparent objects, filtering the light. The
+    // shadow ray starts with the eye ray's interiors and toggles each object it crosses
+    // (ComputeShadowMedia), which decides where interior fading applies.
+    Interiors inside = eye.interiors;
     Color colour(1.0);
     for (int i = 0; i < 64; ++i) {
         Hit hit;
@@ -322,8 +325,7 @@ Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls
             if (pigments_.evaluate(mat.texture.pigment, pattern_point(hit), &pig))
                 filter = rgb_transm(pig);
             const scene::Interior& interior = mat.interior;
-            // The shadow ray carries the eye ray's interiors (it is copied from it).
-            if (eye.interiors.contains(hit.object) && interior.fade_power > 0.0 &&
+            if (inside.contains(hit.object) && interior.fade_power > 0.0 &&
                 std::fabs(interior.fade_distance) > kPovEpsilon) {
                 filter *= fade(interior, hit.t * length(r.dir));
             }
@@ -331,6 +333,8 @@ Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls
             if (std::fabs(colour.r) < kPovEpsilon && std::fabs(colour.g) < kPovEpsilon &&
                 std::fabs(colour.b) < kPovEpsilon)
                 return Color();
+            if (inside.count == 0 || !inside.remove(hit.object))
+                inside.append(hit.object, interior.ior);
         }
         r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
         r.dir = target - r.origin;
