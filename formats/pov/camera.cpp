@@ -84,7 +84,7 @@ void Parser::parse_camera_body(scene::Camera& cam) {
             Transform delta;
             if (!parse_transform_item(delta))
                 fail("expected a camera item (location, look_at, angle, ...), got " +
-                     describe(next()));
+                     got(next()));
             tr = tr.then(delta);
         }
     }
@@ -180,7 +180,7 @@ void Parser::parse_global_settings() {
             else allow_float(0);
         } else {
             fail("expected a global_settings item (assumed_gamma, max_trace_level, ...), got " +
-                 describe(t));
+                 got(t));
         }
     }
 }
@@ -216,7 +216,7 @@ void Parser::parse_sky_sphere() {
             Transform delta;
             if (!parse_transform_item(delta))
                 fail("expected pigment, emission or a transform in sky_sphere, got " +
-                     describe(next()));
+                     got(next()));
             sky.transform = sky.transform.then(delta);
         }
     }

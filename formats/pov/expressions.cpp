@@ -248,9 +248,9 @@ public:
                     return v;
                 }
                 if (t.is_symbol('<')) return vector_literal();
-                p_.fail("expected a value, got " + describe(t));
+                p_.fail("expected a value, got " + p_.got(t));
             case TokKind::Word: return word(t);
-            default: p_.fail("expected a value, got " + describe(t));
+            default: p_.fail("expected a value, got " + p_.got(t));
         }
     }
 
@@ -263,7 +263,7 @@ public:
             n.v[n.terms++] = as_float(expr(), "a float vector component");
             const Token& t = p_.next();
             if (t.is(">")) break;
-            if (!t.is(",")) p_.fail("expected ',' or '>' in the vector, got " + describe(t));
+            if (!t.is(",")) p_.fail("expected ',' or '>' in the vector, got " + p_.got(t));
         }
         --vector_depth_;
         if (n.terms < 2) p_.fail("a vector needs at least 2 components");
@@ -325,7 +325,7 @@ public:
             if (t.is(")")) return out;
             if (!t.is(","))
                 p_.fail("expected ',' or ')' in the arguments of '" + name + "', got " +
-                        describe(t));
+                        p_.got(t));
         }
     }
 
@@ -540,7 +540,7 @@ public:
             for (int i = 0; i < e.terms && i < 5; ++i) c.v[i] = e.v[i];
             started = true;
         }
-        if (!started) p_.fail("expected a color, got " + describe(*p_next_peek()));
+        if (!started) p_.fail("expected a color, got " + p_.got(*p_next_peek()));
         return c;
     }
 
@@ -634,7 +634,7 @@ std::string Parser::parse_string() {
             fail("expected a string, got " + value_kind_name(v));
         }
     }
-    fail("expected a string, got " + describe(t));
+    fail("expected a string, got " + got(t));
 }
 
 scene::ColorFT Parser::parse_color() {

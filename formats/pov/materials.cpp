@@ -83,7 +83,7 @@ bool Parser::parse_transform_item(Transform& t) {
             if (!tr) fail("expected a transform, got " + value_kind_name(s.value));
             t = t.then(*tr);
         } else {
-            fail("expected '{' or a transform identifier after 'transform', got " + describe(n));
+            fail("expected '{' or a transform identifier after 'transform', got " + got(n));
         }
     } else {
         unget();
@@ -110,7 +110,7 @@ Transform Parser::parse_transform_body() {
             continue;
         }
         if (!parse_transform_item(t))
-            fail("expected translate, rotate, scale, matrix or transform, got " + describe(next()));
+            fail("expected translate, rotate, scale, matrix or transform, got " + got(next()));
     }
 }
 
@@ -248,7 +248,7 @@ void Parser::parse_pigment_body(scene::Pigment& p) {
                 unget();
                 if (!next_is_expression_start())
                     fail("expected a pigment item (color, pattern, transform, ...), got " +
-                         describe(next()));
+                         got(next()));
                 p.kind = scene::PatternKind::Plain;
                 p.color = parse_color();
             }
@@ -256,7 +256,7 @@ void Parser::parse_pigment_body(scene::Pigment& p) {
         }
         unget();
         if (!next_is_expression_start())
-            fail("expected a pigment item (color, pattern, transform, ...), got " + describe(next()));
+            fail("expected a pigment item (color, pattern, transform, ...), got " + got(next()));
         p.kind = scene::PatternKind::Plain;
         p.color = parse_color();
     }
@@ -271,7 +271,7 @@ std::vector<scene::ColorMapEntry> Parser::parse_color_map_body() {
             break;
         }
         if (!t.is_symbol('['))
-            fail("expected '[' to start a color_map entry, got " + describe(t));
+            fail("expected '[' to start a color_map entry, got " + got(t));
         FileLoc o = loc();
         double v1 = parse_float();
         if (accept(",")) {
@@ -287,7 +287,7 @@ std::vector<scene::ColorMapEntry> Parser::parse_color_map_body() {
         const Token& c = next();
         if (!c.is_symbol(']'))
             fail("expected ']' to close the color_map entry opened at " +
-                 std::to_string(o.line) + ":" + std::to_string(o.column) + ", got " + describe(c));
+                 std::to_string(o.line) + ":" + std::to_string(o.column) + ", got " + got(c));
     }
     if (map.size() > 256) fail("a color_map has at most 256 entries");
     return map;
@@ -304,7 +304,7 @@ void Parser::parse_image_map_body(scene::ImageMap& im) {
     }
     const Token& s = peek();
     if (s.kind != TokKind::String && !(s.kind == TokKind::Word && lookup(s.text)))
-        fail("expected the image file name (a string), got " + describe(s));
+        fail("expected the image file name (a string), got " + got(s));
     im.file = parse_string();
     FileLoc sloc = loc();
     if (im.type.empty()) {
@@ -342,7 +342,7 @@ void Parser::parse_image_map_body(scene::ImageMap& im) {
             // Only meaningful for paletted images; glint reads colors.
         } else {
             fail("expected an image_map item (map_type, once, interpolate, ...), got " +
-                 describe(k));
+                 got(k));
         }
     }
 }
@@ -432,7 +432,7 @@ void Parser::parse_finish_body(scene::Finish& f) {
                    w == "fade_distance" || w == "fade_power" || w == "refraction") {
             unsupported("finish '" + w + "'");
         } else {
-            fail("expected a finish item (ambient, diffuse, phong, ...), got " + describe(t));
+            fail("expected a finish item (ambient, diffuse, phong, ...), got " + got(t));
         }
     }
 }
@@ -463,7 +463,7 @@ void Parser::parse_normal_body(scene::Normal& n) {
         const Token& k = next();
         if (k.kind == TokKind::Word)
             unsupported("normal pattern '" + k.text + "' (normal perturbation)");
-        fail("expected a normal pattern or transform, got " + describe(k));
+        fail("expected a normal pattern or transform, got " + got(k));
     }
 }
 
@@ -492,7 +492,7 @@ void Parser::parse_interior_body(scene::Interior& in) {
         else if (w == "fade_power") in.fade_power = parse_float();
         else if (w == "fade_color" || w == "fade_colour") in.fade_color = parse_rgb();
         else if (w == "media") unsupported("media");
-        else fail("expected an interior item (ior, fade_distance, ...), got " + describe(t));
+        else fail("expected an interior item (ior, fade_distance, ...), got " + got(t));
     }
 }
 
@@ -539,7 +539,7 @@ scene::Texture Parser::parse_texture_body() {
             Transform tr;
             if (!parse_transform_item(tr))
                 fail("expected a texture item (pigment, normal, finish, transform), got " +
-                     describe(next()));
+                     got(next()));
             transform_texture(tex, tr);
         }
     }
@@ -578,7 +578,7 @@ MaterialValue Parser::parse_material_body() {
             Transform tr;
             if (!parse_transform_item(tr))
                 fail("expected texture, interior or a transform in the material, got " +
-                     describe(next()));
+                     got(next()));
             if (m.texture) transform_texture(*m.texture, tr);
         }
     }

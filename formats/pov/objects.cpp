@@ -119,11 +119,13 @@ static void parse_counted(Parser& p, const char* name, F item) {
 static void parse_mesh2(Parser& p, scene::Mesh& mesh) {
     std::vector<int> textures;
     auto idx3 = [&](const char* what, int limit) {
+        p.peek();
+        FileLoc at = p.loc();
         Vec3 v = p.parse_vector();
         std::array<int, 3> r{static_cast<int>(v.x), static_cast<int>(v.y), static_cast<int>(v.z)};
         for (int k : r)
             if (k < 0 || k >= limit)
-                p.fail(std::string(what) + " index " + std::to_string(k) + " is out of range (0.." +
+                p.fail_at(at, std::string(what) + " index " + std::to_string(k) + " is out of range (0.." +
                        std::to_string(limit - 1) + ")");
         return r;
     };
@@ -349,7 +351,7 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
         return true;
     } else {  // object { sphere { ... } mods }
         const Token& t = next();
-        if (!parse_object(t, po)) fail("expected an object identifier or object, got " + describe(t));
+        if (!parse_object(t, po)) fail("expected an object identifier or object, got " + got(t));
     }
     parse_object_mods(po, w.c_str(), o);
     out = std::move(po);
@@ -407,7 +409,7 @@ void Parser::parse_light_body(scene::Light& l, PovObject& o) {
                 if (t.kind == TokKind::End)
                     expect_close("light_source", opened);
                 fail("expected a light_source item (spotlight, area_light, ...), got " +
-                     describe(next()));
+                     got(next()));
             }
             tr = tr.then(delta);
         }
@@ -524,7 +526,7 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
             if (!parse_transform_item(delta))
                 fail(std::string("expected an object modifier or '}' to close the ") + what +
                      " opened at " + std::to_string(opened.line) + ":" +
-                     std::to_string(opened.column) + ", got " + describe(next()));
+                     std::to_string(opened.column) + ", got " + got(next()));
             apply_transform(o, delta);
         }
     }

@@ -146,7 +146,7 @@ void Parser::parse_default() {
             parse_normal_body(default_texture_.normal);
             expect_close("normal", lo);
         } else {
-            fail("expected texture, pigment, finish or normal in #default, got " + describe(t));
+            fail("expected texture, pigment, finish or normal in #default, got " + got(t));
         }
     }
     expect_close("#default", o);
@@ -183,7 +183,7 @@ static void parse_statements(Parser& p) {
                    " } (or camera { ... }) , got '" + t.text + "'");
         if (t.kind == TokKind::Word)
             p.fail("unknown keyword or identifier '" + t.text + "'");
-        p.fail("expected an object, light_source, camera or directive, got " + describe(t));
+        p.fail("expected an object, light_source, camera or directive, got " + p.got(t));
     }
 }
 

@@ -83,6 +83,9 @@ public:
     void expect_open(const char* what);   // '{'; remembers where for the matching '}'
     void expect_close(const char* what, const FileLoc& opened);
     [[noreturn]] void fail(const std::string& message) const;
+    // describe(t), but an undeclared name that cannot be a keyword (POV-Ray keywords are
+    // lower case) is called what it most likely is: an unknown identifier.
+    std::string got(const Token& t) const;
     [[noreturn]] void fail_at(const FileLoc& loc, const std::string& message) const;
     [[noreturn]] void unsupported(const std::string& what) const;
     bool in_system_file() const;

@@ -67,6 +67,14 @@ bool Parser::in_system_file() const { return !frames_.empty() && files_[cur_file
 
 void Parser::fail(const std::string& message) const { fail_at(loc(), message); }
 
+std::string Parser::got(const Token& t) const {
+    if (t.kind == TokKind::Word && !lookup(t.text)) {
+        for (char c : t.text)
+            if (c >= 'A' && c <= 'Z') return "the unknown identifier '" + t.text + "'";
+    }
+    return describe(t);
+}
+
 void Parser::fail_at(const FileLoc& l, const std::string& message) const {
     throw Error(ErrorKind::Scene, l, message);
 }
@@ -151,13 +159,13 @@ bool Parser::accept(const char* word) {
 void Parser::expect(const char* word, const char* context) {
     const Token& t = next();
     if (!t.is(word))
-        fail(std::string("expected '") + word + "' " + context + ", got " + describe(t));
+        fail(std::string("expected '") + word + "' " + context + ", got " + got(t));
 }
 
 void Parser::expect_open(const char* what) {
     const Token& t = next();
     if (!t.is_symbol('{'))
-        fail(std::string("expected '{' after '") + what + "', got " + describe(t));
+        fail(std::string("expected '{' after '") + what + "', got " + got(t));
 }
 
 void Parser::expect_close(const char* what, const FileLoc& opened) {
@@ -165,7 +173,7 @@ void Parser::expect_close(const char* what, const FileLoc& opened) {
     if (!t.is_symbol('}'))
         fail(std::string("expected '}' to close the ") + what + " opened at " +
              std::to_string(opened.line) + ":" + std::to_string(opened.column) + ", got " +
-             describe(t));
+             got(t));
 }
 
 // ---------------------------------------------------------------- identifiers
@@ -203,7 +211,7 @@ void Parser::declare(const std::string& name, Value v, const FileLoc& l, bool lo
 std::string Parser::read_name(const char* context) {
     const Token& t = raw();
     if (t.kind != TokKind::Word)
-        fail(std::string("expected an identifier after ") + context + ", got " + describe(t));
+        fail(std::string("expected an identifier after ") + context + ", got " + got(t));
     return t.text;
 }
 
@@ -274,7 +282,7 @@ void Parser::handle_declare(bool local, const FileLoc& dloc) {
     std::string name = read_name(local ? "#local" : "#declare");
     FileLoc nloc = loc();
     const Token& eq = next();
-    if (!eq.is_symbol('=')) fail("expected '=' after '" + name + "', got " + describe(eq));
+    if (!eq.is_symbol('=')) fail("expected '=' after '" + name + "', got " + got(eq));
     Frame& f = frames_.back();
     size_t nframes = frames_.size(), start = f.pos, nscopes = scopes_.size();
     size_t nconds = f.conds.size();
@@ -378,12 +386,12 @@ void Parser::handle_macro_def(const FileLoc& dloc) {
     m->name = read_name("#macro");
     m->loc = dloc;
     const Token& p = raw();
-    if (!p.is_symbol('(')) fail("expected '(' after the macro name, got " + describe(p));
+    if (!p.is_symbol('(')) fail("expected '(' after the macro name, got " + got(p));
     for (;;) {
         const Token& t = raw();
         if (t.is_symbol(')')) break;
         if (t.is_symbol(',')) continue;
-        if (t.kind != TokKind::Word) fail("expected a parameter name, got " + describe(t));
+        if (t.kind != TokKind::Word) fail("expected a parameter name, got " + got(t));
         if (t.text == "optional") unsupported("optional macro parameters");
         m->params.push_back(t.text);
     }
@@ -415,7 +423,7 @@ void Parser::call_macro(const Macro& m, const FileLoc& cloc) {
     const Token& t = next();
     if (!t.is_symbol(')'))
         fail("expected ')' after the " + std::to_string(m.params.size()) + " argument(s) of macro '" +
-             m.name + "', got " + describe(t));
+             m.name + "', got " + got(t));
     scopes_.push_back(std::move(args));
     Frame f;
     f.file = m.file;
@@ -463,10 +471,10 @@ void Parser::handle_if(const FileLoc& dloc, int mode) {
         c = parse_cond_paren() != 0;
     } else {
         const Token& p = raw();
-        if (!p.is_symbol('(')) fail("expected '(' after #ifdef/#ifndef, got " + describe(p));
+        if (!p.is_symbol('(')) fail("expected '(' after #ifdef/#ifndef, got " + got(p));
         std::string name = read_name("#ifdef");
         const Token& q = raw();
-        if (!q.is_symbol(')')) fail("expected ')' after the identifier, got " + describe(q));
+        if (!q.is_symbol(')')) fail("expected ')' after the identifier, got " + got(q));
         c = lookup(name) != nullptr;
         if (mode == 2) c = !c;
     }
@@ -556,7 +564,7 @@ void Parser::handle_while(const FileLoc& dloc) {
 void Parser::handle_for(const FileLoc& dloc) {
     expect("(", "after #for");
     const Token& t = next();
-    if (t.kind != TokKind::Word) fail("expected the loop variable after '#for (', got " + describe(t));
+    if (t.kind != TokKind::Word) fail("expected the loop variable after '#for (', got " + got(t));
     std::string var = t.text;
     expect(",", "after the #for variable");
     double start = parse_float();

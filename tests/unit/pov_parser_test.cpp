@@ -1,0 +1,284 @@
+// The POV-Ray grammar to IR: camera resolution against hand-computed vectors, each object and
+// material kind, CSG material inheritance, transforms moving textures, and error places.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/unit/pov_test_util.h"
+
+namespace glint::pov {
+namespace {
+
+using testing::error_of;
+using testing::parse;
+
+void expect_near(const Vec3& a, const Vec3& b, double tol = 1e-9) {
+    EXPECT_NEAR(a.x, b.x, tol);
+    EXPECT_NEAR(a.y, b.y, tol);
+    EXPECT_NEAR(a.z, b.z, tol);
+}
+
+TEST(PovCamera, DefaultsAndLookAt) {
+    auto s = parse("camera { location <0, 0, -5> look_at <0, 0, 0> }");
+    expect_near(s.camera.location, {0, 0, -5});
+    expect_near(s.camera.direction, {0, 0, 1});
+    expect_near(s.camera.right, {1.33, 0, 0});
+    expect_near(s.camera.up, {0, 1, 0});
+}
+
+TEST(PovCamera, AngleSetsDirectionFromRightWhateverTheOrder) {
+    // |direction| = |right| / tan(angle/2) / 2 = (4/3) / tan(45 deg) / 2 = 2/3.
+    for (const char* text :
+         {"camera { location <0,0,-5> right x*4/3 angle 90 look_at 0 }",
+          "camera { look_at 0 angle 90 location <0,0,-5> right x*4/3 }"}) {
+        auto s = parse(text);
+        expect_near(s.camera.direction, {0, 0, 2.0 / 3.0});
+        expect_near(s.camera.right, {4.0 / 3.0, 0, 0});
+        expect_near(s.camera.up, {0, 1, 0});
+        EXPECT_EQ(s.camera.angle, 90);
+    }
+}
+
+TEST(PovCamera, LookAtSideways) {
+    // Looking along +x from the origin: right = sky x dir = (0,1,0)x(1,0,0) = (0,0,-1) * 1.33.
+    auto s = parse("camera { location 0 look_at <10, 0, 0> }");
+    expect_near(s.camera.direction, {1, 0, 0});
+    expect_near(s.camera.right, {0, 0, -1.33});
+    expect_near(s.camera.up, {0, 1, 0});
+}
+
+TEST(PovCamera, LeftHandedRightKeepsItsSign) {
+    auto s = parse("camera { right -x look_at <0, 0, 1> }");
+    expect_near(s.camera.right, {-1, 0, 0});
+}
+
+TEST(PovCamera, OrthographicSizedByLookAtDistance) {
+    // No up/right given: both scaled by |look_at - location| / |direction| = 10.
+    auto s = parse("camera { orthographic location <0, 0, -10> look_at 0 }");
+    EXPECT_EQ(s.camera.kind, scene::CameraKind::Orthographic);
+    expect_near(s.camera.right, {13.3, 0, 0});
+    expect_near(s.camera.up, {0, 10, 0});
+    // With up and right given they are kept.
+    s = parse("camera { orthographic location <0,0,-10> right 8*x up 6*y look_at 0 }");
+    expect_near(s.camera.right, {8, 0, 0});
+    expect_near(s.camera.up, {0, 6, 0});
+}
+
+TEST(PovCamera, TransformsApplyLast) {
+    auto s = parse("camera { location <0, 0, -5> look_at 0 translate <1, 2, 3> }");
+    expect_near(s.camera.location, {1, 2, -2});
+    expect_near(s.camera.direction, {0, 0, 1});
+}
+
+TEST(PovCamera, UnsupportedKindsFail) {
+    EXPECT_EQ(error_of("camera {\n  fisheye angle 180 }"),
+              "2:3: the 'fisheye' camera is not supported yet");
+    EXPECT_EQ(error_of("camera { location 0 look_at 0 }"),
+              "1:8: the camera location and look_at point must be different");
+}
+
+template <typename T>
+const T& shape(const scene::Scene& s, size_t i) {
+    return std::get<T>(s.objects.at(i).shape);
+}
+
+TEST(PovObjects, Shapes) {
+    auto s = parse(
+        "sphere { <1,2,3>, 4 }\n"
+        "plane { <0, 2, 0>, 3 }\n"
+        "box { <-1,-2,-3>, <1,2,3> }\n"
+        "cylinder { 0, y*2, 0.5 open }\n"
+        "cone { 0, 1, y, 0.25 }\n"
+        "disc { 0, <0, 0, 2>, 2, 1 }\n"
+        "torus { 2, 0.5 sturm }\n"
+        "triangle { 0, x, y }\n"
+        "smooth_triangle { 0, z, x, z, y, z }\n");
+    ASSERT_EQ(s.objects.size(), 9u);
+    EXPECT_EQ(shape<scene::Sphere>(s, 0).center, Vec3(1, 2, 3));
+    EXPECT_EQ(shape<scene::Sphere>(s, 0).radius, 4);
+    EXPECT_EQ(shape<scene::Plane>(s, 1).normal, Vec3(0, 1, 0));  // normalized
+    EXPECT_EQ(shape<scene::Plane>(s, 1).distance, 3);            // distance as written
+    EXPECT_EQ(shape<scene::Box>(s, 2).corner2, Vec3(1, 2, 3));
+    EXPECT_TRUE(shape<scene::Cylinder>(s, 3).open);
+    EXPECT_EQ(shape<scene::Cylinder>(s, 3).cap, Vec3(0, 2, 0));
+    EXPECT_EQ(shape<scene::Cone>(s, 4).cap_radius, 0.25);
+    EXPECT_FALSE(shape<scene::Cone>(s, 4).open);
+    EXPECT_EQ(shape<scene::Disc>(s, 5).normal, Vec3(0, 0, 1));
+    EXPECT_EQ(shape<scene::Disc>(s, 5).hole_radius, 1);
+    EXPECT_TRUE(shape<scene::Torus>(s, 6).sturm);
+    EXPECT_EQ(shape<scene::Triangle>(s, 7).p[1], Vec3(1, 0, 0));
+    EXPECT_EQ(shape<scene::SmoothTriangle>(s, 8).n[2], Vec3(0, 0, 1));
+    for (const auto& o : s.objects) EXPECT_GE(o.material, 0);
+}
+
+TEST(PovObjects, MeshAndMesh2) {
+    auto s = parse(
+        "#declare M = mesh { triangle { 0, x, y } smooth_triangle { 0, z, x, z, y, z }"
+        " inside_vector z }\n"
+        "object { M translate x }\nobject { M }\n"
+        "mesh2 { vertex_vectors { 4, 0, x, y, z } normal_vectors { 1, z }"
+        " face_indices { 2, <0,1,2>, <1,2,3> } normal_indices { 2, <0,0,0>, <0,0,0> } }\n");
+    ASSERT_EQ(s.meshes.size(), 2u);
+    EXPECT_EQ(s.meshes[0].faces.size(), 2u);
+    EXPECT_TRUE(s.meshes[0].has_inside_vector);
+    EXPECT_EQ(s.meshes[0].faces[1].n[0], 0);
+    EXPECT_EQ(shape<scene::MeshRef>(s, 0).mesh, 0);
+    EXPECT_EQ(shape<scene::MeshRef>(s, 1).mesh, 0);  // a declared mesh is shared
+    EXPECT_EQ(s.meshes[1].positions.size(), 4u);
+    EXPECT_EQ(s.meshes[1].faces[1].v, (std::array<int, 3>{1, 2, 3}));
+    EXPECT_EQ(s.meshes[1].faces[1].n, (std::array<int, 3>{0, 0, 0}));
+    EXPECT_EQ(error_of("mesh2 { vertex_vectors { 1, 0 } face_indices { 1, <0, 1, 0> } }"),
+              "1:51: vertex index 1 is out of range (0..0)");
+}
+
+TEST(PovObjects, CsgMaterialsAndLights) {
+    auto s = parse(
+        "union {\n"
+        "  sphere { 0, 1 pigment { rgb x } }\n"
+        "  sphere { x, 1 }\n"
+        "  light_source { <0, 5, 0> rgb 1 }\n"
+        "  translate <10, 0, 0>\n"
+        "}\n");
+    ASSERT_EQ(s.objects.size(), 1u);
+    const auto& csg = std::get<scene::Csg>(s.objects[0].shape);
+    ASSERT_EQ(csg.children.size(), 2u);
+    EXPECT_GE(s.objects[0].material, 0);
+    EXPECT_GE(csg.children[0].material, 0);
+    EXPECT_EQ(csg.children[1].material, -1);
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].location, Vec3(10, 5, 0));
+    // The child's pigment moved with the union.
+    const auto& pig = s.materials[csg.children[0].material].texture.pigment;
+    EXPECT_EQ(pig.transform.point(Vec3(0, 0, 0)), Vec3(10, 0, 0));
+}
+
+TEST(PovObjects, TransformsBeforeTextureDoNotMoveIt) {
+    auto s = parse("sphere { 0, 1 translate x pigment { checker scale 2 } translate y }");
+    const auto& pig = s.materials[s.objects[0].material].texture.pigment;
+    EXPECT_EQ(pig.kind, scene::PatternKind::Checker);
+    EXPECT_EQ(pig.transform.point(Vec3(1, 1, 1)), Vec3(2, 3, 2));
+    EXPECT_EQ(s.objects[0].transform.point(Vec3(0, 0, 0)), Vec3(1, 1, 0));
+    // Default checker colors: blue and green.
+    EXPECT_EQ(pig.entries.at(0).color.rgb, Color(0, 0, 1));
+    EXPECT_EQ(pig.entries.at(1).color.rgb, Color(0, 1, 0));
+}
+
+TEST(PovObjects, ModifiersAndFlags) {
+    auto s = parse(
+        "#declare B = box { -1, 1 }\n"
+        "object { B inverse hollow no_shadow no_image no_reflection double_illuminate"
+        " bounded_by { sphere { 0, 2 } } clipped_by { bounded_by } }\n"
+        "sphere { 0, 1 hollow off }");
+    const auto& o = s.objects[0];
+    EXPECT_TRUE(o.inverse && o.hollow && o.no_shadow && o.no_image && o.no_reflection &&
+                o.double_illuminate);
+    EXPECT_EQ(o.name, "B");
+    ASSERT_EQ(o.bounded_by.size(), 1u);
+    ASSERT_EQ(o.clipped_by.size(), 1u);
+    EXPECT_FALSE(s.objects[1].hollow);
+}
+
+TEST(PovLights, AllKinds) {
+    auto s = parse(
+        "light_source { <1,2,3> color rgb <1,0.5,0.25> spotlight point_at <0,0,0> radius 10"
+        " falloff 20 tightness 5 fade_distance 4 fade_power 2 shadowless }\n"
+        "light_source { 0, 1 parallel point_at -y }\n"
+        "light_source { 0, 1 area_light x*2, z*2, 3, 4 adaptive 1 jitter circular orient }\n");
+    ASSERT_EQ(s.lights.size(), 3u);
+    EXPECT_EQ(s.lights[0].kind, scene::LightKind::Spot);
+    EXPECT_EQ(s.lights[0].color, Color(1, 0.5, 0.25));
+    EXPECT_EQ(s.lights[0].falloff, 20);
+    EXPECT_TRUE(s.lights[0].shadowless);
+    EXPECT_EQ(s.lights[0].fade_power, 2);
+    EXPECT_TRUE(s.lights[1].parallel);
+    EXPECT_EQ(s.lights[1].point_at, Vec3(0, -1, 0));
+    ASSERT_TRUE(s.lights[2].area.has_value());
+    EXPECT_EQ(s.lights[2].area->size2, 4);
+    EXPECT_TRUE(s.lights[2].area->jitter && s.lights[2].area->circular && s.lights[2].area->orient);
+}
+
+TEST(PovMaterials, FinishInteriorAndMaps) {
+    auto s = parse(
+        "#declare F = finish { ambient 0.2 diffuse 0.7 phong 0.5 phong_size 60 specular 0.3"
+        " roughness 0.01 brilliance 2 metallic reflection { 0.1, 0.8 falloff 2 fresnel on"
+        " metallic 0.5 } }\n"
+        "sphere { 0, 1 texture { pigment { gradient <0, 2, 0> color_map { [0 rgb 0] [1 rgb 1] } }"
+        " finish { F } } interior { ior 1.5 fade_distance 2 fade_power 1001 fade_color rgb x } }\n"
+        "sphere { 0, 1 finish { reflection rgb <0.1, 0.2, 0.3> } }\n");
+    const auto& m = s.materials[s.objects[0].material];
+    const auto& f = m.texture.finish;
+    EXPECT_EQ(f.ambient, Color(0.2, 0.2, 0.2));
+    EXPECT_EQ(f.diffuse, 0.7);
+    EXPECT_EQ(f.phong_size, 60);
+    EXPECT_EQ(f.roughness, 0.01);
+    EXPECT_EQ(f.metallic, 1);
+    EXPECT_EQ(f.reflection.min, Color(0.1, 0.1, 0.1));
+    EXPECT_EQ(f.reflection.max, Color(0.8, 0.8, 0.8));
+    EXPECT_EQ(f.reflection.falloff, 2);
+    EXPECT_TRUE(f.reflection.fresnel);
+    EXPECT_EQ(f.reflection.metallic, 0.5);
+    EXPECT_EQ(m.texture.pigment.kind, scene::PatternKind::Gradient);
+    EXPECT_EQ(m.texture.pigment.params.vector, Vec3(0, 1, 0));
+    ASSERT_EQ(m.texture.pigment.color_map.size(), 2u);
+    EXPECT_EQ(m.texture.pigment.color_map[1].color.rgb, Color(1, 1, 1));
+    EXPECT_EQ(m.interior.ior, 1.5);
+    EXPECT_EQ(m.interior.fade_power, 1001);
+    EXPECT_EQ(m.interior.fade_color, Color(1, 0, 0));
+    const auto& r = s.materials[s.objects[1].material].texture.finish.reflection;
+    EXPECT_EQ(r.min, Color(0.1, 0.2, 0.3));
+    EXPECT_EQ(r.max, Color(0.1, 0.2, 0.3));
+}
+
+TEST(PovMaterials, ImageMapMissingFile) {
+    try {
+        parse("sphere { 0, 1 pigment { image_map { png\n   \"no_such.png\" } } }");
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::MissingFile);
+        EXPECT_EQ(e.loc().line, 2);
+        EXPECT_EQ(e.loc().column, 4);
+    }
+}
+
+TEST(PovMaterials, UnsupportedFeaturesSaySo) {
+    EXPECT_EQ(error_of("sphere { 0, 1 normal { bumps 0.5 } }"),
+              "1:24: normal pattern 'bumps' (normal perturbation) is not supported yet");
+    EXPECT_EQ(error_of("sphere { 0, 1 finish { irid { 0.3 } } }"),
+              "1:24: finish 'irid' is not supported yet");
+    EXPECT_EQ(error_of("blob { }"), "1:1: the 'blob' object is not supported yet");
+}
+
+TEST(PovScene, GlobalSettingsBackgroundSky) {
+    Diagnostics diag;
+    auto s = parse_string(
+        "global_settings { assumed_gamma 1.0 max_trace_level 10 adc_bailout 0.01"
+        " ambient_light rgb <0.5, 0.5, 0.5> radiosity { count 10 } }\n"
+        "background { color rgb <0.1, 0.2, 0.3> }\n"
+        "sky_sphere { pigment { rgb 1 } pigment { rgbt <0, 0, 0, 0.5> } rotate 90*y }\n",
+        "t.pov", {}, diag);
+    EXPECT_EQ(*s.global.assumed_gamma, 1.0);
+    EXPECT_EQ(s.global.max_trace_level, 10);
+    EXPECT_EQ(s.global.ambient_light, Color(0.5, 0.5, 0.5));
+    EXPECT_EQ(s.background.rgb, Color(0.1, 0.2, 0.3));
+    ASSERT_TRUE(s.sky_sphere.has_value());
+    EXPECT_EQ(s.sky_sphere->pigments.size(), 2u);
+    EXPECT_EQ(diag.warning_count(), 1);  // radiosity ignored, with a warning
+}
+
+TEST(PovErrors, PlacesAndWording) {
+    EXPECT_EQ(error_of("sphere { 0, 1\n"),
+              "2:1: expected '}' to close the sphere opened at 1:8, got the end of the file");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { rgb 1 }\nfoo }"),
+              "2:1: expected an object modifier or '}' to close the sphere opened at 1:8, got 'foo'");
+    EXPECT_EQ(error_of("spere { 0, 1 }"), "1:1: unknown keyword or identifier 'spere'");
+    EXPECT_EQ(error_of("#declare S = sphere { 0, 1 }\nS"),
+              "2:1: an identifier cannot stand alone here: write object { S } (or camera { ... }) , got 'S'");
+    EXPECT_EQ(error_of("sphere { 0, 1 texture { T } }"),
+              "1:25: expected a texture item (pigment, normal, finish, transform), got the "
+              "unknown identifier 'T'");
+    EXPECT_EQ(error_of("#declare C = rgb 1;\nobject { C }"),
+              "2:10: expected an object identifier, got a color 'C'");
+}
+
+}  // namespace
+}  // namespace glint::pov
