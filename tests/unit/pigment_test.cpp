@@ -110,18 +110,21 @@ TEST(Pigment, FrequencyAndPhase) {
     EXPECT_NEAR(PigmentEvaluator::pattern_value(p, Vec3(0.3, 0, 0)), 0.6, 1e-12);
 }
 
-TEST(Pigment, NestedEntriesSeeTheParentSpace) {
+TEST(Pigment, NestedEntriesCarryTheirFullTransform) {
+    // The importer composes transforms, so an entry's transform already includes its
+    // parent's (POV-Ray evaluates entries in the parent's pattern space): here the outer
+    // checker is scaled by 10 and the inner one by 10 * 0.5 = 5.
     PigmentEvaluator e(nullptr);
     Pigment inner;
     inner.kind = scene::PatternKind::Checker;
     inner.entries = {plain(Color(1, 1, 1)), plain(Color(0, 0, 0))};
+    inner.transform = Transform::scale(Vec3(5, 5, 5));
     Pigment outer;
     outer.kind = scene::PatternKind::Checker;
     outer.entries = {inner, plain(Color(1, 0, 0))};
     outer.transform = Transform::scale(Vec3(10, 10, 10));
-    // Outer cell 0 everywhere in [0, 10)^3; the inner checker there runs at 1/10 scale too.
     EXPECT_EQ(eval(e, outer, Vec3(2.5, 2.5, 2.5)).rgb, Color(1, 1, 1));
-    EXPECT_EQ(eval(e, outer, Vec3(5.5, 2.5, 2.5)).rgb, Color(1, 1, 1));
+    EXPECT_EQ(eval(e, outer, Vec3(7.5, 2.5, 2.5)).rgb, Color(0, 0, 0));
     EXPECT_EQ(eval(e, outer, Vec3(15.5, 2.5, 2.5)).rgb, Color(1, 0, 0));
 }
 

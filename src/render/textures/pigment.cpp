@@ -123,11 +123,13 @@ bool PigmentEvaluator::eval(const scene::Pigment& pigment, const Vec3& parent,
             if (pigment.entries.size() >= 2) {
                 // Block pattern map: entry 0 at value 0, entry 1 at value 1; no blending
                 // between them for the values 0 and 1 a checker produces.
+                // Entry transforms are absolute (entry pattern -> world, the importer has
+                // composed the parent's), so entries see the same point as their parent.
                 const scene::Pigment& e = pigment.entries[v >= 1.0 ? 1 : 0];
-                bool found = eval(e, local, out);
+                bool found = eval(e, parent, out);
                 if (v > 0.0 && v < 1.0) {
                     ColorFT other;
-                    found |= eval(pigment.entries[0], local, &other);
+                    found |= eval(pigment.entries[0], parent, &other);
                     *out = other + (*out + other * -1.0) * v;
                 }
                 return found;

@@ -30,7 +30,8 @@ public:
     static double pattern_value(const scene::Pigment& pigment, const Vec3& local);
 
 private:
-    // `parent` is the point in the enclosing pattern's space (world for the top pigment).
+    // `parent` is the world point (or (u, v, 0) under uv_mapping); every pigment, nested
+    // entries included, carries its full pattern -> world transform.
     bool eval(const scene::Pigment& pigment, const Vec3& parent, scene::ColorFT* out) const;
     bool image_map(const scene::Pigment& pigment, const Vec3& local, scene::ColorFT* out) const;
 
