@@ -152,6 +152,24 @@ TEST(Csg, BoundedByMissMeansNoHit) {
     EXPECT_TRUE(g->intersect(ray({-5, 0.1, 0}, {1, 0, 0}), &h));
 }
 
+// A cutter with more hits along the ray than the inline hit buffer holds.
+TEST(Csg, ManyHitsAlongOneRay) {
+    std::vector<scene::Object> row;
+    for (int i = 0; i < 6; ++i) row.push_back(sphere({-2.5 + i, 0, 0}, 0.3));
+    auto g = build(scene_of({csg(scene::CsgOp::Difference,
+                                 {box({-3, -1, -1}, {3, 1, 1}), csg(scene::CsgOp::Union, row)})}));
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({-2.0, 0, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 0.2, 1e-14);
+    EXPECT_NEAR(h.ng.x, 1, 1e-14);
+    ASSERT_TRUE(g->intersect(ray({-1.0, 0, 0}, {-1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 0.2, 1e-14);
+    EXPECT_NEAR(h.ng.x, -1, 1e-14);
+    // Through the hole of the last sphere to the box's far face.
+    ASSERT_TRUE(g->intersect(ray({2.9, 0, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 0.1, 1e-14);
+}
+
 TEST(Csg, NestedTransformsCompose) {
     scene::Object inner = sphere({0, 0, 0}, 1);
     inner.transform = Transform::translate({2, 0, 0});

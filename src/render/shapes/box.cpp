@@ -30,7 +30,7 @@ public:
         return false;
     }
 
-    void intersect_all(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const override {
+    void intersect_all(const Ray& ray, double tmax, HitList* hits) const override {
         Slab s;
         if (!slabs(ray, &s)) return;
         if (s.t0 > 0 && s.t0 < tmax) fill(ray, s.t0, s.axis0, s.side0, &hits->emplace_back());
@@ -95,7 +95,8 @@ private:
     // POV-Ray's box uv_mapping (boxes.cpp, Box::UVCoord): a cube-map cross laid out in a
     // 4 x 3 grid of the unit square.
     Vec2 uv(const Vec3& p, int axis, int side) const {
-        Vec3 q = (p - lo_) / (hi_ - lo_);
+        Vec3 q = p - lo_, ext = hi_ - lo_;
+        for (int i = 0; i < 3; ++i) q[i] = ext[i] > 0 ? q[i] / ext[i] : 0;  // flat boxes
         switch (axis * 2 + side) {
             case 0: return {q.z / 4.0, 1.0 / 3.0 + q.y / 3.0};
             case 1: return {0.75 - q.z / 4.0, 1.0 / 3.0 + q.y / 3.0};

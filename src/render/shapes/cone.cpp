@@ -58,7 +58,7 @@ public:
         return true;
     }
 
-    void intersect_all(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const override {
+    void intersect_all(const Ray& ray, double tmax, HitList* hits) const override {
         Candidate c[4];
         int n = candidates(ray, tmax, c);
         for (int i = 0; i < n; ++i) fill(ray, c[i], &hits->emplace_back());

@@ -49,7 +49,7 @@ public:
         return true;
     }
 
-    void intersect_all(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const override {
+    void intersect_all(const Ray& ray, double tmax, HitList* hits) const override {
         RayShear shear(ray);
         double t = tmax;
         bvh_.traverse(ray, t, [&](int i, double&) {

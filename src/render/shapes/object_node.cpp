@@ -197,7 +197,7 @@ bool ObjectNode::intersect(const Ray& ray, double tmax, bool shadow, LocalHit* h
     if (shadow && (flags_ & kNoShadow)) return false;
     if (!bounded_by_.empty() && !passes_bound(ray)) return false;
     if (clipped_by_.empty()) return intersect_unclipped(ray, tmax, shadow, hit);
-    std::vector<LocalHit> all;
+    HitList all;
     intersect_all_unclipped(ray, tmax, &all);
     bool found = false;
     for (auto& h : all) {
@@ -210,7 +210,7 @@ bool ObjectNode::intersect(const Ray& ray, double tmax, bool shadow, LocalHit* h
     return found;
 }
 
-void ObjectNode::intersect_all(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const {
+void ObjectNode::intersect_all(const Ray& ray, double tmax, HitList* hits) const {
     if (!bounded_by_.empty() && !passes_bound(ray)) return;
     if (clipped_by_.empty()) {
         intersect_all_unclipped(ray, tmax, hits);
@@ -220,7 +220,7 @@ void ObjectNode::intersect_all(const Ray& ray, double tmax, std::vector<LocalHit
     intersect_all_unclipped(ray, tmax, hits);
     auto keep = std::remove_if(hits->begin() + first, hits->end(),
                                [&](const LocalHit& h) { return !passes_clip(h.p); });
-    hits->erase(keep, hits->end());
+    hits->truncate(static_cast<size_t>(keep - hits->begin()));
 }
 
 bool ObjectNode::inside(const Vec3& p) const {
@@ -244,7 +244,7 @@ bool ObjectNode::intersect_unclipped(const Ray& ray, double tmax, bool shadow,
 }
 
 void ObjectNode::intersect_all_unclipped(const Ray& ray, double tmax,
-                                         std::vector<LocalHit>* hits) const {
+                                         HitList* hits) const {
     size_t first = hits->size();
     intersect_all_local(to_local(xf_, identity_, ray), tmax, hits);
     for (size_t i = first; i < hits->size(); ++i) finish(&(*hits)[i]);
@@ -289,7 +289,7 @@ bool ObjectNode::intersect_local(const Ray& ray, double tmax, bool shadow, Local
         }
         return found;
     }
-    std::vector<LocalHit> hits;
+    HitList hits;
     for (size_t i = 0; i < children_.size(); ++i) {
         hits.clear();
         children_[i]->intersect_all(ray, found ? hit->t : tmax, &hits);
@@ -311,7 +311,7 @@ bool ObjectNode::intersect_local(const Ray& ray, double tmax, bool shadow, Local
 }
 
 void ObjectNode::intersect_all_local(const Ray& ray, double tmax,
-                                     std::vector<LocalHit>* hits) const {
+                                     HitList* hits) const {
     if (prim_) {
         prim_->intersect_all(ray, tmax, hits);
         return;
@@ -330,7 +330,7 @@ void ObjectNode::intersect_all_local(const Ray& ray, double tmax,
             }
             (*hits)[w++] = h;
         }
-        hits->resize(w);
+        hits->truncate(w);
     }
 }
 

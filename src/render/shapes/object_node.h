@@ -25,7 +25,7 @@ public:
     // (they still shape CSG results).
     bool intersect(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
     // Every surviving hit with 0 < t < tmax, unsorted.
-    void intersect_all(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const;
+    void intersect_all(const Ray& ray, double tmax, HitList* hits) const;
     bool inside(const Vec3& p) const;
     const Bounds3& bounds() const { return bounds_; }  // parent space; may be infinite
     uint32_t flags() const { return flags_; }
@@ -34,10 +34,10 @@ private:
     ObjectNode() = default;
     // The node's own surfaces before clipping, in parent space.
     bool intersect_unclipped(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
-    void intersect_all_unclipped(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const;
+    void intersect_all_unclipped(const Ray& ray, double tmax, HitList* hits) const;
     // In object space (the ray already transformed).
     bool intersect_local(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
-    void intersect_all_local(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const;
+    void intersect_all_local(const Ray& ray, double tmax, HitList* hits) const;
     bool inside_local(const Vec3& p) const;
     bool csg_keeps(size_t child, const Vec3& p) const;
     bool passes_bound(const Ray& ray) const;

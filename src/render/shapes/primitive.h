@@ -27,6 +27,51 @@ struct LocalHit {
     uint32_t flags = 0;  // ObjectFlags accumulated on the way up
 };
 
+// Hits along one ray, kept on the stack for the usual handful (CSG asks for every hit of every
+// child on every ray, so a heap allocation per query would dominate).
+class HitList {
+public:
+    static constexpr size_t kInline = 8;
+    HitList() = default;
+    HitList(const HitList&) = delete;
+    HitList& operator=(const HitList&) = delete;
+
+    LocalHit& emplace_back() {
+        if (!spilled_ && n_ < kInline) {
+            inline_[n_] = LocalHit();
+            return inline_[n_++];
+        }
+        if (!spilled_) {
+            heap_.assign(inline_, inline_ + n_);
+            spilled_ = true;
+        }
+        ++n_;
+        return heap_.emplace_back();
+    }
+    void push_back(const LocalHit& h) { emplace_back() = h; }
+    size_t size() const { return n_; }
+    bool empty() const { return n_ == 0; }
+    LocalHit* begin() { return spilled_ ? heap_.data() : inline_; }
+    LocalHit* end() { return begin() + n_; }
+    const LocalHit* begin() const { return spilled_ ? heap_.data() : inline_; }
+    const LocalHit* end() const { return begin() + n_; }
+    LocalHit& operator[](size_t i) { return begin()[i]; }
+    const LocalHit& operator[](size_t i) const { return begin()[i]; }
+    // Keeps the first n hits.
+    void truncate(size_t n) {
+        if (n >= n_) return;
+        n_ = n;
+        if (spilled_) heap_.resize(n);
+    }
+    void clear() { truncate(0); }
+
+private:
+    LocalHit inline_[kInline];
+    std::vector<LocalHit> heap_;
+    size_t n_ = 0;
+    bool spilled_ = false;
+};
+
 class Primitive {
 public:
     virtual ~Primitive() = default;
@@ -35,7 +80,7 @@ public:
     // Closest hit with 0 < t < tmax.
     virtual bool intersect(const Ray& ray, double tmax, LocalHit* hit) const = 0;
     // Appends every hit with 0 < t < tmax, in any order.
-    virtual void intersect_all(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const = 0;
+    virtual void intersect_all(const Ray& ray, double tmax, HitList* hits) const = 0;
     // POV-Ray's inside test (CSG); shapes without an inside (triangles, discs) return false.
     virtual bool inside(const Vec3& p) const = 0;
 };

@@ -35,7 +35,7 @@ public:
         return false;
     }
 
-    void intersect_all(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const override {
+    void intersect_all(const Ray& ray, double tmax, HitList* hits) const override {
         double t[2];
         int n = roots(ray, t);
         for (int i = 0; i < n; ++i)

@@ -31,7 +31,7 @@ public:
         return true;
     }
 
-    void intersect_all(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const override {
+    void intersect_all(const Ray& ray, double tmax, HitList* hits) const override {
         double t[4];
         Frame f;
         int n = roots(ray, tmax, t, &f);

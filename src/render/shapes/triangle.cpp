@@ -93,7 +93,7 @@ public:
         return true;
     }
 
-    void intersect_all(const Ray& ray, double tmax, std::vector<LocalHit>* hits) const override {
+    void intersect_all(const Ray& ray, double tmax, HitList* hits) const override {
         LocalHit h;
         if (intersect(ray, tmax, &h)) hits->push_back(h);
     }
