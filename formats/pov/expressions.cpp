@@ -287,6 +287,10 @@ public:
         }
         if (constant_names().count(w)) return constant(w);
         if (function_names().count(w)) return function(w);
+        static const std::unordered_set<std::string> kUnsupportedFns = {
+            "seed", "rand", "vturbulence", "eval_pigment", "trace", "inside", "min_extent",
+            "max_extent", "dimensions", "dimension_size", "vstr", "datetime", "now"};
+        if (kUnsupportedFns.count(w)) p_.unsupported("the '" + w + "' function");
         p_.fail("unknown identifier '" + w + "'");
     }
 

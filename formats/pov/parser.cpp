@@ -60,6 +60,14 @@ Value Parser::parse_rvalue() {
             return parse_expression_value();
         }
         const std::string w = t.text;
+        // Inside a braced value, directives are ordinary content: only an expression value
+        // ends at a following directive (see Parser::next).
+        struct Restore {
+            size_t& ref;
+            size_t saved;
+            ~Restore() { ref = saved; }
+        } restore{declare_frame_, declare_frame_};
+        declare_frame_ = size_t(-1);
         PovObject po;
         if (parse_object(t, po)) return std::make_shared<const PovObject>(std::move(po));
         auto braced = [&](auto body) {
@@ -69,7 +77,11 @@ Value Parser::parse_rvalue() {
             expect_close(w.c_str(), o);
             return v;
         };
-        if (w == "texture") return braced([&] { return parse_texture_body(); });
+        if (w == "texture") {
+            scene::Texture tex = braced([&] { return parse_texture_body(); });
+            if (raw_next_is("texture")) unsupported("layered textures");
+            return tex;
+        }
         if (w == "pigment")
             return braced([&] {
                 scene::Pigment p = default_texture_.pigment;

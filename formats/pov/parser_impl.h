@@ -74,6 +74,12 @@ public:
     const Token& next();   // the next grammar token; directives and macro calls are handled
     const Token& peek() { next(); unget(); return *cur_; }
     void unget() { ungot_ = true; }
+    // Looks at the next token without running directives (safe right after a value).
+    bool raw_next_is(const char* word) const {
+        if (ungot_) return cur_->is(word);
+        const Frame& f = frames_.back();
+        return files_[f.file]->tokens[f.pos].is(word);
+    }
     FileLoc loc() const { return loc_of(cur_file_, *cur_); }  // of the last token
     FileLoc loc_of(int file, const Token& t) const {
         return FileLoc{files_[file]->name, t.line, t.column};
@@ -153,6 +159,8 @@ public:
 
     const ParseOptions& options;
     Diagnostics& diag;
+    // Frame depth of the #declare whose expression value is being read (-1: none).
+    size_t declare_frame_ = size_t(-1);
     scene::Scene scene;
     double version = 3.7;
     scene::Texture default_texture_;
@@ -194,7 +202,6 @@ private:
     std::string scene_dir_;
     Token end_token_;
     Token fake_end_;  // ends a #declare value at the next statement directive
-    size_t declare_frame_ = size_t(-1);
 };
 
 }  // namespace glint::pov

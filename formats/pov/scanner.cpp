@@ -133,8 +133,9 @@ private:
         ++i_;
         t.kind = TokKind::String;
         while (true) {
-            if (i_ >= s_.size() || s_[i_] == '\n')
-                fail(t.line, t.column, "unterminated string (opened here)");
+            if (i_ >= s_.size()) fail(t.line, t.column, "unterminated string (opened here)");
+            // POV-Ray strings may span lines (shapes3.inc has one).
+            if (s_[i_] == '\n') newline();
             char c = s_[i_++];
             if (c == '"') return;
             if (c == '\\' && i_ < s_.size()) {

@@ -190,9 +190,10 @@ const Symbol& Parser::use_symbol(const Token& t) {
     const Symbol* s = lookup(t.text);
     if (!s) fail("unknown identifier '" + t.text + "'");
     if (s->unusable) {
-        Error e(ErrorKind::Scene, loc(),
-                "'" + t.text + "' cannot be used: its declaration was skipped (" +
-                    s->unusable_reason + ")");
+        // Unsupported, so that a standard include's declaration built on a skipped one is
+        // skipped in turn instead of failing the scene.
+        Unsupported e(loc(), "'" + t.text + "' cannot be used: its declaration was skipped (" +
+                                 s->unusable_reason + ")");
         e.with_note(s->loc, "the unsupported feature in the declaration of '" + t.text + "'");
         throw e;
     }
@@ -280,6 +281,15 @@ bool Parser::handle_directive(const Token& d, int file) {
 
 void Parser::handle_declare(bool local, const FileLoc& dloc) {
     std::string name = read_name(local ? "#local" : "#declare");
+    if (name == "deprecated") {
+        // #declare deprecated [once] "message" Name = ...: POV-Ray warns when Name is used;
+        // glint keeps the value and drops the warning.
+        Frame& f = frames_.back();
+        const auto& toks = files_[f.file]->tokens;
+        if (toks[f.pos].is("once")) ++f.pos;
+        if (toks[f.pos].kind == TokKind::String) ++f.pos;
+        name = read_name("#declare deprecated");
+    }
     FileLoc nloc = loc();
     const Token& eq = next();
     if (!eq.is_symbol('=')) fail("expected '=' after '" + name + "', got " + got(eq));
@@ -333,7 +343,14 @@ void Parser::skip_declaration(size_t nframes, size_t start, size_t nscopes, size
             opened = opened || c == '{';
         } else if (c == '}' || c == ')' || c == ']') {
             --depth;
-            if (depth <= 0 && c == '}' && opened) return;
+            if (depth <= 0 && c == '}' && opened) {
+                // Layered textures: `texture {..} texture {..}` is one declaration.
+                if (toks[f.pos].is("texture") && toks[f.pos + 1].is_symbol('{')) {
+                    depth = 0;
+                    continue;
+                }
+                return;
+            }
         } else if (c == ';' && depth == 0) {
             --f.pos;  // leave the ';' for the caller
             return;

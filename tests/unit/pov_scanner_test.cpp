@@ -75,7 +75,8 @@ std::string scan_error(const std::string& s) {
 
 TEST(PovScanner, Errors) {
     EXPECT_EQ(scan_error("a\n  /* never closed"), "t.pov:2:3: unterminated comment (opened here)");
-    EXPECT_EQ(scan_error("x \"abc\n\""), "t.pov:1:3: unterminated string (opened here)");
+    EXPECT_EQ(scan_error("x \"abc\ndef"), "t.pov:1:3: unterminated string (opened here)");
+    EXPECT_EQ(toks("\"a\nb\" c")[1].line, 2) << "strings may span lines";
     EXPECT_EQ(scan_error("a @ b"), "t.pov:1:3: unexpected character '@'");
     EXPECT_EQ(scan_error("# 3"), "t.pov:1:1: expected a directive name after '#'");
 }
