@@ -13,7 +13,8 @@ namespace glint::app {
 CLI::App* add_ir_command(CLI::App& app, IrArgs& args) {
     CLI::App* cmd = app.add_subcommand("ir", "Print the scene as glint understood it");
     cmd->add_option("SCENE", args.scene, "POV-Ray scene file")->required();
-    cmd->add_option("-I,--include", args.include_dirs, "Include folder (repeatable)");
+    cmd->add_option("-I,--include", args.include_dirs, "Include folder (repeatable)")
+        ->allow_extra_args(false);  // one folder per -I, so `-I dir scene.pov` works
     cmd->add_option("--clock", args.clock, "Value of `clock`")->capture_default_str();
     cmd->add_option("--width", args.width, "Value of image_width")
         ->capture_default_str()

@@ -119,7 +119,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
     cmd->add_option("--threads", args.threads, "Worker threads (0: all hardware threads)")
         ->capture_default_str()
         ->check(CLI::Range(0, 4096));
-    cmd->add_option("-I,--include", args.include_dirs, "Include folder (repeatable)");
+    cmd->add_option("-I,--include", args.include_dirs, "Include folder (repeatable)")
+        ->allow_extra_args(false);  // one folder per -I, so `-I dir scene.pov` works
     cmd->add_flag("-v,--verbose", args.verbose, "Print features used and skipped, and timings");
     cmd->add_option("--progress", args.progress,
                     "Progress on stderr: bar, lines (`progress 0.42`), none "

@@ -258,3 +258,15 @@ TEST_F(CliTest, InterruptExits130WithoutOutput) {
     EXPECT_EQ(WEXITSTATUS(status), 130);
     EXPECT_EQ(count_files(), 1);  // only s.pov: no image, no temporary
 }
+
+TEST_F(CliTest, IncludeFlagTakesOneFolderEach) {
+    fs::create_directories(dir_ / "inc");
+    write_text("inc/size.inc", "#declare R = 0.5;\n");
+    write_text("s.pov", "#version 3.7;\n#include \"size.inc\"\nsphere { 0, R }\n");
+    // -I before the scene must not swallow the scene path.
+    RunResult r = run("ir -I '" + path("inc") + "' '" + path("s.pov") + "'");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("sphere"), std::string::npos) << r.out;
+    r = run("ir '" + path("s.pov") + "'");
+    EXPECT_EQ(r.exit_code, 3) << r.err;  // size.inc is not found without -I
+}
