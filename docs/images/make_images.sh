@@ -27,10 +27,10 @@ while read -r name path; do
         --tolerance 2 --min-fraction 0.99 || true))"
 done < <(golden_scenes "$root")
 
-# The demo scene as the README's title picture: glint at 640x480 with adaptive anti-aliasing.
+# The demo scene as the README's title picture: glint at 480x360 with adaptive anti-aliasing.
 if [[ " ${names[*]} " == *" demo "* ]]; then
-    "$glint" render "$root/scenes/demo.pov" -o "$work/demo_640.png" --width 640 --height 480 \
+    "$glint" render "$root/scenes/demo.pov" -o "$work/demo_480.png" --width 480 --height 360 \
         --aa adaptive:0.3
-    oiiotool --nosoftwareattrib "$work/demo_640.png" --eraseattrib ".*" -o "$here/demo.png"
+    oiiotool --nosoftwareattrib "$work/demo_480.png" --eraseattrib ".*" -o "$here/demo.png"
     echo "wrote docs/images/demo.png"
 fi

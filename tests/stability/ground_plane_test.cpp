@@ -57,7 +57,22 @@ AcneResult measure(const scene::Scene& scene, const render::Image& image) {
     return result;
 }
 
+// The plane's colour by POV-Ray's model: pigment * (ambient + diffuse * cos) + reflection *
+// background (reference manual 3.6.2.1 "Finish"), with ground_plane.pov's values. Checked so
+// that a uniformly wrong image cannot pass as acne-free.
+std::array<int, 3> expected_plane_colour() {
+    const double cosine = 2 / std::sqrt(6.0);  // light along -(-1, 2, -1)
+    const double pigment[3] = {0.7, 0.7, 0.65};
+    const double background[3] = {0.3, 0.4, 0.6};
+    std::array<int, 3> rgb{};
+    for (int c = 0; c < 3; ++c)
+        rgb[c] = to_8bit(static_cast<float>(pigment[c] * (0.1 + 0.6 * cosine) +
+                                            0.2 * background[c]));
+    return rgb;
+}
+
 TEST(StabilityGroundPlane, NoAcneAtGrazingAnglesFromFarAway) {
+    const std::array<int, 3> expected = expected_plane_colour();
     struct Variant {
         const char* name;
         const char* prelude;
@@ -76,7 +91,11 @@ TEST(StabilityGroundPlane, NoAcneAtGrazingAnglesFromFarAway) {
                     v.name, r.acne, r.plane_pixels, r.median[0], r.median[1], r.median[2]);
         EXPECT_GT(r.plane_pixels, kWidth * kHeight / 4) << v.name;
         EXPECT_EQ(r.acne, 0) << v.name;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_LE(std::abs(r.median[c] - expected[c]), 1) << v.name << " channel " << c;
     }
+    std::printf("expected plane colour %d,%d,%d (bound: median within 1/255)\n", expected[0],
+                expected[1], expected[2]);
 }
 
 }  // namespace

@@ -38,6 +38,14 @@ TEST(StabilityIor, Ior1SphereVanishes) {
     std::printf("ior 1.0 sphere vs no sphere: max linear difference = %.3g at %d,%d "
                 "(bound <= %.0e)\n", max_diff, at_x, at_y, kMaxVanishDiff);
     EXPECT_LE(max_diff, kMaxVanishDiff);
+
+    // Not vacuous: the same sphere with ior 1.5 does show.
+    const render::Image glass = render_file("ior_sphere.pov", "#declare Ior = 1.5;", kWidth,
+                                            kHeight);
+    const double unchanged = fraction_within(glass, without, 0);
+    std::printf("ior 1.5 sphere vs no sphere: unchanged pixels = %.4f (bound < 0.99)\n",
+                unchanged);
+    EXPECT_LT(unchanged, 0.99);
 }
 
 TEST(StabilityIor, ExtremeIorsAndTotalInternalReflectionStayFinite) {

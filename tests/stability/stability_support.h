@@ -17,7 +17,9 @@
 
 namespace glint::stability {
 
-inline std::string scenes_dir() { return std::string(GLINT_SOURCE_DIR) + "/tests/stability/scenes"; }
+inline std::string scenes_dir() {
+    return std::string(GLINT_SOURCE_DIR) + "/tests/stability/scenes";
+}
 
 // Parses `#declare`s given in `prelude`, then #includes scenes_dir()/file, so that one scene
 // file serves every parameter value the test needs.
