@@ -40,12 +40,25 @@ static scene::Object to_ir(Parser& p, const PovObject& po, const scene::Texture&
     return o;
 }
 
+// POV-Ray's Post_Process hands these flags down to CSG children.
+static void propagate_flags(scene::Object& o) {
+    auto csg = std::get_if<scene::Csg>(&o.shape);
+    if (!csg) return;
+    for (auto& c : csg->children) {
+        c.no_shadow = c.no_shadow || o.no_shadow;
+        c.no_image = c.no_image || o.no_image;
+        c.no_reflection = c.no_reflection || o.no_reflection;
+        propagate_flags(c);
+    }
+}
+
 void Parser::place_object(PovObject o) {
     for (auto& l : o.lights) scene.lights.push_back(l);
     if (o.is_light) return;
     scene::Texture def = default_texture_;
     def.loc = o.obj.loc;
     scene.objects.push_back(to_ir(*this, o, def, scene::Interior{}, true));
+    propagate_flags(scene.objects.back());
 }
 
 Value Parser::parse_rvalue() {

@@ -178,6 +178,16 @@ TEST(PovObjects, ModifiersAndFlags) {
     EXPECT_FALSE(s.objects[1].hollow);
 }
 
+TEST(PovObjects, CsgFlagsReachChildren) {
+    auto s = parse("union { union { sphere { 0, 1 } } sphere { x, 1 } no_shadow no_image }");
+    const auto& top = std::get<scene::Csg>(s.objects[0].shape);
+    const auto& inner = std::get<scene::Csg>(top.children[0].shape);
+    EXPECT_TRUE(inner.children[0].no_shadow);
+    EXPECT_TRUE(inner.children[0].no_image);
+    EXPECT_FALSE(inner.children[0].no_reflection);
+    EXPECT_TRUE(top.children[1].no_shadow);
+}
+
 TEST(PovLights, AllKinds) {
     auto s = parse(
         "light_source { <1,2,3> color rgb <1,0.5,0.25> spotlight point_at <0,0,0> radius 10"
