@@ -35,11 +35,11 @@ inline scene::Scene load_scene(const std::string& file, const std::string& prelu
 }
 
 inline render::Image render_scene(const scene::Scene& scene, int width, int height,
-                                  int threads = 0) {
+                                  int threads = 0, render::AaMode aa = render::AaMode::None) {
     render::RenderOptions options;
     options.width = width;
     options.height = height;
-    options.aa = render::AaMode::None;
+    options.aa = aa;
     options.threads = threads;
     Diagnostics diag;
     return render::render(scene, options, diag).image;
