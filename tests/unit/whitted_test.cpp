@@ -175,6 +175,20 @@ TEST(Whitted, PhongPeakWhenLightIsBehindTheEye) {
     expect_color(fx.render_ray(Vec3(0, 0, -5), Vec3(0, 0, 1)), Color(0.5 * 0.6 + 0.9));
 }
 
+TEST(Whitted, ShadowlessLightsGiveNoHighlights) {
+    Fixture fx;
+    scene::Material m = matte(Color(0.5, 0.5, 0.5), 0.0, 0.6);
+    m.texture.finish.phong = 0.9;
+    m.texture.finish.specular = 0.5;
+    fx.scene.materials.push_back(m);
+    fx.geo.spheres.push_back({Vec3(0, 0, 0), 1, 0});
+    scene::Light l;
+    l.location = Vec3(0, 0, -10);
+    l.shadowless = true;  // POV-Ray's fill light: diffuse only
+    fx.scene.lights.push_back(l);
+    expect_color(fx.render_ray(Vec3(0, 0, -5), Vec3(0, 0, 1)), Color(0.5 * 0.6));
+}
+
 TEST(Whitted, SpecularPeakAndMetallicTint) {
     Fixture fx;
     scene::Material m = matte(Color(1, 0.5, 0), 0.0, 0.0);

@@ -196,6 +196,8 @@ Color Whitted::shade(const Ray& ray, const Hit& hit, double weight, const RaySta
                     continue;
             }
             result += diffuse_term(f, n, ls.dir, pig.rgb, lc, att);
+            // shadowless lights are POV-Ray's FILL_LIGHT_SOURCE: diffuse only, no highlights.
+            if (!light.casts_shadows()) continue;
             if (f.phong > 0.0) result += phong_term(f, n, ls.dir, ray.dir, pig.rgb, lc);
             if (f.specular > 0.0) result += specular_term(f, n, ls.dir, ray.dir, pig.rgb, lc);
         }
