@@ -35,7 +35,10 @@ int exit_code_for(ErrorKind kind) {
 }
 
 int report_error(const Error& e) {
-    std::fputs(format_error(e).c_str(), stderr);
+    if (e.kind() == ErrorKind::Cancelled)
+        std::fputs("glint: interrupted; nothing written\n", stderr);
+    else
+        std::fputs(format_error(e).c_str(), stderr);
     std::fflush(stderr);
     return exit_code_for(e.kind());
 }
