@@ -21,4 +21,5 @@ background { color rgb <0.3, 0.4, 0.5> }
 plane { y, 0 pigment { checker color rgb <0.9, 0.9, 0.85> color rgb <0.2, 0.3, 0.25> } }
 box { <-0.5, 0, -0.5>, <0.5, 2.5, 0.5> pigment { color rgb <0.9, 0.4, 0.2> } translate <1.5, 0, 1> }
 sphere { <-0.8, 0.7, 0.5>, 0.7 pigment { color rgb <0.2, 0.5, 0.9> } finish { phong 0.5 } }
-cone { <0, 0, 0>, 0.5, <0, 1.6, 0>, 0 pigment { color rgb <0.3, 0.8, 0.3> } translate <0.3, 0, -1.6> }
+cone { <0, 0, 0>, 0.5, <0, 1.6, 0>, 0 pigment { color rgb <0.3, 0.8, 0.3> }
+       translate <0.3, 0, -1.6> }

@@ -11,7 +11,8 @@ light_source { <-5, 10, -8> color rgb 1 }
 background { color srgb <0.35, 0.4, 0.5> }
 
 plane { y, 0
-        texture { pigment { checker pigment { color White } pigment { color rgb <0.2, 0.25, 0.35> } }
+        texture { pigment { checker pigment { color White }
+                                    pigment { color rgb <0.2, 0.25, 0.35> } }
                   scale 1.5 rotate 30 * y translate <0.3, 0, 0> } }
 
 // Back row: the colour spellings.
@@ -27,7 +28,8 @@ box { <-1, 0, -0.3>, <1, 1.2, 0.3>
                                        [1.0 color Red] } scale 2 translate -x }
       translate <-2.4, 0, 0.5> }
 box { <-1, 0, -0.3>, <1, 1.2, 0.3>
-      pigment { gradient y color_map { [0.0 color rgb <0.1, 0.1, 0.5>] [0.5 color rgb <0.1, 0.1, 0.5>]
+      pigment { gradient y color_map { [0.0 color rgb <0.1, 0.1, 0.5>]
+                                       [0.5 color rgb <0.1, 0.1, 0.5>]
                                        [0.5 color rgb <1, 0.9, 0.3>] [1.0 color rgb <1, 0.5, 0.1>] }
                 scale 0.4 rotate 35 * z }
       translate <0, 0, 0.5> }

@@ -14,7 +14,10 @@ here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 source "$here/golden_scenes.sh"
 include=/usr/share/povray-3.7/include
-command -v povray >/dev/null || { echo "povray is not installed (apt-get install povray)" >&2; exit 1; }
+if ! command -v povray >/dev/null; then
+    echo "povray is not installed (apt-get install povray)" >&2
+    exit 1
+fi
 mkdir -p "$here/ref"
 
 wanted=" $* "
