@@ -36,7 +36,10 @@ void transform_pigment(scene::Pigment& p, const Transform& t) {
 }
 
 void transform_texture(scene::Texture& tex, const Transform& t) {
-    transform_pigment(tex.pigment, t);
+    // POV-Ray: `uv_mapping` makes the pigment a UV_MAP_PATTERN whose own warps are ignored
+    // (pigment.cpp Compute_Pigment), so texture and object transforms never reach a
+    // uv-mapped pigment; only the transforms inside its pigment { } apply.
+    if (!tex.pigment.uv_mapping) transform_pigment(tex.pigment, t);
     tex.normal.transform = tex.normal.transform.then(t);
 }
 
