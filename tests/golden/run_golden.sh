@@ -1,14 +1,15 @@
 #!/bin/bash
-# One golden test: render SCENE with glint exactly like the reference (320x240, no
-# anti-aliasing), then compare with the POV-Ray reference in 8-bit output space.
-# Passes when >= 99% of pixels are within 2/255 in every channel (VALIDATION.md "agrees").
+# One golden test: render SCENE with glint exactly like the reference (320x240; no
+# anti-aliasing, or AA=adaptive:0.3 against POV-Ray's +A0.3 -J), then compare with the POV-Ray
+# reference in 8-bit output space. Passes when >= 99% of pixels are within 2/255 in every
+# channel (VALIDATION.md "agrees").
 #
-#   run_golden.sh GLINT SCENE REF OUT DIFF
+#   run_golden.sh GLINT SCENE REF OUT DIFF [AA]
 set -u
-glint=$1 scene=$2 ref=$3 out=$4 diff=$5
+glint=$1 scene=$2 ref=$3 out=$4 diff=$5 aa=${6:-none}
 mkdir -p "$(dirname "$out")" "$(dirname "$diff")"
 rm -f "$out" "$diff"
-"$glint" render "$scene" -o "$out" --width 320 --height 240 --aa none
+"$glint" render "$scene" -o "$out" --width 320 --height 240 --aa "$aa"
 rc=$?
 if [ $rc -ne 0 ]; then
     echo "glint render failed with exit code $rc"
