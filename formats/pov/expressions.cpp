@@ -27,6 +27,7 @@ std::string value_kind_name(const Value& v) {
         case 9: return "a camera";
         case 10: return "a transform";
         case 11: return "a macro";
+        case 12: return "an array";
     }
     return "a value";
 }
@@ -47,7 +48,8 @@ const std::unordered_set<std::string>& function_names() {
         "mod", "div", "min", "max", "degrees", "radians", "vlength", "vdot", "vnormalize",
         "vcross", "vrotate", "vaxis_rotate", "select", "strlen", "val", "asc", "strcmp",
         "defined", "str", "concat", "chr", "substr", "strupr", "strlwr", "bitwise_and",
-        "bitwise_or", "bitwise_xor", "odd", "even", "sqr", "file_exists"};
+        "bitwise_or", "bitwise_xor", "odd", "even", "sqr", "file_exists", "seed", "rand",
+        "dimensions", "dimension_size"};
     return k;
 }
 
@@ -288,8 +290,8 @@ public:
         if (constant_names().count(w)) return constant(w);
         if (function_names().count(w)) return function(w);
         static const std::unordered_set<std::string> kUnsupportedFns = {
-            "seed", "rand", "vturbulence", "eval_pigment", "trace", "inside", "min_extent",
-            "max_extent", "dimensions", "dimension_size", "vstr", "datetime", "now"};
+            "vturbulence", "eval_pigment", "trace", "inside", "min_extent",
+            "max_extent", "vstr", "datetime", "now"};
         if (kUnsupportedFns.count(w)) p_.unsupported("the '" + w + "' function");
         p_.fail("unknown identifier '" + w + "'");
     }
@@ -340,6 +342,24 @@ public:
             bool d = t.kind == TokKind::Word && p_.lookup(t.text) != nullptr;
             p_.expect(")", "after the identifier in defined()");
             return Num::scalar(d ? 1 : 0);
+        }
+        if (f == "dimensions" || f == "dimension_size") {
+            p_.expect("(", ("after '" + f + "'").c_str());
+            const Token& t = p_.next();
+            const Symbol* s = t.kind == TokKind::Word ? p_.lookup(t.text) : nullptr;
+            auto arr = s ? std::get_if<std::shared_ptr<ArrayValue>>(&s->value) : nullptr;
+            if (!arr) p_.fail("expected an array identifier in " + f + "(), got " + p_.got(t));
+            auto keep = *arr;
+            double r = static_cast<double>(keep->sizes.size());
+            if (f == "dimension_size") {
+                p_.expect(",", "in dimension_size()");
+                int d = static_cast<int>(p_.parse_float());
+                if (d < 1 || d > static_cast<int>(keep->sizes.size()))
+                    p_.fail("dimension_size: the array has no dimension " + std::to_string(d));
+                r = keep->sizes[d - 1];
+            }
+            p_.expect(")", ("to close " + f + "()").c_str());
+            return Num::scalar(r);
         }
         std::vector<Value> a = args(f);
         auto need = [&](size_t n) {
@@ -446,6 +466,21 @@ public:
         if (f == "vaxis_rotate") {
             need(3);
             return Value(Num::vec(Transform::rotate_axis(V(1), F(2)).vector(V(0))));
+        }
+        if (f == "seed") {
+            // POV-Ray's random streams (express.cpp stream_seed / randomsequences.cpp).
+            need(1);
+            p_.rand_streams.push_back(static_cast<uint32_t>(static_cast<int>(F(0))));
+            return R(static_cast<double>(p_.rand_streams.size() - 1));
+        }
+        if (f == "rand") {
+            need(1);
+            int i = static_cast<int>(F(0));
+            if (i < 0 || i >= static_cast<int>(p_.rand_streams.size()))
+                p_.fail("rand(): no random stream " + std::to_string(i) + " (use seed())");
+            uint32_t& n = p_.rand_streams[i];
+            n = n * 1812433253u + 12345u;
+            return R(static_cast<double>(n) / 4294967295.0);
         }
         if (f == "strlen") { need(1); return R(static_cast<double>(S(0).size())); }
         if (f == "val") { need(1); return R(std::strtod(S(0).c_str(), nullptr)); }

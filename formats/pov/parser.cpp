@@ -66,6 +66,8 @@ Value Parser::parse_rvalue() {
     if (t.kind == TokKind::Word) {
         if (lookup(t.text)) {
             const Symbol& s = use_symbol(t);
+            if (auto arr = std::get_if<std::shared_ptr<ArrayValue>>(&s.value))
+                return std::make_shared<ArrayValue>(**arr);  // arrays are copied
             if (!std::holds_alternative<Num>(s.value) &&
                 !std::holds_alternative<std::string>(s.value))
                 return s.value;
@@ -130,14 +132,56 @@ Value Parser::parse_rvalue() {
                 return c;
             });
         if (w == "transform") return braced([&] { return parse_transform_body(); });
+        if (w == "array") return parse_array();
         static const std::unordered_set<std::string> kUnsupported = {
-            "array", "function", "spline", "fog", "media", "rainbow", "sky_sphere", "density",
+            "function", "spline", "fog", "media", "rainbow", "sky_sphere", "density",
             "color_map", "colour_map", "pigment_map", "normal_map", "texture_map", "slope_map",
             "density_map", "material_map", "background", "light_group"};
         if (kUnsupported.count(w)) unsupported("declaring '" + w + "'");
     }
     unget();
     return parse_expression_value();
+}
+
+// array[n][m] [{ {..}, {..} }]
+Value Parser::parse_array() {
+    auto a = std::make_shared<ArrayValue>();
+    size_t total = 1;
+    while (raw_next_is("[")) {
+        expect("[", "after 'array'");
+        FileLoc l = loc();
+        double n = parse_float();
+        expect("]", "after the array size");
+        if (n < 1 || n > 1e8) fail_at(l, "array size must be at least 1");
+        a->sizes.push_back(static_cast<int>(n));
+        total *= static_cast<size_t>(n);
+        if (total > 100'000'000) fail_at(l, "array too large");
+    }
+    if (a->sizes.empty()) fail("expected '[' and a size after 'array'");
+    a->items.resize(total);
+    if (raw_next_is("{")) {
+        size_t k = 0;
+        parse_array_init(*a, 0, k);
+    }
+    return a;
+}
+
+void Parser::parse_array_init(ArrayValue& a, size_t dim, size_t& k) {
+    expect_open("array");
+    FileLoc o = loc();
+    for (int i = 0; i < a.sizes[dim]; ++i) {
+        if (i > 0) expect(",", "between array elements");
+        if (dim + 1 < a.sizes.size())
+            parse_array_init(a, dim + 1, k);
+        else
+            a.items[k++] = std::make_shared<Value>(parse_rvalue());
+    }
+    accept(",");
+    const Token& t = next();
+    if (!t.is_symbol('}'))
+        fail("expected '}' after the " + std::to_string(a.sizes[dim]) +
+             " elements of the array opened at " + std::to_string(o.line) + ":" +
+             std::to_string(o.column) + ", got " + got(t));
 }
 
 void Parser::parse_default() {

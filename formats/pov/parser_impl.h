@@ -40,7 +40,9 @@ struct SourceFile {
 enum class CondKind { If, While, For, Switch };
 
 struct Cond {
-    CondKind kind;
+    Cond() = default;
+    Cond(CondKind k, FileLoc l) : kind(k), loc(std::move(l)) {}
+    CondKind kind = CondKind::If;
     FileLoc loc;
     size_t restart = 0;  // While: token index of the condition; For: first body token
     long long iterations = 0;
@@ -50,6 +52,8 @@ struct Cond {
 };
 
 struct Frame {
+    Frame() = default;
+    Frame(int f, size_t p) : file(f), pos(p) {}
     int file = 0;
     size_t pos = 0;
     bool is_macro = false;
@@ -159,6 +163,7 @@ public:
 
     const ParseOptions& options;
     Diagnostics& diag;
+    std::vector<uint32_t> rand_streams;  // seed()/rand() state, POV-Ray's LCG
     // Frame depth of the #declare whose expression value is being read (-1: none).
     size_t declare_frame_ = size_t(-1);
     scene::Scene scene;
@@ -189,6 +194,11 @@ private:
                            int depth = 0);
     void skip_declaration(size_t frames, size_t pos, size_t scopes, size_t conds);
     std::string read_name(const char* context);
+    // Reads `[i][j]...` after an array name; returns the flat index, sets `display` to
+    // "A[i][j]".
+    size_t parse_array_index(const ArrayValue& a, const std::string& name, std::string& display);
+    void parse_array_init(ArrayValue& a, size_t dim, size_t& k);
+    Value parse_array();
 
     std::vector<std::unique_ptr<SourceFile>> files_;
     std::unordered_map<std::string, int> file_cache_;
@@ -201,6 +211,12 @@ private:
     int macro_depth_ = 0;
     std::string scene_dir_;
     Token end_token_;
+    // An array element read in the grammar becomes a token "A[3]" whose symbol lives here, so
+    // every place that takes an identifier takes an element too. Tokens rotate through a ring
+    // (callers hold a token only briefly).
+    std::unordered_map<std::string, Symbol> element_syms_;
+    std::vector<Token> synth_ = std::vector<Token>(256);
+    size_t synth_next_ = 0;
     Token fake_end_;  // ends a #declare value at the next statement directive
 };
 

@@ -143,6 +143,26 @@ const Token& Parser::next() {
                     call_macro(*keep, loc());
                     continue;
                 }
+                auto arr = std::get_if<std::shared_ptr<ArrayValue>>(&s->value);
+                if (arr && raw_next_is("[")) {
+                    auto keep = *arr;
+                    Token at = t;
+                    FileLoc aloc = loc();
+                    int file = cur_file_;
+                    std::string display;
+                    size_t idx = parse_array_index(*keep, at.text, display);
+                    if (!keep->items[idx])
+                        fail_at(aloc, "array element " + display + " is not initialized");
+                    Symbol& es = element_syms_[display];
+                    es.value = *keep->items[idx];
+                    es.loc = aloc;
+                    Token& st = synth_[synth_next_++ % synth_.size()];
+                    st = at;
+                    st.text = display;
+                    cur_ = &st;
+                    cur_file_ = file;
+                    return st;
+                }
             }
         }
         return t;
@@ -178,7 +198,33 @@ void Parser::expect_close(const char* what, const FileLoc& opened) {
 
 // ---------------------------------------------------------------- identifiers
 
+size_t Parser::parse_array_index(const ArrayValue& a, const std::string& name,
+                                 std::string& display) {
+    display = name;
+    size_t flat = 0;
+    for (size_t d = 0; d < a.sizes.size(); ++d) {
+        expect("[", ("to index the array '" + name + "'").c_str());
+        peek();
+        FileLoc l = loc();
+        double v = parse_float();
+        expect("]", "after the array index");
+        int i = static_cast<int>(v);
+        if (i < 0 || i >= a.sizes[d])
+            fail_at(l, "index " + std::to_string(i) + " is outside the array '" + name + "' (size " +
+                           std::to_string(a.sizes[d]) + ")");
+        display += '[';
+        display += std::to_string(i);
+        display += ']';
+        flat = flat * a.sizes[d] + i;
+    }
+    return flat;
+}
+
 const Symbol* Parser::lookup(const std::string& name) const {
+    if (name.find('[') != std::string::npos) {
+        auto it = element_syms_.find(name);
+        return it == element_syms_.end() ? nullptr : &it->second;
+    }
     for (size_t i = scopes_.size(); i-- > 0;) {
         auto it = scopes_[i].find(name);
         if (it != scopes_[i].end()) return &it->second;
@@ -291,6 +337,23 @@ void Parser::handle_declare(bool local, const FileLoc& dloc) {
         name = read_name("#declare deprecated");
     }
     FileLoc nloc = loc();
+    if (raw_next_is("[")) {
+        // #declare A[i] = value
+        const Symbol* s = lookup(name);
+        auto arr = s ? std::get_if<std::shared_ptr<ArrayValue>>(&s->value) : nullptr;
+        if (!arr) fail("'" + name + "' is not an array");
+        auto keep = *arr;
+        std::string display;
+        size_t idx = parse_array_index(*keep, name, display);
+        expect("=", ("after '" + display + "'").c_str());
+        size_t saved = declare_frame_;
+        declare_frame_ = frames_.size();
+        Value v = parse_rvalue();
+        declare_frame_ = saved;
+        keep->items[idx] = std::make_shared<Value>(std::move(v));
+        accept(";");
+        return;
+    }
     const Token& eq = next();
     if (!eq.is_symbol('=')) fail("expected '=' after '" + name + "', got " + got(eq));
     Frame& f = frames_.back();
@@ -490,9 +553,19 @@ void Parser::handle_if(const FileLoc& dloc, int mode) {
         const Token& p = raw();
         if (!p.is_symbol('(')) fail("expected '(' after #ifdef/#ifndef, got " + got(p));
         std::string name = read_name("#ifdef");
-        const Token& q = raw();
-        if (!q.is_symbol(')')) fail("expected ')' after the identifier, got " + got(q));
-        c = lookup(name) != nullptr;
+        const Symbol* s = lookup(name);
+        auto arr = s ? std::get_if<std::shared_ptr<ArrayValue>>(&s->value) : nullptr;
+        if (arr && raw_next_is("[")) {
+            auto keep = *arr;
+            std::string display;
+            size_t idx = parse_array_index(*keep, name, display);
+            expect(")", "after the array element");
+            c = keep->items[idx] != nullptr;
+        } else {
+            const Token& q = raw();
+            if (!q.is_symbol(')')) fail("expected ')' after the identifier, got " + got(q));
+            c = s != nullptr;
+        }
         if (mode == 2) c = !c;
     }
     for (;;) {

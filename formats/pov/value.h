@@ -61,9 +61,19 @@ struct Macro {
     FileLoc loc;
 };
 
+struct ArrayValue;
+
 using Value = std::variant<Num, std::string, std::shared_ptr<const PovObject>, scene::Texture,
                            scene::Pigment, scene::Finish, scene::Normal, scene::Interior,
-                           MaterialValue, scene::Camera, Transform, std::shared_ptr<const Macro>>;
+                           MaterialValue, scene::Camera, Transform, std::shared_ptr<const Macro>,
+                           std::shared_ptr<ArrayValue>>;
+
+// POV-Ray `array[n][m]...`: row-major elements, null until assigned. Held by shared_ptr so
+// that `#declare A[i] = v` can fill it in place; `#declare B = A` copies (Parser::declare).
+struct ArrayValue {
+    std::vector<int> sizes;
+    std::vector<std::shared_ptr<Value>> items;
+};
 
 // "a float", "a texture", ... for messages like "expected a float, got a texture".
 std::string value_kind_name(const Value& v);

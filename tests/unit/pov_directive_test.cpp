@@ -90,6 +90,30 @@ TEST(PovDirective, UndefVersionDebugDefault) {
     EXPECT_EQ(diag.all()[0].loc.line, 5);
 }
 
+TEST(PovDirective, ArraysAndRandomStreams) {
+    auto s = parse(
+        "#declare A = array[3] { 1, 2, 3 };\n"
+        "#declare B = array[2][2] { {sphere{0,1}, sphere{0,2}}, {sphere{0,3}, sphere{0,4}} }\n"
+        "#declare A[1] = 20;\n#declare C = A;\n#declare C[0] = 100;\n"
+        "sphere { 0, A[0] + A[1] + dimension_size(A, 1) + dimensions(B) }\n"
+        "object { B[1][0] }\n"
+        "#ifdef (A[2]) sphere { 0, C[0] } #end\n"
+        "#declare D = array[2]\n#ifndef (D[1]) sphere { 0, 7 } #end\n"
+        "#declare R = seed(42);\nsphere { 0, rand(R) }\nsphere { 0, rand(R) }\n");
+    ASSERT_EQ(s.objects.size(), 6u);
+    EXPECT_EQ(radius(s, 0), 1 + 20 + 3 + 2);
+    EXPECT_EQ(radius(s, 1), 3);
+    EXPECT_EQ(radius(s, 2), 100);  // C is a copy: A[0] stayed 1
+    EXPECT_EQ(radius(s, 3), 7);
+    // POV-Ray 3.7 prints 0.723583 and 0.329979 for these (its LCG, randomsequences.cpp).
+    EXPECT_NEAR(radius(s, 4), 0.723583, 1e-6);
+    EXPECT_NEAR(radius(s, 5), 0.329979, 1e-6);
+    EXPECT_EQ(error_of("#declare A = array[2];\nsphere { 0, A[1] }"),
+              "2:13: array element A[1] is not initialized");
+    EXPECT_EQ(error_of("#declare A = array[2] {1, 2};\nsphere { 0, A[2] }"),
+              "2:15: index 2 is outside the array 'A' (size 2)");
+}
+
 TEST(PovDirective, Errors) {
     EXPECT_EQ(error_of("sphere{0,1}\n  #error \"stop here\""), "2:3: #error: stop here");
     EXPECT_EQ(error_of("#if (1) sphere{0,1}\n"), "1:1: this directive has no matching #end before the end of the file");
