@@ -17,8 +17,26 @@ constexpr double kMachineEpsilon = std::numeric_limits<double>::epsilon() * 0.5;
 
 constexpr double gamma(int n) { return (n * kMachineEpsilon) / (1 - n * kMachineEpsilon); }
 
-inline double next_up(double v) { return std::nextafter(v, kInfinity); }
-inline double next_down(double v) { return std::nextafter(v, -kInfinity); }
+// Bit-level steps (pbrt-v4 NextFloatUp/Down): inline, unlike std::nextafter, because the BVH
+// traversal calls them per primitive. NaN and the infinity in the stepping direction stay put.
+inline double next_up(double v) {
+    if (std::isnan(v) || v == kInfinity) return v;
+    if (v == 0) v = 0.0;  // -0 steps to the smallest positive value too
+    uint64_t u;
+    std::memcpy(&u, &v, sizeof u);
+    u = v >= 0 ? u + 1 : u - 1;
+    std::memcpy(&v, &u, sizeof v);
+    return v;
+}
+inline double next_down(double v) {
+    if (std::isnan(v) || v == -kInfinity) return v;
+    if (v == 0) v = -0.0;
+    uint64_t u;
+    std::memcpy(&u, &v, sizeof u);
+    u = v > 0 ? u - 1 : u + 1;
+    std::memcpy(&v, &u, sizeof v);
+    return v;
+}
 
 // Moves `p` (with absolute error bound `p_error`) off the surface with geometric normal `n`,
 // to the side `w` points to.

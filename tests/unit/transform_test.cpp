@@ -133,5 +133,28 @@ TEST(Transform, PointErrorBoundsTheRealError) {
     EXPECT_EQ(violations, 0);
 }
 
+// float.h's bit-level next_up/next_down agree with std::nextafter, including zeros, denormals,
+// the largest finite values and infinities.
+TEST(Float, NextUpDownMatchNextafter) {
+    const double lim = std::numeric_limits<double>::max();
+    const double den = std::numeric_limits<double>::denorm_min();
+    for (double v : {0.0, -0.0, 1.0, -1.0, 1e-320, -1e-320, 3.5, -2.25, 1e300, -1e300, lim, -lim,
+                     den, -den, kInfinity, -kInfinity}) {
+        EXPECT_EQ(next_up(v), std::nextafter(v, kInfinity)) << v;
+        EXPECT_EQ(next_down(v), std::nextafter(v, -kInfinity)) << v;
+    }
+    EXPECT_TRUE(std::isnan(next_up(std::nan(""))));
+}
+
+// offset_ray_origin moves a point strictly off its surface by at least the error bound.
+TEST(Float, OffsetRayOriginLeavesTheErrorBox) {
+    Vec3 p(1e5, 2, -3), e(1e-11, 1e-16, 1e-16), n(0, 1, 0);
+    Vec3 up = offset_ray_origin(p, e, n, {0, 1, 0});
+    Vec3 down = offset_ray_origin(p, e, n, {0.3, -1, 0});
+    EXPECT_GT(up.y, p.y + e.y);
+    EXPECT_LT(down.y, p.y - e.y);
+    EXPECT_EQ(up.x, p.x);
+}
+
 }  // namespace
 }  // namespace glint

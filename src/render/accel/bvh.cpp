@@ -1,6 +1,8 @@
 #include "render/accel/bvh.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace glint::render {
 namespace {
@@ -8,6 +10,18 @@ namespace {
 constexpr int kBins = 16;
 // Deeper trees would overflow the traversal stack; past this depth splits are by count.
 constexpr int kMaxSahDepth = 48;
+
+// Nearest floats below / above a double, so float boxes enclose double ones.
+float float_down(double v) {
+    float f = static_cast<float>(v);
+    return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity())
+                                      : f;
+}
+float float_up(double v) {
+    float f = static_cast<float>(v);
+    return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity())
+                                      : f;
+}
 
 double half_area(const Bounds3& b) {
     if (b.empty()) return 0;
@@ -58,8 +72,8 @@ int Bvh::build(std::vector<int>& ids, int begin, int end, const std::vector<Boun
         n.axis = 0;
     };
     for (int a = 0; a < 3; ++a) {
-        nodes_[self].lo[a] = box.lo[a];
-        nodes_[self].hi[a] = box.hi[a];
+        nodes_[self].lo[a] = float_down(box.lo[a]);
+        nodes_[self].hi[a] = float_up(box.hi[a]);
     }
     int count = end - begin;
     if (count <= max_leaf) {

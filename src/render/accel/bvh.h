@@ -14,11 +14,12 @@ namespace glint::render {
 
 class Bvh {
 public:
-    // Node: 56 bytes. Interior: `index` is the second child (the first follows the node),
-    // count == 0. Leaf: `index` is the first entry of order(), count > 0.
+    // Node: 32 bytes, two per cache line. Boxes are floats rounded outwards, so they still
+    // enclose the double-precision primitives. Interior: `index` is the second child (the first
+    // follows the node), count == 0. Leaf: `index` is the first entry of order(), count > 0.
     struct Node {
-        double lo[3];
-        double hi[3];
+        float lo[3];
+        float hi[3];
         int32_t index;
         uint16_t count;
         uint8_t axis;
@@ -40,20 +41,19 @@ public:
     template <class Visit>
     bool traverse(const Ray& ray, double& tmax, Visit&& visit) const {
         if (nodes_.empty()) return false;
-        Vec3 inv(1 / ray.dir.x, 1 / ray.dir.y, 1 / ray.dir.z);
-        int neg[3] = {inv.x < 0, inv.y < 0, inv.z < 0};
+        RayBoxData rb(ray);
         int stack[128];
         int sp = 0;
         int cur = 0;
         for (;;) {
             const Node& n = nodes_[cur];
-            if (hit_box(n, ray.origin, inv, tmax)) {
+            if (hit_box(n, rb, tmax)) {
                 if (n.count > 0) {
                     for (int i = 0; i < n.count; ++i)
                         if (visit(order_[n.index + i], tmax)) return true;
                 } else {
                     int first = cur + 1, second = n.index;
-                    if (neg[n.axis]) std::swap(first, second);
+                    if (rb.neg[n.axis]) std::swap(first, second);
                     stack[sp++] = second;
                     cur = first;
                     continue;
@@ -66,16 +66,29 @@ public:
     }
 
 private:
-    // Slab test; a zero direction component gives +-inf (or NaN for an origin on the slab,
-    // which the comparisons ignore). tfar is widened by 2 gamma(3) (pbrt-v4, 6.1.2) so rounding
+    struct RayBoxData {
+        explicit RayBoxData(const Ray& ray) : o(ray.origin) {
+            for (int a = 0; a < 3; ++a) {
+                inv[a] = 1 / ray.dir[a];
+                neg[a] = inv[a] < 0;
+            }
+        }
+        Vec3 o;
+        double inv[3];
+        int neg[3];
+    };
+
+    // Slab test with the near/far planes chosen by the direction's sign (no swaps, no
+    // branches). A zero direction component gives +-inf, or NaN for an origin on the slab plane,
+    // which the comparisons ignore. tfar is widened by 2 gamma(3) (pbrt-v4, 6.1.2) so rounding
     // never culls a box the ray touches.
-    static bool hit_box(const Node& n, const Vec3& o, const Vec3& inv, double tmax) {
+    static bool hit_box(const Node& n, const RayBoxData& r, double tmax) {
         double t0 = 0, t1 = tmax;
         for (int a = 0; a < 3; ++a) {
-            double tn = (n.lo[a] - o[a]) * inv[a];
-            double tf = (n.hi[a] - o[a]) * inv[a];
-            if (tn > tf) std::swap(tn, tf);
-            tf *= 1 + 2 * gamma(3);
+            double near = r.neg[a] ? n.hi[a] : n.lo[a];
+            double far = r.neg[a] ? n.lo[a] : n.hi[a];
+            double tn = (near - r.o[a]) * r.inv[a];
+            double tf = (far - r.o[a]) * r.inv[a] * (1 + 2 * gamma(3));
             t0 = tn > t0 ? tn : t0;
             t1 = tf < t1 ? tf : t1;
         }
