@@ -18,8 +18,6 @@ extern "C" void on_signal(int sig) {
     std::signal(sig, SIG_DFL);  // a second signal ends the process the usual way
 }
 
-constexpr const char* kPovIncludeDir = "/usr/share/povray-3.7/include";
-
 }  // namespace
 
 int exit_code_for(ErrorKind kind) {

@@ -20,6 +20,9 @@ constexpr int kExitOutput = 5;
 constexpr int kExitDiffer = 6;
 constexpr int kExitInterrupted = 130;
 
+// POV-Ray's standard include folder (Debian's povray-includes), searched last.
+inline constexpr const char* kPovIncludeDir = "/usr/share/povray-3.7/include";
+
 int exit_code_for(ErrorKind kind);
 
 // Prints format_error(e) on stderr and returns the exit code for its kind.

@@ -13,13 +13,43 @@ namespace glint::app {
 
 namespace {
 
-void print_diagnostic(const Diagnostic& d, bool verbose) {
-    if (d.level == Diagnostic::Level::Warning) {
-        std::fputs(format_diagnostic(d.loc, "warning", d.message).c_str(), stderr);
-    } else if (verbose) {
-        std::fprintf(stderr, "%s\n", d.message.c_str());
-    }
+bool in_folder(const std::string& file, const std::string& folder) {
+    return file.size() > folder.size() && file.compare(0, folder.size(), folder) == 0 &&
+           file[folder.size()] == '/';
 }
+
+// Prints the parser's diagnostics as they come. Warnings from POV-Ray's standard include
+// folder are counted instead of printed unless verbose: including textures.inc alone skips
+// about 200 declarations that use features glint lacks, and that list would bury the
+// scene's own warnings (using a skipped name is an error that names both places anyway).
+class ParseDiagnosticPrinter {
+public:
+    explicit ParseDiagnosticPrinter(bool verbose) : verbose_(verbose) {}
+
+    void print(const Diagnostic& d) {
+        if (d.level == Diagnostic::Level::Info) {
+            // #debug text, printed as POV-Ray prints it: as is, newlines included.
+            std::fputs(d.message.c_str(), stderr);
+            return;
+        }
+        if (!verbose_ && in_folder(d.loc.filename(), kPovIncludeDir)) {
+            ++hidden_;
+            return;
+        }
+        std::fputs(format_diagnostic(d.loc, "warning", d.message).c_str(), stderr);
+    }
+
+    void summary() const {
+        if (hidden_ > 0)
+            std::fprintf(stderr,
+                         "glint: note: %d warning(s) from %s not shown (-v shows them)\n",
+                         hidden_, kPovIncludeDir);
+    }
+
+private:
+    bool verbose_;
+    int hidden_ = 0;
+};
 
 }  // namespace
 
@@ -36,8 +66,10 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose) {
     options.clock = request.clock;
     options.image_width = request.width;
     options.image_height = request.height;
-    Diagnostics diag([verbose](const Diagnostic& d) { print_diagnostic(d, verbose); });
+    ParseDiagnosticPrinter printer(verbose);
+    Diagnostics diag([&printer](const Diagnostic& d) { printer.print(d); });
     scene::Scene scene = pov::parse_file(request.path, options, diag);
+    printer.summary();
     scene::validate(scene);
     return scene;
 }

@@ -270,3 +270,11 @@ TEST_F(CliTest, IncludeFlagTakesOneFolderEach) {
     r = run("ir '" + path("s.pov") + "'");
     EXPECT_EQ(r.exit_code, 3) << r.err;  // size.inc is not found without -I
 }
+
+TEST_F(CliTest, DebugTextReachesStderr) {
+    write_text("s.pov", std::string(kSmallScene) + "#debug \"checkpoint reached\\n\"\n");
+    RunResult r = run("render '" + path("s.pov") + "' -o '" + path("o.png") +
+                      "' --width 8 --height 6");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("checkpoint reached\n"), std::string::npos) << r.err;
+}
