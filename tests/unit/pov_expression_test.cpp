@@ -121,7 +121,7 @@ TEST(PovExpression, Errors) {
     EXPECT_EQ(error_of("sphere { 0, Foo }"), "1:13: unknown identifier 'Foo'");
     EXPECT_EQ(error_of("sphere { 0, \"s\" }"), "1:13: expected a float, got a string");
     EXPECT_EQ(error_of("sphere { 0, 1/0 }"), "1:14: division by zero");
-    EXPECT_EQ(error_of("sphere { 0, sqrt(-1) }"), "1:20: sqrt of a negative number");
+    EXPECT_EQ(error_of("sphere { 0, sqrt(-1) }"), "1:13: sqrt of a negative number");
     EXPECT_EQ(error_of("sphere { 0, <1,2,3> }"),
               "1:13: expected a float, got a vector");
 }
