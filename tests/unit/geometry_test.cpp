@@ -164,6 +164,36 @@ int acne_failures(const AcneCase& c, double scale, Vec3 shift, int* spawned) {
     return fails;
 }
 
+// VALIDATION.md case 2: a ground plane seen from height 1 at grazing angles out to 1e5 units:
+// shadow rays to a light above and mirror rays leave the plane without re-hitting it.
+TEST(Geometry, GrazingGroundPlaneHasNoAcne) {
+    for (scene::Plane plane : {scene::Plane{{0, 1, 0}, 0}, scene::Plane{{0.001, 1, 0.002}, -0.5}}) {
+        auto g = build_one(plane);
+        std::mt19937_64 rng(2);
+        std::uniform_real_distribution<double> u(0, 1);
+        int hits = 0, acne = 0;
+        for (int i = 0; i < 20000; ++i) {
+            double dist = std::pow(10.0, 5 * u(rng));  // 1 .. 1e5 away
+            double az = 2 * kPi * u(rng);
+            Vec3 o(3, 1, -2);
+            Vec3 target(o.x + dist * std::cos(az), -0.5, o.z + dist * std::sin(az));
+            Hit h;
+            if (!g->intersect(ray(o, target - o), &h)) continue;
+            ++hits;
+            Vec3 d = normalize(target - o);
+            Vec3 mirror = d - h.ng * (2 * dot(d, h.ng));
+            Vec3 to_light = Vec3(0, 1e4, 0) - h.p;
+            for (Vec3 w : {mirror, to_light}) {
+                Vec3 po = offset_ray_origin(h.p, h.p_error, h.ng, w);
+                Hit h2;
+                acne += g->intersect(ray(po, w), &h2);
+            }
+        }
+        EXPECT_GT(hits, 15000);
+        EXPECT_EQ(acne, 0);
+    }
+}
+
 TEST(Geometry, NoSelfIntersectionAtAnyScale) {
     std::vector<AcneCase> cases = {
         {"sphere", scene::Sphere{{0.1, 0.2, 0.3}, 1}, true, false},

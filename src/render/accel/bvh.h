@@ -33,6 +33,11 @@ public:
     const std::vector<Node>& nodes() const { return nodes_; }
     const std::vector<int>& order() const { return order_; }
     int depth() const { return depth_; }
+    // For callers that store their primitives in order() sequence (so a leaf's primitives are
+    // contiguous in memory): afterwards the traversal passes positions in that sequence.
+    void use_leaf_order() {
+        for (size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<int>(i);
+    }
     Bounds3 bounds() const;
 
     // Visits the primitives whose boxes the ray enters within [0, tmax], nearer boxes first.

@@ -20,6 +20,15 @@ public:
         for (size_t i = 0; i < faces_.size(); ++i)
             for (int k = 0; k < 3; ++k) boxes[i].extend(vertex(faces_[i], k));
         bvh_ = Bvh(boxes, 4);
+        // Faces and their vertices in leaf order: a leaf's triangles sit side by side.
+        std::vector<int> sorted(bvh_.order().size());
+        tris_.resize(sorted.size());
+        for (size_t i = 0; i < sorted.size(); ++i) {
+            sorted[i] = faces_[bvh_.order()[i]];
+            for (int k = 0; k < 3; ++k) tris_[i].p[k] = vertex(sorted[i], k);
+        }
+        faces_ = std::move(sorted);
+        bvh_.use_leaf_order();
         if (mesh.has_inside_vector && length_squared(mesh.inside_vector) > 0)
             inside_dir_ = mesh.inside_vector;
     }
@@ -36,7 +45,8 @@ public:
             int f = faces_[i];
             // Equal t: the lower face index wins, whatever the traversal order.
             double limit = best_face < 0 ? tm : next_up(tm);
-            if (intersect_triangle(shear, vertex(f, 0), vertex(f, 1), vertex(f, 2), limit, &th) &&
+            const Tri& tri = tris_[i];
+            if (intersect_triangle(shear, tri.p[0], tri.p[1], tri.p[2], limit, &th) &&
                 (best_face < 0 || th.t < best.t || f < best_face)) {
                 best = th;
                 best_face = f;
@@ -55,7 +65,8 @@ public:
         bvh_.traverse(ray, t, [&](int i, double&) {
             TriangleHit th;
             int f = faces_[i];
-            if (intersect_triangle(shear, vertex(f, 0), vertex(f, 1), vertex(f, 2), tmax, &th))
+            const Tri& tri = tris_[i];
+            if (intersect_triangle(shear, tri.p[0], tri.p[1], tri.p[2], tmax, &th))
                 fill(f, th, &hits->emplace_back());
             return false;
         });
@@ -71,9 +82,8 @@ public:
         double t = kInfinity;
         bvh_.traverse(ray, t, [&](int i, double&) {
             TriangleHit th;
-            int f = faces_[i];
-            if (intersect_triangle(shear, vertex(f, 0), vertex(f, 1), vertex(f, 2), kInfinity,
-                                   &th))
+            const Tri& tri = tris_[i];
+            if (intersect_triangle(shear, tri.p[0], tri.p[1], tri.p[2], kInfinity, &th))
                 ++crossings;
             return false;
         });
@@ -110,7 +120,11 @@ private:
 
     // A copy: the geometry must not depend on the scene outliving it.
     scene::Mesh mesh_;
-    std::vector<int> faces_;  // usable faces of mesh_
+    struct Tri {
+        Vec3 p[3];
+    };
+    std::vector<int> faces_;  // usable faces of mesh_, in BVH leaf order
+    std::vector<Tri> tris_;   // their vertices
     Bvh bvh_;
     std::optional<Vec3> inside_dir_;
 };
