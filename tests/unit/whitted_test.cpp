@@ -321,6 +321,20 @@ TEST(Whitted, InteriorFadeAttenuatesByDistanceInside) {
     EXPECT_NEAR(fx.render_ray(Vec3(0, 0, -5), Vec3(0, 0, 1)).r, std::exp(-2.0), 1e-9);
 }
 
+TEST(Whitted, CameraInsideAFadingObjectSeesTheFade) {
+    Fixture fx;
+    scene::Material glass = matte(Color(1, 1, 1), 0.0, 0.0);
+    glass.texture.pigment.color = ColorFT(Color(1, 1, 1), 0.0, 1.0);
+    glass.interior.fade_distance = 1;
+    glass.interior.fade_power = 2;
+    fx.scene.materials.push_back(glass);
+    fx.scene.background = ColorFT(Color(1, 1, 1));
+    fx.geo.spheres.push_back({Vec3(0, 0, 0), 1, 0});
+    fx.scene.camera.location = Vec3(0, 0, 0);  // POV-Ray starts such rays inside the ball
+    // One unit inside: 1 / (1 + 1^2).
+    EXPECT_NEAR(fx.render_ray(Vec3(0, 0, 0), Vec3(0, 0, 1)).r, 0.5, 1e-9);
+}
+
 TEST(Whitted, RefractionBendsTowardsTheNormal) {
     Fixture fx;
     scene::Material glass = matte(Color(1, 1, 1), 0.0, 0.0);

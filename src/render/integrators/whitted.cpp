@@ -1,5 +1,6 @@
 #include "render/integrators/whitted.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/float.h"
@@ -78,11 +79,41 @@ Whitted::Whitted(const scene::Scene& scene, const scene::Features& features,
         finishes_.emplace_back(m.texture.finish);
         opaque_.push_back(!pigment_can_be_transparent(m.texture.pigment));
     }
+    if (features.secondary_rays()) find_camera_interiors();
+}
+
+void Whitted::find_camera_interiors() {
+    // Only refraction and interior fading care which objects contain the eye, and only the
+    // perspective camera has one eye point for all primary rays.
+    if (scene_.camera.kind != scene::CameraKind::Perspective) return;
+    // Walk a ray from the eye: an object whose first crossing leaves it (the normal, which
+    // points out of the solid, along the ray) contains the eye.
+    Ray r;
+    r.origin = scene_.camera.location;
+    r.dir = normalize(scene_.camera.direction);
+    std::vector<int> seen;
+    std::vector<std::pair<int, double>> inside;
+    for (int i = 0; i < 256; ++i) {
+        Hit hit;
+        if (!geometry_.intersect(r, &hit)) break;
+        bool first = std::find(seen.begin(), seen.end(), hit.object) == seen.end();
+        if (first) {
+            seen.push_back(hit.object);
+            if (dot(hit.ng, r.dir) > 0.0 && hit.material >= 0)
+                inside.push_back({hit.object, scene_.materials[hit.material].interior.ior});
+        }
+        r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
+    }
+    // POV-Ray lists containing objects in scene order.
+    std::sort(inside.begin(), inside.end());
+    for (const auto& [object, ior] : inside) camera_interiors_.append(object, ior);
 }
 
 Color Whitted::li(const Ray& ray) const {
     RayState state;
     state.primary = true;
+    if (camera_interiors_.count > 0 && ray.origin == scene_.camera.location)
+        state.interiors = camera_interiors_;
     return trace(ray, 1.0, state, false);
 }
 

@@ -46,6 +46,8 @@ private:
         bool image_ray() const { return primary || (refraction && !reflection); }
     };
 
+    // POV-Ray's InitRayContainerState: the objects the perspective camera sits inside.
+    void find_camera_interiors();
     Color trace(const Ray& ray, double weight, const RayState& state, bool continued) const;
     bool find_hit(const Ray& ray, const RayState& state, Hit* hit) const;
     Color shade(const Ray& ray, const Hit& hit, double weight, const RayState& state) const;
@@ -70,6 +72,7 @@ private:
     int max_level_;
     double adc_bailout_;
     bool legacy_;  // #version < 3.7: POV-Ray's 3.6 transparency and sky formulas
+    Interiors camera_interiors_;
 };
 
 }  // namespace glint::render
