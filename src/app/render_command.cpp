@@ -91,13 +91,17 @@ void print_features(const scene::Features& f) {
     std::fprintf(stderr, "skipped: %s\n", skipped.empty() ? "(nothing)" : skipped.c_str());
 }
 
-const char* transfer_name(const io::OutputEncoding& e) {
-    switch (e.transfer) {
-        case io::OutputEncoding::Transfer::Linear: return "none (legacy, pre-3.7 scene)";
-        case io::OutputEncoding::Transfer::Srgb: return "sRGB";
-        case io::OutputEncoding::Transfer::Gamma: return "gamma";
+std::string encoding_name(const io::OutputEncoding& e) {
+    if (e.working_srgb) return "none (pre-3.7 scene without assumed_gamma: values as rendered)";
+    std::string name = e.transfer == io::OutputEncoding::Transfer::Srgb     ? "sRGB"
+                       : e.transfer == io::OutputEncoding::Transfer::Gamma ? "gamma"
+                                                                            : "linear";
+    if (e.working_gamma != 1.0) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, " from working gamma %g", e.working_gamma);
+        name += buf;
     }
-    return "?";
+    return name;
 }
 
 }  // namespace
@@ -177,11 +181,8 @@ int run_render(const RenderArgs& args) {
 
     if (args.verbose) {
         print_features(result.features);
-        std::fprintf(stderr, "image: %dx%d, aa %s, output encoding %s", result.image.width,
-                     result.image.height, args.aa.c_str(), transfer_name(encoding));
-        if (encoding.working_gamma != 1.0)
-            std::fprintf(stderr, " from working gamma %g", encoding.working_gamma);
-        std::fprintf(stderr, "\n");
+        std::fprintf(stderr, "image: %dx%d, aa %s, 8/16-bit encoding %s\n", result.image.width,
+                     result.image.height, args.aa.c_str(), encoding_name(encoding).c_str());
         std::fprintf(stderr,
                      "time: parse %.3f s, prepare %.3f s, render %.3f s, write %.3f s, "
                      "total %.3f s\n",

@@ -11,8 +11,8 @@
 
 namespace glint::io {
 
-// Encodes the RGB of every pixel in place-independent order: returns width*height*3 encoded
-// values in [0, 1] (clamped; NaN becomes 0). Alpha is not touched here. Builds OpenColorIO
+// Encodes the RGB of every pixel for an 8/16-bit file: returns width*height*3 encoded values
+// in [0, 1] (clamped; NaN becomes 0). Alpha is not touched here. Builds OpenColorIO
 // processors from transforms in code; no configuration file is read. Throws Error(Output) when
 // OpenColorIO rejects the transform.
 std::vector<float> encode_rgb(const render::Image& image, const OutputEncoding& encoding);
@@ -27,7 +27,12 @@ inline unsigned quantize(float encoded, unsigned max) {
     return static_cast<unsigned>(v * static_cast<float>(max) + 0.5f);
 }
 
-// The encoded value of one linear value; convenient for tests and single colors.
+// The film as linear light for float formats (exr, hdr): RGB decoded from the working space,
+// alpha unchanged, NaN made 0 and infinities the largest float. Width*height*4 values. Touches
+// OpenColorIO only when the working space is not linear.
+std::vector<float> linear_rgba(const render::Image& image, const OutputEncoding& encoding);
+
+// The encoded value of one film value; convenient for tests and single colors.
 float encode_value(float value, const OutputEncoding& encoding);
 
 }  // namespace glint::io

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <limits>
 #include <memory>
 #include <vector>
 
@@ -67,13 +66,6 @@ private:
     std::string path_;
 };
 
-float finite_or_zero(float v) {
-    if (std::isnan(v)) return 0.0f;
-    if (std::isinf(v)) return v > 0 ? std::numeric_limits<float>::max()
-                                     : -std::numeric_limits<float>::max();
-    return v;
-}
-
 }  // namespace
 
 std::string output_format_for(const std::string& path) { return format_info(path).oiio_name; }
@@ -100,10 +92,10 @@ void write_image(const render::Image& image, const std::string& path,
     const void* data = nullptr;
     if (format.is_float) {
         spec.attribute("oiio:ColorSpace", "Linear");
+        std::vector<float> linear = linear_rgba(image, encoding);
         float_data.resize(pixels * channels);
         for (size_t i = 0; i < pixels; ++i)
-            for (int c = 0; c < channels; ++c)
-                float_data[i * channels + c] = finite_or_zero(image.rgba[i * 4 + c]);
+            for (int c = 0; c < channels; ++c) float_data[i * channels + c] = linear[i * 4 + c];
         data = float_data.data();
     } else {
         if (encoding.transfer == OutputEncoding::Transfer::Srgb)

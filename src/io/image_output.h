@@ -9,18 +9,21 @@
 
 namespace glint::io {
 
-// How film values become file values for 8/16-bit formats. Float formats (exr, hdr)
-// always get the film values unchanged and never load a color configuration.
+// How film values become file values.
 //
 // Film values live in the scene's working space: linear when working_gamma is 1 (POV-Ray 3.7
-// with assumed_gamma 1), otherwise power-law encoded with working_gamma (assumed_gamma 2.2
-// makes POV-Ray light raw 0..1 numbers as they are). Encoding first decodes the working
-// space (v^working_gamma), then applies `transfer`; this is POV-Ray 3.7's
-// TranscodingGammaCurve (source/base/image/colourspace.cpp).
+// with assumed_gamma 1), power-law encoded with working_gamma otherwise (assumed_gamma 2.2
+// makes POV-Ray light the raw 0..1 numbers as they are), or sRGB-encoded for legacy scenes
+// (working_srgb: POV-Ray sets the working gamma to the display gamma). 8/16-bit formats get
+// transfer(decode_working(v)); float formats (exr, hdr) get decode_working(v), i.e. linear
+// light, and need no color transform at all when the working space is linear. This is POV-Ray
+// 3.7's TranscodingGammaCurve (source/base/image/colourspace.cpp), including its shortcut: a
+// working space equal to the transfer is the identity.
 struct OutputEncoding {
     enum class Transfer { Linear, Srgb, Gamma } transfer = Transfer::Srgb;
     double gamma = 2.2;          // Transfer::Gamma: file value = v^(1/gamma)
     double working_gamma = 1.0;  // film value v is linear after v^working_gamma
+    bool working_srgb = false;   // film values are sRGB-encoded (overrides working_gamma)
     bool alpha = false;          // write an alpha channel (POV-Ray +UA)
 };
 

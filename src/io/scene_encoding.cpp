@@ -8,10 +8,9 @@ OutputEncoding output_encoding_for(const scene::Scene& scene) {
     if (scene.global.assumed_gamma) {
         e.working_gamma = *scene.global.assumed_gamma;
     } else if (static_cast<int>(scene.version * 100 + 0.5) < 370) {  // as POV-Ray rounds it
-        // POV-Ray sets both the working and the file gamma to the display gamma, so the
-        // transcoding between them is the identity.
-        e.transfer = OutputEncoding::Transfer::Linear;
-        e.working_gamma = 1.0;
+        // POV-Ray sets both the working and the file gamma to the display gamma (sRGB), so
+        // the transcoding between them is the identity for 8-bit files.
+        e.working_srgb = true;
     } else {
         e.working_gamma = 1.0;
     }

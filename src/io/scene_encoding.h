@@ -13,7 +13,8 @@ namespace glint::io {
 //   gamma G; the file gets sRGB(v^G). G within 1% of 1 counts as linear.
 // - no assumed_gamma, #version >= 3.7: as assumed_gamma 1.0 (sRGB of the linear value).
 // - no assumed_gamma, #version < 3.7 (also a scene without #version, which POV-Ray reads as
-//   3.62): gamma handling off; the file gets the film value unchanged.
+//   3.62): gamma handling off: POV-Ray's working and file gammas are both the display gamma
+//   (sRGB), so a PNG gets the film value unchanged and an EXR gets its sRGB decoding.
 // (source/backend/parser/parse.cpp post-parse gamma defaults; source/frontend/renderfrontend.h
 // CreateView; source/frontend/imageprocessing.cpp.)
 OutputEncoding output_encoding_for(const scene::Scene& scene);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -120,12 +121,49 @@ TEST(IoEncoding, SceneRules) {
     OutputEncoding e = glint::io::output_encoding_for(s);
     EXPECT_EQ(e.transfer, OutputEncoding::Transfer::Srgb);
     EXPECT_DOUBLE_EQ(e.working_gamma, 1.0);
+    EXPECT_FALSE(e.working_srgb);
     s.version = 3.62;  // what POV-Ray assumes without #version
-    EXPECT_EQ(glint::io::output_encoding_for(s).transfer, OutputEncoding::Transfer::Linear);
+    e = glint::io::output_encoding_for(s);
+    EXPECT_TRUE(e.working_srgb);  // working space = file space = display gamma
+    EXPECT_EQ(e.transfer, OutputEncoding::Transfer::Srgb);
     s.global.assumed_gamma = 1.8;  // assumed_gamma turns gamma handling on in any version
     e = glint::io::output_encoding_for(s);
     EXPECT_EQ(e.transfer, OutputEncoding::Transfer::Srgb);
+    EXPECT_FALSE(e.working_srgb);
     EXPECT_DOUBLE_EQ(e.working_gamma, 1.8);
+}
+
+// POV-Ray 3.7.0's EXR (+FE) of the same flat rgb 0.5 plane: float formats get linear light,
+// the working space decoded. POV-Ray writes half floats (0.217651, 0.213989); glint writes
+// 32-bit floats, so it must match the exact decoding closely and POV-Ray's within a half ulp.
+TEST(IoEncoding, ExrGetsLinearLightLikePovRay) {
+    struct Case {
+        double version;
+        std::optional<double> assumed_gamma;
+        double exact;  // 0.5^2.2; sRGB decoding of 0.5 (IEC 61966-2-1)
+        float pov;
+    } cases[] = {{3.7, 1.0, 0.5, 0.5f},
+                 {3.7, 2.2, std::pow(0.5, 2.2), 0.217651f},
+                 {3.6, std::nullopt, std::pow((0.5 + 0.055) / 1.055, 2.4), 0.213989f}};
+    fs::path dir = temp_dir("exr_encoding");
+    for (const Case& c : cases) {
+        glint::scene::Scene s;
+        s.version = c.version;
+        s.global.assumed_gamma = c.assumed_gamma;
+        glint::render::Image img;
+        img.width = 2;
+        img.height = 1;
+        img.rgba = {0.5f, 0.5f, 0.5f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f};
+        std::string path = (dir / "a.exr").string();
+        glint::io::write_image(img, path, glint::io::output_encoding_for(s));
+        int w, h, ch;
+        std::vector<float> data = read_float(path, &w, &h, &ch);
+        ASSERT_EQ(data.size(), 6u);
+        EXPECT_NEAR(data[0], c.exact, 2e-6) << c.version;
+        EXPECT_NEAR(data[0], c.pov, 1e-4) << c.version;
+        EXPECT_EQ(data[3], 0.0f);
+    }
+    fs::remove_all(dir);
 }
 
 TEST(IoEncoding, ClampsAndQuantizesLikePovRay) {
