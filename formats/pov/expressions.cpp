@@ -338,7 +338,6 @@ public:
     Value function(const std::string& f) {
         // Errors in a call point at the function's name.
         const FileLoc fn_loc = p_.loc();
-        auto bad = [&](const std::string& msg) { p_.fail_at(fn_loc, msg); };
         if (f == "defined") {
             p_.expect("(", "after 'defined'");
             const Token& t = p_.next();
@@ -351,14 +350,14 @@ public:
             const Token& t = p_.next();
             const Symbol* s = t.kind == TokKind::Word ? p_.lookup(t.text) : nullptr;
             auto arr = s ? std::get_if<std::shared_ptr<ArrayValue>>(&s->value) : nullptr;
-            if (!arr) bad("expected an array identifier in " + f + "(), got " + p_.got(t));
+            if (!arr) p_.fail_at(fn_loc, "expected an array identifier in " + f + "(), got " + p_.got(t));
             auto keep = *arr;
             double r = static_cast<double>(keep->sizes.size());
             if (f == "dimension_size") {
                 p_.expect(",", "in dimension_size()");
                 int d = static_cast<int>(p_.parse_float());
                 if (d < 1 || d > static_cast<int>(keep->sizes.size()))
-                    bad("dimension_size: the array has no dimension " + std::to_string(d));
+                    p_.fail_at(fn_loc, "dimension_size: the array has no dimension " + std::to_string(d));
                 r = keep->sizes[d - 1];
             }
             p_.expect(")", ("to close " + f + "()").c_str());
@@ -367,7 +366,7 @@ public:
         std::vector<Value> a = args(f);
         auto need = [&](size_t n) {
             if (a.size() != n)
-                bad("'" + f + "' takes " + std::to_string(n) + " argument(s), got " +
+                p_.fail_at(fn_loc, "'" + f + "' takes " + std::to_string(n) + " argument(s), got " +
                         std::to_string(a.size()));
         };
         auto F = [&](size_t i) { return as_float(a[i], ("a float argument of " + f).c_str()); };
@@ -378,7 +377,7 @@ public:
         };
         auto S = [&](size_t i) -> std::string {
             if (auto s = std::get_if<std::string>(&a[i])) return *s;
-            bad("expected a string argument of '" + f + "', got " + value_kind_name(a[i]));
+            p_.fail_at(fn_loc, "expected a string argument of '" + f + "', got " + value_kind_name(a[i]));
         };
         auto R = [](double r) { return Value(Num::scalar(r)); };
         static const std::unordered_map<std::string, double (*)(double)> unary = {
@@ -415,24 +414,24 @@ public:
         }
         if (f == "sqrt") {
             need(1);
-            if (F(0) < 0) bad("sqrt of a negative number");
+            if (F(0) < 0) p_.fail_at(fn_loc, "sqrt of a negative number");
             return R(std::sqrt(F(0)));
         }
         if (f == "log" || f == "ln") {
             need(1);
-            if (F(0) <= 0) bad(f + " of a number that is not positive");
+            if (F(0) <= 0) p_.fail_at(fn_loc, f + " of a number that is not positive");
             return R(f == "log" ? std::log10(F(0)) : std::log(F(0)));
         }
         if (f == "atan2") { need(2); return R(std::atan2(F(0), F(1))); }
         if (f == "pow") { need(2); return R(std::pow(F(0), F(1))); }
         if (f == "mod") {
             need(2);
-            if (F(1) == 0) bad("mod by zero");
+            if (F(1) == 0) p_.fail_at(fn_loc, "mod by zero");
             return R(std::fmod(F(0), F(1)));
         }
         if (f == "div") {
             need(2);
-            if (F(1) == 0) bad("div by zero");
+            if (F(1) == 0) p_.fail_at(fn_loc, "div by zero");
             return R(std::trunc(F(0) / F(1)));
         }
         if (f == "bitwise_and" || f == "bitwise_or" || f == "bitwise_xor") {
@@ -442,13 +441,13 @@ public:
                                          : f == "bitwise_or" ? (x | y) : (x ^ y)));
         }
         if (f == "min" || f == "max") {
-            if (a.empty()) bad("'" + f + "' needs at least one argument");
+            if (a.empty()) p_.fail_at(fn_loc, "'" + f + "' needs at least one argument");
             double r = F(0);
             for (size_t i = 1; i < a.size(); ++i) r = f == "min" ? std::min(r, F(i)) : std::max(r, F(i));
             return R(r);
         }
         if (f == "select") {
-            if (a.size() != 3 && a.size() != 4) bad("'select' takes 3 or 4 arguments");
+            if (a.size() != 3 && a.size() != 4) p_.fail_at(fn_loc, "'select' takes 3 or 4 arguments");
             double c = F(0);
             if (a.size() == 3) return c < 0 ? a[1] : a[2];
             return c < 0 ? a[1] : c == 0 ? a[2] : a[3];
@@ -459,7 +458,7 @@ public:
         if (f == "vnormalize") {
             need(1);
             Vec3 v = V(0);
-            if (length(v) == 0) bad("vnormalize of a zero-length vector");
+            if (length(v) == 0) p_.fail_at(fn_loc, "vnormalize of a zero-length vector");
             return Value(Num::vec(normalize(v)));
         }
         if (f == "vrotate") {
@@ -480,7 +479,7 @@ public:
             need(1);
             int i = static_cast<int>(F(0));
             if (i < 0 || i >= static_cast<int>(p_.rand_streams.size()))
-                bad("rand(): no random stream " + std::to_string(i) + " (use seed())");
+                p_.fail_at(fn_loc, "rand(): no random stream " + std::to_string(i) + " (use seed())");
             uint32_t& n = p_.rand_streams[i];
             n = n * 1812433253u + 12345u;
             return R(static_cast<double>(n) / 4294967295.0);
@@ -517,7 +516,7 @@ public:
             std::string s = S(0);
             int pos = static_cast<int>(F(1)), len = static_cast<int>(F(2));
             if (pos < 1 || len < 0 || pos - 1 + len > static_cast<int>(s.size()))
-                bad("substr range is outside the string");
+                p_.fail_at(fn_loc, "substr range is outside the string");
             return s.substr(pos - 1, len);
         }
         if (f == "strupr" || f == "strlwr") {
@@ -526,7 +525,7 @@ public:
             for (char& c : s) c = f == "strupr" ? std::toupper(c) : std::tolower(c);
             return s;
         }
-        bad("function '" + f + "' is not supported");
+        p_.fail_at(fn_loc, "function '" + f + "' is not supported");
     }
 
     // POV-Ray's Parse_Colour: keywords and expressions in any combination; `ft_terms` is 5
