@@ -50,8 +50,9 @@ Bvh::Bvh(const std::vector<Bounds3>& prim_bounds, int max_leaf) {
 Bounds3 Bvh::bounds() const {
     Bounds3 b;
     if (nodes_.empty()) return b;
-    b.lo = {nodes_[0].lo[0], nodes_[0].lo[1], nodes_[0].lo[2]};
-    b.hi = {nodes_[0].hi[0], nodes_[0].hi[1], nodes_[0].hi[2]};
+    const auto& box = nodes_[0].box;
+    b.lo = {box[0][0], box[0][1], box[0][2]};
+    b.hi = {box[1][0], box[1][1], box[1][2]};
     return b;
 }
 
@@ -72,8 +73,8 @@ int Bvh::build(std::vector<int>& ids, int begin, int end, const std::vector<Boun
         n.axis = 0;
     };
     for (int a = 0; a < 3; ++a) {
-        nodes_[self].lo[a] = float_down(box.lo[a]);
-        nodes_[self].hi[a] = float_up(box.hi[a]);
+        nodes_[self].box[0][a] = float_down(box.lo[a]);
+        nodes_[self].box[1][a] = float_up(box.hi[a]);
     }
     int count = end - begin;
     if (count <= max_leaf) {

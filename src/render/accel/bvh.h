@@ -18,8 +18,7 @@ public:
     // enclose the double-precision primitives. Interior: `index` is the second child (the first
     // follows the node), count == 0. Leaf: `index` is the first entry of order(), count > 0.
     struct Node {
-        float lo[3];
-        float hi[3];
+        float box[2][3];  // lo, hi
         int32_t index;
         uint16_t count;
         uint8_t axis;
@@ -72,31 +71,39 @@ public:
 
 private:
     struct RayBoxData {
-        explicit RayBoxData(const Ray& ray) : o(ray.origin) {
+        explicit RayBoxData(const Ray& ray) {
             for (int a = 0; a < 3; ++a) {
+                o[a] = ray.origin[a];
                 inv[a] = 1 / ray.dir[a];
+                inv_far[a] = inv[a] * (1 + 2 * gamma(3));
                 neg[a] = inv[a] < 0;
+                near[a] = neg[a] * 3 + a;
+                far[a] = (1 - neg[a]) * 3 + a;
             }
         }
-        Vec3 o;
+        double o[3];
         double inv[3];
+        double inv_far[3];  // widened by 2 gamma(3) (pbrt-v4, 6.1.2): rounding never culls
         int neg[3];
+        int near[3], far[3];  // offsets of the near and far planes in Node::box
     };
 
-    // Slab test with the near/far planes chosen by the direction's sign (no swaps, no
-    // branches). A zero direction component gives +-inf, or NaN for an origin on the slab plane,
-    // which the comparisons ignore. tfar is widened by 2 gamma(3) (pbrt-v4, 6.1.2) so rounding
-    // never culls a box the ray touches.
+    // Slab test, near and far planes picked by the direction's sign. A zero direction component
+    // gives +-inf, or NaN for an origin on the slab plane, which the comparisons ignore.
     static bool hit_box(const Node& n, const RayBoxData& r, double tmax) {
-        double t0 = 0, t1 = tmax;
-        for (int a = 0; a < 3; ++a) {
-            double near = r.neg[a] ? n.hi[a] : n.lo[a];
-            double far = r.neg[a] ? n.lo[a] : n.hi[a];
-            double tn = (near - r.o[a]) * r.inv[a];
-            double tf = (far - r.o[a]) * r.inv[a] * (1 + 2 * gamma(3));
-            t0 = tn > t0 ? tn : t0;
-            t1 = tf < t1 ? tf : t1;
-        }
+        const float* b = &n.box[0][0];
+        double tn0 = (b[r.near[0]] - r.o[0]) * r.inv[0];
+        double tf0 = (b[r.far[0]] - r.o[0]) * r.inv_far[0];
+        double tn1 = (b[r.near[1]] - r.o[1]) * r.inv[1];
+        double tf1 = (b[r.far[1]] - r.o[1]) * r.inv_far[1];
+        double tn2 = (b[r.near[2]] - r.o[2]) * r.inv[2];
+        double tf2 = (b[r.far[2]] - r.o[2]) * r.inv_far[2];
+        double t0 = tn0 > 0 ? tn0 : 0;
+        t0 = tn1 > t0 ? tn1 : t0;
+        t0 = tn2 > t0 ? tn2 : t0;
+        double t1 = tf0 < tmax ? tf0 : tmax;
+        t1 = tf1 < t1 ? tf1 : t1;
+        t1 = tf2 < t1 ? tf2 : t1;
         return t0 <= t1;
     }
 
