@@ -51,11 +51,7 @@ public:
     }
 
     bool occluded(const Ray& ray) const override {
-        auto visit = [&](int i, double&) {
-            if (nodes_[i]->flags() & kNoShadow) return false;
-            LocalHit h;
-            return nodes_[i]->intersect(ray, ray.tmax, true, &h);
-        };
+        auto visit = [&](int i, double&) { return nodes_[i]->occludes(ray, ray.tmax); };
         double tmax = ray.tmax;
         if (bvh_.traverse(ray, tmax, visit)) return true;
         for (int i : unbounded_)

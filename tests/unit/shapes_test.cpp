@@ -404,6 +404,10 @@ TEST(Mesh, UvAndPerFaceMaterial) {
     EXPECT_NEAR(h.uv.y, 0.25, 1e-15);
     ASSERT_TRUE(g->intersect(ray({0.25, 0.75, 1}, {0, 0, -1}), &h));
     EXPECT_EQ(h.material, 2);
+    // Any-hit queries respect tmax.
+    EXPECT_FALSE(g->occluded(ray({0.25, 0.75, 1}, {0, 0, -1}, 0.999)));
+    EXPECT_TRUE(g->occluded(ray({0.25, 0.75, 1}, {0, 0, -1}, 1.001)));
+    EXPECT_FALSE(g->occluded(ray({1.25, 0.75, 1}, {0, 0, -1})));
 }
 
 TEST(Mesh, InterpolatedNormals) {

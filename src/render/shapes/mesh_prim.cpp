@@ -59,6 +59,16 @@ public:
         return true;
     }
 
+    bool occludes(const Ray& ray, double tmax) const override {
+        RayShear shear(ray);
+        double t = tmax;
+        return bvh_.traverse(ray, t, [&](int i, double&) {
+            TriangleHit th;
+            const Tri& tri = tris_[i];
+            return intersect_triangle(shear, tri.p[0], tri.p[1], tri.p[2], tmax, &th);
+        });
+    }
+
     void intersect_all(const Ray& ray, double tmax, HitList* hits) const override {
         RayShear shear(ray);
         double t = tmax;

@@ -179,6 +179,13 @@ void ObjectNode::finish(LocalHit* h) const {
     h->flags |= flags_;
 }
 
+namespace {
+Ray to_local(const Transform& xf, bool identity, const Ray& ray) {
+    if (identity) return ray;
+    return {xf.inverse_point(ray.origin), xf.inverse_vector(ray.dir), ray.tmax};
+}
+}  // namespace
+
 bool ObjectNode::passes_bound(const Ray& ray) const {
     for (const auto& b : bounded_by_) {
         LocalHit h;
@@ -210,6 +217,15 @@ bool ObjectNode::intersect(const Ray& ray, double tmax, bool shadow, LocalHit* h
     return found;
 }
 
+bool ObjectNode::occludes(const Ray& ray, double tmax) const {
+    if (flags_ & kNoShadow) return false;
+    // A plain primitive (inverse changes only normals): the any-hit query.
+    if (prim_ && clipped_by_.empty() && bounded_by_.empty())
+        return prim_->occludes(to_local(xf_, identity_, ray), tmax);
+    LocalHit h;
+    return intersect(ray, tmax, true, &h);
+}
+
 void ObjectNode::intersect_all(const Ray& ray, double tmax, HitList* hits) const {
     if (!bounded_by_.empty() && !passes_bound(ray)) return;
     if (clipped_by_.empty()) {
@@ -228,13 +244,6 @@ bool ObjectNode::inside(const Vec3& p) const {
     bool in = inside_local(identity_ ? p : xf_.inverse_point(p));
     return inverse_ ? !in : in;
 }
-
-namespace {
-Ray to_local(const Transform& xf, bool identity, const Ray& ray) {
-    if (identity) return ray;
-    return {xf.inverse_point(ray.origin), xf.inverse_vector(ray.dir), ray.tmax};
-}
-}  // namespace
 
 bool ObjectNode::intersect_unclipped(const Ray& ray, double tmax, bool shadow,
                                      LocalHit* hit) const {

@@ -24,6 +24,8 @@ public:
     // Closest hit with 0 < t < tmax. With `shadow`, surfaces of no_shadow objects are ignored
     // (they still shape CSG results).
     bool intersect(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
+    // Whether any shadow-casting surface lies at 0 < t < tmax.
+    bool occludes(const Ray& ray, double tmax) const;
     // Every surviving hit with 0 < t < tmax, unsorted.
     void intersect_all(const Ray& ray, double tmax, HitList* hits) const;
     bool inside(const Vec3& p) const;

@@ -81,6 +81,11 @@ public:
     virtual bool intersect(const Ray& ray, double tmax, LocalHit* hit) const = 0;
     // Appends every hit with 0 < t < tmax, in any order.
     virtual void intersect_all(const Ray& ray, double tmax, HitList* hits) const = 0;
+    // Any hit with 0 < t < tmax (shadow rays); shapes with many surfaces stop at the first.
+    virtual bool occludes(const Ray& ray, double tmax) const {
+        LocalHit h;
+        return intersect(ray, tmax, &h);
+    }
     // POV-Ray's inside test (CSG); shapes without an inside (triangles, discs) return false.
     virtual bool inside(const Vec3& p) const = 0;
 };
