@@ -1,0 +1,5 @@
+#version 3.7;
+global_settings { assumed_gamma 1 }
+union {
+		sphere { 0, Undefined_Radius }
+}
