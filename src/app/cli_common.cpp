@@ -22,12 +22,18 @@ extern "C" void on_signal(int sig) {
 
 int exit_code_for(ErrorKind kind) {
     switch (kind) {
-        case ErrorKind::Usage: return kExitUsage;
-        case ErrorKind::Scene: return kExitScene;
-        case ErrorKind::MissingFile: return kExitMissingFile;
-        case ErrorKind::Render: return kExitRender;
-        case ErrorKind::Output: return kExitOutput;
-        case ErrorKind::Cancelled: return kExitInterrupted;
+        case ErrorKind::Usage:
+            return kExitUsage;
+        case ErrorKind::Scene:
+            return kExitScene;
+        case ErrorKind::MissingFile:
+            return kExitMissingFile;
+        case ErrorKind::Render:
+            return kExitRender;
+        case ErrorKind::Output:
+            return kExitOutput;
+        case ErrorKind::Cancelled:
+            return kExitInterrupted;
     }
     return kExitRender;
 }

@@ -1,6 +1,5 @@
 // `glint compare A B`: the golden-test metric of VALIDATION.md on two image files.
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 
 #include "app/cli_common.h"

@@ -1,6 +1,5 @@
 // `glint ir SCENE.pov`: the scene as the importer understood it (formats::print_ir).
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 
 #include "app/cli_common.h"

@@ -1,7 +1,6 @@
 // glint: the command-line front end. It only parses flags and dispatches; each subcommand
 // lives in its own file (render_command.cpp, ir_command.cpp, compare_command.cpp).
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <exception>
 

@@ -1,8 +1,8 @@
 // `glint render SCENE.pov -o OUT`: parse, render, encode, write; nothing is written unless
 // every stage succeeds.
-#include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -31,8 +31,9 @@ double seconds_since(Clock::time_point t) {
 // --aa none | adaptive[:T] | grid:N
 void parse_aa(const std::string& text, render::RenderOptions& options) {
     auto bad = [&](const std::string& why) {
-        return Error(ErrorKind::Usage, {}, "--aa " + text + ": " + why +
-                                                " (expected none, adaptive, adaptive:T or grid:N)");
+        return Error(
+            ErrorKind::Usage, {},
+            "--aa " + text + ": " + why + " (expected none, adaptive, adaptive:T or grid:N)");
     };
     std::string mode = text;
     std::string param;
@@ -64,7 +65,8 @@ void parse_aa(const std::string& text, render::RenderOptions& options) {
 }
 
 io::ProgressStyle progress_style(const std::string& flag) {
-    if (flag.empty()) return isatty(STDERR_FILENO) ? io::ProgressStyle::Bar : io::ProgressStyle::None;
+    if (flag.empty())
+        return isatty(STDERR_FILENO) ? io::ProgressStyle::Bar : io::ProgressStyle::None;
     if (flag == "bar") return io::ProgressStyle::Bar;
     if (flag == "lines") return io::ProgressStyle::Lines;
     return io::ProgressStyle::None;
@@ -93,9 +95,9 @@ void print_features(const scene::Features& f) {
 
 std::string encoding_name(const io::OutputEncoding& e) {
     if (e.working_srgb) return "none (pre-3.7 scene without assumed_gamma: values as rendered)";
-    std::string name = e.transfer == io::OutputEncoding::Transfer::Srgb     ? "sRGB"
+    std::string name = e.transfer == io::OutputEncoding::Transfer::Srgb    ? "sRGB"
                        : e.transfer == io::OutputEncoding::Transfer::Gamma ? "gamma"
-                                                                            : "linear";
+                                                                           : "linear";
     if (e.working_gamma != 1.0) {
         char buf[64];
         std::snprintf(buf, sizeof buf, " from working gamma %g", e.working_gamma);

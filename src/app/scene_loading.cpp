@@ -23,7 +23,7 @@ bool in_folder(const std::string& file, const std::string& folder) {
 // about 200 declarations that use features glint lacks, and that list would bury the
 // scene's own warnings (using a skipped name is an error that names both places anyway).
 class ParseDiagnosticPrinter {
-public:
+  public:
     explicit ParseDiagnosticPrinter(bool verbose) : verbose_(verbose) {}
 
     void print(const Diagnostic& d) {
@@ -41,12 +41,11 @@ public:
 
     void summary() const {
         if (hidden_ > 0)
-            std::fprintf(stderr,
-                         "glint: note: %d warning(s) from %s not shown (-v shows them)\n",
+            std::fprintf(stderr, "glint: note: %d warning(s) from %s not shown (-v shows them)\n",
                          hidden_, kPovIncludeDir);
     }
 
-private:
+  private:
     bool verbose_;
     int hidden_ = 0;
 };

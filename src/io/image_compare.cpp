@@ -24,8 +24,7 @@ template <typename T>
 std::vector<T> to_rgb(const std::vector<T>& data, size_t pixels, int channels) {
     std::vector<T> rgb(pixels * 3);
     for (size_t i = 0; i < pixels; ++i)
-        for (int c = 0; c < 3; ++c)
-            rgb[i * 3 + c] = data[i * channels + (channels >= 3 ? c : 0)];
+        for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = data[i * channels + (channels >= 3 ? c : 0)];
     return rgb;
 }
 
@@ -53,7 +52,8 @@ Rgb8Image read_rgb8(const std::string& path) {
                           spec.format.basetype == OIIO::TypeDesc::DOUBLE;
     if (is_float) {
         std::vector<float> data(pixels * channels);
-        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data())) throw fail(in->geterror());
+        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
+            throw fail(in->geterror());
         std::vector<float> rgb = to_rgb(data, pixels, channels);
         render::Image linear;
         linear.width = spec.width;
@@ -68,7 +68,8 @@ Rgb8Image read_rgb8(const std::string& path) {
             out.rgb[i] = static_cast<unsigned char>(quantize(encoded[i], 255));
     } else {
         std::vector<unsigned char> data(pixels * channels);
-        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, data.data())) throw fail(in->geterror());
+        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, data.data()))
+            throw fail(in->geterror());
         out.rgb = to_rgb(data, pixels, channels);
     }
     in->close();

@@ -16,12 +16,12 @@ struct Rgb8Image {
 };
 
 struct CompareResult {
-    long long pixels = 0;          // pixels compared (width * height)
-    long long within_count = 0;    // pixels whose largest channel difference <= tolerance
-    double within_fraction = 0;    // within_count / pixels (1 for an empty image)
-    double rmse = 0;               // over all RGB channels, in 8-bit code values
-    int max_diff = 0;              // largest channel difference, in 8-bit code values
-    int max_x = 0, max_y = 0;      // the first pixel (row-major) where max_diff occurs
+    long long pixels = 0;        // pixels compared (width * height)
+    long long within_count = 0;  // pixels whose largest channel difference <= tolerance
+    double within_fraction = 0;  // within_count / pixels (1 for an empty image)
+    double rmse = 0;             // over all RGB channels, in 8-bit code values
+    int max_diff = 0;            // largest channel difference, in 8-bit code values
+    int max_x = 0, max_y = 0;    // the first pixel (row-major) where max_diff occurs
 };
 
 // Reads an image file as 8-bit RGB. Integer files are rescaled to 8 bits by OpenImageIO

@@ -23,15 +23,15 @@ namespace fs = std::filesystem;
 struct FormatInfo {
     const char* extension;
     const char* oiio_name;
-    bool is_float;        // scene-referred: linear values, no OpenColorIO
-    unsigned max_value;   // integer formats: the code value of 1.0
+    bool is_float;       // scene-referred: linear values, no OpenColorIO
+    unsigned max_value;  // integer formats: the code value of 1.0
     bool supports_alpha;
 };
 
 constexpr FormatInfo kFormats[] = {
-    {"png", "png", false, 255, true},         {"jpg", "jpeg", false, 255, false},
-    {"jpeg", "jpeg", false, 255, false},      {"tif", "tiff", false, 65535, true},
-    {"tiff", "tiff", false, 65535, true},     {"exr", "openexr", true, 0, true},
+    {"png", "png", false, 255, true},     {"jpg", "jpeg", false, 255, false},
+    {"jpeg", "jpeg", false, 255, false},  {"tif", "tiff", false, 65535, true},
+    {"tiff", "tiff", false, 65535, true}, {"exr", "openexr", true, 0, true},
     {"hdr", "hdr", true, 0, false},
 };
 
@@ -49,7 +49,7 @@ const FormatInfo& format_info(const std::string& path) {
 
 // Removes the temporary file unless the write succeeded and it was renamed.
 class TempFile {
-public:
+  public:
     explicit TempFile(std::string path) : path_(std::move(path)) {}
     ~TempFile() {
         if (!path_.empty()) {
@@ -62,7 +62,7 @@ public:
     const std::string& path() const { return path_; }
     void release() { path_.clear(); }
 
-private:
+  private:
     std::string path_;
 };
 

@@ -11,7 +11,7 @@ namespace glint::io {
 enum class ProgressStyle { None, Bar, Lines };
 
 class ProgressReporter {
-public:
+  public:
     // `out` is usually stderr; the reporter does not own it.
     ProgressReporter(ProgressStyle style, std::FILE* out) : style_(style), out_(out) {}
     ProgressReporter(const ProgressReporter&) = delete;
@@ -24,7 +24,7 @@ public:
     // Ends the bar's line without claiming completion (before an error message).
     void abandon();
 
-private:
+  private:
     void draw_bar(int percent);
 
     ProgressStyle style_;

@@ -33,8 +33,8 @@ std::string scene(const std::string& header) {
 bool have_povray() { return std::system("command -v povray >/dev/null 2>&1") == 0; }
 
 void check_regime(const std::string& name, const std::string& header) {
-    fs::path dir = fs::temp_directory_path() /
-                   ("glint_encoding_" + name + "_" + std::to_string(::getpid()));
+    fs::path dir =
+        fs::temp_directory_path() / ("glint_encoding_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     std::ofstream(dir / "s.pov") << scene(header);

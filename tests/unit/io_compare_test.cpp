@@ -54,7 +54,7 @@ TEST(IoCompare, CountsLargestChannelAgainstTolerance) {
     at(b, 3, 7, 1) = 103;  // 3 > 2: outside
     at(b, 5, 2, 0) = 98;   // 2: inside (<= tolerance)
     at(b, 5, 2, 2) = 102;
-    at(b, 9, 9, 2) = 90;   // the largest difference
+    at(b, 9, 9, 2) = 90;  // the largest difference
     glint::io::CompareResult r = glint::io::compare_images(a, b, 2);
     EXPECT_EQ(r.within_count, 98);
     EXPECT_DOUBLE_EQ(r.within_fraction, 0.98);

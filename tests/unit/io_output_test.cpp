@@ -24,8 +24,8 @@ using glint::io::OutputEncoding;
 namespace {
 
 fs::path temp_dir(const std::string& name) {
-    fs::path dir = fs::temp_directory_path() /
-                   ("glint_io_test_" + name + "_" + std::to_string(::getpid()));
+    fs::path dir =
+        fs::temp_directory_path() / ("glint_io_test_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;
@@ -97,7 +97,7 @@ struct PovMeasurement {
     int legacy;
 };
 constexpr PovMeasurement kPovPng[] = {
-    {0.1f, 89, 19, 26},    {0.2f, 124, 48, 51},   {0.25f, 137, 61, 64},
+    {0.1f, 89, 19, 26},    {0.2f, 124, 48, 51},    {0.25f, 137, 61, 64},
     {0.5f, 188, 128, 128}, {0.75f, 225, 193, 191}, {0.9f, 243, 230, 230},
 };
 

@@ -37,7 +37,7 @@ TEST(IoProgress, LinesHaveTwoDecimalsAndSkipRepeats) {
         p.update(0.3);    // going back is ignored
         p.update(0.429);  // still 0.42
         p.finish();
-        p.finish();       // idempotent
+        p.finish();  // idempotent
     }
     EXPECT_EQ(contents(f), "progress 0.00\nprogress 0.42\nprogress 1.00\n");
     std::fclose(f);
