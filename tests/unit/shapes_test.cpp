@@ -17,6 +17,7 @@ namespace {
 
 using render::Hit;
 using render::LocalHit;
+using render::Ray;
 using test::build_one;
 using test::ray;
 
@@ -289,6 +290,52 @@ TEST(Torus, RandomRaysLandOnTheSurface) {
             }
         }
         EXPECT_GT(hits_seen, 1000);
+    }
+}
+
+// Extreme radius ratios keep the quartic well conditioned: closed-form hits along x.
+TEST(Torus, ExtremeRadiusRatios) {
+    for (auto [R, r] : {std::pair{1e4, 1.0}, std::pair{1.0, 1e-4}, std::pair{1e-3, 9e-4}}) {
+        auto prim = render::make_torus(scene::Torus{R, r, false});
+        render::HitList hits;
+        double o = -3 * (R + r);
+        prim->intersect_all(ray({o, 0, 0}, {1, 0, 0}), kInfinity, &hits);
+        ASSERT_EQ(hits.size(), 4u) << R << " " << r;
+        const double expect[] = {-R - r, -R + r, R - r, R + r};
+        for (int i = 0; i < 4; ++i)
+            EXPECT_NEAR(hits[i].t, expect[i] - o, 1e-13 * (R + r)) << R << " " << r << " " << i;
+    }
+}
+
+// Random rays on cylinders and cones at several scales land on the surface.
+TEST(Quadrics, RandomHitsLieOnTheSurface) {
+    std::mt19937_64 rng(13);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (double s : {1e-4, 1.0, 1e4}) {
+        scene::Cone cone{{0, -s, 0}, 0.8 * s, {0, s, 0}, 0.2 * s, false};
+        Transform frame;
+        const char* why = nullptr;
+        auto prim = render::make_cone(cone, &frame, &why);
+        ASSERT_TRUE(prim);
+        int seen = 0;
+        for (int i = 0; i < 3000; ++i) {
+            Vec3 o(u(rng) * 4 * s, u(rng) * 4 * s, u(rng) * 4 * s);
+            Vec3 target(u(rng) * 0.5 * s, u(rng) * s, u(rng) * 0.5 * s);
+            Ray wr{o, target - o, kInfinity};
+            Ray lr{frame.inverse_point(wr.origin), frame.inverse_vector(wr.dir), kInfinity};
+            render::HitList hits;
+            prim->intersect_all(lr, kInfinity, &hits);
+            for (const auto& h : hits) {
+                ++seen;
+                Vec3 p = frame.point(h.p);
+                double rad = std::sqrt(p.x * p.x + p.z * p.z);
+                bool on_cap = std::fabs(std::fabs(p.y) - s) <= 1e-12 * s;
+                double want = 0.8 * s - 0.3 * (p.y + s);
+                if (!on_cap) ASSERT_NEAR(rad, want, 1e-12 * s);
+                ASSERT_LE(length(wr.origin + wr.dir * h.t - p), 1e-9 * s);
+            }
+        }
+        EXPECT_GT(seen, 1000);
     }
 }
 

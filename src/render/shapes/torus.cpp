@@ -63,7 +63,9 @@ private:
         double rb = rb_ * (1 + gamma(4));
         double disc = (rb - ll) * (rb + ll);
         if (!(disc >= 0)) return 0;
-        double half = std::sqrt(disc);
+        // Widened a little: the torus touches its bounding sphere along the equator, and a root
+        // there must not fall just outside the interval by rounding.
+        double half = std::sqrt(disc) + 0.01 * rb_;
         double s_in = -b - half, s_out = -b + half;
         double s_max = std::min(s_out, tmax * f->len);
         if (s_max <= 0) return 0;
@@ -89,6 +91,7 @@ private:
         scale *= scale;
         int m = 0;
         for (int i = 0; i < n; ++i) {
+            u[i] = polish(*f, u[i]);
             double s = f->s0 + u[i];
             double t = s / f->len;
             if (!(t > 0) || !(t < tmax)) continue;
@@ -99,6 +102,26 @@ private:
             out[m++] = t;
         }
         return m;
+    }
+
+    // Newton steps on the signed distance to the tube, which stays well conditioned where the
+    // quartic is not (major radius much larger than minor): full precision for the root.
+    double polish(const Frame& f, double u) const {
+        for (int it = 0; it < 2; ++it) {
+            Vec3 p = f.o + f.dn * u;
+            double w = std::sqrt(p.x * p.x + p.z * p.z);
+            if (!(w > 0)) break;
+            Vec3 v(p.x - p.x * R_ / w, p.y, p.z - p.z * R_ / w);
+            double lv = length(v);
+            if (!(lv > 0)) break;
+            double slope = dot(f.dn, v) / lv;
+            // Near-grazing the step is unreliable; the quartic's root is kept.
+            if (std::fabs(slope) < 0.05) break;
+            double step = (lv - r_) / slope;
+            if (!(std::fabs(step) < 1e-3 * rb_)) break;
+            u -= step;
+        }
+        return u;
     }
 
     void fill(const Frame& f, double t, LocalHit* h) const {
