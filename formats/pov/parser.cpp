@@ -256,6 +256,15 @@ static void parse_statements(Parser& p) {
     }
 }
 
+// A scene that never ran #version is taken as pre-3.7 (3.62), as POV-Ray 3.7's
+// EffectiveLanguageVersion does (scene.h); this decides e.g. the gamma handling.
+void Parser::finish_version() {
+    scene.version = version_set_ ? version : 3.62;
+    if (!version_set_)
+        diag.warning(FileLoc{}, "the scene has no #version directive: treated as version 3.62 "
+                                "(POV-Ray 3.7 does the same)");
+}
+
 scene::Scene Parser::parse_main_file(const std::string& path) {
     if (!fs::is_regular_file(path))
         throw Error(ErrorKind::MissingFile, FileLoc{std::make_shared<const std::string>(path), 0, 0},
@@ -266,7 +275,7 @@ scene::Scene Parser::parse_main_file(const std::string& path) {
     frames_.push_back(Frame{idx, 0});
     cur_file_ = idx;
     parse_statements(*this);
-    scene.version = version;
+    finish_version();
     return std::move(scene);
 }
 
@@ -278,7 +287,7 @@ scene::Scene Parser::parse_main_string(const std::string& text, const std::strin
     frames_.push_back(Frame{idx, 0});
     cur_file_ = idx;
     parse_statements(*this);
-    scene.version = version;
+    finish_version();
     return std::move(scene);
 }
 

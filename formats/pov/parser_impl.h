@@ -160,6 +160,7 @@ public:
     // What a #declare right-hand side can be: object, texture, expression, ...
     Value parse_rvalue();
     void parse_default();
+    void finish_version();
 
     const ParseOptions& options;
     Diagnostics& diag;
@@ -167,7 +168,8 @@ public:
     // Frame depth of the #declare whose expression value is being read (-1: none).
     size_t declare_frame_ = size_t(-1);
     scene::Scene scene;
-    double version = 3.7;
+    double version = 3.7;        // the `version` value expressions see
+    bool version_set_ = false;   // any #version seen
     scene::Texture default_texture_;
 
 private:

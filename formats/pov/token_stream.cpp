@@ -313,7 +313,7 @@ bool Parser::handle_directive(const Token& d, int file) {
         accept(";");
         declare_frame_ = saved;
         version = v;
-        scene.version = v;
+        version_set_ = true;
     } else if (k == "default") {
         parse_default();
     } else if (k == "fopen" || k == "fclose" || k == "read" || k == "write" ||

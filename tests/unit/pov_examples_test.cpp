@@ -17,7 +17,7 @@ using testing::povray_include_dir;
 
 const std::string kExamples = std::string(GLINT_SOURCE_DIR) + "/tests/data/pov-examples/";
 
-scene::Scene load(const std::string& rel, bool needs_includes = true) {
+scene::Scene load(const std::string& rel) {
     ParseOptions o;
     if (!povray_include_dir().empty()) o.include_dirs.push_back(povray_include_dir());
     Diagnostics diag;
@@ -155,7 +155,7 @@ TEST(PovExamples, ParallelLights) {
 }
 
 TEST(PovExamples, Sombrero) {
-    auto s = load("advanced/sombrero.pov", false);
+    auto s = load("advanced/sombrero.pov");
     // Zc and Xc run from -1 to 1 in steps of 1/16: 33 unions of 33 spheres.
     ASSERT_EQ(s.objects.size(), 33u);
     const auto& row = std::get<scene::Csg>(s.objects[0].shape);

@@ -261,6 +261,7 @@ TEST(PovMaterials, UnsupportedFeaturesSaySo) {
 TEST(PovScene, GlobalSettingsBackgroundSky) {
     Diagnostics diag;
     auto s = parse_string(
+        "#version 3.7;\n"
         "global_settings { assumed_gamma 1.0 max_trace_level 10 adc_bailout 0.01"
         " ambient_light rgb <0.5, 0.5, 0.5> radiosity { count 10 } }\n"
         "background { color rgb <0.1, 0.2, 0.3> }\n"
@@ -273,6 +274,17 @@ TEST(PovScene, GlobalSettingsBackgroundSky) {
     ASSERT_TRUE(s.sky_sphere.has_value());
     EXPECT_EQ(s.sky_sphere->pigments.size(), 2u);
     EXPECT_EQ(diag.warning_count(), 1);  // radiosity ignored, with a warning
+}
+
+TEST(PovScene, VersionTracking) {
+    // No #version at all: POV-Ray 3.7 takes the scene as 3.62 (EffectiveLanguageVersion).
+    Diagnostics diag;
+    auto s = parse_string("sphere { 0, version }", "t.pov", {}, diag);
+    EXPECT_EQ(s.version, 3.62);
+    EXPECT_EQ(std::get<scene::Sphere>(s.objects[0].shape).radius, 3.7);
+    EXPECT_EQ(diag.warning_count(), 1);
+    EXPECT_EQ(parse("#version 3.5;\n#declare V = version;\n#version 3.7;\n#version V;").version,
+              3.5);
 }
 
 TEST(PovErrors, PlacesAndWording) {
