@@ -22,8 +22,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 void warn_unsupported(const scene::Scene& scene, const scene::Features& f, Diagnostics& diag) {
     if (f.area_lights) {
         for (const scene::Light& l : scene.lights)
-            if (l.area)
-                diag.warning(l.loc, "area_light is not supported yet; rendered as a point light");
+            if (l.area && l.area->jitter)
+                diag.warning(l.loc,
+                             "area_light jitter is not supported; sampled on the regular grid");
     }
     if (f.normals) {
         for (const scene::Material& m : scene.materials)

@@ -16,7 +16,7 @@ struct AreaLight {
     Vec3 axis2{0, 1, 0};
     int size1 = 1;
     int size2 = 1;
-    int adaptive = 0;
+    int adaptive = 100;  // POV-Ray's LightSource default (point.cpp): the full grid
     bool jitter = false;
     bool circular = false;
     bool orient = false;

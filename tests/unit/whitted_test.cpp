@@ -226,6 +226,25 @@ TEST(Whitted, OpaqueShadowLeavesAmbient) {
     EXPECT_NEAR(fx.render_ray(Vec3(0, 1, -1), Vec3(0, -1, 1)).r, 0.7, 1e-9);
 }
 
+TEST(Whitted, AreaLightAveragesItsGridSamples) {
+    Fixture fx;
+    fx.scene.materials.push_back(matte(Color(1, 1, 1), 0.0, 1.0));
+    fx.geo.has_floor = true;
+    scene::Light l;
+    l.location = Vec3(0, 10, 0);
+    l.area = scene::AreaLight{};
+    l.area->axis1 = Vec3(2, 0, 0);  // samples at x = -1, 0, 1
+    l.area->size1 = 3;
+    l.area->size2 = 1;
+    fx.scene.lights.push_back(l);
+    // Unblocked: the full light.
+    EXPECT_NEAR(fx.render_ray(Vec3(0, 1, -1), Vec3(0, -1, 1)).r, 1.0, 1e-9);
+    // A small ball hides only the sample at x = -1 from the floor point (0, 0, 0). POV-Ray's
+    // corner-and-subdivide averaging then gives (1/2 + 1 + 1/2 + 1) / 4.
+    fx.geo.spheres.push_back({Vec3(-0.5, 5, 0), 0.1, 0});
+    EXPECT_NEAR(fx.render_ray(Vec3(0, 1, -1), Vec3(0, -1, 1)).r, 0.75, 1e-9);
+}
+
 TEST(Whitted, FilteredShadowIsTinted) {
     Fixture fx;
     fx.scene.materials.push_back(matte(Color(1, 1, 1), 0.0, 1.0));

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/float.h"
+#include "render/lights/area_light.h"
 
 namespace glint::render {
 namespace {
@@ -221,7 +222,14 @@ Color Whitted::shade(const Ray& ray, const Hit& hit, double weight, const RaySta
             if (!double_illuminate && dot(n, ls.dir) < kPovEpsilon) continue;
             Color lc = ls.color;
             if (features_.shadows && light.casts_shadows()) {
-                lc = lc * shadow_filter(hit.p, hit, ls, state);
+                if (light.light().area) {
+                    lc = area_light_shadow(
+                        light, hit.p, lc, [&](const Vec3& d, double depth, const Color& c) {
+                            return c * shadow_filter(hit.p, hit, LightSample{d, depth, c}, state);
+                        });
+                } else {
+                    lc = lc * shadow_filter(hit.p, hit, ls, state);
+                }
                 if (!(std::fabs(lc.r) > kPovEpsilon || std::fabs(lc.g) > kPovEpsilon ||
                       std::fabs(lc.b) > kPovEpsilon))
                     continue;

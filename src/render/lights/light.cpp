@@ -32,27 +32,45 @@ PreparedLight::PreparedLight(const scene::Light& light) : light_(light) {
     }
 }
 
-bool PreparedLight::sample(const Vec3& p, LightSample* out) const {
+void PreparedLight::white_ray(const Vec3& p, const Vec3& offset, Vec3* out_dir,
+                              double* out_depth) const {
     const scene::Light& l = light_;
+    const Vec3 center = l.location + offset;
     Vec3 dir;
     double depth;
     if (l.kind == scene::LightKind::Cylinder) {
         // Parallel beams along point_at -> location; depth is the projection on that axis.
-        Vec3 axis = l.location - l.point_at;
+        Vec3 axis = center - l.point_at;
         double axis_len = length(axis);
-        depth = dot(l.location - p, axis) / axis_len;
+        depth = dot(center - p, axis) / axis_len;
         dir = axis / axis_len;
     } else {
-        Vec3 d = l.location - p;
+        Vec3 d = center - p;
         depth = length(d);
         dir = d / depth;
     }
-    if (l.parallel && l.kind != scene::LightKind::Cylinder) {
-        // Parallel lights: rays along -direction everywhere; depth projected onto it.
-        double a = dot(direction_, dir);
-        depth *= -a;
-        dir = -direction_;
+    if (l.parallel) {
+        if (l.area) {
+            // Parallel area lights: each sample shines along (sample - point_at).
+            Vec3 v1 = normalize(center - l.point_at);
+            depth *= dot(v1, dir);
+            dir = v1;
+        } else {
+            // Parallel lights: rays along -direction everywhere; depth projected onto it.
+            double a = dot(direction_, dir);
+            depth *= -a;
+            dir = -direction_;
+        }
     }
+    *out_dir = dir;
+    *out_depth = depth;
+}
+
+bool PreparedLight::sample(const Vec3& p, LightSample* out) const {
+    const scene::Light& l = light_;
+    Vec3 dir;
+    double depth;
+    white_ray(p, Vec3(0, 0, 0), &dir, &depth);
 
     // Attenuate_Light.
     double att = 1.0;

@@ -22,6 +22,9 @@ public:
     // False when the light cannot reach the point (outside a spot cone, behind a cylinder
     // light), in which case POV-Ray skips it entirely.
     bool sample(const Vec3& p, LightSample* out) const;
+    // Direction and shadow-ray length from `p` to the light centre moved by `offset` (an area
+    // light sample), without attenuation: POV-Ray's ComputeOneWhiteLightRay.
+    void white_ray(const Vec3& p, const Vec3& offset, Vec3* dir, double* depth) const;
     bool casts_shadows() const { return !light_.shadowless; }
     const scene::Light& light() const { return light_; }
 
