@@ -97,6 +97,43 @@ TEST(Bvh, IdenticalToBruteForce) {
     EXPECT_GT(hits, 5000);
 }
 
+// A union of many children (searched through its own BVH) gives the same hits as the same
+// children placed as separate top-level objects.
+TEST(Bvh, LargeUnionMatchesFlatObjects) {
+    std::mt19937_64 rng(21);
+    scene::Scene flat = random_scene(rng, 200);
+    scene::Csg u;
+    u.op = scene::CsgOp::Union;
+    u.children = flat.objects;
+    for (size_t i = 0; i < u.children.size(); i += 3) u.children[i].material = -1;  // inherit
+    for (size_t i = 0; i < flat.objects.size(); i += 3) flat.objects[i].material = 1;
+    Transform xf = Transform::rotate_xyz_degrees({10, 20, 30}).then(Transform::translate({1, 2, 3}));
+    scene::Object uo = test::object(u, xf, 1);
+    for (auto& o : flat.objects) o.transform = o.transform.then(xf);
+    auto g_union = test::build(test::scene_of({uo}));
+    auto g_flat = test::build(flat);
+    std::uniform_real_distribution<double> uu(-15, 15);
+    std::normal_distribution<double> nd;
+    int hits = 0, mismatches = 0;
+    for (int i = 0; i < 20000; ++i) {
+        render::Ray r{{uu(rng), uu(rng), uu(rng)}, {nd(rng), nd(rng), nd(rng)}, kInfinity};
+        if (i % 3 == 0) r.tmax = std::fabs(uu(rng));
+        Hit a, b;
+        bool fa = g_union->intersect(r, &a), fb = g_flat->intersect(r, &b);
+        if (fa != fb || g_union->occluded(r) != fb) {
+            ++mismatches;
+            continue;
+        }
+        if (!fa) continue;
+        ++hits;
+        if (std::fabs(a.t - b.t) > 1e-12 * (1 + b.t) || a.material != b.material ||
+            length(a.ng - b.ng) > 1e-9)
+            ++mismatches;
+    }
+    EXPECT_EQ(mismatches, 0);
+    EXPECT_GT(hits, 5000);
+}
+
 TEST(Bvh, DuplicateObjectsTieToLowerIndex) {
     // Many copies of one sphere among distant clutter: the first copy always wins.
     std::vector<scene::Object> objs;

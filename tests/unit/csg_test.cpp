@@ -115,6 +115,21 @@ TEST(Csg, MaterialInheritanceAndFlags) {
     EXPECT_FALSE(g->occluded(ray({0, 0, -5}, {0, 0, 1})));
 }
 
+// Regression: a nearer child tested after a farther one must not keep the farther one's
+// material (its own is -1: the union's).
+TEST(Csg, UnionChildDoesNotInheritSiblingMaterial) {
+    for (int n : {2, 6}) {  // linear search and the union's own BVH
+        std::vector<scene::Object> kids = {sphere({0, 0, 5}, 1, 3)};
+        for (int i = 1; i < n; ++i) kids.push_back(sphere({0, 0, -3.0 * i + 3}, 0.5));
+        auto g = build(scene_of({csg(scene::CsgOp::Union, kids, 2)}));
+        Hit h;
+        ASSERT_TRUE(g->intersect(ray({0, 0, -30}, {0, 0, 1}), &h));
+        EXPECT_EQ(h.material, 2) << n;
+        ASSERT_TRUE(g->intersect(ray({0, 0, 3.5}, {0, 0, 1}), &h));
+        EXPECT_EQ(h.material, 3) << n;
+    }
+}
+
 TEST(Csg, NoShadowChildStillShapesTheResult) {
     scene::Object cutter = sphere({1, 0, 0}, 1);
     cutter.no_shadow = true;

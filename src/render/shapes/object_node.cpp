@@ -149,6 +149,7 @@ std::unique_ptr<ObjectNode> ObjectNode::build(const scene::Object& obj,
         node->clipped_by_.push_back(std::move(n));
     }
     node->compute_bounds();
+    node->build_child_bvh();
     return node;
 }
 
@@ -167,6 +168,45 @@ void ObjectNode::compute_bounds() {
     bounds_ = (local.empty() || identity_) ? local : xf_.bounds(local);
     if (inverse_) bounds_ = kEverywhere;
     for (const auto& c : clipped_by_) bounds_ = overlap(bounds_, c->bounds());
+}
+
+void ObjectNode::build_child_bvh() {
+    constexpr size_t kMinChildren = 4;
+    if (!is_csg_ || op_ != scene::CsgOp::Union || children_.size() < kMinChildren) return;
+    std::vector<Bounds3> boxes;
+    for (size_t i = 0; i < children_.size(); ++i) {
+        boxes.push_back(children_[i]->bounds());
+        if (boxes.back().is_infinite()) unbounded_children_.push_back(static_cast<int>(i));
+    }
+    child_bvh_ = Bvh(boxes, 2);
+}
+
+bool ObjectNode::union_intersect(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const {
+    if (child_bvh_.empty() && unbounded_children_.empty()) {
+        bool found = false;
+        for (const auto& c : children_) {
+            // Later children must be strictly closer: ties go to the earlier child.
+            if (c->intersect(ray, found ? hit->t : tmax, shadow, hit)) found = true;
+        }
+        return found;
+    }
+    // Through the children's BVH; equal t still goes to the lower child index.
+    int best = -1;
+    auto visit = [&](int i, double& t) {
+        LocalHit h;
+        double limit = best < 0 ? t : next_up(hit->t);
+        if (children_[i]->intersect(ray, limit, shadow, &h) &&
+            (best < 0 || h.t < hit->t || i < best)) {
+            *hit = h;
+            best = i;
+            t = h.t;
+        }
+        return false;
+    };
+    double t = tmax;
+    child_bvh_.traverse(ray, t, visit);
+    for (int i : unbounded_children_) visit(i, t);
+    return best >= 0;
 }
 
 void ObjectNode::finish(LocalHit* h) const {
@@ -222,6 +262,18 @@ bool ObjectNode::occludes(const Ray& ray, double tmax) const {
     // A plain primitive (inverse changes only normals): the any-hit query.
     if (prim_ && clipped_by_.empty() && bounded_by_.empty())
         return prim_->occludes(to_local(xf_, identity_, ray), tmax);
+    if (is_csg_ && op_ == scene::CsgOp::Union && clipped_by_.empty() && bounded_by_.empty() &&
+        !child_bvh_.empty()) {
+        Ray local = to_local(xf_, identity_, ray);
+        double t = tmax;
+        if (child_bvh_.traverse(local, t, [&](int i, double&) {
+                return children_[i]->occludes(local, tmax);
+            }))
+            return true;
+        for (int i : unbounded_children_)
+            if (children_[i]->occludes(local, tmax)) return true;
+        return false;
+    }
     LocalHit h;
     return intersect(ray, tmax, true, &h);
 }
@@ -290,14 +342,8 @@ bool ObjectNode::intersect_local(const Ray& ray, double tmax, bool shadow, Local
         *hit = h;
         return true;
     }
+    if (op_ == scene::CsgOp::Union) return union_intersect(ray, tmax, shadow, hit);
     bool found = false;
-    if (op_ == scene::CsgOp::Union) {
-        for (const auto& c : children_) {
-            // Later children must be strictly closer: ties go to the earlier child.
-            if (c->intersect(ray, found ? hit->t : tmax, shadow, hit)) found = true;
-        }
-        return found;
-    }
     HitList hits;
     for (size_t i = 0; i < children_.size(); ++i) {
         hits.clear();

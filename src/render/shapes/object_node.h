@@ -9,6 +9,7 @@
 
 #include "core/log.h"
 #include "core/transform.h"
+#include "render/accel/bvh.h"
 #include "render/shapes/primitive.h"
 #include "scene/scene.h"
 
@@ -47,6 +48,8 @@ private:
     // Object space -> parent space, with inverse/material/flags applied.
     void finish(LocalHit* h) const;
     void compute_bounds();
+    void build_child_bvh();
+    bool union_intersect(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
 
     Transform xf_;
     bool identity_ = true;
@@ -54,6 +57,9 @@ private:
     bool is_csg_ = false;
     scene::CsgOp op_ = scene::CsgOp::Union;
     std::vector<std::unique_ptr<ObjectNode>> children_;
+    // Unions of many children (POV-Ray #while loops) get a BVH over the bounded ones.
+    Bvh child_bvh_;
+    std::vector<int> unbounded_children_;
     bool inverse_ = false;
     int material_ = -1;
     uint32_t flags_ = 0;

@@ -67,8 +67,10 @@ private:
         // there must not fall just outside the interval by rounding.
         double half = std::sqrt(disc) + 0.01 * rb_;
         double s_in = -b - half, s_out = -b + half;
-        double s_max = std::min(s_out, tmax * f->len);
-        if (s_max <= 0) return 0;
+        // The whole chord, not cut at tmax: the roots (and so the hits) must not depend on how
+        // far the caller happens to look.
+        double s_max = s_out;
+        if (s_max <= 0 || std::max(s_in, 0.0) >= tmax * f->len) return 0;
         f->s0 = std::max(s_in, 0.0);
         f->o = ray.origin + f->dn * f->s0;
         const Vec3 &o = f->o, &d = f->dn;
