@@ -247,6 +247,21 @@ const Symbol& Parser::use_symbol(const Token& t) {
 }
 
 void Parser::declare(const std::string& name, Value v, const FileLoc& l, bool local) {
+    if (!local) {
+        auto it = scopes_.back().find(name);
+        if (it != scopes_.back().end() && !it->second.ref_name.empty()) {
+            const std::string ref = it->second.ref_name;
+            size_t k = it->second.ref_scope;
+            it->second.value = v;  // the parameter sees the new value too
+            if (k < scopes_.size()) {
+                Symbol& target = scopes_[k][ref];
+                target.value = std::move(v);
+                target.loc = l;
+                target.unusable = false;
+                return;
+            }
+        }
+    }
     auto& scope = local ? scopes_.back() : scopes_.front();
     Symbol& s = scope[name];
     s.value = std::move(v);
@@ -495,8 +510,24 @@ void Parser::call_macro(const Macro& m, const FileLoc& cloc) {
     for (size_t i = 0; i < m.params.size(); ++i) {
         if (i > 0) expect(",", "between macro arguments");
         Symbol s;
-        s.loc = loc();
+        {
+            // A lone identifier argument is passed by reference (POV-Ray semantics).
+            const Frame& f = frames_.back();
+            const auto& toks = files_[f.file]->tokens;
+            const Token& a = toks[f.pos];
+            if (!ungot_ && a.kind == TokKind::Word &&
+                (toks[f.pos + 1].is_symbol(',') || toks[f.pos + 1].is_symbol(')'))) {
+                for (size_t k = scopes_.size(); k-- > 0;) {
+                    if (scopes_[k].count(a.text)) {
+                        s.ref_name = a.text;
+                        s.ref_scope = k;
+                        break;
+                    }
+                }
+            }
+        }
         s.value = parse_rvalue();
+        s.loc = loc();
         args[m.params[i]] = std::move(s);
     }
     declare_frame_ = saved;

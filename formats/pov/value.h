@@ -85,6 +85,10 @@ struct Symbol {
     // exists, but using it is an error that points at both places.
     bool unusable = false;
     std::string unusable_reason;
+    // A macro parameter whose argument was a plain identifier: POV-Ray passes it by reference,
+    // so `#declare Param = ...` in the body assigns the caller's identifier (scope index).
+    std::string ref_name;
+    size_t ref_scope = 0;
 };
 
 }  // namespace glint::pov

@@ -75,6 +75,17 @@ TEST(PovDirective, MacrosReturnValuesAndObjectsWithLocalScope) {
     EXPECT_EQ(radius(s, 2), 21);
 }
 
+TEST(PovDirective, MacroIdentifierArgumentsAreByReference) {
+    auto s = parse(
+        "#macro Inc(V) #declare V = V + 1; #end\n"
+        "#declare Count = 1;\nInc(Count)\nInc(Count)\n"
+        "#macro Scoped() #local L = 5; Inc(L) sphere { 0, L } #end\nScoped()\n"
+        "sphere { 0, Count }\n#ifdef (V) sphere { 0, 99 } #end\n");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_EQ(radius(s, 0), 6);
+    EXPECT_EQ(radius(s, 1), 3);
+}
+
 TEST(PovDirective, UndefVersionDebugDefault) {
     Diagnostics diag;
     auto s = parse_string(
