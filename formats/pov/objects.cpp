@@ -41,6 +41,23 @@ void transform_child_textures(PovObject& o, const Transform& t) {
     for (auto& c : o.children) transform_child_textures(c, t);
 }
 
+// Whether a pigment is opaque everywhere (no filter/transmit in any color it can produce).
+bool opaque(const scene::Pigment& p) {
+    switch (p.kind) {
+        case scene::PatternKind::Plain: return p.color.opaque();
+        case scene::PatternKind::Checker:
+            for (const auto& e : p.entries)
+                if (!opaque(e)) return false;
+            return true;
+        case scene::PatternKind::Gradient:
+            for (const auto& e : p.color_map)
+                if (!e.color.opaque()) return false;
+            return true;
+        case scene::PatternKind::ImageMap: return false;  // the image's alpha is unknown here
+    }
+    return false;
+}
+
 }  // namespace
 
 bool Parser::is_object_keyword(const Token& t) const {
@@ -432,10 +449,17 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
         if (t.kind == TokKind::End) expect_close(what, opened);
         const std::string w = t.kind == TokKind::Word && !lookup(t.text) ? t.text : std::string();
         if (w == "texture") {
+            FileLoc kw = loc();
             expect_open("texture");
             FileLoc lo = loc();
-            o.texture = parse_texture_body();
+            scene::Texture tex = parse_texture_body();
             expect_close("texture", lo);
+            // POV-Ray layers a second texture over the first. An opaque top layer hides the
+            // rest, so it may replace it; anything else would render differently.
+            if (o.texture && !opaque(tex.pigment))
+                throw Unsupported(kw, "layered textures (a see-through texture over another) are "
+                                      "not supported yet");
+            o.texture = tex;
         } else if (w == "pigment") {
             expect_open("pigment");
             FileLoc lo = loc();

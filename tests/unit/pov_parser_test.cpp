@@ -239,6 +239,15 @@ TEST(PovMaterials, FinishInteriorAndMaps) {
     EXPECT_EQ(r.max, Color(0.1, 0.2, 0.3));
 }
 
+TEST(PovMaterials, SecondTextureReplacesOnlyWhenOpaque) {
+    auto s = parse("#declare S = sphere { 0, 1 texture { pigment { rgb x } } }\n"
+                   "object { S texture { pigment { rgb y } } }");
+    EXPECT_EQ(s.materials[s.objects[0].material].texture.pigment.color.rgb, Color(0, 1, 0));
+    EXPECT_EQ(error_of("#declare S = sphere { 0, 1 texture { pigment { rgb x } } }\n"
+                       "object { S texture { pigment { rgbt <0, 1, 0, 0.5> } } }"),
+              "2:12: layered textures (a see-through texture over another) are not supported yet");
+}
+
 TEST(PovMaterials, ImageMapMissingFile) {
     try {
         parse("sphere { 0, 1 pigment { image_map { png\n   \"no_such.png\" } } }");
