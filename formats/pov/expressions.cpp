@@ -84,9 +84,13 @@ class ExprParser {
 public:
     explicit ExprParser(Parser& p, int vector_depth = 0) : p_(p), vector_depth_(vector_depth) {}
 
+    // String expressions have no operators in POV-Ray, so nothing is read after a string
+    // (a string #declare needs no ';' even when a macro call follows it).
+    static bool is_string(const Value& v) { return std::holds_alternative<std::string>(v); }
+
     Value expr() {
         Value c = logical();
-        if (!p_.accept("?")) return c;
+        if (is_string(c) || !p_.accept("?")) return c;
         double cond = as_float(c, "a condition");
         Value a = expr();
         p_.expect(":", "in a ?: expression");
@@ -116,6 +120,7 @@ public:
     Value logical() {
         Value a = relational();
         for (;;) {
+            if (is_string(a)) return a;
             const Token& t = p_.next();
             if (t.is("&") || t.is("|")) {
                 bool is_and = t.text == "&";
@@ -132,8 +137,9 @@ public:
     Value relational() {
         Value a = additive();
         for (;;) {
+            if (is_string(a)) return a;
             const Token& t = p_.next();
-            if (t.kind == TokKind::Symbol &&
+            if (t.kind == TokKind::Symbol && std::get<Num>(a).terms == 1 &&
                 (t.text == "<" || t.text == "<=" || t.text == "=" || t.text == "!=" ||
                  t.text == ">=" || (t.text == ">" && vector_depth_ == 0))) {
                 std::string op = t.text;
@@ -164,6 +170,7 @@ public:
     Value additive() {
         Value a = multiplicative();
         for (;;) {
+            if (is_string(a)) return a;
             const Token& t = p_.next();
             if (t.is("+") || t.is("-")) {
                 char op = t.text[0];
@@ -180,6 +187,7 @@ public:
     Value multiplicative() {
         Value a = unary();
         for (;;) {
+            if (is_string(a)) return a;
             const Token& t = p_.next();
             if (t.is("*") || t.is("/")) {
                 char op = t.text[0];
@@ -214,6 +222,7 @@ public:
     Value postfix() {
         Value v = factor();
         for (;;) {
+            if (is_string(v)) return v;
             const Token& t = p_.next();
             if (!t.is_symbol('.')) {
                 p_.unget();

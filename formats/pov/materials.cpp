@@ -277,7 +277,13 @@ std::vector<scene::ColorMapEntry> Parser::parse_color_map_body() {
             fail("expected '[' to start a color_map entry, got " + got(t));
         FileLoc o = loc();
         double v1 = parse_float();
+        bool old_syntax = false;
         if (accept(",")) {
+            // `[v1, v2 color c1 color c2]` (old) or `[v, color]` (a comma before the color).
+            const Token& n = peek();
+            old_syntax = n.kind == TokKind::Number || n.is("-") || n.is("+");
+        }
+        if (old_syntax) {
             // Old syntax: [v1, v2 color c1 color c2]
             double v2 = parse_float();
             scene::ColorFT c1 = parse_color();

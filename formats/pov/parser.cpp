@@ -237,6 +237,7 @@ static void parse_statements(Parser& p) {
                 continue;
             }
             if (w == "global_settings") { p.parse_global_settings(); continue; }
+            if (w == "default") { p.parse_default(); continue; }  // old form of #default
             if (w == "background") { p.parse_background(); continue; }
             if (w == "sky_sphere") { p.parse_sky_sphere(); continue; }
             if (w == "fog" || w == "media" || w == "rainbow" || w == "light_group")

@@ -86,6 +86,13 @@ TEST(PovDirective, MacroIdentifierArgumentsAreByReference) {
     EXPECT_EQ(radius(s, 1), 3);
 }
 
+TEST(PovDirective, StringDeclareNeedsNoSemicolon) {
+    auto s = parse("#macro Len(S) sphere { 0, strlen(S) } #end\n"
+                   "#declare Name = \"abcd\"\nLen(Name)\n");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(radius(s, 0), 4);
+}
+
 TEST(PovDirective, UndefVersionDebugDefault) {
     Diagnostics diag;
     auto s = parse_string(

@@ -111,6 +111,13 @@ TEST(PovObjects, Shapes) {
     for (const auto& o : s.objects) EXPECT_GE(o.material, 0);
 }
 
+TEST(PovObjects, CommasBetweenVectorsAreOptional) {
+    auto s = parse("box { <-1, -2, -3> <1, 2, 3> }\ncylinder { <0, 0, 0> <0, 2, 0> 0.5 }");
+    EXPECT_EQ(shape<scene::Box>(s, 0).corner1, Vec3(-1, -2, -3));
+    EXPECT_EQ(shape<scene::Box>(s, 0).corner2, Vec3(1, 2, 3));
+    EXPECT_EQ(shape<scene::Cylinder>(s, 1).radius, 0.5);
+}
+
 TEST(PovObjects, MeshAndMesh2) {
     auto s = parse(
         "#declare M = mesh { triangle { 0, x, y } smooth_triangle { 0, z, x, z, y, z }"
@@ -246,6 +253,20 @@ TEST(PovMaterials, SecondTextureReplacesOnlyWhenOpaque) {
     EXPECT_EQ(error_of("#declare S = sphere { 0, 1 texture { pigment { rgb x } } }\n"
                        "object { S texture { pigment { rgbt <0, 1, 0, 0.5> } } }"),
               "2:12: layered textures (a see-through texture over another) are not supported yet");
+}
+
+TEST(PovMaterials, ColorMapEntryForms) {
+    auto s = parse(
+        "sphere { 0, 1 pigment { gradient x color_map { [0, rgb 0.5] [0.5 color rgb 1]"
+        " [0.6, 0.9 color rgb x color rgb y] } } }\n"
+        "default { finish { ambient 0.4 } }\nsphere { 0, 1 }");
+    const auto& map = s.materials[s.objects[0].material].texture.pigment.color_map;
+    ASSERT_EQ(map.size(), 4u);
+    EXPECT_EQ(map[0].color.rgb, Color(0.5, 0.5, 0.5));
+    EXPECT_EQ(map[2].value, 0.6);
+    EXPECT_EQ(map[3].value, 0.9);
+    EXPECT_EQ(map[3].color.rgb, Color(0, 1, 0));
+    EXPECT_EQ(s.materials[s.objects[1].material].texture.finish.ambient, Color(0.4, 0.4, 0.4));
 }
 
 TEST(PovMaterials, ImageMapMissingFile) {
