@@ -65,7 +65,7 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
     result.prepare_seconds = seconds_since(t0);
 
     auto t1 = std::chrono::steady_clock::now();
-    RadianceFn radiance = [&whitted](const Ray& ray) { return whitted.li(ray); };
+    RadianceFn radiance = [&whitted](const Ray& ray, const SampleId&) { return whitted.li(ray); };
     result.image = run_tiles(camera, options, settings, radiance);
     result.render_seconds = seconds_since(t1);
     return result;

@@ -18,7 +18,7 @@ scene::Camera test_camera() {
 }
 
 // A radiance function with structure at every scale: bits would differ if sampling changed.
-Color busy(const Ray& r) {
+Color busy(const Ray& r, const SampleId& = {}) {
     double v = std::sin(r.dir.x * 91.7) * std::cos(r.dir.y * 57.3);
     return Color(0.5 + 0.5 * v, r.dir.x * r.dir.x * 7.0, v > 0.3 ? 1.0 : 0.0);
 }
@@ -82,7 +82,7 @@ TEST(Driver, CancellationThrowsCancelled) {
     std::atomic<int> traced{0};
     o.cancel = &cancel;
     o.progress = [&](double) { cancel = true; };
-    RadianceFn counting = [&](const Ray& r) {
+    RadianceFn counting = [&](const Ray& r, const SampleId&) {
         ++traced;
         return busy(r);
     };
@@ -100,7 +100,7 @@ TEST(Driver, NonFiniteRadianceNeverReachesTheImage) {
     RenderOptions o;
     o.width = 8;
     o.height = 8;
-    RadianceFn bad = [](const Ray& r) {
+    RadianceFn bad = [](const Ray& r, const SampleId&) {
         return r.dir.x < 0 ? Color(NAN, INFINITY, -1.0) : Color(1e300, 0.5, 0.25);
     };
     Image img = run_tiles(cam, o, {}, bad);
@@ -110,6 +110,24 @@ TEST(Driver, NonFiniteRadianceNeverReachesTheImage) {
     }
 }
 
+TEST(Driver, SampleIdsNamePixelAndSampleWhateverTheThreads) {
+    Camera cam(test_camera(), 45, 37);
+    RenderOptions o;
+    o.width = 45;
+    o.height = 37;
+    o.aa = AaMode::Grid;
+    o.grid_n = 2;
+    RadianceFn ids = [](const Ray&, const SampleId& id) {
+        return Color(id.x, id.y, id.index);
+    };
+    o.threads = 2;
+    Image img = run_tiles(cam, o, {}, ids);
+    // Grid samples 0..3 average to 1.5; x and y name the pixel.
+    EXPECT_FLOAT_EQ(img.pixel(44, 36)[0], 44.0f);
+    EXPECT_FLOAT_EQ(img.pixel(44, 36)[1], 36.0f);
+    EXPECT_FLOAT_EQ(img.pixel(44, 36)[2], 1.5f);
+}
+
 TEST(Driver, GridAveragesSubsamples) {
     Camera cam(test_camera(), 10, 10);
     RenderOptions o;
@@ -117,7 +135,7 @@ TEST(Driver, GridAveragesSubsamples) {
     o.height = 10;
     o.aa = AaMode::Grid;
     o.grid_n = 3;
-    RadianceFn left_right = [](const Ray& r) { return r.dir.x < 0 ? Color(0.0) : Color(1.0); };
+    RadianceFn left_right = [](const Ray& r, const SampleId&) { return r.dir.x < 0 ? Color(0.0) : Color(1.0); };
     Image img = run_tiles(cam, o, {}, left_right);
     // The screen centre is the boundary between pixel columns 4 and 5: all subsamples of
     // pixel 4 are left of it, all of pixel 5 right of it.
@@ -134,7 +152,7 @@ TEST(Driver, AdaptiveSupersamplesOnlyEdges) {
     o.aa_depth = 3;
     // Edge inside pixel column 10 (not on a pixel boundary).
     double edge_sx = (10 + 0.5 + 0.2) / 33.0 - 0.5;
-    RadianceFn step = [edge_sx](const Ray& r) {
+    RadianceFn step = [edge_sx](const Ray& r, const SampleId&) {
         return r.dir.x / r.dir.z * (1.0 / 1.33) < edge_sx ? Color(0.0) : Color(1.0);
     };
     Image img = run_tiles(cam, o, {}, step);

@@ -41,7 +41,10 @@ public:
     }
 
 private:
-    Color sample(double x, double y) const { return radiance_(camera_.generate(x, y)); }
+    Color sample(double x, double y, int px, int py, uint32_t index) const {
+        return radiance_(camera_.generate(x, y), SampleId{px, py, index});
+    }
+    Color sample(int px, int py) const { return sample(px, py, px, py, 0); }
 
     void store(int x, int y, const Color& c) const {
         float* p = image_->pixel(x, y);
@@ -63,7 +66,8 @@ private:
                 Color sum;
                 for (int j = 0; j < n; ++j)
                     for (int i = 0; i < n; ++i)
-                        sum += sample(x + (i + 0.5) / n - 0.5, y + (j + 0.5) / n - 0.5);
+                        sum += sample(x + (i + 0.5) / n - 0.5, y + (j + 0.5) / n - 0.5, x, y,
+                                      static_cast<uint32_t>(j * n + i));
                 store(x, y, sum / static_cast<double>(n * n));
             }
         }
@@ -86,12 +90,14 @@ private:
     }
 
     // SupersampleOnePixel: aa_depth x aa_depth grid plus the centre sample, averaged.
-    void supersample(double x, double y, Color* col) const {
+    void supersample(int x, int y, Color* col) const {
         int depth = std::max(1, opt_.aa_depth);
         double step = 1.0 / depth;
         double range = 0.5 - step * 0.5;
         for (int j = 0; j < depth; ++j)
-            for (int i = 0; i < depth; ++i) *col += sample(x - range + i * step, y - range + j * step);
+            for (int i = 0; i < depth; ++i)
+                *col += sample(x - range + i * step, y - range + j * step, x, y,
+                               static_cast<uint32_t>(1 + j * depth + i));
         *col = *col / static_cast<double>(depth * depth + 1);
     }
 

@@ -5,6 +5,7 @@
 // the image is bit-identical whatever the thread count.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 
 #include "render/camera.h"
@@ -13,8 +14,16 @@
 
 namespace glint::render {
 
+// Names one camera sample, so stochastic integrators (the path tracer) can seed their random
+// numbers from it rather than from the thread: the same image whatever the thread count.
+struct SampleId {
+    int x = 0;           // pixel column (may be -1 for adaptive AA's border samples)
+    int y = 0;           // pixel row
+    uint32_t index = 0;  // sample number within the pixel, in the driver's fixed order
+};
+
 // Radiance along a camera ray. Must be thread-safe (called concurrently).
-using RadianceFn = std::function<Color(const Ray& ray)>;
+using RadianceFn = std::function<Color(const Ray& ray, const SampleId& id)>;
 
 // POV-Ray's render_block_size default: adaptive AA compares pixels within such blocks.
 constexpr int kBlockSize = 32;
