@@ -274,7 +274,8 @@ public:
             n.v[n.terms++] = as_float(expr(), "a float vector component");
             const Token& t = p_.next();
             if (t.is(">")) break;
-            if (!t.is(",")) p_.fail("expected ',' or '>' in the vector, got " + p_.got(t));
+            // POV-Ray's Parse_Comma: the comma between components is optional.
+            if (!t.is(",")) p_.unget();
         }
         --vector_depth_;
         if (n.terms < 2) p_.fail("a vector needs at least 2 components");

@@ -541,8 +541,9 @@ scene::Texture Parser::parse_texture_body() {
             FileLoc o = loc();
             parse_finish_body(tex.finish);
             expect_close("finish", o);
-        } else if (unsupported_patterns().count(w)) {
-            unsupported("texture pattern '" + w + "'");
+        } else if (unsupported_patterns().count(w) || w == "checker" || w == "gradient" ||
+                   w == "image_map" || w == "hexagon" || w == "brick") {
+            unsupported("a patterned texture ('" + w + "' in a texture)");
         } else {
             unget();
             Transform tr;

@@ -63,6 +63,10 @@ void Parser::place_object(PovObject o) {
 
 Value Parser::parse_rvalue() {
     const Token& t = next();
+    if (pending_declare_frame_ != size_t(-1)) {
+        declare_frame_ = pending_declare_frame_;
+        pending_declare_frame_ = size_t(-1);
+    }
     if (t.kind == TokKind::Word) {
         if (lookup(t.text)) {
             const Symbol& s = use_symbol(t);

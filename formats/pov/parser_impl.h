@@ -167,6 +167,9 @@ public:
     std::vector<uint32_t> rand_streams;  // seed()/rand() state, POV-Ray's LCG
     // Frame depth of the #declare whose expression value is being read (-1: none).
     size_t declare_frame_ = size_t(-1);
+    // Set by #declare; becomes declare_frame_ once the value's first token is read (a value
+    // may start with a directive, e.g. `#declare S = #if (..) sphere {..} #else .. #end`).
+    size_t pending_declare_frame_ = size_t(-1);
     scene::Scene scene;
     double version = 3.7;        // the `version` value expressions see
     bool version_set_ = false;   // any #version seen

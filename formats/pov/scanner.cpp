@@ -41,7 +41,10 @@ public:
                 scan_string(t);
             } else if (c == '#') {
                 ++i_;
-                while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t')) ++i_;
+                while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t' || s_[i_] == '\r')) ++i_;
+                // A '#' alone at the end of a line means nothing (POV-Ray's image_size.pov
+                // has one); skip it.
+                if (i_ >= s_.size() || s_[i_] == '\n') continue;
                 size_t b = i_;
                 if (i_ < s_.size() && is_word_start(s_[i_]))
                     while (i_ < s_.size() && is_word_char(s_[i_])) ++i_;

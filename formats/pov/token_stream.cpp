@@ -362,9 +362,11 @@ void Parser::handle_declare(bool local, const FileLoc& dloc) {
         size_t idx = parse_array_index(*keep, name, display);
         expect("=", ("after '" + display + "'").c_str());
         size_t saved = declare_frame_;
-        declare_frame_ = frames_.size();
+        declare_frame_ = size_t(-1);
+        pending_declare_frame_ = frames_.size();
         Value v = parse_rvalue();
         declare_frame_ = saved;
+        pending_declare_frame_ = size_t(-1);
         keep->items[idx] = std::make_shared<Value>(std::move(v));
         accept(";");
         return;
@@ -376,13 +378,16 @@ void Parser::handle_declare(bool local, const FileLoc& dloc) {
     size_t nconds = f.conds.size();
     bool tolerant = files_[f.file]->system && !f.is_macro;
     size_t saved = declare_frame_;
-    declare_frame_ = frames_.size();
+    declare_frame_ = size_t(-1);
+    pending_declare_frame_ = frames_.size();
     try {
         Value v = parse_rvalue();
         declare_frame_ = saved;
+        pending_declare_frame_ = size_t(-1);
         declare(name, std::move(v), nloc, local);
     } catch (const Unsupported& e) {
         declare_frame_ = saved;
+        pending_declare_frame_ = size_t(-1);
         if (!tolerant) throw;
         // A standard include may declare things glint cannot read yet; the scene fails only
         // if it uses them (POV-Ray's includes are large, most scenes use a few names).
@@ -505,8 +510,9 @@ void Parser::call_macro(const Macro& m, const FileLoc& cloc) {
                           " (runaway recursion?)");
     expect("(", ("after the macro name '" + m.name + "'").c_str());
     std::unordered_map<std::string, Symbol> args;
-    size_t saved = declare_frame_;
+    size_t saved = declare_frame_, saved_pending = pending_declare_frame_;
     declare_frame_ = size_t(-1);
+    pending_declare_frame_ = size_t(-1);
     for (size_t i = 0; i < m.params.size(); ++i) {
         if (i > 0) expect(",", "between macro arguments");
         Symbol s;
@@ -531,6 +537,7 @@ void Parser::call_macro(const Macro& m, const FileLoc& cloc) {
         args[m.params[i]] = std::move(s);
     }
     declare_frame_ = saved;
+    pending_declare_frame_ = saved_pending;
     const Token& t = next();
     if (!t.is_symbol(')'))
         fail("expected ')' after the " + std::to_string(m.params.size()) + " argument(s) of macro '" +

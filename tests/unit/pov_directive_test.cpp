@@ -93,6 +93,14 @@ TEST(PovDirective, StringDeclareNeedsNoSemicolon) {
     EXPECT_EQ(radius(s, 0), 4);
 }
 
+TEST(PovDirective, DeclaredValueMayStartWithADirective) {
+    auto s = parse("#declare S =\n#ifdef (Nope) sphere { 0, 1 } #else sphere { 0, 2 } #end\n"
+                   "object { S }\n#declare N = #if (1) 3 #else 4 #end;\nsphere { 0, N }");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_EQ(radius(s, 0), 2);
+    EXPECT_EQ(radius(s, 1), 3);
+}
+
 TEST(PovDirective, UndefVersionDebugDefault) {
     Diagnostics diag;
     auto s = parse_string(

@@ -112,7 +112,7 @@ TEST(PovObjects, Shapes) {
 }
 
 TEST(PovObjects, CommasBetweenVectorsAreOptional) {
-    auto s = parse("box { <-1, -2, -3> <1, 2, 3> }\ncylinder { <0, 0, 0> <0, 2, 0> 0.5 }");
+    auto s = parse("box { <-1, -2, -3> <1, 2, 3> }\ncylinder { <0 0 0> <0 2 0> 0.5 }");
     EXPECT_EQ(shape<scene::Box>(s, 0).corner1, Vec3(-1, -2, -3));
     EXPECT_EQ(shape<scene::Box>(s, 0).corner2, Vec3(1, 2, 3));
     EXPECT_EQ(shape<scene::Cylinder>(s, 1).radius, 0.5);
@@ -286,6 +286,8 @@ TEST(PovMaterials, UnsupportedFeaturesSaySo) {
     EXPECT_EQ(error_of("sphere { 0, 1 finish { irid { 0.3 } } }"),
               "1:24: finish 'irid' is not supported yet");
     EXPECT_EQ(error_of("blob { }"), "1:1: the 'blob' object is not supported yet");
+    EXPECT_EQ(error_of("sphere { 0, 1 texture { checker texture { } texture { } } }"),
+              "1:25: a patterned texture ('checker' in a texture) is not supported yet");
 }
 
 TEST(PovScene, GlobalSettingsBackgroundSky) {

@@ -56,6 +56,12 @@ TEST(PovScanner, DirectiveWithSpaceAfterHash) {
     EXPECT_EQ(t[0].text, "debug");
 }
 
+TEST(PovScanner, LoneHashAtLineEndIsSkipped) {
+    auto t = toks("a #\nb");
+    ASSERT_EQ(t.size(), 3u);
+    EXPECT_EQ(t[1].text, "b");
+}
+
 TEST(PovScanner, ComponentAccessIsDotThenWord) {
     auto t = toks("V.x 1.5 .25");
     EXPECT_TRUE(t[1].is_symbol('.'));
