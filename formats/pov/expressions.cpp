@@ -275,7 +275,11 @@ public:
             const Token& t = p_.next();
             if (t.is(">")) break;
             // POV-Ray's Parse_Comma: the comma between components is optional.
-            if (!t.is(",")) p_.unget();
+            if (!t.is(",")) {
+                p_.unget();
+                if (!p_.next_is_expression_start())
+                    p_.fail("expected ',' or '>' in the vector, got " + p_.got(p_.next()));
+            }
         }
         --vector_depth_;
         if (n.terms < 2) p_.fail("a vector needs at least 2 components");

@@ -325,6 +325,8 @@ TEST(PovErrors, PlacesAndWording) {
     EXPECT_EQ(error_of("sphere { 0, 1 pigment { rgb 1 }\nfoo }"),
               "2:1: expected an object modifier or '}' to close the sphere opened at 1:8, got 'foo'");
     EXPECT_EQ(error_of("spere { 0, 1 }"), "1:1: unknown keyword or identifier 'spere'");
+    EXPECT_EQ(error_of("sphere { <1, 2, 1 pigment { rgb 1 } }"),
+              "1:19: expected ',' or '>' in the vector, got 'pigment'");
     EXPECT_EQ(error_of("#declare S = sphere { 0, 1 }\nS"),
               "2:1: an identifier cannot stand alone here: write object { S } (or camera { ... }) , got 'S'");
     EXPECT_EQ(error_of("sphere { 0, 1 texture { T } }"),
