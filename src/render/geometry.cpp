@@ -3,6 +3,7 @@
 #include "render/geometry.h"
 
 #include <climits>
+#include <cmath>
 #include <vector>
 
 #include "render/accel/bvh.h"
@@ -26,6 +27,8 @@ public:
     }
 
     bool intersect(const Ray& ray, Hit* hit) const override {
+        // A non-finite ray (a bug upstream) hits nothing rather than spreading NaN.
+        if (!valid(ray)) return false;
         LocalHit best;
         int best_i = INT_MAX;
         // Equal t: the lower object index wins, so the result does not depend on the order in
@@ -51,6 +54,7 @@ public:
     }
 
     bool occluded(const Ray& ray) const override {
+        if (!valid(ray)) return false;
         auto visit = [&](int i, double&) { return nodes_[i]->occludes(ray, ray.tmax); };
         double tmax = ray.tmax;
         if (bvh_.traverse(ray, tmax, visit)) return true;
@@ -62,6 +66,11 @@ public:
     Bounds3 bounds() const override { return bounds_; }
 
 private:
+    static bool valid(const Ray& ray) {
+        return is_finite(ray.origin) && is_finite(ray.dir) && !std::isnan(ray.tmax) &&
+               length_squared(ray.dir) > 0;
+    }
+
     static void to_hit(const LocalHit& h, int id, Hit* hit) {
         hit->t = h.t;
         hit->p = h.p;

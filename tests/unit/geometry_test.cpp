@@ -110,6 +110,19 @@ TEST(Geometry, NoShadowObjectsDoNotOcclude) {
     EXPECT_FALSE(g->occluded(ray({0, 0, -5}, {0, 0, 1})));
 }
 
+TEST(Geometry, DegenerateRaysHitNothing) {
+    auto g = test::build(scene_of({object(scene::Box{{-1, -1, -1}, {1, 1, 1}}),
+                                   object(scene::Plane{{0, 1, 0}, -2})}));
+    const double nan = std::nan("");
+    Hit h;
+    EXPECT_FALSE(g->intersect(ray({nan, 0, -5}, {0, 0, 1}), &h));
+    EXPECT_FALSE(g->intersect(ray({0, 0, -5}, {0, nan, 1}), &h));
+    EXPECT_FALSE(g->intersect(ray({0, 0, -5}, {0, 0, 0}), &h));
+    EXPECT_FALSE(g->intersect(ray({0, kInfinity, -5}, {0, 0, 1}), &h));
+    EXPECT_FALSE(g->occluded(ray({nan, 0, -5}, {0, 0, 1})));
+    EXPECT_TRUE(g->intersect(ray({0, 0, -5}, {0, 0, 1}), &h));
+}
+
 TEST(Geometry, EmptySceneHitsNothing) {
     auto g = build(scene_of({}));
     Hit h;
