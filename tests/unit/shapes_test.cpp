@@ -331,7 +331,9 @@ TEST(Quadrics, RandomHitsLieOnTheSurface) {
                 double rad = std::sqrt(p.x * p.x + p.z * p.z);
                 bool on_cap = std::fabs(std::fabs(p.y) - s) <= 1e-12 * s;
                 double want = 0.8 * s - 0.3 * (p.y + s);
-                if (!on_cap) ASSERT_NEAR(rad, want, 1e-12 * s);
+                if (!on_cap) {
+                    ASSERT_NEAR(rad, want, 1e-12 * s);
+                }
                 ASSERT_LE(length(wr.origin + wr.dir * h.t - p), 1e-9 * s);
             }
         }
@@ -386,8 +388,9 @@ TEST(Triangle, GrazingAndEdgeOn) {
                 }
             }
             // In the plane itself (dz = 0): edge-on, no hit and no NaN.
-            if (dz == 0) EXPECT_FALSE(render::intersect_triangle(s, p[0], p[1], p[2],
-                                                                  kInfinity, &th));
+            if (dz == 0) {
+                EXPECT_FALSE(render::intersect_triangle(s, p[0], p[1], p[2], kInfinity, &th));
+            }
         }
     }
     EXPECT_GT(hits, 0);
@@ -421,6 +424,56 @@ TEST(Triangle, WatertightFan) {
         if (!prim->intersect(ray(o, target - o), kInfinity, &h)) ++leaks;
     }
     EXPECT_EQ(leaks, 0);
+}
+
+// VALIDATION.md case 4: rays from inside a closed mesh aimed exactly at its vertices and edges
+// never leak out.
+TEST(Mesh, ClosedMeshDoesNotLeakAtVerticesAndEdges) {
+    // A UV sphere closed by pole vertices, slightly irregular so edges are not axis-aligned.
+    const int n = 24;
+    scene::Mesh m;
+    m.positions.push_back({0, 1, 0});
+    for (int i = 1; i < n; ++i)
+        for (int j = 0; j < 2 * n; ++j) {
+            double th = kPi * i / n, ph = kPi * j / n + 0.01 * i;
+            double r = 1 + 0.03 * std::sin(3 * ph + i);
+            m.positions.push_back({r * std::sin(th) * std::cos(ph), r * std::cos(th),
+                                   r * std::sin(th) * std::sin(ph)});
+        }
+    m.positions.push_back({0, -1, 0});
+    auto ring = [&](int i, int j) { return 1 + (i - 1) * 2 * n + (j % (2 * n)); };
+    auto add = [&](int a, int b, int c) {
+        scene::MeshFace f;
+        f.v = {a, b, c};
+        m.faces.push_back(f);
+    };
+    int south = static_cast<int>(m.positions.size()) - 1;
+    for (int j = 0; j < 2 * n; ++j) {
+        add(0, ring(1, j + 1), ring(1, j));
+        add(south, ring(n - 1, j), ring(n - 1, j + 1));
+        for (int i = 1; i < n - 1; ++i) {
+            add(ring(i, j), ring(i, j + 1), ring(i + 1, j + 1));
+            add(ring(i, j), ring(i + 1, j + 1), ring(i + 1, j));
+        }
+    }
+    Diagnostics diag;
+    auto prim = render::make_mesh(m, diag);
+    ASSERT_TRUE(prim);
+    std::mt19937_64 rng(44);
+    std::uniform_real_distribution<double> u(-0.3, 0.3);
+    std::uniform_int_distribution<size_t> pick(0, m.faces.size() - 1);
+    int leaks = 0, rays = 0;
+    for (int i = 0; i < 100000; ++i) {
+        const scene::MeshFace& f = m.faces[pick(rng)];
+        Vec3 a = m.positions[f.v[0]], b = m.positions[f.v[1]];
+        Vec3 target = (i % 2) ? a : a + (b - a) * 0.5;  // a vertex or an edge midpoint
+        if (i % 4 == 3) target = a + (b - a) * 0.37;
+        Vec3 o(u(rng), u(rng), u(rng));
+        LocalHit h;
+        ++rays;
+        if (!prim->intersect(ray(o, target - o), kInfinity, &h)) ++leaks;
+    }
+    EXPECT_EQ(leaks, 0) << "of " << rays;
 }
 
 // ---- meshes ------------------------------------------------------------------------------
