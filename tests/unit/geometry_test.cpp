@@ -207,6 +207,31 @@ TEST(Geometry, GrazingGroundPlaneHasNoAcne) {
     }
 }
 
+// p_error bounds the hit point's distance to the true surface (measured in long double).
+TEST(Geometry, ErrorBoundCoversTrueSurfaceDistance) {
+    std::mt19937_64 rng(31);
+    std::normal_distribution<double> nd;
+    int checked = 0, violations = 0;
+    for (double scale : {1e-4, 1.0, 1e4}) {
+        Vec3 c = Vec3(1e5, -3e4, 7e4) * (scale >= 1 ? 1.0 : 1e-3);
+        double r = 1.7 * scale;
+        auto g = build_one(scene::Sphere{c, r});
+        for (int i = 0; i < 2000; ++i) {
+            Vec3 o = c + normalize(Vec3(nd(rng), nd(rng), nd(rng))) * (10 * r);
+            Vec3 t = c + Vec3(nd(rng), nd(rng), nd(rng)) * (0.3 * r);
+            Hit h;
+            if (!g->intersect(ray(o, t - o), &h)) continue;
+            ++checked;
+            long double dx = (long double)h.p.x - c.x, dy = (long double)h.p.y - c.y,
+                        dz = (long double)h.p.z - c.z;
+            long double dist = std::fabs(std::sqrt(dx * dx + dy * dy + dz * dz) - r);
+            if (dist > dot(abs(h.ng), h.p_error)) ++violations;
+        }
+    }
+    EXPECT_GT(checked, 3000);
+    EXPECT_EQ(violations, 0);
+}
+
 TEST(Geometry, NoSelfIntersectionAtAnyScale) {
     std::vector<AcneCase> cases = {
         {"sphere", scene::Sphere{{0.1, 0.2, 0.3}, 1}, true, false},
