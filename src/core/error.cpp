@@ -21,12 +21,19 @@ bool read_line(const std::string& path, int line, std::string* out) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return false;
     std::string text;
-    for (int i = 1; std::getline(in, text); ++i) {
+    int i = 1;
+    for (; std::getline(in, text); ++i) {
         if (i == line) {
             if (!text.empty() && text.back() == '\r') text.pop_back();
             *out = text;
             return true;
         }
+    }
+    // A location at the end of a file that ends with a newline (an unclosed brace, say) is on
+    // the empty line after the last one: show it as empty so the caret still appears.
+    if (line == i) {
+        out->clear();
+        return true;
     }
     return false;
 }
