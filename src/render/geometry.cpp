@@ -77,7 +77,7 @@ private:
         hit->p_error = h.p_error;
         hit->ng = h.ng;
         hit->n = h.n;
-        hit->uv = h.uv;
+        hit->uv = h.uv_source ? h.uv_source->uv_at(h.uv_point) : h.uv;
         hit->has_uv = h.has_uv;
         hit->material = h.material;
         hit->flags = h.flags;

@@ -247,6 +247,10 @@ TEST(Torus, TopOfTubeAndScaledDirection) {
     ASSERT_TRUE(g->intersect(ray({0, 5, 2}, {0, -3, 0}), &h));
     EXPECT_NEAR(h.t, 1.5, 1e-14);
     expect_vec(h.ng, {0, 1, 0}, 1e-13);
+    // POV-Ray's torus uv: u from the angle around y, v around the tube.
+    EXPECT_TRUE(h.has_uv);
+    EXPECT_NEAR(h.uv.x, 0.25, 1e-12);
+    EXPECT_NEAR(h.uv.y, 0.75, 1e-12);
 }
 
 // Near-tangent rays over the top of the tube (y -> 0.5 from below) must keep both hits: the

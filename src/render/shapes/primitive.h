@@ -23,6 +23,10 @@ struct LocalHit {
     Vec3 n;        // shading normal, unit, same side as ng
     Vec2 uv;
     bool has_uv = false;
+    // uv that needs trigonometry is computed once, for the final hit only: the primitive and
+    // the object-space point it needs (uv_source->uv_at(uv_point)).
+    const class Primitive* uv_source = nullptr;
+    Vec3 uv_point;
     int material = -1;   // -1: inherit from the enclosing object
     uint32_t flags = 0;  // ObjectFlags accumulated on the way up
 };
@@ -86,6 +90,8 @@ public:
         LocalHit h;
         return intersect(ray, tmax, &h);
     }
+    // Deferred uv (see LocalHit::uv_source).
+    virtual Vec2 uv_at(const Vec3&) const { return {}; }
     // POV-Ray's inside test (CSG); shapes without an inside (triangles, discs) return false.
     virtual bool inside(const Vec3& p) const = 0;
 };

@@ -86,13 +86,14 @@ private:
         h->p_error = rounding_error(pl, 5) + rounding_error(h->p, 1);
         h->ng = len > 0 ? pl / r_ : Vec3(0, 1, 0);
         h->n = h->ng;
-        h->uv = uv(h->ng);
+        h->uv_source = this;
+        h->uv_point = h->ng;
         h->has_uv = true;
     }
 
     // POV-Ray's sphere uv_mapping (spheres.cpp, Sphere::UVCoord): u is the angle around y
-    // measured from +x towards +z, v the latitude, both in [0, 1].
-    static Vec2 uv(const Vec3& n) {
+    // measured from +x towards +z, v the latitude, both in [0, 1]. `n`: the unit normal.
+    Vec2 uv_at(const Vec3& n) const override {
         double v = 0.5 + std::asin(std::clamp(n.y, -1.0, 1.0)) / kPi;
         double u = 0;
         double len = n.x * n.x + n.z * n.z;

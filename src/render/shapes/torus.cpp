@@ -141,10 +141,16 @@ private:
         h->p_error = rounding_error(p, 6) + Vec3(gamma(6) * rb_);
         h->ng = lv > 0 ? v / r_ : Vec3(0, 1, 0);
         h->n = h->ng;
-        // POV-Ray's torus uv_mapping (torus.cpp, Torus::CalcUV).
-        h->uv.x = 1.0 - (std::atan2(p.z, p.x) + kPi) / (2 * kPi);
-        h->uv.y = (std::atan2(p.y, w - R_) + kPi) / (2 * kPi);
+        h->uv_source = this;
+        h->uv_point = p;
         h->has_uv = true;
+    }
+
+    // POV-Ray's torus uv_mapping (torus.cpp, Torus::CalcUV).
+    Vec2 uv_at(const Vec3& p) const override {
+        double w = std::sqrt(p.x * p.x + p.z * p.z);
+        return {1.0 - (std::atan2(p.z, p.x) + kPi) / (2 * kPi),
+                (std::atan2(p.y, w - R_) + kPi) / (2 * kPi)};
     }
 
     double R_, r_, rb_;
