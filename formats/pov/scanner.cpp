@@ -1,6 +1,7 @@
 #include "formats/pov/scanner.h"
 
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 
 namespace glint::pov {
@@ -130,6 +131,10 @@ private:
         t.kind = TokKind::Number;
         t.text.assign(s_, b, i_ - b);
         t.number = std::strtod(t.text.c_str(), nullptr);
+        // strtod turns a too-large literal into infinity; letting that through would poison
+        // every value computed from it (and the image), so the literal itself is the error.
+        if (!std::isfinite(t.number))
+            fail(t.line, t.column, "number '" + t.text + "' is out of range");
     }
 
     void scan_string(Token& t) {

@@ -87,5 +87,13 @@ TEST(PovScanner, Errors) {
     EXPECT_EQ(scan_error("# 3"), "t.pov:1:1: expected a directive name after '#'");
 }
 
+// A literal strtod turns into infinity must not reach the scene (it would end as NaN pixels).
+TEST(PovScanner, OverflowingLiteralIsAnErrorAtTheLiteral) {
+    EXPECT_EQ(scan_error("x = 1e400;"), "t.pov:1:5: number '1e400' is out of range");
+    EXPECT_EQ(scan_error("a\n  2.5E+999"), "t.pov:2:3: number '2.5E+999' is out of range");
+    EXPECT_DOUBLE_EQ(toks("1e300")[0].number, 1e300) << "large but finite is fine";
+    EXPECT_DOUBLE_EQ(toks("1e-400")[0].number, 0) << "underflow to zero is not an error";
+}
+
 }  // namespace
 }  // namespace glint::pov
