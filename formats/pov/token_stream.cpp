@@ -455,11 +455,16 @@ void Parser::handle_include(const FileLoc& dloc) {
     for (const auto& d : options.include_dirs) dirs.push_back({d, true});
     std::string found;
     bool system = false;
+    // A folder with the include's name is remembered so the error can say so: "cannot find"
+    // would send the user looking for a file that is, in a sense, right there.
+    bool saw_folder = false;
     if (fs::path(name).is_absolute()) {
         if (fs::is_regular_file(name)) found = name;
+        saw_folder = fs::is_directory(name);
     } else {
         for (const auto& [dir, sys] : dirs) {
             fs::path p = fs::path(dir) / name;
+            saw_folder = saw_folder || fs::is_directory(p);
             if (fs::is_regular_file(p)) {
                 found = p.lexically_normal().string();
                 // A folder the user lists that is the scene's own folder is not "system".
@@ -468,6 +473,8 @@ void Parser::handle_include(const FileLoc& dloc) {
             }
         }
     }
+    if (found.empty() && saw_folder)
+        throw Error(ErrorKind::MissingFile, sloc, "'" + name + "' is a folder, not a file");
     if (found.empty())
         throw Error(ErrorKind::MissingFile, sloc, "cannot find include file '" + name + "'");
     int idx = load_file(found, system, sloc);

@@ -216,6 +216,25 @@ TEST_F(PovIncludeTest, StandardIncludeSkipsUnsupportedDeclarations) {
     }
 }
 
+
+TEST_F(PovIncludeTest, IncludeNamingAFolderSaysSo) {
+    fs::create_directories(root / "scene" / "parts.inc");
+    try {
+        parse_scene("#include \"parts.inc\"\n");
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::MissingFile);
+        EXPECT_EQ(e.loc().line, 1);
+        EXPECT_EQ(e.loc().column, 10);
+        EXPECT_STREQ(e.what(), "'parts.inc' is a folder, not a file");
+    }
+    // A real file further along the search path still wins over the folder.
+    write(root / "sys" / "parts.inc", "#declare Size = 3;\n");
+    auto s = parse_scene("#include \"parts.inc\"\nsphere { 0, Size }\n");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(radius(s, 0), 3);
+}
+
 TEST_F(PovIncludeTest, SceneOwnFilesAreStrict) {
     write(root / "scene" / "mine.inc", "#declare Bad = pigment { bozo }\n");
     try {
