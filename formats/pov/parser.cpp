@@ -270,6 +270,29 @@ void Parser::finish_version() {
                                 "(POV-Ray 3.7 does the same)");
 }
 
+void Parser::run_statements() {
+    try {
+        parse_statements(*this);
+    } catch (Error& e) {
+        // The frames are still those of the moment of the throw. An error that already has a
+        // note (raised deeper, e.g. a "declared here") keeps it: the innermost note is the
+        // more specific one.
+        if (e.note().empty()) {
+            for (size_t k = frames_.size(); k-- > 0;) {
+                const Frame& f = frames_[k];
+                if (!f.is_macro) continue;
+                const FileLoc& c = f.call_loc;
+                // "the macro called here has no #end" already points at the call.
+                bool same = c.filename() == e.loc().filename() && c.line == e.loc().line &&
+                            c.column == e.loc().column;
+                if (!same) e.with_note(c, "in macro '" + f.macro_name + "' called here");
+                break;
+            }
+        }
+        throw;
+    }
+}
+
 scene::Scene Parser::parse_main_file(const std::string& path) {
     if (!fs::is_regular_file(path))
         throw Error(ErrorKind::MissingFile, FileLoc{std::make_shared<const std::string>(path), 0, 0},
@@ -279,7 +302,7 @@ scene::Scene Parser::parse_main_file(const std::string& path) {
     int idx = load_file(path, false, FileLoc{});
     frames_.push_back(Frame{idx, 0});
     cur_file_ = idx;
-    parse_statements(*this);
+    run_statements();
     finish_version();
     return std::move(scene);
 }
@@ -291,7 +314,7 @@ scene::Scene Parser::parse_main_string(const std::string& text, const std::strin
     scene.source_files.push_back(name);
     frames_.push_back(Frame{idx, 0});
     cur_file_ = idx;
-    parse_statements(*this);
+    run_statements();
     finish_version();
     return std::move(scene);
 }

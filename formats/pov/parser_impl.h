@@ -60,6 +60,7 @@ struct Frame {
     bool pushed_scope = false;
     std::vector<Cond> conds;
     FileLoc call_loc;  // macro call or #include
+    std::string macro_name;  // is_macro: for the "in macro 'Name' called here" note
 };
 
 // Pattern transforms map pattern space to world, so later transforms compose after them;
@@ -161,6 +162,10 @@ public:
     Value parse_rvalue();
     void parse_default();
     void finish_version();
+    // Runs the statements of the main file; an error raised inside a macro body gets a note
+    // at the innermost macro's call site, since the body's text alone does not say which of
+    // several calls (with which arguments) went wrong.
+    void run_statements();
 
     const ParseOptions& options;
     Diagnostics& diag;

@@ -556,6 +556,7 @@ void Parser::call_macro(const Macro& m, const FileLoc& cloc) {
     f.is_macro = true;
     f.pushed_scope = true;
     f.call_loc = cloc;
+    f.macro_name = m.name;
     frames_.push_back(std::move(f));
     ++macro_depth_;
 }

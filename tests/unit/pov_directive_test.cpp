@@ -153,6 +153,46 @@ TEST(PovDirective, Errors) {
               "1:13: macro calls nested deeper than 256 (runaway recursion?)");
 }
 
+// The body's text alone does not say which call failed: the note names the call site.
+TEST(PovDirective, ErrorInMacroBodyNotesTheCallSite) {
+    const std::string text =
+        "#macro Ball(R)\n  sphere { 0, R * Missing }\n#end\n"
+        "#macro Outer() Ball(2) #end\n"
+        "sphere { 0, 1 }\n  Ball(1)\n";
+    try {
+        parse(text);
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.loc().line, 2);
+        EXPECT_EQ(e.loc().column, 19);
+        EXPECT_STREQ(e.what(), "unknown identifier 'Missing'");
+        EXPECT_EQ(e.note(), "in macro 'Ball' called here");
+        EXPECT_EQ(e.note_loc().line, 6);
+        EXPECT_EQ(e.note_loc().column, 3);
+        std::string shown = format_error(e);
+        EXPECT_NE(shown.find("test.pov:6:3: note: in macro 'Ball' called here"),
+                  std::string::npos)
+            << shown;
+    }
+    // Nested calls: the innermost macro's call (inside Outer's body) is the one named.
+    try {
+        parse(text.substr(0, text.find("sphere { 0, 1 }")) + "Outer()\n");
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.note(), "in macro 'Ball' called here");
+        EXPECT_EQ(e.note_loc().line, 4);
+        EXPECT_EQ(e.note_loc().column, 16);
+    }
+    // An error outside any macro body has no note; one after a call returned neither.
+    try {
+        parse("#macro M() 1 #end\n#declare X = M() + Nope;\n");
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "unknown identifier 'Nope'");
+        EXPECT_TRUE(e.note().empty()) << e.note();
+    }
+}
+
 class PovIncludeTest : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -216,6 +256,18 @@ TEST_F(PovIncludeTest, StandardIncludeSkipsUnsupportedDeclarations) {
     }
 }
 
+// A note made deeper (where the skipped declaration is) is more specific than the macro's.
+TEST_F(PovIncludeTest, MacroCallDoesNotReplaceAnExistingNote) {
+    write(root / "sys" / "std.inc", "#declare Good = 1;\n#declare Bad = pigment { bozo }\n");
+    try {
+        parse_scene("#include \"std.inc\"\n#macro M() sphere { 0, 1 pigment { Bad } } #end\nM()\n");
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("'Bad' cannot be used"), std::string::npos);
+        EXPECT_NE(e.note_loc().filename().find("std.inc"), std::string::npos);
+        EXPECT_EQ(e.note_loc().line, 2);
+    }
+}
 
 TEST_F(PovIncludeTest, IncludeNamingAFolderSaysSo) {
     fs::create_directories(root / "scene" / "parts.inc");
