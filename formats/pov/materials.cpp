@@ -358,6 +358,23 @@ void Parser::parse_image_map_body(scene::ImageMap& im) {
 
 // ---------------------------------------------------------------- finish, normal, interior
 
+template <class T>
+bool Parser::take_body_identifier(const Token& t, bool first, const char* article,
+                                  const char* noun, T& out, bool quote_name) {
+    if (t.kind != TokKind::Word || !lookup(t.text)) return false;
+    const Symbol& s = use_symbol(t);
+    const std::string kind = std::string(article) + " " + noun;
+    auto v = std::get_if<T>(&s.value);
+    if (!v)
+        fail("expected " + kind + ", got " + value_kind_name(s.value) +
+             (quote_name ? " '" + t.text + "'" : std::string()));
+    // POV-Ray reads the identifier only right after the brace (later items modify the copy);
+    // anywhere else it is a syntax error there too.
+    if (!first) fail(kind + " identifier must come first in the " + noun);
+    out = *v;
+    return true;
+}
+
 void Parser::parse_finish_body(scene::Finish& f) {
     bool first = true;
     if (!f.loc.valid()) f.loc = loc();
@@ -367,14 +384,7 @@ void Parser::parse_finish_body(scene::Finish& f) {
             unget();
             return;
         }
-        if (t.kind == TokKind::Word && lookup(t.text)) {
-            const Symbol& s = use_symbol(t);
-            auto fi = std::get_if<scene::Finish>(&s.value);
-            if (!fi) fail("expected a finish, got " + value_kind_name(s.value) + " '" + t.text + "'");
-            if (!first) fail("a finish identifier must come first in the finish");
-            f = *fi;
-            continue;
-        }
+        if (take_body_identifier(t, first, "a", "finish", f)) continue;
         const std::string w = t.kind == TokKind::Word ? t.text : std::string();
         if (w == "ambient") {
             f.ambient = parse_rgb();
@@ -455,14 +465,7 @@ void Parser::parse_normal_body(scene::Normal& n) {
             unget();
             return;
         }
-        if (t.kind == TokKind::Word && lookup(t.text)) {
-            const Symbol& s = use_symbol(t);
-            auto nn = std::get_if<scene::Normal>(&s.value);
-            if (!nn) fail("expected a normal, got " + value_kind_name(s.value) + " '" + t.text + "'");
-            if (!first) fail("a normal identifier must come first in the normal");
-            n = *nn;
-            continue;
-        }
+        if (take_body_identifier(t, first, "a", "normal", n)) continue;
         unget();
         Transform tr = n.transform;
         if (parse_transform_item(tr)) {
@@ -484,14 +487,7 @@ void Parser::parse_interior_body(scene::Interior& in) {
             unget();
             return;
         }
-        if (t.kind == TokKind::Word && lookup(t.text)) {
-            const Symbol& s = use_symbol(t);
-            auto ii = std::get_if<scene::Interior>(&s.value);
-            if (!ii) fail("expected an interior, got " + value_kind_name(s.value));
-            if (!first) fail("an interior identifier must come first in the interior");
-            in = *ii;
-            continue;
-        }
+        if (take_body_identifier(t, first, "an", "interior", in, false)) continue;
         const std::string w = t.kind == TokKind::Word ? t.text : std::string();
         if (w == "ior") in.ior = parse_float();
         else if (w == "dispersion") in.dispersion = parse_float();
@@ -517,14 +513,7 @@ scene::Texture Parser::parse_texture_body() {
             unget();
             return tex;
         }
-        if (t.kind == TokKind::Word && lookup(t.text)) {
-            const Symbol& s = use_symbol(t);
-            auto tx = std::get_if<scene::Texture>(&s.value);
-            if (!tx) fail("expected a texture, got " + value_kind_name(s.value) + " '" + t.text + "'");
-            if (!first) fail("a texture identifier must come first in the texture");
-            tex = *tx;
-            continue;
-        }
+        if (take_body_identifier(t, first, "a", "texture", tex)) continue;
         const std::string w = t.kind == TokKind::Word ? t.text : std::string();
         if (w == "pigment") {
             expect_open("pigment");

@@ -336,5 +336,37 @@ TEST(PovErrors, PlacesAndWording) {
               "2:10: expected an object identifier, got a color 'C'");
 }
 
+// finish, normal, interior and texture bodies share one rule: an identifier of the body's own
+// type may only be the first item, and an identifier of another type is named in the error.
+TEST(PovErrors, BodyIdentifierMustComeFirstAndHaveTheRightType) {
+    const std::string decls =
+        "#declare F = finish { ambient 0.3 }\n#declare I = interior { ior 1.5 }\n"
+        "#declare T = texture { finish { F } }\n#declare C = rgb 1;\n";
+    EXPECT_EQ(error_of(decls + "sphere { 0, 1 finish { diffuse 0.5 F } }"),
+              "5:36: a finish identifier must come first in the finish");
+    EXPECT_EQ(error_of(decls + "sphere { 0, 1 finish { C } }"),
+              "5:24: expected a finish, got a color 'C'");
+    EXPECT_EQ(error_of(decls + "sphere { 0, 1 interior { ior 1.2 I } }"),
+              "5:34: an interior identifier must come first in the interior");
+    EXPECT_EQ(error_of(decls + "sphere { 0, 1 interior { F } }"),
+              "5:26: expected an interior, got a finish");
+    EXPECT_EQ(error_of(decls + "sphere { 0, 1 texture { finish { F } T } }"),
+              "5:38: a texture identifier must come first in the texture");
+    EXPECT_EQ(error_of(decls + "sphere { 0, 1 texture { I } }"),
+              "5:25: expected a texture, got an interior 'I'");
+    EXPECT_EQ(error_of(decls + "#declare N = normal { scale 2 }\n"
+                               "sphere { 0, 1 normal { scale 1 N } }"),
+              "6:32: a normal identifier must come first in the normal");
+    EXPECT_EQ(error_of(decls + "sphere { 0, 1 normal { F } }"),
+              "5:24: expected a normal, got a finish 'F'");
+    // First is fine: the identifier is copied, later items change the copy.
+    auto s = parse(decls + "sphere { 0, 1 finish { F diffuse 0.5 } interior { I fade_power 2 } }");
+    const auto& m = s.materials[s.objects[0].material];
+    EXPECT_EQ(m.texture.finish.ambient, Color(0.3, 0.3, 0.3));
+    EXPECT_EQ(m.texture.finish.diffuse, 0.5);
+    EXPECT_EQ(m.interior.ior, 1.5);
+    EXPECT_EQ(m.interior.fade_power, 2);
+}
+
 }  // namespace
 }  // namespace glint::pov
