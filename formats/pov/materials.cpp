@@ -360,14 +360,13 @@ void Parser::parse_image_map_body(scene::ImageMap& im) {
 
 template <class T>
 bool Parser::take_body_identifier(const Token& t, bool first, const char* article,
-                                  const char* noun, T& out, bool quote_name) {
+                                  const char* noun, T& out) {
     if (t.kind != TokKind::Word || !lookup(t.text)) return false;
     const Symbol& s = use_symbol(t);
     const std::string kind = std::string(article) + " " + noun;
     auto v = std::get_if<T>(&s.value);
     if (!v)
-        fail("expected " + kind + ", got " + value_kind_name(s.value) +
-             (quote_name ? " '" + t.text + "'" : std::string()));
+        fail("expected " + kind + ", got " + value_kind_name(s.value) + " '" + t.text + "'");
     // POV-Ray reads the identifier only right after the brace (later items modify the copy);
     // anywhere else it is a syntax error there too.
     if (!first) fail(kind + " identifier must come first in the " + noun);
@@ -487,7 +486,7 @@ void Parser::parse_interior_body(scene::Interior& in) {
             unget();
             return;
         }
-        if (take_body_identifier(t, first, "an", "interior", in, false)) continue;
+        if (take_body_identifier(t, first, "an", "interior", in)) continue;
         const std::string w = t.kind == TokKind::Word ? t.text : std::string();
         if (w == "ior") in.ior = parse_float();
         else if (w == "dispersion") in.dispersion = parse_float();

@@ -136,10 +136,10 @@ public:
     MaterialValue parse_material_body();
     // `finish { F_Shiny ... }`: when `t` names a symbol, copies it into `out` and returns
     // true; throws if it holds another type ("expected a finish, got ...") or is not the
-    // body's first item. `quote_name` adds the identifier to the type error.
+    // body's first item.
     template <class T>
     bool take_body_identifier(const Token& t, bool first, const char* article, const char* noun,
-                              T& out, bool quote_name = true);
+                              T& out);
     std::vector<scene::ColorMapEntry> parse_color_map_body();
     void parse_image_map_body(scene::ImageMap& im);
     // A transform keyword (translate/rotate/scale/matrix/transform) if the next token is one.

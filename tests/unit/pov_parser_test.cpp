@@ -349,7 +349,7 @@ TEST(PovErrors, BodyIdentifierMustComeFirstAndHaveTheRightType) {
     EXPECT_EQ(error_of(decls + "sphere { 0, 1 interior { ior 1.2 I } }"),
               "5:34: an interior identifier must come first in the interior");
     EXPECT_EQ(error_of(decls + "sphere { 0, 1 interior { F } }"),
-              "5:26: expected an interior, got a finish");
+              "5:26: expected an interior, got a finish 'F'");
     EXPECT_EQ(error_of(decls + "sphere { 0, 1 texture { finish { F } T } }"),
               "5:38: a texture identifier must come first in the texture");
     EXPECT_EQ(error_of(decls + "sphere { 0, 1 texture { I } }"),
