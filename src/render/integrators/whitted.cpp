@@ -196,15 +196,8 @@ Color Whitted::shade(const Ray& ray, const Hit& hit, double weight, const RaySta
                                       relative_ior(state, hit.object, mat.interior.ior),
                                       &refl_weight)
                        : Color();
-    if (f.reflect_metallic != 0.0) {
-        double x = std::fabs(std::acos(std::clamp(cos_incidence, -1.0, 1.0))) / (kPi / 2);
-        double fr = std::min(1.0, std::max(0.0, 0.014567225 / ((x - 1.12) * (x - 1.12)) -
-                                                    0.011612903));
-        double k = f.reflect_metallic * (1.0 - fr);
-        reflec = Color(reflec.r * (1.0 + k * (pig.rgb.r - 1.0)),
-                       reflec.g * (1.0 + k * (pig.rgb.g - 1.0)),
-                       reflec.b * (1.0 + k * (pig.rgb.b - 1.0)));
-    }
+    if (f.reflect_metallic != 0.0)
+        reflec = metallic_tint(f.reflect_metallic, cos_incidence, pig.rgb, reflec);
     // The layer's own brightness is reduced by its transparency; 3.6 scenes keep the old
     // (bogus, but compatible) formula.
     double att = legacy_ ? 1.0 - (pig.filter * pig.rgb.max() + pig.transmit)

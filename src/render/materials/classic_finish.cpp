@@ -7,13 +7,6 @@ namespace {
 
 constexpr double kPovEpsilon = 1.0e-10;
 
-// Tints light by the surface color for metallic highlights (trace.cpp ComputePhongColour).
-Color metallic_tint(double metallic, const Vec3& n, const Vec3& to_light, const Color& pigment,
-                    const Color& light) {
-    double f = metallic_fresnel(dot(n, to_light));
-    return light * (Color(1.0) + (pigment - Color(1.0)) * (metallic * (1.0 - f)));
-}
-
 }  // namespace
 
 ClassicFinish::ClassicFinish(const scene::Finish& f)
@@ -41,6 +34,11 @@ double metallic_fresnel(double cos_angle) {
     return std::min(1.0, std::max(0.0, f));
 }
 
+Color metallic_tint(double metallic, double cos_angle, const Color& pigment, const Color& light) {
+    double f = metallic_fresnel(cos_angle);
+    return light * (Color(1.0) + (pigment - Color(1.0)) * (metallic * (1.0 - f)));
+}
+
 Color diffuse_term(const ClassicFinish& f, const Vec3& n, const Vec3& to_light,
                    const Color& pigment, const Color& light, double attenuation) {
     if (f.diffuse <= 0.0) return Color();
@@ -58,7 +56,8 @@ Color phong_term(const ClassicFinish& f, const Vec3& n, const Vec3& to_light, co
     // "rgs": tiny cosines are dropped for large exponents.
     double intensity = (f.phong_size < 60 || c > 0.0008) ? f.phong * std::pow(c, f.phong_size)
                                                           : 0.0;
-    if (f.metallic > 0.0) return metallic_tint(f.metallic, n, to_light, pigment, light) * intensity;
+    if (f.metallic > 0.0)
+        return metallic_tint(f.metallic, dot(n, to_light), pigment, light) * intensity;
     return light * intensity;
 }
 
@@ -70,7 +69,8 @@ Color specular_term(const ClassicFinish& f, const Vec3& n, const Vec3& to_light,
     double c = dot(halfway, n) / hl;
     if (c <= 0.0) return Color();
     double intensity = f.specular * std::pow(c, f.roughness_exponent);
-    if (f.metallic > 0.0) return metallic_tint(f.metallic, n, to_light, pigment, light) * intensity;
+    if (f.metallic > 0.0)
+        return metallic_tint(f.metallic, dot(n, to_light), pigment, light) * intensity;
     return light * intensity;
 }
 

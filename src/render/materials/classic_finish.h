@@ -47,6 +47,10 @@ Color specular_term(const ClassicFinish& f, const Vec3& n, const Vec3& to_light,
 // POV-Ray's empirical Fresnel-like curve used by `metallic` (trace.cpp, [DB 9/94]).
 double metallic_fresnel(double cos_angle);
 
+// `light` tinted towards the pigment by `metallic`, less so at grazing angles: POV-Ray's
+// metallic highlights (ComputePhongColour) and metallic reflection (ComputeLightedTexture).
+Color metallic_tint(double metallic, double cos_angle, const Color& pigment, const Color& light);
+
 // Reflectivity for an incidence cosine (ComputeReflectivity); `relative_ior` is only used by
 // fresnel reflection. `weight` is scaled like POV-Ray's reflection ray weight.
 Color reflectivity(const ClassicFinish& f, double cos_angle, double relative_ior, double* weight);
