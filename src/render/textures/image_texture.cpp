@@ -129,15 +129,14 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const scene::ImageMap& ma
     return tex;
 }
 
-std::string TextureCache::key(const scene::ImageMap& map) {
-    const std::string& path = map.resolved_path.empty() ? map.file : map.resolved_path;
-    return path + "\n" + std::to_string(map.gamma);
+TextureCache::KeyView TextureCache::key(const scene::ImageMap& map) {
+    return {map.resolved_path.empty() ? map.file : map.resolved_path, map.gamma};
 }
 
 void TextureCache::add(const scene::ImageMap& map) {
-    std::string k = key(map);
-    if (images_.count(k)) return;
-    images_[k] = ImageTexture::load(map, gamma_);
+    KeyView k = key(map);
+    if (images_.find(k) != images_.end()) return;
+    images_.emplace(Key{std::string(k.path), k.gamma}, ImageTexture::load(map, gamma_));
 }
 
 void TextureCache::preload(const scene::Scene& scene) {

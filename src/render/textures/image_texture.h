@@ -7,6 +7,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/log.h"
@@ -59,10 +60,27 @@ public:
     size_t size() const { return images_.size(); }
 
 private:
+    // find() runs for every image_map evaluation: it looks up by a view of the path, so a
+    // lookup builds no string.
+    struct KeyView {
+        std::string_view path;
+        double gamma;
+    };
+    struct Key {
+        std::string path;
+        double gamma;
+        operator KeyView() const { return {path, gamma}; }
+    };
+    struct KeyLess {
+        using is_transparent = void;
+        bool operator()(KeyView a, KeyView b) const {
+            return a.path != b.path ? a.path < b.path : a.gamma < b.gamma;
+        }
+    };
     void add(const scene::ImageMap& map);
-    static std::string key(const scene::ImageMap& map);
+    static KeyView key(const scene::ImageMap& map);
     ImageGamma gamma_;
-    std::map<std::string, std::shared_ptr<const ImageTexture>> images_;
+    std::map<Key, std::shared_ptr<const ImageTexture>, KeyLess> images_;
 };
 
 }  // namespace glint::render
