@@ -9,10 +9,6 @@
 
 namespace glint::pov {
 
-namespace {
-constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON in these tests
-}
-
 void Parser::parse_camera_body(scene::Camera& cam) {
     cam.loc = loc();
     const Token& first = peek();
@@ -105,13 +101,13 @@ void Parser::parse_camera_body(scene::Camera& cam) {
         double dl = length(n.direction), ul = length(n.up), rl = length(n.right);
         double handedness = dot(cross(n.up, n.direction), n.right);
         Vec3 d = *look_at - n.location;
-        if (length_squared(d) < kEpsilon)
+        if (length_squared(d) < kPovEpsilon)
             fail_at(n.loc, "the camera location and look_at point must be different");
         n.direction = normalize(d);
         Vec3 saved_right = n.right;
         n.right = cross(n.sky, n.direction);
-        if (std::fabs(n.right.x) < kEpsilon && std::fabs(n.right.y) < kEpsilon &&
-            std::fabs(n.right.z) < kEpsilon) {
+        if (std::fabs(n.right.x) < kPovEpsilon && std::fabs(n.right.y) < kPovEpsilon &&
+            std::fabs(n.right.z) < kPovEpsilon) {
             diag.warning(n.loc, "camera look_at direction and sky are parallel; keeping right");
             n.right = saved_right;
         }
@@ -124,7 +120,7 @@ void Parser::parse_camera_body(scene::Camera& cam) {
     if (n.kind == scene::CameraKind::Orthographic && ((!up && !right) || angle)) {
         // Size the orthographic view like the perspective one at the look_at distance.
         double k1 = length(target - n.location), k2 = length(n.direction);
-        if (k1 > kEpsilon && k2 > kEpsilon) {
+        if (k1 > kPovEpsilon && k2 > kPovEpsilon) {
             n.right = n.right * (k1 / k2);
             n.up = n.up * (k1 / k2);
         }

@@ -260,7 +260,7 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
         scene::Plane s;
         FileLoc l = loc();
         Vec3 n = parse_vector();
-        if (length(n) < 1e-10) fail_at(l, "degenerate plane normal");
+        if (length(n) < kPovEpsilon) fail_at(l, "degenerate plane normal");
         s.normal = normalize(n);  // POV-Ray normalizes the normal, not the distance
         skip_comma();
         s.distance = parse_float();

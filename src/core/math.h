@@ -11,6 +11,9 @@ namespace glint {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// POV-Ray's EPSILON (source/backend/configbackend.h): the tolerance of POV-Ray's own tests
+// (near-black colors, degenerate vectors, pattern cell edges) wherever glint reproduces one.
+constexpr double kPovEpsilon = 1.0e-10;
 
 struct Vec2 {
     double x = 0, y = 0;

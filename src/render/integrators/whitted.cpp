@@ -9,7 +9,6 @@
 namespace glint::render {
 namespace {
 
-constexpr double kPovEpsilon = 1.0e-10;  // configbackend.h EPSILON
 // Shadow rays end this fraction short of the light so the light's own position never counts.
 constexpr double kShadowEnd = 1.0 - 1.0e-9;
 

@@ -5,8 +5,6 @@
 namespace glint::render {
 namespace {
 
-constexpr double kPovEpsilon = 1.0e-10;
-
 // lighting/point.cpp cubic_spline: smooth step from low to high.
 double cubic_spline(double low, double high, double pos) {
     if (pos < low) return 0.0;

@@ -3,11 +3,6 @@
 #include <cmath>
 
 namespace glint::render {
-namespace {
-
-constexpr double kPovEpsilon = 1.0e-10;
-
-}  // namespace
 
 ClassicFinish::ClassicFinish(const scene::Finish& f)
     : ambient(f.ambient),

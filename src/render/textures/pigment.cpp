@@ -7,9 +7,6 @@
 namespace glint::render {
 namespace {
 
-// POV-Ray's EPSILON (configbackend.h), used by the checker pattern and image mapping.
-constexpr double kPovEpsilon = 1.0e-10;
-
 using scene::ColorFT;
 
 double checker_value(const Vec3& p) {
