@@ -24,9 +24,10 @@ struct ColorFT {
     bool opaque() const { return filter == 0 && transmit == 0; }
 };
 
-// Linear interpolation used by color maps: a + (b - a) * t on all five channels.
+// Linear interpolation used by color maps and block patterns: a + (b - a) * t on all five
+// channels, in that form (not a * (1 - t) + b * t) as POV-Ray's Compute_Pigment blends.
 constexpr ColorFT lerp(const ColorFT& a, const ColorFT& b, double t) {
-    return a * (1 - t) + b * t;
+    return a + (b + a * -1.0) * t;
 }
 
 }  // namespace glint::scene

@@ -56,7 +56,7 @@ ColorFT lookup_color_map(const std::vector<scene::ColorMapEntry>& map, double va
     }
     if (prev == cur) return cur->color;
     double f = (value - prev->value) / (cur->value - prev->value);
-    return prev->color + (cur->color + prev->color * -1.0) * f;
+    return scene::lerp(prev->color, cur->color, f);
 }
 
 }  // namespace
@@ -127,7 +127,7 @@ bool PigmentEvaluator::eval(const scene::Pigment& pigment, const Vec3& parent,
                 if (v > 0.0 && v < 1.0) {
                     ColorFT other;
                     found |= eval(pigment.entries[0], parent, &other);
-                    *out = other + (*out + other * -1.0) * v;
+                    *out = scene::lerp(other, *out, v);
                 }
                 return found;
             }
