@@ -362,7 +362,7 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
         scene::Light l;
         l.loc = kloc;
         po.is_light = true;
-        parse_light_body(l, po);
+        parse_light_body(l);
         po.lights.push_back(l);
         out = std::move(po);
         return true;
@@ -375,8 +375,7 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
     return true;
 }
 
-void Parser::parse_light_body(scene::Light& l, PovObject& o) {
-    (void)o;
+void Parser::parse_light_body(scene::Light& l) {
     FileLoc opened = loc();
     l.location = parse_vector();
     skip_comma();

@@ -153,7 +153,7 @@ public:
     bool parse_object(const Token& kw, PovObject& out);
     void parse_object_mods(PovObject& o, const char* what, const FileLoc& opened);
     void apply_transform(PovObject& o, const Transform& t);
-    void parse_light_body(scene::Light& l, PovObject& o);
+    void parse_light_body(scene::Light& l);
 
     // ---- camera and scene settings (camera.cpp)
     void parse_camera_body(scene::Camera& cam);
