@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "app/scene_loading.h"
+
 namespace CLI {
 class App;
 }
@@ -12,24 +14,16 @@ class App;
 namespace glint::app {
 
 struct RenderArgs {
-    std::string scene;
+    SceneRequest scene;  // SCENE, -I, --clock, --width/--height (also the image size)
     std::string output;
-    int width = 320;
-    int height = 240;
     std::string aa = "none";
     int threads = 0;
-    std::vector<std::string> include_dirs;
     bool verbose = false;
     std::string progress;  // empty: bar on a terminal, none otherwise
-    double clock = 0;
 };
 
 struct IrArgs {
-    std::string scene;
-    std::vector<std::string> include_dirs;
-    double clock = 0;
-    int width = 320;
-    int height = 240;
+    SceneRequest scene;
 };
 
 struct CompareArgs {

@@ -110,29 +110,20 @@ std::string encoding_name(const io::OutputEncoding& e) {
 
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
     CLI::App* cmd = app.add_subcommand("render", "Render a POV-Ray scene to an image");
-    cmd->add_option("SCENE", args.scene, "POV-Ray scene file")->required();
+    add_scene_options(*cmd, args.scene);
     cmd->add_option("-o,--output", args.output,
                     "Output image; format from the extension: png, exr, tif, hdr, jpg")
         ->required();
-    cmd->add_option("-W,--width", args.width, "Image width in pixels")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 1 << 16));
-    cmd->add_option("-H,--height", args.height, "Image height in pixels")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 1 << 16));
     cmd->add_option("--aa", args.aa, "Anti-aliasing: none, adaptive[:T] (POV-Ray +A), grid:N")
         ->capture_default_str();
     cmd->add_option("--threads", args.threads, "Worker threads (0: all hardware threads)")
         ->capture_default_str()
         ->check(CLI::Range(0, 4096));
-    cmd->add_option("-I,--include", args.include_dirs, "Include folder (repeatable)")
-        ->allow_extra_args(false);  // one folder per -I, so `-I dir scene.pov` works
     cmd->add_flag("-v,--verbose", args.verbose, "Print features used and skipped, and timings");
     cmd->add_option("--progress", args.progress,
                     "Progress on stderr: bar, lines (`progress 0.42`), none "
                     "(default: bar on a terminal, none otherwise)")
         ->check(CLI::IsMember({"bar", "lines", "none"}));
-    cmd->add_option("--clock", args.clock, "Value of `clock` in the scene")->capture_default_str();
     return cmd;
 }
 
@@ -141,20 +132,14 @@ int run_render(const RenderArgs& args) {
     Clock::time_point start = Clock::now();
 
     render::RenderOptions options;
-    options.width = args.width;
-    options.height = args.height;
+    options.width = args.scene.width;
+    options.height = args.scene.height;
     options.threads = args.threads;
     options.cancel = &cancel_flag();
     parse_aa(args.aa, options);
     check_output_path(args.output);
 
-    SceneRequest request;
-    request.path = args.scene;
-    request.include_dirs = args.include_dirs;
-    request.clock = args.clock;
-    request.width = args.width;
-    request.height = args.height;
-    scene::Scene scene = load_scene(request, args.verbose);
+    scene::Scene scene = load_scene(args.scene, args.verbose);
     double parse_seconds = seconds_since(start);
     if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
 

@@ -1,5 +1,6 @@
 #include "app/scene_loading.h"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 
@@ -10,6 +11,20 @@
 #include "scene/validate.h"
 
 namespace glint::app {
+
+void add_scene_options(CLI::App& cmd, SceneRequest& request) {
+    cmd.add_option("SCENE", request.path, "POV-Ray scene file")->required();
+    cmd.add_option("-I,--include", request.include_dirs, "Include folder (repeatable)")
+        ->allow_extra_args(false);  // one folder per -I, so `-I dir scene.pov` works
+    cmd.add_option("--clock", request.clock, "Value of `clock` in the scene")
+        ->capture_default_str();
+    cmd.add_option("-W,--width", request.width, "Image width in pixels (image_width)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1 << 16));
+    cmd.add_option("-H,--height", request.height, "Image height in pixels (image_height)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1 << 16));
+}
 
 namespace {
 

@@ -7,6 +7,10 @@
 
 #include "scene/scene.h"
 
+namespace CLI {
+class App;
+}
+
 namespace glint::app {
 
 struct SceneRequest {
@@ -16,6 +20,10 @@ struct SceneRequest {
     int width = 320;
     int height = 240;
 };
+
+// Registers the flags every scene-reading subcommand shares: SCENE, -I/--include (one folder
+// each, repeatable), --clock, -W/--width and -H/--height (image_width/image_height).
+void add_scene_options(CLI::App& cmd, SceneRequest& request);
 
 // Throws glint::Error. Warnings go to stderr as `file:line:col: warning: ...` as they come;
 // informational messages only when `verbose`.
