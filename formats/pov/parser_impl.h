@@ -100,16 +100,12 @@ public:
     [[noreturn]] void fail_at(const FileLoc& loc, const std::string& message) const;
     [[noreturn]] void unsupported(const std::string& what) const;
     bool in_system_file() const;
-    const SourceFile& current_file() const { return *files_[cur_file_]; }
 
     // Identifiers.
     const Symbol* lookup(const std::string& name) const;
     // Finds `name` or fails (unknown identifier / unusable declaration).
     const Symbol& use_symbol(const Token& t);
     void declare(const std::string& name, Value v, const FileLoc& loc, bool local);
-    bool is_identifier(const Token& t) const {
-        return t.kind == TokKind::Word && lookup(t.text) != nullptr;
-    }
 
     // ---- expressions (expressions.cpp)
     Num parse_num(int terms);  // an expression promoted to `terms` components
@@ -127,7 +123,6 @@ public:
     void skip_comma() { accept(","); }
 
     // ---- materials (materials.cpp)
-    scene::Texture default_texture() const { return default_texture_; }
     scene::Texture parse_texture_body();      // after texture {
     void parse_pigment_body(scene::Pigment& p);  // after pigment {
     void parse_finish_body(scene::Finish& f);    // after finish {

@@ -14,6 +14,7 @@ using test::build;
 using test::object;
 using test::ray;
 using test::scene_of;
+using test::unit_cube_mesh;
 
 scene::Object csg(scene::CsgOp op, std::vector<scene::Object> children, int material = 0) {
     scene::Csg c;
@@ -201,19 +202,7 @@ TEST(Csg, DifferenceWithMeshInsideVector) {
     // A box minus a closed mesh cube (inside by parity along inside_vector).
     scene::Scene s;
     s.materials.resize(2);
-    scene::Mesh m;
-    for (int i = 0; i < 8; ++i)
-        m.positions.push_back({double(i & 1) - 0.5, double(i >> 1 & 1) - 0.5,
-                               double(i >> 2 & 1) - 0.5});
-    const int quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
-                             {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
-    for (const auto& q : quads) {
-        scene::MeshFace a, b;
-        a.v = {q[0], q[1], q[2]};
-        b.v = {q[0], q[2], q[3]};
-        m.faces.push_back(a);
-        m.faces.push_back(b);
-    }
+    scene::Mesh m = unit_cube_mesh({-0.5, -0.5, -0.5});
     m.has_inside_vector = true;
     m.inside_vector = {0.1, 0.2, 1};
     s.meshes.push_back(m);

@@ -33,6 +33,23 @@ inline std::unique_ptr<render::Geometry> build_one(scene::Shape shape, Transform
     return build(scene_of({object(std::move(shape), xf)}));
 }
 
+// A closed cube of 12 triangles with corners `lo` and `lo + 1`.
+inline scene::Mesh unit_cube_mesh(Vec3 lo = {}) {
+    scene::Mesh m;
+    for (int i = 0; i < 8; ++i)
+        m.positions.push_back(lo + Vec3(double(i & 1), double(i >> 1 & 1), double(i >> 2 & 1)));
+    const int quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                             {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+    for (const auto& q : quads) {
+        scene::MeshFace a, b;
+        a.v = {q[0], q[1], q[2]};
+        b.v = {q[0], q[2], q[3]};
+        m.faces.push_back(a);
+        m.faces.push_back(b);
+    }
+    return m;
+}
+
 inline render::Ray ray(Vec3 o, Vec3 d, double tmax = kInfinity) { return {o, d, tmax}; }
 
 }  // namespace glint::test

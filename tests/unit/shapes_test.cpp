@@ -20,6 +20,7 @@ using render::LocalHit;
 using render::Ray;
 using test::build_one;
 using test::ray;
+using test::unit_cube_mesh;
 
 bool finite_hit(const Hit& h) {
     return std::isfinite(h.t) && is_finite(h.p) && is_finite(h.ng) && is_finite(h.n) &&
@@ -557,18 +558,7 @@ TEST(Mesh, EmptyMeshIsSkippedNotFatal) {
 
 TEST(Mesh, InsideVectorParity) {
     // A closed unit cube from 12 triangles.
-    scene::Mesh m;
-    for (int i = 0; i < 8; ++i) m.positions.push_back({double(i & 1), double(i >> 1 & 1),
-                                                        double(i >> 2 & 1)});
-    const int quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
-                             {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
-    for (const auto& q : quads) {
-        scene::MeshFace a, b;
-        a.v = {q[0], q[1], q[2]};
-        b.v = {q[0], q[2], q[3]};
-        m.faces.push_back(a);
-        m.faces.push_back(b);
-    }
+    scene::Mesh m = unit_cube_mesh();
     Diagnostics diag;
     auto without = render::make_mesh(m, diag);
     EXPECT_FALSE(without->inside({0.5, 0.5, 0.5}));
