@@ -67,8 +67,14 @@ public:
                             (im.gamma != 0 ? " gamma " + num(im.gamma) : "") + tail(p));
                 break;
             }
+            default:
+                line(d, label + " " + pattern_name(p.kind) + tail(p));
+                for (const auto& e : p.entries) pigment(d + 1, "entry", e);
+                break;
         }
         params(d + 1, p.params);
+        for (const auto& e : p.pigment_map)
+            for (const auto& q : e.pigment) pigment(d + 1, "[" + num(e.value) + "]", q);
         if (!p.color_map.empty()) {
             line(d + 1, "color_map");
             for (const auto& e : p.color_map) line(d + 2, "[" + num(e.value) + " " + rgbft(e.color) + "]");
@@ -89,10 +95,14 @@ public:
         static const char* kWaves[] = {"ramp", "triangle", "sine", "scallop", "cubic", "poly"};
         if (pp.wave != WaveType::Ramp)
             s += std::string(" wave ") + kWaves[static_cast<int>(pp.wave)] + " " + num(pp.wave_exponent);
-        if (pp.turbulence)
-            s += " turbulence " + vec(pp.turbulence->amount) + " octaves " +
-                 std::to_string(pp.turbulence->octaves) + " omega " + num(pp.turbulence->omega) +
-                 " lambda " + num(pp.turbulence->lambda);
+        for (const Warp& w : pp.warps) {
+            if (w.kind == WarpKind::ClassicTurbulence || w.kind == WarpKind::Turbulence)
+                s += std::string(w.kind == WarpKind::Turbulence ? " warp" : "") + " turbulence " +
+                     vec(w.turbulence.amount) + " octaves " + std::to_string(w.turbulence.octaves) +
+                     " omega " + num(w.turbulence.omega) + " lambda " + num(w.turbulence.lambda);
+            else
+                s += " warp " + std::to_string(static_cast<int>(w.kind));
+        }
         if (!s.empty()) line(d, "params" + s);
     }
 

@@ -236,15 +236,23 @@ void Parser::parse_pigment_body(scene::Pigment& p) {
             } else if (w == "poly_wave") {
                 p.params.wave = scene::WaveType::Poly;
                 p.params.wave_exponent = allow_float(1);
-            } else if (w == "turbulence") {
-                if (!p.params.turbulence) p.params.turbulence = scene::Turbulence{};
-                p.params.turbulence->amount = parse_vector();
-            } else if (w == "octaves" || w == "omega" || w == "lambda") {
-                if (!p.params.turbulence) p.params.turbulence = scene::Turbulence{};
-                double v = parse_float();
-                if (w == "octaves") p.params.turbulence->octaves = static_cast<int>(v);
-                if (w == "omega") p.params.turbulence->omega = v;
-                if (w == "lambda") p.params.turbulence->lambda = v;
+            } else if (w == "turbulence" || w == "octaves" || w == "omega" || w == "lambda") {
+                // Check_Turb: these modify the classic turbulence warp at the front of the list.
+                auto& warps = p.params.warps;
+                if (warps.empty() || warps.front().kind != scene::WarpKind::ClassicTurbulence) {
+                    scene::Warp t;
+                    t.loc = loc();
+                    warps.insert(warps.begin(), t);
+                }
+                scene::Turbulence& turb = warps.front().turbulence;
+                if (w == "turbulence") {
+                    turb.amount = parse_vector();
+                } else {
+                    double v = parse_float();
+                    if (w == "octaves") turb.octaves = static_cast<int>(v);
+                    if (w == "omega") turb.omega = v;
+                    if (w == "lambda") turb.lambda = v;
+                }
             } else if (unsupported_patterns().count(w)) {
                 unsupported("the '" + w + "' pattern");
             } else {

@@ -54,8 +54,16 @@ bool opaque(const scene::Pigment& p) {
                 if (!e.color.opaque()) return false;
             return true;
         case scene::PatternKind::ImageMap: return false;  // the image's alpha is unknown here
+        default:
+            for (const auto& e : p.color_map)
+                if (!e.color.opaque()) return false;
+            for (const auto& e : p.pigment_map)
+                for (const auto& q : e.pigment)
+                    if (!opaque(q)) return false;
+            for (const auto& e : p.entries)
+                if (!opaque(e)) return false;
+            return true;
     }
-    return false;
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ void warn_unsupported(const scene::Scene& scene, const scene::Features& f, Diagn
             }
     }
     for (const scene::Material& m : scene.materials) {
-        if (m.texture.pigment.params.turbulence) {
+        if (!m.texture.pigment.params.warps.empty()) {
             diag.warning(m.texture.pigment.loc, "turbulence is not supported yet; ignored");
             break;
         }

@@ -68,7 +68,10 @@ private:
                 transparent = true;
                 break;
             case PatternKind::Plain: break;
+            default: break;
         }
+        for (const PigmentMapEntry& e : p.pigment_map)
+            for (const Pigment& q : e.pigment) transparent |= pigment(q);
         for (const ColorMapEntry& e : p.color_map)
             if (!e.color.opaque()) transparent = true;
         for (const Pigment& e : p.entries) transparent |= pigment(e);

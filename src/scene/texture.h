@@ -14,23 +14,75 @@
 
 namespace glint::scene {
 
-// The pattern set grows with the POV-Ray compatibility work; a renderer that meets a kind it
-// does not implement must say so (analyze() lists it), never shade it as something else.
+// POV-Ray's pattern set. A renderer that meets a kind it does not implement must say so
+// (analyze() lists it), never shade it as something else. Pattern values are in [0, 1]
+// (block patterns: an entry index); see render/textures/pattern.h for the evaluation.
 enum class PatternKind {
     Plain,     // a single color (pigment) or no perturbation (normal)
     Checker,   // block pattern: entries[0], entries[1]
     Gradient,  // continuous: fractional part of dot(p, vector)
-    ImageMap,  // image_map: color from an image file
-    // Room for the rest of POV-Ray's pattern set (agate, bozo, brick, ...).
+    ImageMap,  // image_map (pigment), bump_map (normal), image_pattern: from an image file
+    // continuous patterns
+    Agate, Boxed, Bozo, Bumps, Cells, Crackle, Cylindrical, Dents, Facets, Granite, Leopard,
+    Marble, Onion, Planar, Quilted, Radial, Ripples, Spherical, Spiral1, Spiral2, Spotted,
+    Waves, Wood, Wrinkles, Mandel, Julia, Function,
+    // block patterns: entries (or map entries) chosen by the pattern value
+    Brick, Hexagon, Square, Triangular, Cubic,
+    // pigment { average pigment_map { [w P] ... } }, normal { average normal_map {...} }
+    Average,
 };
 
 enum class WaveType { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
+
+// The keyword of a pattern kind ("plain" for Plain), for messages and `glint ir`.
+const char* pattern_name(PatternKind kind);
 
 struct Turbulence {
     Vec3 amount{0, 0, 0};
     int octaves = 6;
     double omega = 0.5;
     double lambda = 2.0;
+};
+
+// POV-Ray's warps (backend/pattern/warps.h), applied in list order to the pattern-space point
+// before the pattern function. `turbulence`/`octaves`/`omega`/`lambda` written directly in a
+// pattern make (or modify) a ClassicTurbulence warp at the front of the list, as POV-Ray's
+// Check_Turb does; agate, marble, spiral1/2 and wood apply classic turbulence inside the
+// pattern function instead, the others through the warp.
+enum class WarpKind {
+    ClassicTurbulence,  // turbulence written in the pattern
+    Turbulence,         // warp { turbulence ... }
+    Repeat,             // warp { repeat <dir> offset <v> flip <v> }
+    BlackHole,          // warp { black_hole <center>, radius ... }
+    Cylindrical,        // warp { cylindrical orientation <v> dist_exp d }
+    Spherical,
+    Toroidal,           // also major_radius
+    Planar,             // warp { planar <v>, offset }
+    Cubic,              // warp { cubic }
+    Transform,          // warp { transforms }: Transform applied to the point
+};
+
+struct Warp {
+    WarpKind kind = WarpKind::ClassicTurbulence;
+    Turbulence turbulence;  // ClassicTurbulence, Turbulence, BlackHole (its `turbulence`)
+    // Repeat: the axis-aligned direction vector as written (width = its non-zero component).
+    Vec3 direction{0, 0, 0};
+    Vec3 offset{0, 0, 0};
+    Vec3 flip{0, 0, 0};
+    // BlackHole
+    Vec3 center{0, 0, 0};
+    double radius = 1;
+    double strength = 1;
+    double falloff = 2;
+    bool inverse = false;
+    Vec3 repeat{0, 0, 0};  // black_hole repeat <v>
+    // Cylindrical/Spherical/Toroidal/Planar
+    Vec3 orientation{0, 0, 1};
+    double dist_exp = 0;
+    double major_radius = 1;
+    double planar_offset = 0;
+    Transform transform;  // Transform
+    FileLoc loc;
 };
 
 // image_map { TYPE "file" map_type N once interpolate N filter/transmit ... }
@@ -55,8 +107,32 @@ struct PatternParams {
     double phase = 0;
     WaveType wave = WaveType::Ramp;
     double wave_exponent = 1;
-    std::optional<Turbulence> turbulence;
+    std::vector<Warp> warps;  // in order; see WarpKind
+    // noise_generator given in the pattern; 0 = the scene's global_settings value.
+    int noise_generator = 0;
     ImageMap image;  // PatternKind::ImageMap
+    // Per-pattern parameters (POV-Ray's defaults).
+    double agate_turb = 1.0;        // agate_turb
+    Vec3 brick_size{8, 3, 4.5};     // brick: brick_size
+    double mortar = 0.5;            // brick: mortar
+    int arms = 0;                   // spiral1/spiral2: number of arms (required)
+    double control0 = 1, control1 = 1;  // quilted
+    // crackle: metric, offset, solid, form
+    double crackle_metric = 2;
+    double crackle_offset = 0;
+    bool crackle_solid = false;
+    Vec3 crackle_form{-1, 1, 0};
+    // facets (normal only): coords or size, metric
+    double facets_coords = 0;
+    double facets_size = 0.1;
+    double facets_metric = 2;
+    // mandel/julia
+    int iterations = 0;
+    double fractal_exponent = 2;
+    Vec2 julia_param{0, 0};
+    int exterior_type = 1, interior_type = 0;
+    double exterior_factor = 1, interior_factor = 1;
+    int function = -1;  // PatternKind::Function: index into Scene::functions
 };
 
 struct ColorMapEntry {
@@ -64,21 +140,52 @@ struct ColorMapEntry {
     ColorFT color;
 };
 
+struct Pigment;
+struct Normal;
+struct Texture;
+
+// pigment_map { [v pigment] ... } (also the entries of `average`, value = weight).
+struct PigmentMapEntry {
+    double value = 0;
+    std::vector<Pigment> pigment;  // exactly one (a vector because Pigment is incomplete here)
+};
+
 struct Pigment {
     PatternKind kind = PatternKind::Plain;
     ColorFT color{Color(0, 0, 0)};  // Plain; POV-Ray's default pigment is black
     PatternParams params;
-    std::vector<ColorMapEntry> color_map;  // continuous patterns; empty = POV-Ray's default map
-    std::vector<Pigment> entries;          // block patterns (checker: two)
-    bool uv_mapping = false;               // evaluate at (u, v, 0) instead of the hit point
-    Transform transform;                   // pattern space -> world space
+    // Continuous patterns use color_map, or pigment_map when that is non-empty; both empty =
+    // POV-Ray's default map. Block patterns use `entries` (checker: two, hexagon: three, ...).
+    std::vector<ColorMapEntry> color_map;
+    std::vector<PigmentMapEntry> pigment_map;
+    std::vector<Pigment> entries;
+    bool uv_mapping = false;  // evaluate at (u, v, 0) instead of the hit point
+    Transform transform;      // pattern space -> world space
     FileLoc loc;
+};
+
+// slope_map { [v <height, slope>] ... }
+struct SlopeMapEntry {
+    double value = 0;
+    double height = 0;
+    double slope = 0;
+};
+
+struct NormalMapEntry {
+    double value = 0;
+    std::vector<Normal> normal;  // exactly one
 };
 
 struct Normal {
     PatternKind kind = PatternKind::Plain;  // Plain = unperturbed
-    double amount = 0;
+    double amount = 0;     // bump_size / the float after the pattern (POV-Ray default 0.5 for
+                           // most patterns; the importer stores the effective value)
     PatternParams params;
+    std::vector<SlopeMapEntry> slope_map;
+    std::vector<NormalMapEntry> normal_map;  // normal_map, or `average` entries
+    std::vector<Normal> entries;             // block patterns of normals
+    double accuracy = 0.02;                  // numeric gradient step (POV-Ray `accuracy`)
+    bool uv_mapping = false;
     Transform transform;
     FileLoc loc;
 };
@@ -108,10 +215,28 @@ struct Finish {
     FileLoc loc;
 };
 
+struct TextureMapEntry {
+    double value = 0;
+    std::vector<Texture> texture;  // exactly one
+};
+
 struct Texture {
+    // A plain texture: pigment, normal, finish.
     Pigment pigment;
     Normal normal;
     Finish finish;
+    // A patterned texture (texture_map, or a block pattern of textures such as
+    // `texture { checker texture{..} texture{..} }`) when kind != Plain; the plain members
+    // above are then unused.
+    PatternKind kind = PatternKind::Plain;
+    PatternParams params;
+    std::vector<TextureMapEntry> texture_map;
+    std::vector<Texture> entries;
+    bool uv_mapping = false;
+    Transform transform;  // pattern space -> world, for the patterned texture
+    // POV-Ray layered textures: `texture {A} texture {B}` draws B over A. `layers` holds the
+    // textures drawn over this one, bottom to top.
+    std::vector<Texture> layers;
     FileLoc loc;
 };
 

@@ -30,7 +30,11 @@ inline std::unique_ptr<render::Geometry> build(const scene::Scene& s) {
 }
 
 inline std::unique_ptr<render::Geometry> build_one(scene::Shape shape, Transform xf = {}) {
-    return build(scene_of({object(std::move(shape), xf)}));
+    // Not scene_of({...}): copying an Object out of an initializer_list trips GCC 12's
+    // -Wmaybe-uninitialized false positive on the Shape variant at -O3.
+    std::vector<scene::Object> objects;
+    objects.push_back(object(std::move(shape), xf));
+    return build(scene_of(std::move(objects)));
 }
 
 // A closed cube of 12 triangles with corners `lo` and `lo + 1`.

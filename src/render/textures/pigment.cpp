@@ -143,6 +143,7 @@ bool PigmentEvaluator::eval(const scene::Pigment& pigment, const Vec3& parent,
             *out = lookup_color_map(map, v);
             return true;
         }
+        default: break;
     }
     throw Error(ErrorKind::Render, pigment.loc, "pigment pattern not supported by the renderer");
 }
