@@ -1,0 +1,71 @@
+// POV-Ray 3.7's pattern functions (backend/pattern/pattern.cpp, warps.cpp) and the special
+// normal perturbations of backend/texture/normal.cpp. Pigments, normals and textures call
+// evaluate_pattern() with a pattern-space point; the normal code calls special_normal() for the
+// patterns POV-Ray perturbs directly (bumps, dents, ripples, waves, wrinkles, quilted, facets).
+// Everything here is stateless and allocation-free per call.
+#pragma once
+
+#include "core/math.h"
+#include "scene/texture.h"
+
+namespace glint::render {
+
+// Scene-wide settings a pattern depends on (global_settings).
+struct PatternContext {
+    int noise_generator = 2;  // global_settings { noise_generator N }; POV-Ray 3.7 default 2
+    int number_of_waves = 10;  // global_settings { number_of_waves N }: ripples and waves
+};
+
+// POV-Ray's Warp_EPoint + Evaluate_TPat.
+//
+// `p` is the point in pattern space: the caller has already applied the inverse of the
+// pattern's own transform (Pigment/Normal/Texture::transform, POV-Ray's leading TRANSFORM_WARP)
+// or taken (u, v, 0) under uv_mapping. This function then applies params.warps in list order
+// (a ClassicTurbulence warp is skipped for marble and wood, which use the turbulence inside
+// the pattern function; agate, spiral1 and spiral2 do too, as POV-Ray's do, and also get the
+// warp), clamps the point to +-1e17, evaluates the pattern and, for continuous patterns,
+// applies frequency/phase (POV-Ray's fmod by 1.00001) and the wave type.
+//
+// Continuous patterns return a value in [0, 1]. Block patterns (Checker, Brick, Hexagon,
+// Square, Triangular, Cubic; see is_block_pattern) return the entry index as a double
+// (checker/brick 0..1, hexagon 0..2, square 0..3, triangular 0..5, cubic 0..5) with no
+// frequency or wave shaping. ImageMap, Plain, Average and Function are not handled here
+// (they return 0; the callers evaluate them).
+//
+// A pattern's noise_generator is params.noise_generator when non-zero, else ctx's.
+double evaluate_pattern(scene::PatternKind kind, const scene::PatternParams& params,
+                        const Vec3& p, const PatternContext& ctx);
+
+// Checker, Brick, Hexagon, Square, Triangular, Cubic.
+bool is_block_pattern(scene::PatternKind kind);
+
+// Applies params.warps to a pattern-space point (POV-Ray's Warp_EPoint without the pattern's own
+// transform), for callers that need the warped point itself. `kind` matters only for the
+// ClassicTurbulence warp (skipped for Marble and Wood).
+Vec3 warp_point(scene::PatternKind kind, const scene::PatternParams& params, const Vec3& p);
+
+// True for the patterns POV-Ray perturbs a normal with directly instead of through the slope of
+// the pattern value: Bumps, Dents, Ripples, Waves, Wrinkles, Quilted, Facets. (A normal with a
+// normal_map, slope_map or average takes POV-Ray's generic path instead, except that a normal
+// with a normal_map never reaches here; a slope_map does not change these kinds' special path.)
+bool has_special_normal(scene::PatternKind kind);
+
+// POV-Ray's Perturb_Normal for the kinds of has_special_normal (normal.cpp bumps(), dents(),
+// ripples(), waves(), wrinkles(), quilted(), facets()).
+//
+// What the caller passes (for a Normal `nrm` at world point P with world normal N):
+//   p_pattern = nrm.transform.inverse_point(P)        (or (u, v, 0) under uv_mapping);
+//               this function applies nrm.params.warps itself, like evaluate_pattern.
+//   normal    = normalize(nrm.transform.inverse().normal(N)): the world normal carried into
+//               pattern space (POV-Ray's Warp_Normal, MInvTransNormal), normalized.
+//   amount    = nrm.amount (bump_size), unscaled.
+// Returns the perturbed normal in pattern space, normalized. `warp { transform }` entries of
+// params.warps are carried both ways here. The caller maps the result back to world space with
+// normalize(nrm.transform.normal(result)) (POV-Ray's UnWarp_Normal); with an identity transform
+// the result is already the world normal. Ripples and waves use params.frequency/phase here (not
+// as a post-shaping of a value); facets ignores `amount` unless `coords` is given, as POV-Ray.
+Vec3 special_normal(scene::PatternKind kind, const scene::PatternParams& params,
+                    const Vec3& p_pattern, const Vec3& normal, double amount,
+                    const PatternContext& ctx);
+
+}  // namespace glint::render
