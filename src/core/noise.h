@@ -33,4 +33,13 @@ double turbulence(const Vec3& p, const TurbulenceParams& turb, int generator);
 // turbulence amount (per axis) as POV-Ray's warps do.
 Vec3 dturbulence(const Vec3& p, const TurbulenceParams& turb);
 
+// POV-Ray's Hash3d(a, b, c) over the same permutation table (texture.h): a value in 0..4095
+// for the low 12 bits of each lattice coordinate. Used by the cell patterns (cells, crackle,
+// facets) and the black_hole warp.
+int hash3d(int a, int b, int c);
+
+// POV-Ray's PatternRands(seed) / WarpRands(seed): a fixed sequence of 32768 uniform numbers in
+// [0, 1) (boost's mt19937 with its default seed through uniform_real), indexed modulo 32768.
+double pattern_random(unsigned seed);
+
 }  // namespace glint
