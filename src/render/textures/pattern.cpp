@@ -1,0 +1,911 @@
+#include "render/textures/pattern.h"
+
+#include <array>
+#include <cmath>
+
+#include "core/noise.h"
+
+namespace glint::render {
+namespace {
+
+using scene::PatternKind;
+using scene::PatternParams;
+using scene::Warp;
+using scene::WarpKind;
+
+// POV-Ray's constants (base/configbase.h, pattern.cpp), spelled as POV-Ray spells them.
+constexpr double kTwoPi = 6.283185307179586476925286766560;
+constexpr double kHalfPi = 1.57079632679489661923;
+constexpr double kSqrt3 = 1.7320508075688772935274463415059;
+constexpr double kSqrt3Half = 0.86602540378443864676372317075294;
+// Warp_EPoint clamps warped coordinates to this magnitude.
+constexpr double kCoordinateLimit = 1.0e17;
+// ripples/waves: POV-Ray's number_of_waves has no upper limit; glint stores this many.
+constexpr int kMaxWaves = 1024;
+
+// POV-Ray's cycloidal(): sin(2 pi v) of v's fractional part, odd around 0.
+double cycloidal(double v) {
+    if (v >= 0.0) return std::sin(((v - std::floor(v)) * 50000.0) / 50000.0 * kTwoPi);
+    return 0.0 - std::sin(((0.0 - (v + std::floor(0.0 - v))) * 50000.0) / 50000.0 * kTwoPi);
+}
+
+double triangle_wave(double v) {
+    double offset = v >= 0.0 ? v - std::floor(v) : v + 1.0 + std::floor(std::fabs(v));
+    return offset >= 0.5 ? 2.0 * (1.0 - offset) : 2.0 * offset;
+}
+
+// POV-Ray's CLIP_DENSITY: 1 - r inside [0, 1], 1 below, 0 above.
+double clip_density(double r) {
+    if (r < 0.0) return 1.0;
+    if (r > 1.0) return 0.0;
+    return 1.0 - r;
+}
+
+// POV-Ray's FLOOR macro (texture.h).
+double pov_floor(double x) { return x >= 0.0 ? std::floor(x) : (0.0 - std::floor(0.0 - x) - 1.0); }
+
+TurbulenceParams turb_params(const scene::Turbulence& t) {
+    return TurbulenceParams{t.octaves, t.omega, t.lambda};
+}
+
+// Search_For_Turb: the classic turbulence written in the pattern (the importer keeps it as one
+// ClassicTurbulence warp), or null.
+const Warp* classic_turbulence(const PatternParams& params) {
+    for (const Warp& w : params.warps)
+        if (w.kind == WarpKind::ClassicTurbulence) return &w;
+    return nullptr;
+}
+
+int noise_generator(const PatternParams& params, const PatternContext& ctx) {
+    return params.noise_generator != 0 ? params.noise_generator : ctx.noise_generator;
+}
+
+// Initialize_Waves (texture.cpp): wave centres from dnoise along the x axis, frequencies from
+// POV-Ray's table generator seeded with -560851967.
+struct WaveTables {
+    std::array<Vec3, kMaxWaves> source;
+    std::array<double, kMaxWaves> frequency;
+    WaveTables() {
+        int32_t next_rand = -560851967;
+        for (int i = 0; i < kMaxWaves; ++i) {
+            source[i] = normalize(dnoise(Vec3(i, 0.0, 0.0)));
+            next_rand = static_cast<int32_t>(static_cast<uint32_t>(next_rand) * 1812433253u +
+                                             12345u);
+            frequency[i] = static_cast<double>((next_rand >> 16) & 0x7FFF) * 0.000030518509476 +
+                           0.01;
+        }
+    }
+};
+
+const WaveTables& wave_tables() {
+    static const WaveTables kTables;
+    return kTables;
+}
+
+int wave_count(const PatternContext& ctx) { return std::clamp(ctx.number_of_waves, 1, kMaxWaves); }
+
+// The orientation rotation shared by the cylindrical, spherical, toroidal and planar warps:
+// (x, y, z) are the warp's own coordinates, placed so that the warp's z axis follows `o`.
+Vec3 orient(const Vec3& o, double x, double y, double z) {
+    if (o.x == 0.0 && o.y == 0.0 && o.z == 1.0) return {x, y, z};
+    return {o.x * z + o.y * x + o.z * x, o.x * y + o.y * -z + o.z * y,
+            o.x * -x + o.y * y + o.z * z};
+}
+
+// Angle of (x, z) from +x in [0, 2 pi), POV-Ray's acos form.
+double angle_xz(double x, double z, double len) {
+    if (z == 0.0) return x > 0 ? 0.0 : kPi;
+    double theta = std::acos(x / len);
+    return z < 0.0 ? kTwoPi - theta : theta;
+}
+
+Vec3 warp_cylindrical(const Warp& w, const Vec3& p) {
+    double len = std::sqrt(p.x * p.x + p.z * p.z);
+    if (len == 0.0) return p;
+    double theta = angle_xz(p.x, p.z, len) / kTwoPi;
+    if (w.dist_exp == 1.0) {
+        theta *= len;
+    } else if (w.dist_exp != 0.0) {
+        theta *= std::pow(len, w.dist_exp);
+    }
+    return orient(w.orientation, theta, p.y, len);
+}
+
+Vec3 warp_spherical(const Warp& w, const Vec3& p) {
+    double dist = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+    if (dist == 0.0) return p;
+    double x = p.x / dist, y = p.y / dist, z = p.z / dist;
+    double phi = 0.5 + std::asin(y) / kPi;
+    double len = std::sqrt(x * x + z * z);
+    double theta = len == 0.0 ? 0.0 : angle_xz(x, z, len) / kTwoPi;
+    if (w.dist_exp == 1.0) {
+        theta *= dist;
+        phi *= dist;
+    } else if (w.dist_exp != 0.0) {
+        double f = std::pow(dist, w.dist_exp);
+        theta *= f;
+        phi *= f;
+    }
+    return orient(w.orientation, theta, phi, dist);
+}
+
+Vec3 warp_toroidal(const Warp& w, const Vec3& p) {
+    double len = std::sqrt(p.x * p.x + p.z * p.z);
+    if (len == 0.0) return p;
+    double theta = 0.0 - angle_xz(p.x, p.z, len);
+    double x = len - w.major_radius;
+    len = std::sqrt(x * x + p.y * p.y);
+    double phi = std::acos(-x / len);
+    if (p.y > 0.0) phi = kTwoPi - phi;
+    theta /= -kTwoPi;
+    phi /= kTwoPi;
+    if (w.dist_exp == 1.0) {
+        theta *= len;
+        phi *= len;
+    } else if (w.dist_exp != 0.0) {
+        double f = std::pow(len, w.dist_exp);
+        theta *= f;
+        phi *= f;
+    }
+    return orient(w.orientation, theta, phi, len);
+}
+
+Vec3 warp_cubic(const Vec3& p) {
+    double x = p.x, y = p.y, z = p.z;
+    const double ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
+    constexpr double kThird = 1.0 / 3.0;
+    if (x >= 0 && x >= ay && x >= az)
+        return {0.75 - 0.25 * (z / x + 1.0) / 2.0, kThird + kThird * (y / x + 1.0) / 2.0, x};
+    if (y >= 0 && y >= ax && y >= az)
+        return {0.25 + 0.25 * (x / y + 1.0) / 2.0, 1.0 - kThird * (z / y + 1.0) / 2.0, y};
+    if (z >= 0 && z >= ax && z >= ay)
+        return {0.25 + 0.25 * (x / z + 1.0) / 2.0, kThird + kThird * (y / z + 1.0) / 2.0, z};
+    if (x < 0 && x <= -ay && x <= -az) {
+        x = -x;
+        return {0.25 * (z / x + 1.0) / 2.0, kThird + kThird * (y / x + 1.0) / 2.0, x};
+    }
+    if (y < 0 && y <= -ax && y <= -az) {
+        y = -y;
+        return {0.25 + 0.25 * (x / y + 1.0) / 2.0, kThird * (z / y + 1.0) / 2.0, y};
+    }
+    z = -z;
+    return {1.0 - 0.25 * (x / z + 1.0) / 2.0, kThird + kThird * (y / z + 1.0) / 2.0, z};
+}
+
+Vec3 warp_repeat(const Warp& w, const Vec3& p) {
+    // The direction has one non-zero component: its axis and the repeat width.
+    int axis = w.direction.x != 0.0 ? 0 : (w.direction.y != 0.0 ? 1 : 2);
+    double width = w.direction[axis];
+    if (width == 0.0) return p;
+    // POV-Ray keeps the block number in single precision (SNGL).
+    float block = static_cast<float>(std::floor(p[axis] / width));
+    Vec3 r = p;
+    r[axis] = p[axis] - block * width;
+    if (static_cast<int>(block) & 1) {
+        // A non-zero flip component mirrors that axis in odd blocks.
+        Vec3 flip(w.flip.x != 0.0 ? -1.0 : 1.0, w.flip.y != 0.0 ? -1.0 : 1.0,
+                  w.flip.z != 0.0 ? -1.0 : 1.0);
+        r = r * flip;
+        if (flip[axis] < 0) r[axis] = width + r[axis];
+    }
+    return r + w.offset * static_cast<double>(block);
+}
+
+Vec3 warp_black_hole(const Warp& w, const Vec3& p) {
+    Vec3 center = w.center;
+    const bool repeat = w.repeat != Vec3(0, 0, 0);
+    const Vec3& uncertainty = w.turbulence.amount;  // black_hole's `turbulence <v>`
+    if (repeat) {
+        // POV-Ray's parser (Check_BH_Parameters) keeps each repeated hole inside its cell: the
+        // centre moves to at least the radius and the repeat grows to centre + radius +
+        // uncertainty on every axis with a positive repeat.
+        Vec3 cell = w.repeat;
+        for (int k = 0; k < 3; ++k) {
+            if (cell[k] <= 0.0) continue;
+            if (center[k] < w.radius) center[k] = w.radius;
+            cell[k] = std::max(cell[k], center[k] + w.radius + uncertainty[k]);
+            if (cell[k] < kPovEpsilon) cell[k] = 0.0;
+        }
+        int block[3] = {0, 0, 0};
+        for (int k = 0; k < 3; ++k)
+            if (cell[k] >= kPovEpsilon) block[k] = static_cast<int>(std::floor(p[k] / cell[k]));
+        if (uncertainty != Vec3(0, 0, 0)) {
+            unsigned seed = static_cast<unsigned>(hash3d(block[0], block[1], block[2]));
+            for (int k = 0; k < 3; ++k) center[k] += pattern_random(seed + k) * uncertainty[k];
+        }
+        for (int k = 0; k < 3; ++k) center[k] += cell[k] * block[k];
+    }
+    Vec3 delta = p - center;
+    double len = length(delta);
+    if (len >= w.radius) return p;
+    len = (w.radius - len) / w.radius;
+    double strength = std::pow(len, w.falloff) * w.strength;
+    if (strength > 1.0) strength = 1.0;
+    return p + delta * (w.inverse ? -strength : strength);
+}
+
+Vec3 apply_warps(PatternKind kind, const PatternParams& params, const Vec3& p_in) {
+    Vec3 p = p_in;
+    for (const Warp& w : params.warps) {
+        switch (w.kind) {
+            case WarpKind::ClassicTurbulence:
+                if (kind == PatternKind::Marble || kind == PatternKind::Wood) break;
+                [[fallthrough]];
+            case WarpKind::Turbulence: {
+                Vec3 t = dturbulence(p, turb_params(w.turbulence));
+                p.x += t.x * w.turbulence.amount.x;
+                p.y += t.y * w.turbulence.amount.y;
+                p.z += t.z * w.turbulence.amount.z;
+                break;
+            }
+            case WarpKind::Transform: p = w.transform.inverse_point(p); break;
+            case WarpKind::Repeat: p = warp_repeat(w, p); break;
+            case WarpKind::BlackHole: p = warp_black_hole(w, p); break;
+            case WarpKind::Cylindrical: p = warp_cylindrical(w, p); break;
+            case WarpKind::Spherical: p = warp_spherical(w, p); break;
+            case WarpKind::Toroidal: p = warp_toroidal(w, p); break;
+            case WarpKind::Planar: p = orient(w.orientation, p.x, p.y, w.planar_offset); break;
+            case WarpKind::Cubic: p = warp_cubic(p); break;
+        }
+    }
+    for (int k = 0; k < 3; ++k) p[k] = std::clamp(p[k], -kCoordinateLimit, kCoordinateLimit);
+    return p;
+}
+
+// ---- Pattern functions (pattern.cpp), in POV-Ray's order of arithmetic. ----
+
+double agate(const PatternParams& params, const Vec3& p, int gen) {
+    const Warp* turb = classic_turbulence(params);
+    TurbulenceParams tp = turb ? turb_params(turb->turbulence) : TurbulenceParams{};
+    double turb_val = params.agate_turb * turbulence(p, tp, gen);
+    double v = 0.5 * (cycloidal(1.3 * turb_val + 1.1 * p.z) + 1.0);
+    if (v < 0.0) return 0.0;
+    return std::pow(std::min(1.0, v), 0.77);
+}
+
+double boxed(const Vec3& p) {
+    return clip_density(std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
+}
+
+// The fractional part as POV-Ray's brick computes it: truncation, then +1 if negative.
+double brick_frac(double v) {
+    double f = v - static_cast<double>(static_cast<int>(v));
+    return f < 0.0 ? f + 1.0 : f;
+}
+
+double brick(const PatternParams& params, const Vec3& p) {
+    const double fudge = kPovEpsilon + params.mortar;
+    const double x = p.x + fudge, y = p.y + fudge, z = p.z + fudge;
+    const Vec3& size = params.brick_size;
+    const double mortar_w = params.mortar / size.x;
+    const double mortar_h = params.mortar / size.y;
+    const double mortar_d = params.mortar / size.z;
+    if (brick_frac(y / size.y) <= mortar_h) return 0.0;  // horizontal mortar layers
+    const double row = brick_frac((y / size.y) * 0.5);    // odd or even course
+    if (brick_frac(x / size.x) <= mortar_w && row <= 0.5) return 0.0;
+    if (brick_frac(x / size.x + 0.5) <= mortar_w && row > 0.5) return 0.0;
+    if (brick_frac(z / size.z) <= mortar_d && row > 0.5) return 0.0;
+    if (brick_frac(z / size.z + 0.5) <= mortar_d && row <= 0.5) return 0.0;
+    return 1.0;
+}
+
+double cells(const Vec3& p) {
+    int h = hash3d(static_cast<int>(std::floor(p.x + kPovEpsilon)),
+                   static_cast<int>(std::floor(p.y + kPovEpsilon)),
+                   static_cast<int>(std::floor(p.z + kPovEpsilon)));
+    return std::min(pattern_random(static_cast<unsigned>(h)), 1.0);
+}
+
+double checker(const Vec3& p) {
+    int v = static_cast<int>(std::floor(p.x + kPovEpsilon) + std::floor(p.y + kPovEpsilon) +
+                             std::floor(p.z + kPovEpsilon));
+    return (v & 1) ? 1.0 : 0.0;
+}
+
+// The 81 cube offsets crackle and facets search: within a "3d knight move" (at most one
+// coordinate of magnitude 2), in POV-Ray's order.
+struct CubeOffsets {
+    std::array<std::array<int, 3>, 81> d{};
+    constexpr CubeOffsets() {
+        int n = 0;
+        for (int x = -2; x <= 2; ++x)
+            for (int y = -2; y <= 2; ++y)
+                for (int z = -2; z <= 2; ++z)
+                    if ((x == 2 || x == -2) + (y == 2 || y == -2) + (z == 2 || z == -2) <= 1)
+                        d[n++] = {x, y, z};
+    }
+};
+constexpr CubeOffsets kCubeOffsets;
+
+// IntPickInCube: the jittered feature point of lattice cube (x, y, z).
+Vec3 cube_point(int x, int y, int z) {
+    unsigned seed = static_cast<unsigned>(hash3d(x & 0xFFF, y & 0xFFF, z & 0xFFF));
+    return {x + pattern_random(seed), y + pattern_random(seed + 1), z + pattern_random(seed + 2)};
+}
+
+double crackle_distance(const Vec3& d, double metric) {
+    if (metric == 2) return d.x * d.x + d.y * d.y + d.z * d.z;
+    if (metric == 1) return std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z);
+    return std::pow(std::fabs(d.x), metric) + std::pow(std::fabs(d.y), metric) +
+           std::pow(std::fabs(d.z), metric);
+}
+
+double crackle(const PatternParams& params, const Vec3& p, int gen) {
+    const double metric = params.crackle_metric;
+    const int fx = static_cast<int>(std::floor(p.x - kPovEpsilon));
+    const int fy = static_cast<int>(std::floor(p.y - kPovEpsilon));
+    const int fz = static_cast<int>(std::floor(p.z - kPovEpsilon));
+    Vec3 pts[81];
+    for (int i = 0; i < 81; ++i) {
+        const auto& o = kCubeOffsets.d[i];
+        pts[i] = cube_point(fx + o[0], fy + o[1], fz + o[2]);
+    }
+    // The three smallest distances, kept as POV-Ray keeps them (ties resolve the same way).
+    double m1 = crackle_distance(pts[0] - p, metric);
+    double m2 = crackle_distance(pts[1] - p, metric);
+    double m3 = crackle_distance(pts[2] - p, metric);
+    int nearest = 0;
+    if (m2 < m1) {
+        std::swap(m1, m2);
+        nearest = 1;
+    }
+    if (m3 < m1) {
+        std::swap(m1, m3);
+        nearest = 2;
+    }
+    if (m3 < m2) std::swap(m2, m3);
+    for (int i = 3; i < 81; ++i) {
+        double s = crackle_distance(pts[i] - p, metric);
+        if (s < m1) {
+            m3 = m2;
+            m2 = m1;
+            m1 = s;
+            nearest = i;
+        } else if (s < m2) {
+            m3 = m2;
+            m2 = s;
+        } else if (s < m3) {
+            m3 = s;
+        }
+    }
+    const double offset = params.crackle_offset;
+    if (offset != 0.0) {
+        double add = metric == 2 ? offset * offset
+                                 : (metric == 1 ? offset : std::pow(offset, metric));
+        m1 += add;
+        m2 += add;
+        m3 += add;
+    }
+    const Vec3& form = params.crackle_form;
+    double v;
+    if (params.crackle_solid) {
+        v = noise(pts[nearest], gen);
+    } else if (metric == 2) {
+        v = form.x * std::sqrt(m1) + form.y * std::sqrt(m2) + form.z * std::sqrt(m3);
+    } else if (metric == 1) {
+        v = form.x * m1 + form.y * m2 + form.z * m3;
+    } else {
+        v = form.x * std::pow(m1, 1.0 / metric) + form.y * std::pow(m2, 1.0 / metric) +
+            form.z * std::pow(m3, 1.0 / metric);
+    }
+    return std::max(std::min(v, 1.), 0.);
+}
+
+double cylindrical(const Vec3& p) { return clip_density(std::sqrt(p.x * p.x + p.z * p.z)); }
+
+double gradient(const PatternParams& params, const Vec3& p) {
+    double r = dot(p, params.vector);
+    return r > 1.0 ? std::fmod(r, 1.0) : r;
+}
+
+double granite(const Vec3& p, int gen) {
+    double sum = 0.0, freq = 1.0;
+    const Vec3 base = p * 4.0;
+    for (int i = 0; i < 6; freq *= 2.0, ++i) {
+        Vec3 q = base * freq;
+        double t;
+        if (gen == 1) {
+            t = std::fabs(0.5 - noise(q, gen));
+        } else {
+            t = std::fabs(1.0 - 2.0 * noise(q, gen));
+            if (t > 0.5) t = 0.5;
+        }
+        sum += t / freq;
+    }
+    return sum;
+}
+
+double hexagon(const Vec3& p) {
+    constexpr double kXFactor = 0.5;          // each triangle is split in half for the grid
+    constexpr double kZFactor = 0.866025404;  // sqrt(3)/2 as POV-Ray writes it
+    double x = std::fabs(p.x);
+    // Negative z is mapped so the pattern does not mirror across the x axis (6 rows high).
+    double z = p.z < 0.0 ? 5.196152424 - std::fabs(p.z) : p.z;
+    double xs = x / kXFactor, zs = z / kZFactor;
+    xs -= std::floor(xs / 6.0) * 6.0;
+    zs -= std::floor(zs / 6.0) * 6.0;
+    int xm = static_cast<int>(pov_floor(xs)) % 6;
+    int zm = static_cast<int>(pov_floor(zs)) % 6;
+    // Blocks 0/5 and 2/3 along x depend on zm only; blocks 1/4 are split by a diagonal.
+    static constexpr int kOuter[6] = {0, 1, 1, 2, 2, 0};   // xm 0, 5
+    static constexpr int kInner[6] = {2, 2, 0, 0, 1, 1};   // xm 2, 3
+    static constexpr int kBelow[6] = {0, 2, 1, 0, 2, 1};   // xm 1, 4, under the diagonal
+    static constexpr int kAbove[6] = {2, 1, 0, 2, 1, 0};   // xm 1, 4, over it
+    switch (xm) {
+        case 0:
+        case 5: return kOuter[zm];
+        case 2:
+        case 3: return kInner[zm];
+        default: {
+            double xl = xs - xm, zl = zs - zm;
+            if (((xm + zm) % 2) == 1) xl = 1.0 - xl;
+            if (xl == 0.0) xl = 0.0001;
+            return (zl / xl) < 1.0 ? kBelow[zm] : kAbove[zm];
+        }
+    }
+}
+
+double cubic(const Vec3& p) {
+    const double x = p.x, y = p.y, z = p.z;
+    const double ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
+    if (x >= 0 && x >= ay && x >= az) return 0.0;
+    if (y >= 0 && y >= ax && y >= az) return 1.0;
+    if (z >= 0 && z >= ax && z >= ay) return 2.0;
+    if (x < 0 && x <= -ay && x <= -az) return 3.0;
+    if (y < 0 && y <= -ax && y <= -az) return 4.0;
+    return 5.0;
+}
+
+double square(const Vec3& p) {
+    int vx = static_cast<int>(std::floor(p.x));
+    int vz = static_cast<int>(std::floor(p.z));
+    if (vx & 1) return (vz & 1) ? 2.0 : 3.0;
+    return (vz & 1) ? 1.0 : 0.0;
+}
+
+double triangular(const Vec3& p) {
+    double xs = p.x - 3.0 * std::floor(p.x / 3.0);
+    double zs = p.z - kSqrt3 * std::floor(p.z / kSqrt3);
+    int a = static_cast<int>(std::floor(xs));
+    xs -= a;
+    bool b = !(zs < kSqrt3Half);
+    if (b) zs = kSqrt3 - zs;  // mirror the upper half
+    double k = 1.0 - xs;
+    double answer = 0.0;
+    if (xs != 0.0 && k != 0.0) {
+        int c = (zs / xs < kSqrt3 ? 1 : 0) + (zs / k < kSqrt3 ? 2 : 0);
+        if (c == 3) {
+            answer = 0.0;
+        } else if (c == 2) {
+            answer = 1.0;
+        } else if (c == 1) {
+            answer = 3.0;
+        }
+    } else {
+        answer = 1.0;
+    }
+    int mask = static_cast<int>(answer);
+    answer = (mask & 1) ? std::fmod(answer + 2.0 * a, 6.0) : std::fmod(6.0 + answer - 2.0 * a, 6.0);
+    return b ? 5.0 - answer : answer;
+}
+
+double fractal_exterior(const PatternParams& params, int iters, double a, double b) {
+    const double f = params.exterior_factor;
+    switch (params.exterior_type) {
+        case 0: return f;
+        case 1: return static_cast<double>(iters) / static_cast<double>(params.iterations);
+        case 2: return a * f;
+        case 3: return b * f;
+        case 4: return a * a * f;
+        case 5: return b * b * f;
+        case 6: return std::sqrt(a * a + b * b) * f;
+        case 7: return static_cast<double>(iters % static_cast<unsigned>(f)) / f;
+        case 8: return static_cast<double>(iters % static_cast<unsigned>(1 + f)) / f;
+        default: return 0;
+    }
+}
+
+double fractal_interior(const PatternParams& params, double a, double b, double mindist2) {
+    const double f = params.interior_factor;
+    switch (params.interior_type) {
+        case 0: return f;
+        case 1: return std::sqrt(mindist2) * f;
+        case 2: return a * f;
+        case 3: return b * f;
+        case 4: return a * a * f;
+        case 5: return b * b * f;
+        case 6: return a * a + b * b * f;  // sic: POV-Ray scales only b^2
+        default: return 0;
+    }
+}
+
+// mandel and julia with exponent 2: z -> z^2 + c.
+double fractal2(const PatternParams& params, const Vec3& p, bool julia) {
+    double a = p.x, b = p.y;
+    const double cr = julia ? params.julia_param.x : p.x;
+    const double ci = julia ? params.julia_param.y : p.y;
+    double a2 = a * a, b2 = b * b;
+    double mindist2 = a2 + b2;
+    const int it_max = params.iterations;
+    for (int col = 0; col < it_max; ++col) {
+        b = 2.0 * a * b + ci;
+        a = a2 - b2 + cr;
+        a2 = a * a;
+        b2 = b * b;
+        double dist2 = a2 + b2;
+        if (dist2 < mindist2) mindist2 = dist2;
+        if (dist2 > 4.0) return fractal_exterior(params, col, a, b);
+    }
+    return fractal_interior(params, a, b, mindist2);
+}
+
+// mandel and julia with exponent 3 or 4 (POV-Ray's mandel3/4, julia3/4 expand the powers).
+double fractal34(const PatternParams& params, const Vec3& p, bool julia, int exponent) {
+    double a = p.x, b = p.y;
+    const double cr = julia ? params.julia_param.x : p.x;
+    const double ci = julia ? params.julia_param.y : p.y;
+    double a2 = a * a, b2 = b * b;
+    double mindist2 = a2 + b2;
+    const int it_max = params.iterations;
+    for (int col = 0; col < it_max; ++col) {
+        if (exponent == 3) {
+            b = 3.0 * a2 * b - b2 * b + ci;
+            a = a2 * a - 3.0 * a * b2 + cr;
+        } else {
+            b = 4.0 * (a2 * a * b - a * b2 * b) + ci;
+            a = a2 * a2 - 6.0 * a2 * b2 + b2 * b2 + cr;
+        }
+        a2 = a * a;
+        b2 = b * b;
+        double dist2 = a2 + b2;
+        if (dist2 < mindist2) mindist2 = dist2;
+        if (dist2 > 4.0) return fractal_exterior(params, col, a, b);
+    }
+    return fractal_interior(params, a, b, mindist2);
+}
+
+double leopard(const Vec3& p) {
+    double t1 = std::sin(p.x), t2 = std::sin(p.y), t3 = std::sin(p.z);
+    double v = (t1 + t2 + t3) / 3.0;
+    return v * v;
+}
+
+double marble(const PatternParams& params, const Vec3& p, int gen) {
+    const Warp* turb = classic_turbulence(params);
+    double turb_val = turb ? turb->turbulence.amount.x *
+                                 turbulence(p, turb_params(turb->turbulence), gen)
+                           : 0.0;
+    return p.x + turb_val;
+}
+
+double onion(const Vec3& p) { return std::fmod(std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z), 1.0); }
+
+double planar(const Vec3& p) { return clip_density(std::fabs(p.y)); }
+
+// quilt_cubic: a Bezier blend with end values 0 and 1 and control values c0, c1.
+double quilt_cubic(double t, double c0, double c1) {
+    constexpr double kInvSqrt3Over4 = 1.154700538;
+    double it = 1 - t;
+    double itsqrd = it * it;
+    double tsqrd = t * t;
+    double tcubed = t * tsqrd;
+    return (tcubed + 3.0 * t * itsqrd * c0 + 3.0 * tsqrd * it * c1) * kInvSqrt3Over4;
+}
+
+Vec3 quilt_vector(const PatternParams& params, const Vec3& p) {
+    Vec3 v(p.x - pov_floor(p.x) - 0.5, p.y - pov_floor(p.y) - 0.5, p.z - pov_floor(p.z) - 0.5);
+    double t = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    t = quilt_cubic(t, params.control0, params.control1);
+    return {v.x * t, v.y * t, v.z * t};
+}
+
+double quilted(const PatternParams& params, const Vec3& p) {
+    Vec3 v = quilt_vector(params, p);
+    return (std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z)) / 3.0;
+}
+
+double radial(const Vec3& p) {
+    if (std::fabs(p.x) < 0.001 && std::fabs(p.z) < 0.001) return 0.25;
+    return 0.25 + (std::atan2(p.x, p.z) + kPi) / kTwoPi;
+}
+
+double ripples(const PatternParams& params, const Vec3& p, const PatternContext& ctx) {
+    const WaveTables& w = wave_tables();
+    const int n = wave_count(ctx);
+    double scalar = 0.0;
+    for (int i = 0; i < n; ++i) {
+        double len = length(p - w.source[i]);
+        if (len == 0.0) len = 1.0;
+        scalar += cycloidal(len * params.frequency + params.phase);
+    }
+    return 0.5 * (1.0 + (scalar / static_cast<double>(n)));
+}
+
+double waves(const PatternParams& params, const Vec3& p, const PatternContext& ctx) {
+    const WaveTables& w = wave_tables();
+    const int n = wave_count(ctx);
+    double scalar = 0.0;
+    for (int i = 0; i < n; ++i) {
+        double len = length(p - w.source[i]);
+        if (len == 0.0) len = 1.0;
+        double index = len * params.frequency * w.frequency[i] + params.phase;
+        scalar += cycloidal(index) / w.frequency[i];
+    }
+    return 0.2 * (2.5 + (scalar / static_cast<double>(n)));
+}
+
+// Angle around the z axis in [0, 2 pi), as spiral1/spiral2 compute it.
+double spiral_angle(double x, double y, double rad) {
+    if (rad == 0.0) return 0.0;
+    return x < 0.0 ? 3.0 * kHalfPi - std::asin(y / rad) : kHalfPi + std::asin(y / rad);
+}
+
+double spiral_turbulence(const PatternParams& params, const Vec3& p, int gen) {
+    const Warp* turb = classic_turbulence(params);
+    return turb ? turb->turbulence.amount.x * turbulence(p, turb_params(turb->turbulence), gen)
+                : 0.0;
+}
+
+double spiral1(const PatternParams& params, const Vec3& p, int gen) {
+    double turb_val = spiral_turbulence(params, p, gen);
+    double rad = std::sqrt(p.x * p.x + p.y * p.y);
+    double phi = spiral_angle(p.x, p.y, rad);
+    return p.z + rad + static_cast<double>(params.arms) * phi / kTwoPi + turb_val;
+}
+
+double spiral2(const PatternParams& params, const Vec3& p, int gen) {
+    double turb_val = spiral_turbulence(params, p, gen);
+    double rad = std::sqrt(p.x * p.x + p.y * p.y);
+    double phi = spiral_angle(p.x, p.y, rad);
+    turb_val = triangle_wave(p.z + rad + static_cast<double>(params.arms) * phi / kTwoPi +
+                             turb_val);
+    return triangle_wave(rad) + turb_val;
+}
+
+double spherical(const Vec3& p) { return clip_density(length(p)); }
+
+double wood(const PatternParams& params, const Vec3& p) {
+    double px = 0.0, py = 0.0;
+    if (const Warp* turb = classic_turbulence(params)) {
+        Vec3 t = dturbulence(p, turb_params(turb->turbulence));
+        px = cycloidal((p.x + t.x) * turb->turbulence.amount.x);
+        py = cycloidal((p.y + t.y) * turb->turbulence.amount.y);
+    }
+    px += p.x;
+    py += p.y;
+    return std::sqrt(px * px + py * py);
+}
+
+double wrinkles(const Vec3& p, int gen) {
+    double value;
+    if (gen > 1) {
+        value = std::clamp(noise(p, gen) * 2.0 - 0.5, 0.0, 1.0);
+    } else {
+        value = noise(p, gen);
+    }
+    double lambda = 2.0, omega = 0.5;
+    for (int i = 1; i < 10; ++i) {
+        Vec3 q = p * lambda;
+        if (gen > 1) {
+            value += omega * std::clamp(noise(q, gen) * 2.0 - 0.5, 0.0, 1.0);
+        } else {
+            value += omega * noise(q, gen);
+        }
+        lambda *= 2.0;
+        omega *= 0.5;
+    }
+    return value / 2.0;
+}
+
+double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
+                   const PatternContext& ctx) {
+    switch (kind) {
+        case PatternKind::Agate: return agate(params, p, noise_generator(params, ctx));
+        case PatternKind::Bozo:
+        case PatternKind::Spotted:
+        case PatternKind::Bumps: return noise(p, noise_generator(params, ctx));
+        case PatternKind::Boxed: return boxed(p);
+        case PatternKind::Brick: return brick(params, p);
+        case PatternKind::Cells: return cells(p);
+        case PatternKind::Checker: return checker(p);
+        case PatternKind::Crackle: return crackle(params, p, noise_generator(params, ctx));
+        case PatternKind::Cylindrical: return cylindrical(p);
+        case PatternKind::Dents: {
+            double n = noise(p, noise_generator(params, ctx));
+            return n * n * n;
+        }
+        case PatternKind::Gradient: return gradient(params, p);
+        case PatternKind::Granite: return granite(p, noise_generator(params, ctx));
+        case PatternKind::Hexagon: return hexagon(p);
+        case PatternKind::Square: return square(p);
+        case PatternKind::Triangular: return triangular(p);
+        case PatternKind::Cubic: return cubic(p);
+        case PatternKind::Leopard: return leopard(p);
+        case PatternKind::Mandel:
+        case PatternKind::Julia: {
+            const bool julia = kind == PatternKind::Julia;
+            if (params.fractal_exponent == 3 || params.fractal_exponent == 4)
+                return fractal34(params, p, julia, static_cast<int>(params.fractal_exponent));
+            return fractal2(params, p, julia);
+        }
+        case PatternKind::Marble: return marble(params, p, noise_generator(params, ctx));
+        case PatternKind::Onion: return onion(p);
+        case PatternKind::Planar: return planar(p);
+        case PatternKind::Quilted: return quilted(params, p);
+        case PatternKind::Radial: return radial(p);
+        case PatternKind::Ripples: return ripples(params, p, ctx);
+        case PatternKind::Spherical: return spherical(p);
+        case PatternKind::Spiral1: return spiral1(params, p, noise_generator(params, ctx));
+        case PatternKind::Spiral2: return spiral2(params, p, noise_generator(params, ctx));
+        case PatternKind::Waves: return waves(params, p, ctx);
+        case PatternKind::Wood: return wood(params, p);
+        case PatternKind::Wrinkles: return wrinkles(p, noise_generator(params, ctx));
+        case PatternKind::Facets:  // normal-only; as a value POV-Ray has none
+        case PatternKind::Plain:
+        case PatternKind::ImageMap:
+        case PatternKind::Function:
+        case PatternKind::Average: return 0.0;
+    }
+    return 0.0;
+}
+
+// ---- Special normals (normal.cpp). `n` and the result are in the warped pattern space. ----
+
+// PickInCube: the jittered point of the cube holding tv (floor of tv - EPSILON).
+Vec3 pick_in_cube(const Vec3& tv) {
+    Vec3 flo(std::floor(tv.x - kPovEpsilon), std::floor(tv.y - kPovEpsilon),
+             std::floor(tv.z - kPovEpsilon));
+    unsigned seed = static_cast<unsigned>(hash3d(static_cast<int>(flo.x),
+                                                 static_cast<int>(flo.y),
+                                                 static_cast<int>(flo.z)));
+    return {flo.x + pattern_random(seed), flo.y + pattern_random(seed + 1),
+            flo.z + pattern_random(seed + 2)};
+}
+
+Vec3 facets_normal(const PatternParams& params, const Vec3& p, const Vec3& normal_in) {
+    const double metric = params.facets_metric;
+    Vec3 n = normalize(normal_in);
+    const bool use_coords = params.facets_coords != 0.0;
+    Vec3 tv = use_coords ? p : n;
+    double scale = params.facets_size < 1e-6 ? 1e6 : 1. / params.facets_size;
+    tv = tv * scale;
+    auto distance = [metric](const Vec3& d) {
+        if (metric == 2) return d.x * d.x + d.y * d.y + d.z * d.z;
+        if (metric == 1) return d.x + d.y + d.z;  // sic: POV-Ray's facets sums signed values
+        return std::pow(std::fabs(d.x), metric) + std::pow(std::fabs(d.y), metric) +
+               std::pow(std::fabs(d.z), metric);
+    };
+    // POV-Ray walks the 5x5x5 block with double steps, knight-move cubes only.
+    double best = 0.0;
+    Vec3 nearest;
+    bool first = true;
+    for (double ax = -2.0; ax < 2.5; ax += 1.0)
+        for (double ay = -2.0; ay < 2.5; ay += 1.0)
+            for (double az = -2.0; az < 2.5; az += 1.0) {
+                if ((std::fabs(ax) > 1.5) + (std::fabs(ay) > 1.5) + (std::fabs(az) > 1.5) > 1)
+                    continue;
+                Vec3 c = pick_in_cube(tv + Vec3(ax, ay, az));
+                double s = distance(c - tv);
+                if (first || s < best) {
+                    best = s;
+                    nearest = c;
+                    first = false;
+                }
+            }
+    if (use_coords) {
+        Vec3 pert = dnoise(nearest);
+        double s = dot(pert, n);
+        pert = pert - n * s;
+        return n + pert * params.facets_coords;
+    }
+    return nearest;
+}
+
+}  // namespace
+
+bool is_block_pattern(PatternKind kind) {
+    switch (kind) {
+        case PatternKind::Checker:
+        case PatternKind::Brick:
+        case PatternKind::Hexagon:
+        case PatternKind::Square:
+        case PatternKind::Triangular:
+        case PatternKind::Cubic: return true;
+        default: return false;
+    }
+}
+
+Vec3 warp_point(PatternKind kind, const PatternParams& params, const Vec3& p) {
+    return apply_warps(kind, params, p);
+}
+
+double evaluate_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
+                        const PatternContext& ctx) {
+    const Vec3 q = params.warps.empty() ? p : apply_warps(kind, params, p);
+    double value = raw_pattern(kind, params, q, ctx);
+    if (is_block_pattern(kind)) return value;
+    // Evaluate_TPat: frequency and phase, with POV-Ray's 1.00001 modulus, then the wave.
+    if (params.frequency != 0.0) value = std::fmod(value * params.frequency + params.phase, 1.00001);
+    if (value < 0.0) value -= std::floor(value);
+    switch (params.wave) {
+        case scene::WaveType::Ramp: break;
+        case scene::WaveType::Sine: value = (1.0 + cycloidal(value)) * 0.5; break;
+        case scene::WaveType::Triangle: value = triangle_wave(value); break;
+        case scene::WaveType::Scallop: value = std::fabs(cycloidal(value * 0.5)); break;
+        case scene::WaveType::Cubic: value = value * value * ((-2.0 * value) + 3.0); break;
+        case scene::WaveType::Poly: value = std::pow(value, params.wave_exponent); break;
+    }
+    return value;
+}
+
+bool has_special_normal(PatternKind kind) {
+    switch (kind) {
+        case PatternKind::Bumps:
+        case PatternKind::Dents:
+        case PatternKind::Ripples:
+        case PatternKind::Waves:
+        case PatternKind::Wrinkles:
+        case PatternKind::Quilted:
+        case PatternKind::Facets: return true;
+        default: return false;
+    }
+}
+
+Vec3 special_normal(PatternKind kind, const PatternParams& params, const Vec3& p_pattern,
+                    const Vec3& normal, double amount, const PatternContext& ctx) {
+    // Warp_Normal: `warp { transform }` entries carry the normal into the warped space.
+    Vec3 n = normal;
+    for (const Warp& w : params.warps)
+        if (w.kind == WarpKind::Transform) n = w.transform.inverse().normal(n);
+    const Vec3 p = params.warps.empty() ? p_pattern : apply_warps(kind, params, p_pattern);
+    switch (kind) {
+        case PatternKind::Bumps: n += dnoise(p) * amount; break;
+        case PatternKind::Dents: {
+            double v = noise(p, noise_generator(params, ctx));
+            n += dnoise(p) * (v * v * v * amount);
+            break;
+        }
+        case PatternKind::Ripples:
+        case PatternKind::Waves: {
+            const WaveTables& w = wave_tables();
+            const int count = wave_count(ctx);
+            const bool is_waves = kind == PatternKind::Waves;
+            for (int i = 0; i < count; ++i) {
+                Vec3 d = p - w.source[i];
+                double len = length(d);
+                if (len == 0.0) len = 1.0;
+                double scalar;
+                if (is_waves) {
+                    double index = len * params.frequency * w.frequency[i] + params.phase;
+                    scalar = cycloidal(index) * amount / w.frequency[i];
+                } else {
+                    scalar = cycloidal(len * params.frequency + params.phase) * amount;
+                }
+                n += d * (scalar / (len * static_cast<double>(count)));
+            }
+            break;
+        }
+        case PatternKind::Wrinkles: {
+            Vec3 sum(0, 0, 0);
+            double scale = 1.0;
+            for (int i = 0; i < 10; scale *= 2.0, ++i) {
+                Vec3 v = dnoise(p * scale);
+                sum.x += std::fabs(v.x / scale);
+                sum.y += std::fabs(v.y / scale);
+                sum.z += std::fabs(v.z / scale);
+            }
+            n += sum * amount;
+            break;
+        }
+        case PatternKind::Quilted: n += quilt_vector(params, p) * amount; break;
+        case PatternKind::Facets: n = facets_normal(params, p, n); break;
+        default: break;
+    }
+    // UnWarp_Normal: back through the warp transforms, last first.
+    for (auto it = params.warps.rbegin(); it != params.warps.rend(); ++it)
+        if (it->kind == WarpKind::Transform) n = it->transform.normal(n);
+    double len = length(n);
+    return len > 0.0 ? n / len : normal;
+}
+
+}  // namespace glint::render
