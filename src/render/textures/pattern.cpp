@@ -69,10 +69,10 @@ struct WaveTables {
         int32_t next_rand = -560851967;
         for (int i = 0; i < kMaxWaves; ++i) {
             source[i] = normalize(dnoise(Vec3(i, 0.0, 0.0)));
-            next_rand = static_cast<int32_t>(static_cast<uint32_t>(next_rand) * 1812433253u +
-                                             12345u);
-            frequency[i] = static_cast<double>((next_rand >> 16) & 0x7FFF) * 0.000030518509476 +
-                           0.01;
+            next_rand =
+                static_cast<int32_t>(static_cast<uint32_t>(next_rand) * 1812433253u + 12345u);
+            frequency[i] =
+                static_cast<double>((next_rand >> 16) & 0x7FFF) * 0.000030518509476 + 0.01;
         }
     }
 };
@@ -238,14 +238,30 @@ Vec3 apply_warps(PatternKind kind, const PatternParams& params, const Vec3& p_in
                 p.z += t.z * w.turbulence.amount.z;
                 break;
             }
-            case WarpKind::Transform: p = w.transform.inverse_point(p); break;
-            case WarpKind::Repeat: p = warp_repeat(w, p); break;
-            case WarpKind::BlackHole: p = warp_black_hole(w, p); break;
-            case WarpKind::Cylindrical: p = warp_cylindrical(w, p); break;
-            case WarpKind::Spherical: p = warp_spherical(w, p); break;
-            case WarpKind::Toroidal: p = warp_toroidal(w, p); break;
-            case WarpKind::Planar: p = orient(w.orientation, p.x, p.y, w.planar_offset); break;
-            case WarpKind::Cubic: p = warp_cubic(p); break;
+            case WarpKind::Transform:
+                p = w.transform.inverse_point(p);
+                break;
+            case WarpKind::Repeat:
+                p = warp_repeat(w, p);
+                break;
+            case WarpKind::BlackHole:
+                p = warp_black_hole(w, p);
+                break;
+            case WarpKind::Cylindrical:
+                p = warp_cylindrical(w, p);
+                break;
+            case WarpKind::Spherical:
+                p = warp_spherical(w, p);
+                break;
+            case WarpKind::Toroidal:
+                p = warp_toroidal(w, p);
+                break;
+            case WarpKind::Planar:
+                p = orient(w.orientation, p.x, p.y, w.planar_offset);
+                break;
+            case WarpKind::Cubic:
+                p = warp_cubic(p);
+                break;
         }
     }
     for (int k = 0; k < 3; ++k) p[k] = std::clamp(p[k], -kCoordinateLimit, kCoordinateLimit);
@@ -281,7 +297,7 @@ double brick(const PatternParams& params, const Vec3& p) {
     const double mortar_h = params.mortar / size.y;
     const double mortar_d = params.mortar / size.z;
     if (brick_frac(y / size.y) <= mortar_h) return 0.0;  // horizontal mortar layers
-    const double row = brick_frac((y / size.y) * 0.5);    // odd or even course
+    const double row = brick_frac((y / size.y) * 0.5);   // odd or even course
     if (brick_frac(x / size.x) <= mortar_w && row <= 0.5) return 0.0;
     if (brick_frac(x / size.x + 0.5) <= mortar_w && row > 0.5) return 0.0;
     if (brick_frac(z / size.z) <= mortar_d && row > 0.5) return 0.0;
@@ -370,8 +386,8 @@ double crackle(const PatternParams& params, const Vec3& p, int gen) {
     }
     const double offset = params.crackle_offset;
     if (offset != 0.0) {
-        double add = metric == 2 ? offset * offset
-                                 : (metric == 1 ? offset : std::pow(offset, metric));
+        double add =
+            metric == 2 ? offset * offset : (metric == 1 ? offset : std::pow(offset, metric));
         m1 += add;
         m2 += add;
         m3 += add;
@@ -427,15 +443,17 @@ double hexagon(const Vec3& p) {
     int xm = static_cast<int>(pov_floor(xs)) % 6;
     int zm = static_cast<int>(pov_floor(zs)) % 6;
     // Blocks 0/5 and 2/3 along x depend on zm only; blocks 1/4 are split by a diagonal.
-    static constexpr int kOuter[6] = {0, 1, 1, 2, 2, 0};   // xm 0, 5
-    static constexpr int kInner[6] = {2, 2, 0, 0, 1, 1};   // xm 2, 3
-    static constexpr int kBelow[6] = {0, 2, 1, 0, 2, 1};   // xm 1, 4, under the diagonal
-    static constexpr int kAbove[6] = {2, 1, 0, 2, 1, 0};   // xm 1, 4, over it
+    static constexpr int kOuter[6] = {0, 1, 1, 2, 2, 0};  // xm 0, 5
+    static constexpr int kInner[6] = {2, 2, 0, 0, 1, 1};  // xm 2, 3
+    static constexpr int kBelow[6] = {0, 2, 1, 0, 2, 1};  // xm 1, 4, under the diagonal
+    static constexpr int kAbove[6] = {2, 1, 0, 2, 1, 0};  // xm 1, 4, over it
     switch (xm) {
         case 0:
-        case 5: return kOuter[zm];
+        case 5:
+            return kOuter[zm];
         case 2:
-        case 3: return kInner[zm];
+        case 3:
+            return kInner[zm];
         default: {
             double xl = xs - xm, zl = zs - zm;
             if (((xm + zm) % 2) == 1) xl = 1.0 - xl;
@@ -492,30 +510,48 @@ double triangular(const Vec3& p) {
 double fractal_exterior(const PatternParams& params, int iters, double a, double b) {
     const double f = params.exterior_factor;
     switch (params.exterior_type) {
-        case 0: return f;
-        case 1: return static_cast<double>(iters) / static_cast<double>(params.iterations);
-        case 2: return a * f;
-        case 3: return b * f;
-        case 4: return a * a * f;
-        case 5: return b * b * f;
-        case 6: return std::sqrt(a * a + b * b) * f;
-        case 7: return static_cast<double>(iters % static_cast<unsigned>(f)) / f;
-        case 8: return static_cast<double>(iters % static_cast<unsigned>(1 + f)) / f;
-        default: return 0;
+        case 0:
+            return f;
+        case 1:
+            return static_cast<double>(iters) / static_cast<double>(params.iterations);
+        case 2:
+            return a * f;
+        case 3:
+            return b * f;
+        case 4:
+            return a * a * f;
+        case 5:
+            return b * b * f;
+        case 6:
+            return std::sqrt(a * a + b * b) * f;
+        case 7:
+            return static_cast<double>(iters % static_cast<unsigned>(f)) / f;
+        case 8:
+            return static_cast<double>(iters % static_cast<unsigned>(1 + f)) / f;
+        default:
+            return 0;
     }
 }
 
 double fractal_interior(const PatternParams& params, double a, double b, double mindist2) {
     const double f = params.interior_factor;
     switch (params.interior_type) {
-        case 0: return f;
-        case 1: return std::sqrt(mindist2) * f;
-        case 2: return a * f;
-        case 3: return b * f;
-        case 4: return a * a * f;
-        case 5: return b * b * f;
-        case 6: return a * a + b * b * f;  // sic: POV-Ray scales only b^2
-        default: return 0;
+        case 0:
+            return f;
+        case 1:
+            return std::sqrt(mindist2) * f;
+        case 2:
+            return a * f;
+        case 3:
+            return b * f;
+        case 4:
+            return a * a * f;
+        case 5:
+            return b * b * f;
+        case 6:
+            return a * a + b * b * f;  // sic: POV-Ray scales only b^2
+        default:
+            return 0;
     }
 }
 
@@ -572,9 +608,8 @@ double leopard(const Vec3& p) {
 
 double marble(const PatternParams& params, const Vec3& p, int gen) {
     const Warp* turb = classic_turbulence(params);
-    double turb_val = turb ? turb->turbulence.amount.x *
-                                 turbulence(p, turb_params(turb->turbulence), gen)
-                           : 0.0;
+    double turb_val =
+        turb ? turb->turbulence.amount.x * turbulence(p, turb_params(turb->turbulence), gen) : 0.0;
     return p.x + turb_val;
 }
 
@@ -657,8 +692,8 @@ double spiral2(const PatternParams& params, const Vec3& p, int gen) {
     double turb_val = spiral_turbulence(params, p, gen);
     double rad = std::sqrt(p.x * p.x + p.y * p.y);
     double phi = spiral_angle(p.x, p.y, rad);
-    turb_val = triangle_wave(p.z + rad + static_cast<double>(params.arms) * phi / kTwoPi +
-                             turb_val);
+    turb_val =
+        triangle_wave(p.z + rad + static_cast<double>(params.arms) * phi / kTwoPi + turb_val);
     return triangle_wave(rad) + turb_val;
 }
 
@@ -700,27 +735,42 @@ double wrinkles(const Vec3& p, int gen) {
 double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
                    const PatternContext& ctx) {
     switch (kind) {
-        case PatternKind::Agate: return agate(params, p, noise_generator(params, ctx));
+        case PatternKind::Agate:
+            return agate(params, p, noise_generator(params, ctx));
         case PatternKind::Bozo:
         case PatternKind::Spotted:
-        case PatternKind::Bumps: return noise(p, noise_generator(params, ctx));
-        case PatternKind::Boxed: return boxed(p);
-        case PatternKind::Brick: return brick(params, p);
-        case PatternKind::Cells: return cells(p);
-        case PatternKind::Checker: return checker(p);
-        case PatternKind::Crackle: return crackle(params, p, noise_generator(params, ctx));
-        case PatternKind::Cylindrical: return cylindrical(p);
+        case PatternKind::Bumps:
+            return noise(p, noise_generator(params, ctx));
+        case PatternKind::Boxed:
+            return boxed(p);
+        case PatternKind::Brick:
+            return brick(params, p);
+        case PatternKind::Cells:
+            return cells(p);
+        case PatternKind::Checker:
+            return checker(p);
+        case PatternKind::Crackle:
+            return crackle(params, p, noise_generator(params, ctx));
+        case PatternKind::Cylindrical:
+            return cylindrical(p);
         case PatternKind::Dents: {
             double n = noise(p, noise_generator(params, ctx));
             return n * n * n;
         }
-        case PatternKind::Gradient: return gradient(params, p);
-        case PatternKind::Granite: return granite(p, noise_generator(params, ctx));
-        case PatternKind::Hexagon: return hexagon(p);
-        case PatternKind::Square: return square(p);
-        case PatternKind::Triangular: return triangular(p);
-        case PatternKind::Cubic: return cubic(p);
-        case PatternKind::Leopard: return leopard(p);
+        case PatternKind::Gradient:
+            return gradient(params, p);
+        case PatternKind::Granite:
+            return granite(p, noise_generator(params, ctx));
+        case PatternKind::Hexagon:
+            return hexagon(p);
+        case PatternKind::Square:
+            return square(p);
+        case PatternKind::Triangular:
+            return triangular(p);
+        case PatternKind::Cubic:
+            return cubic(p);
+        case PatternKind::Leopard:
+            return leopard(p);
         case PatternKind::Mandel:
         case PatternKind::Julia: {
             const bool julia = kind == PatternKind::Julia;
@@ -728,23 +778,36 @@ double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
                 return fractal34(params, p, julia, static_cast<int>(params.fractal_exponent));
             return fractal2(params, p, julia);
         }
-        case PatternKind::Marble: return marble(params, p, noise_generator(params, ctx));
-        case PatternKind::Onion: return onion(p);
-        case PatternKind::Planar: return planar(p);
-        case PatternKind::Quilted: return quilted(params, p);
-        case PatternKind::Radial: return radial(p);
-        case PatternKind::Ripples: return ripples(params, p, ctx);
-        case PatternKind::Spherical: return spherical(p);
-        case PatternKind::Spiral1: return spiral1(params, p, noise_generator(params, ctx));
-        case PatternKind::Spiral2: return spiral2(params, p, noise_generator(params, ctx));
-        case PatternKind::Waves: return waves(params, p, ctx);
-        case PatternKind::Wood: return wood(params, p);
-        case PatternKind::Wrinkles: return wrinkles(p, noise_generator(params, ctx));
+        case PatternKind::Marble:
+            return marble(params, p, noise_generator(params, ctx));
+        case PatternKind::Onion:
+            return onion(p);
+        case PatternKind::Planar:
+            return planar(p);
+        case PatternKind::Quilted:
+            return quilted(params, p);
+        case PatternKind::Radial:
+            return radial(p);
+        case PatternKind::Ripples:
+            return ripples(params, p, ctx);
+        case PatternKind::Spherical:
+            return spherical(p);
+        case PatternKind::Spiral1:
+            return spiral1(params, p, noise_generator(params, ctx));
+        case PatternKind::Spiral2:
+            return spiral2(params, p, noise_generator(params, ctx));
+        case PatternKind::Waves:
+            return waves(params, p, ctx);
+        case PatternKind::Wood:
+            return wood(params, p);
+        case PatternKind::Wrinkles:
+            return wrinkles(p, noise_generator(params, ctx));
         case PatternKind::Facets:  // normal-only; as a value POV-Ray has none
         case PatternKind::Plain:
         case PatternKind::ImageMap:
         case PatternKind::Function:
-        case PatternKind::Average: return 0.0;
+        case PatternKind::Average:
+            return 0.0;
     }
     return 0.0;
 }
@@ -755,9 +818,8 @@ double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
 Vec3 pick_in_cube(const Vec3& tv) {
     Vec3 flo(std::floor(tv.x - kPovEpsilon), std::floor(tv.y - kPovEpsilon),
              std::floor(tv.z - kPovEpsilon));
-    unsigned seed = static_cast<unsigned>(hash3d(static_cast<int>(flo.x),
-                                                 static_cast<int>(flo.y),
-                                                 static_cast<int>(flo.z)));
+    unsigned seed = static_cast<unsigned>(
+        hash3d(static_cast<int>(flo.x), static_cast<int>(flo.y), static_cast<int>(flo.z)));
     return {flo.x + pattern_random(seed), flo.y + pattern_random(seed + 1),
             flo.z + pattern_random(seed + 2)};
 }
@@ -810,8 +872,10 @@ bool is_block_pattern(PatternKind kind) {
         case PatternKind::Hexagon:
         case PatternKind::Square:
         case PatternKind::Triangular:
-        case PatternKind::Cubic: return true;
-        default: return false;
+        case PatternKind::Cubic:
+            return true;
+        default:
+            return false;
     }
 }
 
@@ -825,15 +889,27 @@ double evaluate_pattern(PatternKind kind, const PatternParams& params, const Vec
     double value = raw_pattern(kind, params, q, ctx);
     if (is_block_pattern(kind)) return value;
     // Evaluate_TPat: frequency and phase, with POV-Ray's 1.00001 modulus, then the wave.
-    if (params.frequency != 0.0) value = std::fmod(value * params.frequency + params.phase, 1.00001);
+    if (params.frequency != 0.0)
+        value = std::fmod(value * params.frequency + params.phase, 1.00001);
     if (value < 0.0) value -= std::floor(value);
     switch (params.wave) {
-        case scene::WaveType::Ramp: break;
-        case scene::WaveType::Sine: value = (1.0 + cycloidal(value)) * 0.5; break;
-        case scene::WaveType::Triangle: value = triangle_wave(value); break;
-        case scene::WaveType::Scallop: value = std::fabs(cycloidal(value * 0.5)); break;
-        case scene::WaveType::Cubic: value = value * value * ((-2.0 * value) + 3.0); break;
-        case scene::WaveType::Poly: value = std::pow(value, params.wave_exponent); break;
+        case scene::WaveType::Ramp:
+            break;
+        case scene::WaveType::Sine:
+            value = (1.0 + cycloidal(value)) * 0.5;
+            break;
+        case scene::WaveType::Triangle:
+            value = triangle_wave(value);
+            break;
+        case scene::WaveType::Scallop:
+            value = std::fabs(cycloidal(value * 0.5));
+            break;
+        case scene::WaveType::Cubic:
+            value = value * value * ((-2.0 * value) + 3.0);
+            break;
+        case scene::WaveType::Poly:
+            value = std::pow(value, params.wave_exponent);
+            break;
     }
     return value;
 }
@@ -846,8 +922,10 @@ bool has_special_normal(PatternKind kind) {
         case PatternKind::Waves:
         case PatternKind::Wrinkles:
         case PatternKind::Quilted:
-        case PatternKind::Facets: return true;
-        default: return false;
+        case PatternKind::Facets:
+            return true;
+        default:
+            return false;
     }
 }
 
@@ -859,7 +937,9 @@ Vec3 special_normal(PatternKind kind, const PatternParams& params, const Vec3& p
         if (w.kind == WarpKind::Transform) n = w.transform.inverse().normal(n);
     const Vec3 p = params.warps.empty() ? p_pattern : apply_warps(kind, params, p_pattern);
     switch (kind) {
-        case PatternKind::Bumps: n += dnoise(p) * amount; break;
+        case PatternKind::Bumps:
+            n += dnoise(p) * amount;
+            break;
         case PatternKind::Dents: {
             double v = noise(p, noise_generator(params, ctx));
             n += dnoise(p) * (v * v * v * amount);
@@ -897,9 +977,14 @@ Vec3 special_normal(PatternKind kind, const PatternParams& params, const Vec3& p
             n += sum * amount;
             break;
         }
-        case PatternKind::Quilted: n += quilt_vector(params, p) * amount; break;
-        case PatternKind::Facets: n = facets_normal(params, p, n); break;
-        default: break;
+        case PatternKind::Quilted:
+            n += quilt_vector(params, p) * amount;
+            break;
+        case PatternKind::Facets:
+            n = facets_normal(params, p, n);
+            break;
+        default:
+            break;
     }
     // UnWarp_Normal: back through the warp transforms, last first.
     for (auto it = params.warps.rbegin(); it != params.warps.rend(); ++it)

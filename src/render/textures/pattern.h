@@ -12,7 +12,7 @@ namespace glint::render {
 
 // Scene-wide settings a pattern depends on (global_settings).
 struct PatternContext {
-    int noise_generator = 2;  // global_settings { noise_generator N }; POV-Ray 3.7 default 2
+    int noise_generator = 2;   // global_settings { noise_generator N }; POV-Ray 3.7 default 2
     int number_of_waves = 10;  // global_settings { number_of_waves N }: ripples and waves
 };
 
@@ -33,8 +33,8 @@ struct PatternContext {
 // (they return 0; the callers evaluate them).
 //
 // A pattern's noise_generator is params.noise_generator when non-zero, else ctx's.
-double evaluate_pattern(scene::PatternKind kind, const scene::PatternParams& params,
-                        const Vec3& p, const PatternContext& ctx);
+double evaluate_pattern(scene::PatternKind kind, const scene::PatternParams& params, const Vec3& p,
+                        const PatternContext& ctx);
 
 // Checker, Brick, Hexagon, Square, Triangular, Cubic.
 bool is_block_pattern(scene::PatternKind kind);
