@@ -26,13 +26,26 @@ struct PatternContext {
 // warp), clamps the point to +-1e17, evaluates the pattern and, for continuous patterns,
 // applies frequency/phase (POV-Ray's fmod by 1.00001) and the wave type.
 //
-// Continuous patterns return a value in [0, 1]. Block patterns (Checker, Brick, Hexagon,
-// Square, Triangular, Cubic; see is_block_pattern) return the entry index as a double
-// (checker/brick 0..1, hexagon 0..2, square 0..3, triangular 0..5, cubic 0..5) with no
-// frequency or wave shaping. ImageMap, Plain, Average and Function are not handled here
-// (they return 0; the callers evaluate them).
+// Continuous patterns return a value in [0, 1] (POV-Ray's modulus is 1.00001, so just above 1
+// is possible; with frequency 0 a pattern's raw value, e.g. granite's, may pass 1: a map
+// lookup clamps it). Block patterns (Checker, Brick, Hexagon, Square, Triangular, Cubic; see
+// is_block_pattern) return the entry index as a double (checker/brick 0..1, hexagon 0..2,
+// square 0..3, triangular 0..5, cubic 0..5) with no frequency or wave shaping. ImageMap,
+// Plain, Average and Function are not handled here (they return 0; the callers evaluate them).
 //
 // A pattern's noise_generator is params.noise_generator when non-zero, else ctx's.
+//
+// The IR must carry POV-Ray's parse-time defaults, which this function does not invent:
+// frequency 0 for quilted (and image_pattern, block patterns); triangle_wave for marble, wood,
+// spiral1 and spiral2; the gradient vector normalized; spiral arms; mandel/julia iterations.
+// Agate without a ClassicTurbulence warp uses octaves 6, omega 0.5, lambda 2 (POV-Ray always
+// gives agate one). Marble, wood, agate and spirals read the first ClassicTurbulence warp.
+// Warp conventions: Transform holds the transform as written (`warp { scale 2 }` enlarges) and
+// is applied inversely, like the pattern's own; Repeat's flip is as written (a non-zero
+// component mirrors that axis); BlackHole's turbulence.amount is its `turbulence` (the
+// uncertainty), and POV-Ray's parse-time centre/repeat adjustment is applied here. Mandel and
+// julia support exponents 2, 3 and 4; another exponent is evaluated as 2 (the importer should
+// warn).
 double evaluate_pattern(scene::PatternKind kind, const scene::PatternParams& params, const Vec3& p,
                         const PatternContext& ctx);
 
