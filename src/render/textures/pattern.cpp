@@ -600,6 +600,47 @@ double fractal34(const PatternParams& params, const Vec3& p, bool julia, int exp
     return fractal_interior(params, a, b, mindist2);
 }
 
+// POV-Ray's signed binomial coefficients for (a + bi)^n: C(n, k), negated where i^k has a
+// negative real or imaginary part (k & 2).
+struct BinomialTable {
+    static constexpr int kMaxExponent = 33;  // FRACTAL_MAX_EXPONENT
+    std::array<std::array<double, kMaxExponent + 1>, kMaxExponent + 1> c{};
+    constexpr BinomialTable() {
+        for (int n = 0; n <= kMaxExponent; ++n) {
+            long long v = 1;
+            for (int k = 0; k <= n; ++k) {
+                c[n][k] = static_cast<double>((k & 2) ? -v : v);
+                v = v * (n - k) / (k + 1);
+            }
+        }
+    }
+};
+constexpr BinomialTable kBinomials;
+
+// mandel/julia with exponents 5..33 (POV-Ray's mandelx/juliax): the power expanded with pow().
+double fractalx(const PatternParams& params, const Vec3& p, bool julia, int exponent) {
+    double a = p.x, b = p.y;
+    const double cr = julia ? params.julia_param.x : p.x;
+    const double ci = julia ? params.julia_param.y : p.y;
+    double mindist2 = a * a + b * b;
+    const auto& coeff = kBinomials.c[exponent];
+    const int it_max = params.iterations;
+    for (int col = 0; col < it_max; ++col) {
+        double new_a = std::pow(a, exponent);
+        for (int k = 2; k <= exponent; k += 2)
+            new_a += coeff[k] * std::pow(a, exponent - k) * std::pow(b, k);
+        double new_b = 0;
+        for (int l = 1; l <= exponent; l += 2)
+            new_b += coeff[l] * std::pow(a, exponent - l) * std::pow(b, l);
+        a = new_a + cr;
+        b = new_b + ci;
+        double dist2 = a * a + b * b;
+        if (dist2 < mindist2) mindist2 = dist2;
+        if (dist2 > 4.0) return fractal_exterior(params, col, a, b);
+    }
+    return fractal_interior(params, a, b, mindist2);
+}
+
 double leopard(const Vec3& p) {
     double t1 = std::sin(p.x), t2 = std::sin(p.y), t3 = std::sin(p.z);
     double v = (t1 + t2 + t3) / 3.0;
@@ -774,8 +815,11 @@ double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
         case PatternKind::Mandel:
         case PatternKind::Julia: {
             const bool julia = kind == PatternKind::Julia;
-            if (params.fractal_exponent == 3 || params.fractal_exponent == 4)
-                return fractal34(params, p, julia, static_cast<int>(params.fractal_exponent));
+            // POV-Ray's parser truncates the exponent and allows 2..33.
+            const int e = std::clamp(static_cast<int>(params.fractal_exponent), 2,
+                                     BinomialTable::kMaxExponent);
+            if (e == 3 || e == 4) return fractal34(params, p, julia, e);
+            if (e > 4) return fractalx(params, p, julia, e);
             return fractal2(params, p, julia);
         }
         case PatternKind::Marble:

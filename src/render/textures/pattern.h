@@ -44,8 +44,7 @@ struct PatternContext {
 // is applied inversely, like the pattern's own; Repeat's flip is as written (a non-zero
 // component mirrors that axis); BlackHole's turbulence.amount is its `turbulence` (the
 // uncertainty), and POV-Ray's parse-time centre/repeat adjustment is applied here. Mandel and
-// julia support exponents 2, 3 and 4; another exponent is evaluated as 2 (the importer should
-// warn).
+// julia take exponents 2..33 (truncated and clamped, as POV-Ray's parser limits them).
 double evaluate_pattern(scene::PatternKind kind, const scene::PatternParams& params, const Vec3& p,
                         const PatternContext& ctx);
 
