@@ -168,6 +168,52 @@ public:
                     return "smooth_triangle " + vec(v.p[0]) + " " + vec(v.n[0]) + " " + vec(v.p[1]) + " " +
                            vec(v.n[1]) + " " + vec(v.p[2]) + " " + vec(v.n[2]);
                 else if constexpr (std::is_same_v<T, MeshRef>) return "mesh_ref " + std::to_string(v.mesh);
+                else if constexpr (std::is_same_v<T, Quadric>)
+                    return "quadric " + vec(v.square) + " " + vec(v.mixed) + " " + vec(v.linear) + " " +
+                           num(v.constant);
+                else if constexpr (std::is_same_v<T, Polygon>) {
+                    std::string r = "polygon " + std::to_string(v.points.size());
+                    for (const Vec3& p : v.points) r += " " + vec(p);
+                    return r;
+                } else if constexpr (std::is_same_v<T, Prism> || std::is_same_v<T, Lathe> ||
+                                     std::is_same_v<T, Sor>) {
+                    static const char* kSplines[] = {"linear_spline", "quadratic_spline",
+                                                     "cubic_spline", "bezier_spline"};
+                    std::string r;
+                    if constexpr (std::is_same_v<T, Prism>)
+                        r = std::string("prism ") + kSplines[static_cast<int>(v.spline)] +
+                            (v.conic ? " conic_sweep " : " linear_sweep ") + num(v.height1) + " " +
+                            num(v.height2);
+                    else if constexpr (std::is_same_v<T, Lathe>)
+                        r = std::string("lathe ") + kSplines[static_cast<int>(v.spline)];
+                    else
+                        r = "sor";
+                    r += " " + std::to_string(v.points.size());
+                    for (const Vec2& p : v.points) r += " <" + num(p.x) + ", " + num(p.y) + ">";
+                    if constexpr (!std::is_same_v<T, Lathe>)
+                        if (v.open) r += " open";
+                    if (v.sturm) r += " sturm";
+                    return r;
+                } else if constexpr (std::is_same_v<T, Superellipsoid>)
+                    return "superellipsoid " + num(v.e) + " " + num(v.n);
+                else if constexpr (std::is_same_v<T, Blob>) {
+                    std::string r = "blob threshold " + num(v.threshold);
+                    for (const BlobComponent& c : v.components) {
+                        r += c.cylinder ? " (cylinder " + vec(c.center) + " " + vec(c.apex)
+                                        : " (sphere " + vec(c.center);
+                        r += " " + num(c.radius) + " strength " + num(c.strength);
+                        if (!c.transform.is_identity()) r += " transform " + matrix(c.transform);
+                        r += ")";
+                    }
+                    return r;
+                } else if constexpr (std::is_same_v<T, HeightField>)
+                    return "height_field \"" + v.file + "\" water_level " + num(v.water_level) +
+                           (v.smooth ? " smooth" : "");
+                else if constexpr (std::is_same_v<T, Poly>) {
+                    std::string r = "poly " + std::to_string(v.order);
+                    for (double c : v.coefficients) r += " " + num(c);
+                    return r + (v.sturm ? " sturm" : "");
+                }
                 else {
                     static const char* kOps[] = {"union", "merge", "intersection", "difference"};
                     return std::string(kOps[static_cast<int>(v.op)]) + " (" +

@@ -5,6 +5,7 @@
 #include <unordered_set>
 
 #include "formats/pov/parser_impl.h"
+#include "formats/pov/solids.h"
 
 namespace glint::pov {
 
@@ -20,9 +21,8 @@ const std::unordered_set<std::string>& object_keywords() {
 
 const std::unordered_set<std::string>& unsupported_objects() {
     static const std::unordered_set<std::string> k = {
-        "blob", "height_field", "isosurface", "julia_fractal", "lathe", "parametric", "polygon",
-        "prism", "quadric", "cubic", "quartic", "poly", "polynomial", "sor", "sphere_sweep",
-        "superellipsoid", "text", "bicubic_patch", "ovus", "lemon", "light_group"};
+        "isosurface", "julia_fractal", "parametric", "sphere_sweep", "text", "bicubic_patch",
+        "ovus", "lemon", "light_group"};
     return k;
 }
 
@@ -69,7 +69,8 @@ bool opaque(const scene::Pigment& p) {
 }  // namespace
 
 bool Parser::is_object_keyword(const Token& t) const {
-    return t.kind == TokKind::Word && !lookup(t.text) && object_keywords().count(t.text) > 0;
+    return t.kind == TokKind::Word && !lookup(t.text) &&
+           (object_keywords().count(t.text) > 0 || is_solid_keyword(t.text));
 }
 
 void Parser::apply_transform(PovObject& o, const Transform& t) {
@@ -233,7 +234,7 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
     if (kw.kind != TokKind::Word || lookup(kw.text)) return false;
     const std::string w = kw.text;
     if (unsupported_objects().count(w)) unsupported("the '" + w + "' object");
-    if (!object_keywords().count(w)) return false;
+    if (!object_keywords().count(w) && !is_solid_keyword(w)) return false;
     FileLoc kloc = loc();
     expect_open(w.c_str());
     FileLoc o = loc();
@@ -366,6 +367,8 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
             child.lights.clear();
             if (!child.is_light) po.children.push_back(std::move(child));
         }
+    } else if (is_solid_keyword(w)) {
+        parse_solid_body(*this, w, kloc, &po.obj.shape);
     } else if (w == "light_source") {
         scene::Light l;
         l.loc = kloc;
@@ -508,7 +511,7 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
             o.obj.no_reflection = flag();
         } else if (w == "double_illuminate") {
             o.obj.double_illuminate = flag();
-        } else if (w == "no_radiosity") {
+        } else if (w == "no_radiosity" || w == "hierarchy") {
             flag();
         } else if (w == "sturm") {
             bool on = flag();

@@ -93,7 +93,9 @@ Features analyze(const Scene& scene) {
 std::vector<std::string> Features::used() const {
     std::vector<std::string> out;
     static const Shape kSamples[] = {Sphere{}, Plane{}, Box{}, Cylinder{}, Cone{}, Disc{},
-                                     Torus{}, Triangle{}, SmoothTriangle{}, MeshRef{}, Csg{}};
+                                     Torus{}, Triangle{}, SmoothTriangle{}, MeshRef{}, Csg{},
+                                     Quadric{}, Polygon{}, Prism{}, Lathe{}, Sor{},
+                                     Superellipsoid{}, Blob{}, HeightField{}, Poly{}};
     for (size_t i = 0; i < shapes.size(); ++i)
         if (shapes[i] && i != kSamples[10].index()) out.push_back(shape_name(kSamples[i]));
     auto add = [&](bool on, const char* name) {

@@ -5,7 +5,9 @@ namespace glint::scene {
 const char* shape_name(const Shape& shape) {
     static constexpr const char* kNames[] = {"sphere",   "plane", "box",      "cylinder",
                                              "cone",     "disc",  "torus",    "triangle",
-                                             "smooth_triangle", "mesh", "csg"};
+                                             "smooth_triangle", "mesh", "csg",
+                                             "quadric",  "polygon", "prism", "lathe", "sor",
+                                             "superellipsoid", "blob", "height_field", "poly"};
     static_assert(std::size(kNames) == std::variant_size_v<Shape>);
     if (const auto* csg = std::get_if<Csg>(&shape)) {
         switch (csg->op) {

@@ -64,6 +64,80 @@ struct MeshRef {
     int mesh = -1;
 };
 
+// quadric (POV-Ray 3.7 manual 2.4.3.5): A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y +
+// I z + J = 0; the inside is where the left side is <= 0.
+struct Quadric {
+    Vec3 square{1, 1, 1};  // A, B, C
+    Vec3 mixed{0, 0, 0};   // D (xy), E (xz), F (yz)
+    Vec3 linear{0, 0, 0};  // G, H, I
+    double constant = -1;  // J
+};
+// polygon: coplanar points; a point equal to its sub-polygon's first point closes it, and the
+// next point starts another (holes by the even-odd rule). The importer closes an open list.
+struct Polygon {
+    std::vector<Vec3> points;
+};
+enum class SplineType { Linear, Quadratic, Cubic, Bezier };
+// prism: a closed 2D spline in the xz-plane (points as <x, z>) swept along y between the heights;
+// a conic sweep scales the outline by y (apex at the origin).
+struct Prism {
+    SplineType spline = SplineType::Linear;
+    bool conic = false;
+    double height1 = 0, height2 = 1;  // height1 <= height2
+    std::vector<Vec2> points;
+    bool open = false;
+    bool sturm = false;
+};
+// lathe: a 2D spline of <radius, height> points revolved around the y axis.
+struct Lathe {
+    SplineType spline = SplineType::Linear;
+    std::vector<Vec2> points;
+    bool sturm = false;
+};
+// sor: radius^2 as a cubic in height through <radius, height> points (the first and last only
+// steer the curve's ends), revolved around y; capped unless open.
+struct Sor {
+    std::vector<Vec2> points;
+    bool open = false;
+    bool sturm = false;
+};
+// superellipsoid { <e, n> }: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1.
+struct Superellipsoid {
+    double e = 1, n = 1;
+};
+// A blob component: strength * (1 - r^2 / radius^2)^2 inside radius, r the distance to the
+// centre (sphere) or to the segment base-apex (cylinder, with hemispherical ends), evaluated in
+// the component's own space (`transform` maps it into blob space).
+struct BlobComponent {
+    bool cylinder = false;
+    Vec3 center{0, 0, 0};  // sphere; cylinder: base
+    Vec3 apex{0, 0, 0};    // cylinder only
+    double radius = 1;
+    double strength = 1;
+    Transform transform;
+};
+// blob: the surface where the summed field equals threshold; inside where it is larger.
+struct Blob {
+    double threshold = 1;
+    std::vector<BlobComponent> components;
+    bool sturm = false;
+};
+// height_field: an image's heights (0..1) on the unit square x, z in [0, 1], image row 0 at z = 1.
+struct HeightField {
+    std::string file;           // as written in the scene
+    std::string resolved_path;  // found by the importer
+    bool smooth = false;
+    double water_level = 0;     // heights below it are cut away
+    FileLoc file_loc;
+};
+// poly/cubic/quartic: sum of c_ijk x^i y^j z^k = 0, i + j + k <= order, coefficients in
+// POV-Ray's order (x power descending, then y, then z); inside where the sum < 1e-4.
+struct Poly {
+    int order = 2;
+    std::vector<double> coefficients;
+    bool sturm = false;
+};
+
 enum class CsgOp { Union, Merge, Intersection, Difference };
 
 struct Csg {
@@ -72,7 +146,8 @@ struct Csg {
 };
 
 using Shape = std::variant<Sphere, Plane, Box, Cylinder, Cone, Disc, Torus, Triangle,
-                           SmoothTriangle, MeshRef, Csg>;
+                           SmoothTriangle, MeshRef, Csg, Quadric, Polygon, Prism, Lathe, Sor,
+                           Superellipsoid, Blob, HeightField, Poly>;
 
 // Names for messages and `glint ir`, in variant order.
 const char* shape_name(const Shape& shape);

@@ -136,6 +136,54 @@ private:
             if (f.material >= nm) fail(m.loc, "mesh material index out of range");
         }
     }
+    void shape(const Quadric& s, const FileLoc& loc) {
+        check_finite(s.square, loc, "quadric coefficient");
+        check_finite(s.mixed, loc, "quadric coefficient");
+        check_finite(s.linear, loc, "quadric coefficient");
+        check_finite(s.constant, loc, "quadric coefficient");
+    }
+    void shape(const Polygon& s, const FileLoc& loc) {
+        if (s.points.size() < 3) fail(loc, "polygon needs at least 3 points");
+        for (const Vec3& p : s.points) check_finite(p, loc, "polygon point");
+    }
+    void points2(const std::vector<Vec2>& pts, const FileLoc& loc, const char* what) {
+        for (const Vec2& p : pts)
+            if (!std::isfinite(p.x) || !std::isfinite(p.y))
+                fail(loc, std::string(what) + " point is not finite");
+    }
+    void shape(const Prism& s, const FileLoc& loc) {
+        points2(s.points, loc, "prism");
+        check_finite(s.height1, loc, "prism height");
+        check_finite(s.height2, loc, "prism height");
+    }
+    void shape(const Lathe& s, const FileLoc& loc) { points2(s.points, loc, "lathe"); }
+    void shape(const Sor& s, const FileLoc& loc) {
+        points2(s.points, loc, "sor");
+        if (s.points.size() < 4) fail(loc, "sor needs at least 4 points");
+    }
+    void shape(const Superellipsoid& s, const FileLoc& loc) {
+        if (!(s.e > 0) || !(s.n > 0) || !std::isfinite(s.e) || !std::isfinite(s.n))
+            fail(loc, "superellipsoid exponents must be positive");
+    }
+    void shape(const Blob& s, const FileLoc& loc) {
+        check_finite(s.threshold, loc, "blob threshold");
+        if (s.components.empty()) fail(loc, "blob needs at least one component");
+        for (const BlobComponent& c : s.components) {
+            check_finite(c.center, loc, "blob component");
+            check_finite(c.apex, loc, "blob component");
+            check_finite(c.radius, loc, "blob component radius");
+            check_finite(c.strength, loc, "blob component strength");
+        }
+    }
+    void shape(const HeightField& s, const FileLoc& loc) {
+        check_finite(s.water_level, loc, "height_field water_level");
+    }
+    void shape(const Poly& s, const FileLoc& loc) {
+        int n = (s.order + 1) * (s.order + 2) * (s.order + 3) / 6;
+        if (s.order < 2 || static_cast<int>(s.coefficients.size()) != n)
+            fail(loc, "internal: poly coefficient count does not match its order");
+        for (double c : s.coefficients) check_finite(c, loc, "poly coefficient");
+    }
     void shape(const Csg& s, const FileLoc&) {
         for (const Object& c : s.children) object(c, false);
     }

@@ -98,6 +98,24 @@ struct Builder {
                         throw Error(ErrorKind::Scene, obj.loc, "mesh reference out of range");
                     p = make_mesh(scene.meshes[s.mesh], diag);
                     if (!p) why = "mesh without usable triangles";
+                } else if constexpr (std::is_same_v<T, scene::Quadric>) {
+                    p = make_quadric(s, &why);
+                } else if constexpr (std::is_same_v<T, scene::Polygon>) {
+                    p = make_polygon(s, &why);
+                } else if constexpr (std::is_same_v<T, scene::Prism>) {
+                    p = make_prism(s, &why);
+                } else if constexpr (std::is_same_v<T, scene::Lathe>) {
+                    p = make_lathe(s, &why);
+                } else if constexpr (std::is_same_v<T, scene::Sor>) {
+                    p = make_sor(s, &why);
+                } else if constexpr (std::is_same_v<T, scene::Superellipsoid>) {
+                    p = make_superellipsoid(s, &why);
+                } else if constexpr (std::is_same_v<T, scene::Blob>) {
+                    p = make_blob(s, &why);
+                } else if constexpr (std::is_same_v<T, scene::HeightField>) {
+                    p = make_height_field(s, obj.loc, &why);
+                } else if constexpr (std::is_same_v<T, scene::Poly>) {
+                    p = make_poly(s, &why);
                 }
             },
             obj.shape);

@@ -23,6 +23,19 @@ std::unique_ptr<Primitive> make_cone(const scene::Cone& s, Transform* frame, con
 std::unique_ptr<Primitive> make_disc(const scene::Disc& s, Transform* frame, const char** why);
 std::unique_ptr<Primitive> make_torus(const scene::Torus& s);
 std::unique_ptr<Primitive> make_triangle(const Vec3 p[3], const Vec3* normals);
+// POV-Ray's other solids (quadric.cpp, polygon.cpp, prism.cpp, lathe.cpp, sor.cpp,
+// superellipsoid.cpp, blob.cpp, height_field.cpp, poly.cpp). nullptr with `*why` set for
+// degenerate input; the height field throws glint::Error when its image cannot be read.
+std::unique_ptr<Primitive> make_quadric(const scene::Quadric& s, const char** why);
+std::unique_ptr<Primitive> make_polygon(const scene::Polygon& s, const char** why);
+std::unique_ptr<Primitive> make_prism(const scene::Prism& s, const char** why);
+std::unique_ptr<Primitive> make_lathe(const scene::Lathe& s, const char** why);
+std::unique_ptr<Primitive> make_sor(const scene::Sor& s, const char** why);
+std::unique_ptr<Primitive> make_superellipsoid(const scene::Superellipsoid& s, const char** why);
+std::unique_ptr<Primitive> make_blob(const scene::Blob& s, const char** why);
+std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const FileLoc& loc,
+                                             const char** why);
+std::unique_ptr<Primitive> make_poly(const scene::Poly& s, const char** why);
 
 }  // namespace glint::render
 

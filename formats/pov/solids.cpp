@@ -1,0 +1,384 @@
+// POV-Ray's quadric, polygon, prism, lathe, sor, superellipsoid, blob, height_field and
+// poly/cubic/quartic/polynomial bodies, with POV-Ray's checks on point counts and order
+// (reference manual 3.4.1 "Finite Solid Primitives", 3.4.3 "Finite Patch Primitives",
+// 3.4.4 "Infinite Solid Primitives").
+#include "formats/pov/solids.h"
+
+#include <cmath>
+#include <unordered_set>
+
+namespace glint::pov {
+
+namespace {
+
+constexpr double kEps = 1e-10;  // POV-Ray's EPSILON for "same point" tests
+
+Vec2 parse_uv(Parser& p) {
+    Num n = p.parse_num(2);
+    return {n.v[0], n.v[1]};
+}
+
+// `N, p1, p2, ...` with at least `min` points (message names the object).
+int parse_count(Parser& p, int min, const std::string& too_few) {
+    p.peek();
+    FileLoc at = p.loc();
+    double v = p.parse_float();
+    int n = static_cast<int>(v);
+    if (n < min) p.fail_at(at, too_few);
+    if (n > 10000000) p.fail_at(at, "point count " + std::to_string(n) + " is too large");
+    return n;
+}
+
+bool spline_keyword(Parser& p, scene::SplineType* t) {
+    if (p.accept("linear_spline")) *t = scene::SplineType::Linear;
+    else if (p.accept("quadratic_spline")) *t = scene::SplineType::Quadratic;
+    else if (p.accept("cubic_spline")) *t = scene::SplineType::Cubic;
+    else if (p.accept("bezier_spline")) *t = scene::SplineType::Bezier;
+    else return false;
+    return true;
+}
+
+scene::Quadric parse_quadric(Parser& p) {
+    scene::Quadric q;
+    q.square = p.parse_vector();
+    p.skip_comma();
+    q.mixed = p.parse_vector();
+    p.skip_comma();
+    q.linear = p.parse_vector();
+    p.skip_comma();
+    q.constant = p.parse_float();
+    return q;
+}
+
+scene::Polygon parse_polygon(Parser& p, const FileLoc& kw) {
+    scene::Polygon s;
+    int n = parse_count(p, 3, "polygon needs at least 3 points");
+    for (int i = 0; i < n; ++i) {
+        p.skip_comma();
+        s.points.push_back(p.parse_vector());
+    }
+    // Sub-polygons close on their first point; close an open list (POV-Ray warns too).
+    Vec3 first = s.points[0];
+    bool closed = false;
+    for (int i = 1; i < n; ++i) {
+        closed = false;
+        Vec3 d = abs(first - s.points[i]);
+        if (d.x < kEps && d.y < kEps && d.z < kEps) {
+            s.points[i] = first;
+            ++i;
+            if (i < n) first = s.points[i];
+            closed = true;
+        }
+    }
+    if (!closed) {
+        p.diag.warning(kw, "polygon not closed: closing it");
+        s.points.push_back(first);
+    }
+    return s;
+}
+
+scene::Prism parse_prism(Parser& p, const FileLoc& kw) {
+    using scene::SplineType;
+    scene::Prism s;
+    for (;;) {
+        if (spline_keyword(p, &s.spline)) continue;
+        if (p.accept("linear_sweep")) s.conic = false;
+        else if (p.accept("conic_sweep")) s.conic = true;
+        else break;
+    }
+    s.height1 = p.parse_float();
+    p.skip_comma();
+    s.height2 = p.parse_float();
+    p.skip_comma();
+    if (s.height1 > s.height2) std::swap(s.height1, s.height2);
+    p.peek();
+    FileLoc at = p.loc();
+    int n = static_cast<int>(p.parse_float());
+    switch (s.spline) {
+        case SplineType::Linear:
+            if (n < 3) p.fail_at(at, "prism needs at least 3 points");
+            break;
+        case SplineType::Quadratic:
+            if (n < 5) p.fail_at(at, "prism with quadratic_spline needs at least 5 points");
+            break;
+        case SplineType::Cubic:
+            if (n < 6) p.fail_at(at, "prism with cubic_spline needs at least 6 points");
+            break;
+        case SplineType::Bezier:
+            if (n < 4 || n % 4 != 0)
+                p.fail_at(at, "prism with bezier_spline needs 4 points per segment");
+            break;
+    }
+    for (int i = 0; i < n; ++i) {
+        p.skip_comma();
+        s.points.push_back(parse_uv(p));
+    }
+    if (p.accept("open")) s.open = true;
+    if (s.spline == SplineType::Linear) {
+        // An open outline is closed back to the start of its last sub-outline.
+        Vec2 first = s.points[0];
+        bool closed = false;
+        for (int i = 1; i < n; ++i) {
+            closed = false;
+            if (std::fabs(first.x - s.points[i].x) < kEps &&
+                std::fabs(first.y - s.points[i].y) < kEps) {
+                ++i;
+                if (i < n) first = s.points[i];
+                closed = true;
+            }
+        }
+        if (!closed) {
+            p.diag.warning(kw, "linear prism not closed: closing it");
+            s.points.push_back(first);
+        }
+    }
+    return s;
+}
+
+scene::Lathe parse_lathe(Parser& p) {
+    using scene::SplineType;
+    scene::Lathe s;
+    spline_keyword(p, &s.spline);
+    p.peek();
+    FileLoc at = p.loc();
+    int n = static_cast<int>(p.parse_float());
+    switch (s.spline) {
+        case SplineType::Linear:
+            if (n < 2) p.fail_at(at, "lathe needs at least 2 points");
+            break;
+        case SplineType::Quadratic:
+            if (n < 3) p.fail_at(at, "lathe with quadratic_spline needs at least 3 points");
+            break;
+        case SplineType::Cubic:
+            if (n < 4) p.fail_at(at, "lathe with cubic_spline needs at least 4 points");
+            break;
+        case SplineType::Bezier:
+            if (n < 4 || n % 4 != 0)
+                p.fail_at(at, "lathe with bezier_spline needs 4 points per segment");
+            break;
+    }
+    for (int i = 0; i < n; ++i) {
+        p.skip_comma();
+        p.peek();
+        FileLoc pl = p.loc();
+        Vec2 v = parse_uv(p);
+        if (i > 0 && i < n - 1 && v.x < 0)
+            p.fail_at(pl, "lathe point " + std::to_string(i + 1) + " has a negative radius");
+        s.points.push_back(v);
+    }
+    return s;
+}
+
+scene::Sor parse_sor(Parser& p) {
+    scene::Sor s;
+    int n = parse_count(p, 4, "sor needs at least 4 points");
+    for (int i = 0; i < n; ++i) {
+        p.skip_comma();
+        p.peek();
+        FileLoc pl = p.loc();
+        Vec2 v = parse_uv(p);
+        if (v.x < 0)
+            p.fail_at(pl, "sor point " + std::to_string(i + 1) + " has a negative radius");
+        if (i > 1 && i < n - 1 && v.y <= s.points.back().y)
+            p.fail_at(pl, "sor point " + std::to_string(i + 1) +
+                              " is not higher than the point before it");
+        s.points.push_back(v);
+    }
+    if (p.accept("open")) s.open = true;
+    return s;
+}
+
+scene::Superellipsoid parse_superellipsoid(Parser& p) {
+    p.peek();
+    FileLoc at = p.loc();
+    Vec2 v = parse_uv(p);
+    if (!(v.x > 0) || !(v.y > 0)) p.fail_at(at, "superellipsoid exponents <e, n> must be positive");
+    return {v.x, v.y};
+}
+
+// Component modifiers: transforms (kept), textures (parsed, ignored with one warning).
+void parse_component_mods(Parser& p, scene::BlobComponent& c, bool* warned) {
+    for (;;) {
+        Transform t;
+        if (p.parse_transform_item(t)) {
+            c.transform = c.transform.then(t);
+            continue;
+        }
+        const Token& tok = p.peek();
+        if (tok.is("texture") || tok.is("pigment") || tok.is("normal") || tok.is("finish")) {
+            std::string what = tok.text;
+            p.next();
+            FileLoc at = p.loc();
+            p.expect_open(what.c_str());
+            FileLoc lo = p.loc();
+            scene::Texture tex;
+            if (what == "texture") tex = p.parse_texture_body();
+            else if (what == "pigment") p.parse_pigment_body(tex.pigment);
+            else if (what == "normal") p.parse_normal_body(tex.normal);
+            else p.parse_finish_body(tex.finish);
+            p.expect_close(what.c_str(), lo);
+            if (!*warned)
+                p.diag.warning(at, "blob component textures are not supported: the blob's own "
+                                   "texture is used");
+            *warned = true;
+            continue;
+        }
+        break;
+    }
+}
+
+scene::Blob parse_blob(Parser& p, const FileLoc& kw) {
+    scene::Blob b;
+    bool warned = false;
+    for (;;) {
+        if (p.accept("threshold")) {
+            b.threshold = p.parse_float();
+        } else if (p.accept("component")) {
+            scene::BlobComponent c;
+            c.strength = p.parse_float();
+            p.skip_comma();
+            c.radius = p.parse_float();
+            p.skip_comma();
+            c.center = p.parse_vector();
+            b.components.push_back(c);
+        } else if (p.accept("sphere")) {
+            p.expect_open("sphere");
+            FileLoc lo = p.loc();
+            scene::BlobComponent c;
+            c.center = p.parse_vector();
+            p.skip_comma();
+            c.radius = p.parse_float();
+            p.skip_comma();
+            p.accept("strength");
+            c.strength = p.parse_float();
+            parse_component_mods(p, c, &warned);
+            p.expect_close("sphere", lo);
+            b.components.push_back(c);
+        } else if (p.accept("cylinder")) {
+            FileLoc at = p.loc();
+            p.expect_open("cylinder");
+            FileLoc lo = p.loc();
+            scene::BlobComponent c;
+            c.cylinder = true;
+            c.center = p.parse_vector();
+            p.skip_comma();
+            c.apex = p.parse_vector();
+            p.skip_comma();
+            c.radius = p.parse_float();
+            p.skip_comma();
+            p.accept("strength");
+            c.strength = p.parse_float();
+            if (length(c.apex - c.center) < kEps)
+                p.fail_at(at, "degenerate cylindrical component in blob (its ends coincide)");
+            parse_component_mods(p, c, &warned);
+            p.expect_close("cylinder", lo);
+            b.components.push_back(c);
+        } else {
+            break;
+        }
+    }
+    if (b.components.empty()) p.fail_at(kw, "blob needs at least one component");
+    return b;
+}
+
+scene::HeightField parse_height_field(Parser& p) {
+    static const std::unordered_set<std::string> kTypes = {
+        "gif", "tga", "iff", "pgm", "ppm", "png", "jpeg", "tiff", "sys", "exr", "hdr"};
+    scene::HeightField h;
+    const Token& t = p.peek();
+    if (t.is("function")) p.unsupported("height_field from a function");
+    if (t.kind == TokKind::Word && kTypes.count(t.text) && !p.lookup(t.text)) p.next();
+    p.peek();
+    h.file_loc = p.loc();
+    h.file = p.parse_string();
+    h.resolved_path = p.resolve_file(h.file, h.file_loc);
+    for (;;) {
+        if (p.accept("water_level")) h.water_level = p.parse_float();
+        else if (p.accept("smooth")) h.smooth = true;
+        else break;
+    }
+    return h;
+}
+
+// POV-Ray's coefficient order: x power descending, then y, then z.
+int term_index(int order, int i, int j, int k) {
+    int idx = 0;
+    for (int a = order; a >= 0; --a)
+        for (int b = order - a; b >= 0; --b)
+            for (int c = order - a - b; c >= 0; --c) {
+                if (a == i && b == j && c == k) return idx;
+                ++idx;
+            }
+    return -1;
+}
+
+scene::Poly parse_poly(Parser& p, const std::string& w) {
+    scene::Poly s;
+    if (w == "cubic") s.order = 3;
+    else if (w == "quartic") s.order = 4;
+    else {
+        p.peek();
+        FileLoc at = p.loc();
+        s.order = static_cast<int>(p.parse_float());
+        p.skip_comma();
+        if (s.order < 2 || s.order > 35)
+            p.fail_at(at, "order of " + w + " is out of range (2 to 35)");
+    }
+    int n = (s.order + 1) * (s.order + 2) * (s.order + 3) / 6;
+    s.coefficients.assign(n, 0.0);
+    if (w == "polynomial") {
+        // xyz(i, j, k): value, ...
+        while (p.accept("xyz")) {
+            p.expect("(", "after xyz");
+            int i = static_cast<int>(p.parse_float());
+            p.skip_comma();
+            int j = static_cast<int>(p.parse_float());
+            p.skip_comma();
+            int k = static_cast<int>(p.parse_float());
+            p.expect(")", "after the xyz powers");
+            FileLoc at = p.loc();
+            p.expect(":", "after xyz(...)");
+            double v = p.parse_float();
+            int idx = i >= 0 && j >= 0 && k >= 0 ? term_index(s.order, i, j, k) : -1;
+            if (idx < 0) p.fail_at(at, "coefficient of polynomial is out of range");
+            s.coefficients[idx] = v;
+            p.skip_comma();
+        }
+        return s;
+    }
+    p.peek();
+    FileLoc at = p.loc();
+    p.expect("<", ("before the " + w + " coefficients").c_str());
+    for (int i = 0; i < n; ++i) {
+        if (i > 0) p.skip_comma();
+        if (p.peek().is(">"))
+            p.fail_at(at, w + " of order " + std::to_string(s.order) + " needs " +
+                              std::to_string(n) + " coefficients, got " + std::to_string(i));
+        s.coefficients[i] = p.parse_float_in_angle_brackets();
+    }
+    p.expect(">", ("after the " + std::to_string(n) + " " + w + " coefficients").c_str());
+    return s;
+}
+
+}  // namespace
+
+bool is_solid_keyword(const std::string& w) {
+    static const std::unordered_set<std::string> k = {
+        "quadric", "polygon", "prism", "lathe", "sor", "superellipsoid", "blob", "height_field",
+        "poly", "cubic", "quartic", "polynomial"};
+    return k.count(w) > 0;
+}
+
+void parse_solid_body(Parser& p, const std::string& w, const FileLoc& kw, scene::Shape* out) {
+    if (w == "quadric") *out = parse_quadric(p);
+    else if (w == "polygon") *out = parse_polygon(p, kw);
+    else if (w == "prism") *out = parse_prism(p, kw);
+    else if (w == "lathe") *out = parse_lathe(p);
+    else if (w == "sor") *out = parse_sor(p);
+    else if (w == "superellipsoid") *out = parse_superellipsoid(p);
+    else if (w == "blob") *out = parse_blob(p, kw);
+    else if (w == "height_field") *out = parse_height_field(p);
+    else *out = parse_poly(p, w);
+}
+
+}  // namespace glint::pov

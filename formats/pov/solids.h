@@ -1,0 +1,18 @@
+// The bodies of POV-Ray's spline, implicit and image solids (parse.cpp: Parse_Quadric,
+// Parse_Polygon, Parse_Prism, Parse_Lathe, Parse_Sor, Parse_Superellipsoid, Parse_Blob,
+// Parse_HField, Parse_Poly, Parse_Polynom). Called by parse_object (objects.cpp) after the
+// opening brace; the object modifiers that follow are parsed there.
+#pragma once
+
+#include <string>
+
+#include "formats/pov/parser_impl.h"
+
+namespace glint::pov {
+
+bool is_solid_keyword(const std::string& word);
+
+// Parses the body of the solid named `word` into `out`. `kw`: the keyword's location.
+void parse_solid_body(Parser& p, const std::string& word, const FileLoc& kw, scene::Shape* out);
+
+}  // namespace glint::pov

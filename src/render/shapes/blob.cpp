@@ -1,0 +1,291 @@
+// blob (POV-Ray 3.7 manual 2.4.1.1; blob.cpp): a field summed over components, each
+// strength * (1 - r^2/radius^2)^2 = c0 r^4 + c1 r^2 + c2 inside its radius, r measured in the
+// component's own space; the surface is where the sum equals the threshold. A cylinder
+// component is three elements, as in POV-Ray: the field of the distance to the axis between
+// the end planes, and a hemisphere at each end. Along a ray every element's field is a quartic
+// in t inside the element's chord, so between consecutive chord ends the sum is one quartic,
+// solved on that stretch. The normal is minus the field's gradient.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "render/shapes/poly_solve.h"
+#include "render/shapes/shapes.h"
+
+namespace glint::render {
+namespace {
+
+enum class Kind { Sphere, Cylinder, BaseCap, ApexCap };
+
+struct Element {
+    Kind kind = Kind::Sphere;
+    bool identity = true;
+    Transform xf;       // element space -> blob space
+    Vec3 o;             // sphere centre (element space)
+    double len = 0;     // cylinder length along element z
+    double rad2 = 1;
+    double c0 = 0, c1 = 0, c2 = 0;
+
+    Vec3 to_local(const Vec3& p) const { return identity ? p : xf.inverse_point(p); }
+    Vec3 dir_local(const Vec3& d) const { return identity ? d : xf.inverse_vector(d); }
+    // The vector whose squared length is r^2 (element space), and whether p is in range.
+    bool radial(const Vec3& pl, Vec3* v) const {
+        switch (kind) {
+            case Kind::Sphere: *v = pl - o; return length_squared(*v) < rad2;
+            case Kind::BaseCap: *v = pl; return pl.z <= 0 && length_squared(*v) <= rad2;
+            case Kind::ApexCap:
+                *v = Vec3(pl.x, pl.y, pl.z - len);
+                return v->z >= 0 && length_squared(*v) <= rad2;
+            case Kind::Cylinder:
+                *v = Vec3(pl.x, pl.y, 0);
+                return pl.z >= 0 && pl.z <= len && length_squared(*v) <= rad2;
+        }
+        return false;
+    }
+};
+
+struct Event {
+    double t;
+    int element;
+    bool enter;
+};
+
+class BlobPrim final : public Primitive {
+public:
+    BlobPrim(std::vector<Element> els, double threshold, Bounds3 b, double scale)
+        : els_(std::move(els)), threshold_(threshold), bounds_(b), scale_(scale) {}
+
+    Bounds3 bounds() const override { return bounds_; }
+
+    bool intersect(const Ray& ray, double tmax, LocalHit* hit) const override {
+        HitList hits;
+        intersect_all(ray, tmax, &hits);
+        if (hits.empty()) return false;
+        const LocalHit* best = &hits[0];
+        for (const auto& h : hits)
+            if (h.t < best->t) best = &h;
+        *hit = *best;
+        return true;
+    }
+
+    void intersect_all(const Ray& ray, double tmax, HitList* hits) const override {
+        double len = length(ray.dir);
+        if (!(len > 0)) return;
+        std::vector<Event> ev;
+        for (size_t i = 0; i < els_.size(); ++i) {
+            double a, b;
+            if (!chord(els_[i], ray, &a, &b)) continue;
+            a = std::max(a, 0.0);
+            if (!(b > a)) continue;
+            ev.push_back({a, static_cast<int>(i), true});
+            ev.push_back({b, static_cast<int>(i), false});
+        }
+        if (ev.empty()) return;
+        std::sort(ev.begin(), ev.end(), [](const Event& x, const Event& y) {
+            return x.t < y.t || (x.t == y.t && x.enter && !y.enter);
+        });
+        double tmin = 1e-7 * scale_ / len;
+        std::vector<int> active;
+        double last_root = -kInfinity;
+        for (size_t e = 0; e + 1 < ev.size(); ++e) {
+            if (ev[e].enter) {
+                active.push_back(ev[e].element);
+            } else {
+                active.erase(std::find(active.begin(), active.end(), ev[e].element));
+            }
+            double l = ev[e].t, r = ev[e + 1].t;
+            if (active.empty() || !(r > l) || l >= tmax) continue;
+            // The summed quartic in u = t - l.
+            double c[5] = {-threshold_, 0, 0, 0, 0};
+            Vec3 o = ray.origin + ray.dir * l;
+            for (int i : active) add_quartic(els_[i], o, ray.dir, c);
+            double u[4];
+            int n = solve_in_interval(c, 4, 0, r - l, u);
+            for (int k = 0; k < n; ++k) {
+                double t = l + u[k];
+                if (!(t > tmin) || !(t < tmax)) continue;
+                if (std::fabs(t - last_root) <= 1e-12 * std::max(1.0, std::fabs(t))) continue;
+                last_root = t;
+                LocalHit& h = hits->emplace_back();
+                h.t = t;
+                h.p = ray.origin + ray.dir * t;
+                h.p_error = rounding_error(h.p, 8) + Vec3(1e-8 * scale_);
+                h.ng = normal(h.p);
+                h.n = h.ng;
+            }
+        }
+    }
+
+    bool inside(const Vec3& p) const override { return field(p) > threshold_ - 1e-6; }
+
+    double field(const Vec3& p) const {
+        double sum = 0;
+        for (const Element& e : els_) {
+            Vec3 v;
+            if (!e.radial(e.to_local(p), &v)) continue;
+            double r2 = length_squared(v);
+            sum += r2 * (r2 * e.c0 + e.c1) + e.c2;
+        }
+        return sum;
+    }
+
+private:
+    Vec3 normal(const Vec3& p) const {
+        Vec3 n(0);
+        for (const Element& e : els_) {
+            Vec3 v;
+            if (!e.radial(e.to_local(p), &v)) continue;
+            double r2 = length_squared(v);
+            double w = -2 * e.c0 * r2 - e.c1;
+            n += (e.identity ? v : e.xf.normal(v)) * w;
+        }
+        double l = length(n);
+        return l > 0 && std::isfinite(l) ? n / l : Vec3(0, 1, 0);
+    }
+
+    // Adds the element's field along o + u d as a quartic in u (ascending coefficients).
+    static void add_quartic(const Element& e, const Vec3& o, const Vec3& d, double c[5]) {
+        Vec3 po = e.to_local(o), dd = e.dir_local(d);
+        double t0, t1, t2;
+        if (e.kind == Kind::Cylinder) {
+            t0 = po.x * po.x + po.y * po.y;
+            t1 = po.x * dd.x + po.y * dd.y;
+            t2 = dd.x * dd.x + dd.y * dd.y;
+        } else {
+            Vec3 v = e.kind == Kind::Sphere ? po - e.o
+                     : e.kind == Kind::ApexCap ? Vec3(po.x, po.y, po.z - e.len)
+                                               : po;
+            t0 = dot(v, v);
+            t1 = dot(v, dd);
+            t2 = dot(dd, dd);
+        }
+        // r^2(u) = t0 + 2 t1 u + t2 u^2; field = c0 r^4 + c1 r^2 + c2.
+        c[4] += e.c0 * t2 * t2;
+        c[3] += 4 * e.c0 * t1 * t2;
+        c[2] += 2 * e.c0 * (2 * t1 * t1 + t0 * t2) + e.c1 * t2;
+        c[1] += 2 * t1 * (2 * e.c0 * t0 + e.c1);
+        c[0] += t0 * (e.c0 * t0 + e.c1) + e.c2;
+    }
+
+    // Where the ray is inside the element's region of influence, in ray parameters.
+    static bool chord(const Element& e, const Ray& ray, double* tmin, double* tmax) {
+        Vec3 p = e.to_local(ray.origin), d = e.dir_local(ray.dir);
+        auto sphere = [&](const Vec3& c, double* a, double* b) {
+            Vec3 v = p - c;
+            double dd = dot(d, d), bh = dot(v, d);
+            Vec3 perp = v - d * (bh / dd);
+            double disc = dd * (e.rad2 - length_squared(perp));
+            if (!(disc > 0)) return false;
+            double s = std::sqrt(disc);
+            *a = (-bh - s) / dd;
+            *b = (-bh + s) / dd;
+            return true;
+        };
+        switch (e.kind) {
+            case Kind::Sphere: return sphere(e.o, tmin, tmax);
+            case Kind::BaseCap:
+            case Kind::ApexCap: {
+                bool apex = e.kind == Kind::ApexCap;
+                Vec3 c(0, 0, apex ? e.len : 0);
+                if (!sphere(c, tmin, tmax)) return false;
+                // Keep the part on the cap's side of its plane.
+                double z1 = p.z + *tmin * d.z - c.z, z2 = p.z + *tmax * d.z - c.z;
+                bool in1 = apex ? z1 >= 0 : z1 <= 0, in2 = apex ? z2 >= 0 : z2 <= 0;
+                if (!in1 && !in2) return false;
+                if (in1 && in2) return true;
+                double t = (c.z - p.z) / d.z;
+                if (in1) *tmax = t;
+                else *tmin = t;
+                return *tmax > *tmin;
+            }
+            case Kind::Cylinder: {
+                double lo = kInfinity, hi = -kInfinity;
+                auto take = [&](double t) {
+                    lo = std::min(lo, t);
+                    hi = std::max(hi, t);
+                };
+                double a = d.x * d.x + d.y * d.y;
+                if (a > 0) {
+                    double bh = p.x * d.x + p.y * d.y;
+                    double c = p.x * p.x + p.y * p.y - e.rad2;
+                    double disc = bh * bh - a * c;
+                    if (disc > 0) {
+                        double s = std::sqrt(disc);
+                        for (double t : {(-bh - s) / a, (-bh + s) / a}) {
+                            double z = p.z + t * d.z;
+                            if (z >= 0 && z <= e.len) take(t);
+                        }
+                    }
+                }
+                if (d.z != 0) {
+                    for (double z : {0.0, e.len}) {
+                        double t = (z - p.z) / d.z;
+                        double x = p.x + t * d.x, y = p.y + t * d.y;
+                        if (x * x + y * y <= e.rad2) take(t);
+                    }
+                }
+                *tmin = lo;
+                *tmax = hi;
+                return hi > lo;
+            }
+        }
+        return false;
+    }
+
+    std::vector<Element> els_;
+    double threshold_;
+    Bounds3 bounds_;
+    double scale_;
+};
+
+}  // namespace
+
+std::unique_ptr<Primitive> make_blob(const scene::Blob& s, const char** why) {
+    std::vector<Element> els;
+    Bounds3 b;
+    for (const scene::BlobComponent& c : s.components) {
+        double rad2 = c.radius * c.radius;
+        if (!(rad2 > 0)) continue;
+        Element e;
+        e.rad2 = rad2;
+        e.c0 = c.strength / (rad2 * rad2);
+        e.c1 = -2 * c.strength / rad2;
+        e.c2 = c.strength;
+        Bounds3 local;
+        if (!c.cylinder) {
+            e.kind = Kind::Sphere;
+            e.o = c.center;
+            e.xf = c.transform;
+            e.identity = c.transform.is_identity();
+            local = {c.center - Vec3(c.radius), c.center + Vec3(c.radius)};
+            if (c.strength > 0) b.extend(e.identity ? local : e.xf.bounds(local));
+            els.push_back(e);
+            continue;
+        }
+        Vec3 axis = c.apex - c.center;
+        double len = length(axis);
+        if (!(len > 1e-10)) continue;
+        e.xf = axis_frame(c.center, axis / len).then(c.transform);
+        e.identity = false;
+        e.len = len;
+        local = {Vec3(-c.radius, -c.radius, -c.radius), Vec3(c.radius, c.radius, len + c.radius)};
+        if (c.strength > 0) b.extend(e.xf.bounds(local));
+        e.kind = Kind::Cylinder;
+        els.push_back(e);
+        e.kind = Kind::BaseCap;
+        els.push_back(e);
+        e.kind = Kind::ApexCap;
+        els.push_back(e);
+    }
+    if (els.empty() || b.empty()) {
+        *why = "blob without components of positive strength and radius";
+        return nullptr;
+    }
+    double scale = std::max({length(b.lo), length(b.hi), 1e-300});
+    Vec3 pad = Vec3(1e-9 * scale);
+    b.lo -= pad;
+    b.hi += pad;
+    return std::make_unique<BlobPrim>(std::move(els), s.threshold, b, scale);
+}
+
+}  // namespace glint::render

@@ -1,0 +1,356 @@
+// POV-Ray's quadric, polygon, prism, lathe, sor, superellipsoid, blob, height_field and poly:
+// hits, normals and inside tests against closed forms, and the importer's messages for misuse.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "geom_test_util.h"
+#include "pov_test_util.h"
+#include "render/shapes/object_node.h"
+
+namespace glint {
+namespace {
+
+using render::Hit;
+using test::build_one;
+using test::ray;
+
+void expect_vec(const Vec3& a, const Vec3& b, double tol) {
+    EXPECT_NEAR(a.x, b.x, tol);
+    EXPECT_NEAR(a.y, b.y, tol);
+    EXPECT_NEAR(a.z, b.z, tol);
+}
+
+// Inside test through the object tree (POV-Ray's Inside).
+bool inside(const scene::Shape& s, const Vec3& p) {
+    scene::Scene sc = test::scene_of({});
+    scene::Object o = test::object(s);
+    Diagnostics diag;
+    auto node = render::ObjectNode::build(o, sc, diag);
+    return node && node->inside(p);
+}
+
+// All hits along a ray, sorted.
+std::vector<double> all_hits(const scene::Shape& s, const render::Ray& r) {
+    scene::Scene sc = test::scene_of({});
+    scene::Object o = test::object(s);
+    Diagnostics diag;
+    auto node = render::ObjectNode::build(o, sc, diag);
+    render::HitList hits;
+    node->intersect_all(r, kInfinity, &hits);
+    std::vector<double> t;
+    for (const auto& h : hits) t.push_back(h.t);
+    std::sort(t.begin(), t.end());
+    return t;
+}
+
+// ---- quadric -----------------------------------------------------------------------------
+
+TEST(Quadric, SphereAndParaboloid) {
+    scene::Quadric q;  // x^2 + y^2 + z^2 - 1
+    auto g = build_one(q);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0, 0, -5}, {0, 0, 1}), &h));
+    EXPECT_NEAR(h.t, 4, 1e-12);
+    expect_vec(h.ng, {0, 0, -1}, 1e-12);
+    EXPECT_TRUE(inside(q, {0.5, 0, 0}));
+    EXPECT_FALSE(inside(q, {1.5, 0, 0}));
+    EXPECT_NEAR(g->bounds().hi.x, 1, 1e-5);  // an ellipsoid is bounded
+    // y = x^2 + z^2 (paraboloid): x^2 + z^2 - y = 0, unbounded.
+    scene::Quadric p{{1, 0, 1}, {0, 0, 0}, {0, -1, 0}, 0};
+    auto gp = build_one(p);
+    ASSERT_TRUE(gp->intersect(ray({1, 5, 0}, {0, -1, 0}), &h));
+    EXPECT_NEAR(h.t, 4, 1e-12);  // hits at y = 1
+    expect_vec(h.ng, normalize(Vec3(2, -1, 0)), 1e-12);
+    EXPECT_TRUE(gp->bounds().is_infinite());
+}
+
+// ---- polygon -----------------------------------------------------------------------------
+
+TEST(Polygon, SquareWithHole) {
+    // Outer square and an inner square hole (second sub-polygon), in the plane z = 1.
+    scene::Polygon s{{{0, 0, 1}, {4, 0, 1}, {4, 4, 1}, {0, 4, 1}, {0, 0, 1},
+                      {1, 1, 1}, {3, 1, 1}, {3, 3, 1}, {1, 3, 1}, {1, 1, 1}}};
+    auto g = build_one(s);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0.5, 0.5, -2}, {0, 0, 1}), &h));
+    EXPECT_NEAR(h.t, 3, 1e-12);
+    EXPECT_NEAR(std::fabs(h.ng.z), 1, 1e-12);
+    EXPECT_FALSE(g->intersect(ray({2, 2, -2}, {0, 0, 1}), &h));  // in the hole
+    EXPECT_FALSE(inside(s, {0.5, 0.5, 1}));                       // no inside
+}
+
+// ---- prism -------------------------------------------------------------------------------
+
+scene::Prism square_prism(bool conic) {
+    scene::Prism p;
+    p.conic = conic;
+    p.height1 = conic ? 0.5 : 0;
+    p.height2 = 1;
+    p.points = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}};
+    return p;
+}
+
+TEST(Prism, LinearSweepSidesCapsInside) {
+    auto p = square_prism(false);
+    auto g = build_one(p);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({-5, 0.5, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 4, 1e-12);
+    expect_vec(h.ng, {-1, 0, 0}, 1e-12);  // outward
+    ASSERT_TRUE(g->intersect(ray({0.2, 5, 0.3}, {0, -1, 0}), &h));
+    EXPECT_NEAR(h.t, 4, 1e-12);
+    expect_vec(h.ng, {0, 1, 0}, 1e-12);
+    EXPECT_EQ(all_hits(p, ray({-5, 0.5, 0}, {1, 0, 0})).size(), 2u);
+    EXPECT_TRUE(inside(p, {0, 0.5, 0}));
+    EXPECT_FALSE(inside(p, {0, 1.5, 0}));
+    EXPECT_FALSE(inside(p, {1.5, 0.5, 0}));
+    p.open = true;
+    g = build_one(p);
+    EXPECT_FALSE(g->intersect(ray({0.2, 5, 0.3}, {0, -1, 0}), &h));
+}
+
+TEST(Prism, ConicSweepScalesWithHeight) {
+    auto p = square_prism(true);
+    auto g = build_one(p);
+    Hit h;
+    // At y = 0.75 the outline is the square of half-width 0.75.
+    ASSERT_TRUE(g->intersect(ray({-5, 0.75, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 5 - 0.75, 1e-12);
+    EXPECT_LT(h.ng.x, 0);
+    EXPECT_TRUE(inside(p, {0.6, 0.75, 0}));
+    EXPECT_FALSE(inside(p, {0.8, 0.75, 0}));
+}
+
+TEST(Prism, CubicSplineIsSmoothAndClosed) {
+    scene::Prism p;
+    p.spline = scene::SplineType::Cubic;
+    // A Catmull-Rom loop through the square's corners (first/last points are controls).
+    p.points = {{-1, 1}, {-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+    auto g = build_one(p);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0, 0.5, -5}, {0, 0, 1}), &h));
+    // The curve bulges past the corners' square between them.
+    EXPECT_LT(h.t, 4);
+    EXPECT_TRUE(inside(p, {0, 0.5, 0}));
+}
+
+// ---- lathe and sor -----------------------------------------------------------------------
+
+TEST(Lathe, LinearProfileIsACylinder) {
+    scene::Lathe l;
+    l.points = {{0, 0}, {1, 0}, {1, 2}, {0, 2}};
+    auto g = build_one(l);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({-5, 1, 0}, {1, 0, 0}), &h));  // horizontal ray
+    EXPECT_NEAR(h.t, 4, 1e-9);
+    expect_vec(h.ng, {-1, 0, 0}, 1e-9);
+    ASSERT_TRUE(g->intersect(ray({-5, 2.5, 0}, {5, -1, 0}), &h));  // slanted into the side
+    EXPECT_NEAR(h.p.x, -1, 1e-9);
+    ASSERT_TRUE(g->intersect(ray({0.5, 5, 0}, {0, -1, 0}), &h));  // the top disc
+    EXPECT_NEAR(h.t, 3, 1e-9);
+    expect_vec(h.ng, {0, 1, 0}, 1e-9);
+    EXPECT_TRUE(inside(l, {0.5, 1, 0.2}));
+    EXPECT_FALSE(inside(l, {1.5, 1, 0}));
+}
+
+TEST(Lathe, QuadraticAndBezier) {
+    scene::Lathe q;
+    q.spline = scene::SplineType::Quadratic;
+    q.points = {{1, -1}, {1, 0}, {1, 1}, {1, 2}};  // straight radius 1 between y 0 and 1
+    auto g = build_one(q);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({-5, 0.5, 0}, {1, 0.01, 0}), &h));
+    EXPECT_NEAR(h.p.x, -1, 1e-9);
+    scene::Lathe b;
+    b.spline = scene::SplineType::Bezier;
+    b.points = {{1, 0}, {1, 1}, {1, 2}, {1, 3}};
+    g = build_one(b);
+    ASSERT_TRUE(g->intersect(ray({0, 1.5, 5}, {0, 0, -1}), &h));
+    EXPECT_NEAR(h.t, 4, 1e-9);
+}
+
+TEST(Sor, CylinderWithCaps) {
+    scene::Sor s;
+    s.points = {{1, -1}, {1, 0}, {1, 1}, {1, 2}};
+    auto g = build_one(s);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({-5, 0.5, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 4, 1e-12);
+    expect_vec(h.ng, {-1, 0, 0}, 1e-12);
+    ASSERT_TRUE(g->intersect(ray({0.3, 5, 0}, {0, -1, 0}), &h));
+    EXPECT_NEAR(h.t, 4, 1e-12);  // cap at y = 1
+    EXPECT_TRUE(inside(s, {0.5, 0.5, 0}));
+    EXPECT_FALSE(inside(s, {0.5, 1.5, 0}));
+    s.open = true;
+    g = build_one(s);
+    EXPECT_FALSE(g->intersect(ray({0.3, 5, 0}, {0, -1, 0}), &h));  // along the open tube
+}
+
+// ---- superellipsoid ----------------------------------------------------------------------
+
+TEST(Superellipsoid, SphereAndRoundedBox) {
+    scene::Superellipsoid s{1, 1};  // the unit sphere
+    auto g = build_one(s);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0.3, 0.2, -5}, {0, 0, 1}), &h));
+    EXPECT_NEAR(h.t, 5 - std::sqrt(1 - 0.13), 1e-9);
+    expect_vec(h.ng, normalize(h.p), 1e-6);
+    EXPECT_TRUE(inside(s, {0.5, 0.5, 0.5}));
+    EXPECT_FALSE(inside(s, {0.75, 0.75, 0}));
+    scene::Superellipsoid box{0.1, 0.1};  // nearly a cube: its corner region is inside
+    EXPECT_TRUE(inside(box, {0.9, 0.9, 0.9}));
+    g = build_one(box);
+    ASSERT_TRUE(g->intersect(ray({0.5, 0.5, -5}, {0, 0, 1}), &h));
+    EXPECT_NEAR(h.t, 4, 1e-6);
+    expect_vec(h.ng, {0, 0, -1}, 1e-4);
+}
+
+// ---- blob --------------------------------------------------------------------------------
+
+TEST(Blob, SphereAndCylinderComponents) {
+    // One sphere: (1 - r^2/4)^2 = 0.5 at r = 2 sqrt(1 - sqrt(0.5)).
+    scene::Blob b;
+    b.threshold = 0.5;
+    scene::BlobComponent c;
+    c.radius = 2;
+    c.strength = 1;
+    b.components.push_back(c);
+    const double r = 2 * std::sqrt(1 - std::sqrt(0.5));
+    auto g = build_one(b);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0, 0, -5}, {0, 0, 1}), &h));
+    EXPECT_NEAR(h.t, 5 - r, 1e-9);
+    expect_vec(h.ng, {0, 0, -1}, 1e-9);
+    EXPECT_TRUE(inside(b, {0, 0, 0}));
+    EXPECT_FALSE(inside(b, {0, 0, r + 0.01}));
+    // A cylinder component: the same radius around its axis, hemispherical ends.
+    scene::Blob cyl = b;
+    cyl.components[0].cylinder = true;
+    cyl.components[0].center = {0, -1, 0};
+    cyl.components[0].apex = {0, 1, 0};
+    g = build_one(cyl);
+    ASSERT_TRUE(g->intersect(ray({-5, 0.3, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 5 - r, 1e-9);
+    ASSERT_TRUE(g->intersect(ray({0, 5, 0}, {0, -1, 0}), &h));
+    EXPECT_NEAR(h.t, 4 - r, 1e-9);
+    // Two overlapping spheres merge: the midpoint between them is inside.
+    scene::Blob two = b;
+    two.threshold = 0.6;
+    two.components[0].center = {-1, 0, 0};
+    two.components.push_back(two.components[0]);
+    two.components[1].center = {1, 0, 0};
+    EXPECT_TRUE(inside(two, {0, 0, 0}));
+    EXPECT_EQ(all_hits(two, ray({-5, 0, 0}, {1, 0, 0})).size(), 2u);
+}
+
+// ---- height_field ------------------------------------------------------------------------
+
+TEST(HeightField, GreyImageHeights) {
+    // 3x3 PGM, all 0 except the centre 255: a pyramid of height 255*257/65536.
+    auto dir = std::filesystem::temp_directory_path() / "glint_hf_test";
+    std::filesystem::create_directories(dir);
+    std::string path = (dir / "hf.pgm").string();
+    {
+        std::ofstream f(path);
+        f << "P2\n3 3\n255\n0 0 0\n0 255 0\n0 0 0\n";
+    }
+    scene::HeightField hf;
+    hf.file = hf.resolved_path = path;
+    auto g = build_one(hf);
+    Hit h;
+    const double top = 255.0 * 257 / 65536;
+    ASSERT_TRUE(g->intersect(ray({0.5, 5, 0.5}, {0, -1, 0}), &h));
+    EXPECT_NEAR(h.p.y, top, 1e-9);
+    // Cell (0, 0) rises only in its upper triangle, towards the centre (POV-Ray's diagonal).
+    ASSERT_TRUE(g->intersect(ray({0.375, 5, 0.375}, {0, -1, 0}), &h));
+    EXPECT_NEAR(h.p.y, top / 2, 1e-9);
+    EXPECT_GT(h.ng.y, 0);
+    EXPECT_TRUE(inside(hf, {0.5, 0.5, 0.5}));
+    EXPECT_FALSE(inside(hf, {0.1, 0.5, 0.1}));
+    std::filesystem::remove_all(dir);
+}
+
+// ---- poly --------------------------------------------------------------------------------
+
+TEST(Poly, SphereAndTorusQuartic) {
+    scene::Poly s;
+    s.order = 2;
+    s.coefficients = {1, 0, 0, 0, 1, 0, 0, 1, 0, -1};
+    auto g = build_one(s);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0, -5, 0}, {0, 1, 0}), &h));
+    EXPECT_NEAR(h.t, 4, 1e-9);
+    expect_vec(h.ng, {0, -1, 0}, 1e-9);
+    EXPECT_TRUE(inside(s, {0, 0, 0}));
+    // Torus R = 2, r = 0.5 from its quartic through the parser (quartic { ... }).
+    auto sc = pov::testing::parse(
+        "quartic { <1, 0, 0, 0, 2, 0, 0, 2, 0, -8.5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 2,"
+        " 0, 7.5, 0, 0, 0, 0, 1, 0, -8.5, 0, 14.0625> }");
+    ASSERT_EQ(sc.objects.size(), 1u);
+    g = build_one(sc.objects[0].shape);
+    ASSERT_TRUE(g->intersect(ray({-5, 0, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 2.5, 1e-9);
+    EXPECT_EQ(all_hits(sc.objects[0].shape, ray({-5, 0, 0}, {1, 0, 0})).size(), 4u);
+}
+
+// ---- importer ----------------------------------------------------------------------------
+
+TEST(SolidsParser, MessagesForMisuse) {
+    using pov::testing::error_of;
+    EXPECT_EQ(error_of("prism { 0, 1, 2, <0, 0>, <1, 0> }"),
+              "1:15: prism needs at least 3 points");
+    EXPECT_EQ(error_of("prism { bezier_spline 0, 1, 5, <0,0>,<1,0>,<1,1>,<0,1>,<0,0> }"),
+              "1:29: prism with bezier_spline needs 4 points per segment");
+    EXPECT_EQ(error_of("polygon { 2, <0,0,0>, <1,0,0> }"), "1:11: polygon needs at least 3 points");
+    EXPECT_EQ(error_of("sor { 3, <0,0>, <1,1>, <1,2> }"), "1:7: sor needs at least 4 points");
+    EXPECT_EQ(error_of("sor { 4, <1,0>, <1,1>, <1,0.5>, <1,2> }"),
+              "1:24: sor point 3 is not higher than the point before it");
+    EXPECT_EQ(error_of("lathe { 3, <0,0>, <-1,1>, <0,2> }"),
+              "1:19: lathe point 2 has a negative radius");
+    EXPECT_EQ(error_of("blob { threshold 0.5 }"), "1:1: blob needs at least one component");
+    EXPECT_EQ(error_of("blob { cylinder { <0,0,0>, <0,0,0>, 1, 1 } }"),
+              "1:8: degenerate cylindrical component in blob (its ends coincide)");
+    EXPECT_EQ(error_of("superellipsoid { <0, 1> }"),
+              "1:18: superellipsoid exponents <e, n> must be positive");
+    EXPECT_EQ(error_of("poly { 1, <1, 2, 3, 4> }"), "1:8: order of poly is out of range (2 to 35)");
+    EXPECT_EQ(error_of("cubic { <1, 2, 3> }"),
+              "1:9: cubic of order 3 needs 20 coefficients, got 3");
+    EXPECT_EQ(error_of("height_field { png \"no_such_file.png\" }"),
+              "1:20: cannot find the file 'no_such_file.png'");
+}
+
+TEST(SolidsParser, BodiesIntoTheIr) {
+    auto sc = pov::testing::parse(
+        "prism { conic_sweep cubic_spline 1, 0.2, 7, <-1,1>, <-1,-1>, <1,-1>, <1,1>, <-1,1>,"
+        " <-1,-1>, <1,-1> open }\n"
+        "prism { 0, 1, 3, <0,0>, <1,0>, <0,1> }\n"
+        "blob { threshold 0.4 sphere { <1,0,0>, 2, strength 3 scale 2 } "
+        "cylinder { 0, y, 1, -1 } component 1, 2, <0,1,0> }\n"
+        "polynomial { 2, xyz(2,0,0): 1, xyz(0,0,0): -1 }");
+    ASSERT_EQ(sc.objects.size(), 4u);
+    const auto& p = std::get<scene::Prism>(sc.objects[0].shape);
+    EXPECT_TRUE(p.conic);
+    EXPECT_TRUE(p.open);
+    EXPECT_EQ(p.spline, scene::SplineType::Cubic);
+    EXPECT_EQ(p.height1, 0.2);  // swapped into order
+    EXPECT_EQ(p.height2, 1);
+    // A linear prism that is not closed gets its first point appended.
+    EXPECT_EQ(std::get<scene::Prism>(sc.objects[1].shape).points.size(), 4u);
+    const auto& b = std::get<scene::Blob>(sc.objects[2].shape);
+    EXPECT_EQ(b.threshold, 0.4);
+    ASSERT_EQ(b.components.size(), 3u);
+    EXPECT_EQ(b.components[0].strength, 3);
+    EXPECT_FALSE(b.components[0].transform.is_identity());
+    EXPECT_TRUE(b.components[1].cylinder);
+    EXPECT_EQ(b.components[1].strength, -1);
+    EXPECT_EQ(b.components[2].radius, 2);
+    const auto& q = std::get<scene::Poly>(sc.objects[3].shape);
+    EXPECT_EQ(q.coefficients.front(), 1);
+    EXPECT_EQ(q.coefficients.back(), -1);
+}
+
+}  // namespace
+}  // namespace glint
