@@ -321,12 +321,15 @@ public:
         if (w == "tau") return Num::scalar(2 * kPi);
         if (w == "true" || w == "yes" || w == "on") return Num::scalar(1);
         if (w == "false" || w == "no" || w == "off") return Num::scalar(0);
-        if (w == "clock" || w == "initial_clock" || w == "final_clock")
-            return Num::scalar(p_.options.clock);
-        if (w == "clock_delta") return Num::scalar(1);
-        if (w == "clock_on" ) return Num::scalar(0);
-        if (w == "initial_frame" || w == "final_frame" || w == "frame_number")
-            return Num::scalar(w == "frame_number" ? 0 : 1);
+        const ParseOptions& o = p_.options;
+        if (w == "clock") return Num::scalar(o.clock);
+        if (w == "initial_clock") return Num::scalar(o.initial_clock.value_or(o.clock));
+        if (w == "final_clock") return Num::scalar(o.final_clock.value_or(o.clock));
+        if (w == "clock_delta") return Num::scalar(o.clock_delta);
+        if (w == "clock_on") return Num::scalar(o.clock_on ? 1 : 0);
+        if (w == "initial_frame") return Num::scalar(o.initial_frame);
+        if (w == "final_frame") return Num::scalar(o.final_frame);
+        if (w == "frame_number") return Num::scalar(o.frame_number);
         if (w == "image_width") return Num::scalar(p_.options.image_width);
         if (w == "image_height") return Num::scalar(p_.options.image_height);
         return Num::scalar(p_.version);  // version

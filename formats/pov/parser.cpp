@@ -271,6 +271,9 @@ void Parser::finish_version() {
 }
 
 void Parser::run_statements() {
+    // Declare=Name=Value from POV-Ray's command line: as if declared before the first line.
+    for (const auto& [name, value] : options.declares)
+        declare(name, Num::scalar(value), FileLoc{}, false);
     try {
         parse_statements(*this);
     } catch (Error& e) {

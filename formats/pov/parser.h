@@ -3,7 +3,9 @@
 // GRAMMAR.md beside this file lists the supported subset.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/log.h"
@@ -16,6 +18,15 @@ struct ParseOptions {
     // /usr/share/povray-3.7/include when it exists.
     std::vector<std::string> include_dirs;
     double clock = 0;
+    // POV-Ray's animation identifiers: clock_on is 1 when a clock was given (+K, --clock or
+    // an animation); `glint render`'s animation loop sets the others for each frame.
+    // initial_clock/final_clock read as `clock` when unset.
+    bool clock_on = false;
+    double clock_delta = 1;
+    std::optional<double> initial_clock, final_clock;
+    int initial_frame = 1, final_frame = 1, frame_number = 0;
+    // Declare=Name=Value (POV-Ray command line or .ini): floats declared before the scene.
+    std::vector<std::pair<std::string, double>> declares;
     // image_width / image_height as the scene sees them.
     int image_width = 320;
     int image_height = 240;

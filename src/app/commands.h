@@ -18,8 +18,15 @@ struct RenderArgs {
     std::string output;
     std::string aa = "none";
     int threads = 0;
+    int aa_depth = 3;  // POV-Ray's +R (adaptive anti-aliasing recursion depth)
     bool verbose = false;
     std::string progress;  // empty: bar on a terminal, none otherwise
+    // POV-Ray switches and .ini files (pov_options.h), in command-line order. glint's own
+    // flags, where given, win over them; `given` records which were.
+    std::vector<std::string> pov_args;
+    struct {
+        bool width = false, height = false, aa = false, threads = false, clock = false;
+    } given;
 };
 
 struct IrArgs {
@@ -39,6 +46,10 @@ CLI::App* add_ir_command(CLI::App& app, IrArgs& args);
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args);
 
 int run_render(const RenderArgs& args);
+// Where POV-Ray arguments may appear: argv with the POV-Ray ones of `glint render` taken out
+// into `pov_args` (see split_render_args); other commands' arguments pass unchanged.
+std::vector<std::string> take_pov_arguments(const std::vector<std::string>& argv,
+                                            std::vector<std::string>& pov_args);
 int run_ir(const IrArgs& args);
 int run_compare(const CompareArgs& args);
 

@@ -3,6 +3,8 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <vector>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
@@ -20,8 +22,14 @@ int main(int argc, char** argv) {
     CLI::App* ir = add_ir_command(app, ir_args);
     CLI::App* compare = add_compare_command(app, compare_args);
 
+    // POV-Ray's switches and .ini files (`glint render +W640 scene.ini`) are not CLI11 flags:
+    // they are taken out first and read in order by run_render.
+    std::vector<std::string> all(argv, argv + argc);
+    std::vector<std::string> rest = take_pov_arguments(all, render_args.pov_args);
+    std::vector<char*> rest_argv;
+    for (std::string& a : rest) rest_argv.push_back(a.data());
     try {
-        app.parse(argc, argv);
+        app.parse(static_cast<int>(rest_argv.size()), rest_argv.data());
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {

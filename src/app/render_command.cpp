@@ -11,6 +11,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/pov_options.h"
 #include "app/scene_loading.h"
 #include "io/image_output.h"
 #include "io/progress.h"
@@ -108,12 +109,28 @@ std::string encoding_name(const io::OutputEncoding& e) {
 
 }  // namespace
 
+std::vector<std::string> take_pov_arguments(const std::vector<std::string>& argv,
+                                            std::vector<std::string>& pov_args) {
+    for (size_t i = 1; i < argv.size(); ++i) {
+        if (!argv[i].empty() && argv[i][0] == '-') continue;  // --help, --version
+        if (argv[i] != "render") break;
+        SplitArgs split = split_render_args(argv, i + 1);
+        pov_args = split.pov;
+        return split.glint;
+    }
+    return argv;
+}
+
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
-    CLI::App* cmd = app.add_subcommand("render", "Render a POV-Ray scene to an image");
-    add_scene_options(*cmd, args.scene);
+    CLI::App* cmd = app.add_subcommand(
+        "render",
+        "Render a POV-Ray scene to an image. POV-Ray's own switches (+W640 +H480 +A0.3 "
+        "+Iscene.pov +Oout.png +KFF10 ...) and .ini files (scene.ini, res.ini[Low]) are "
+        "accepted too; glint's flags win over them");
+    add_scene_options(*cmd, args.scene, /*scene_required=*/false);
     cmd->add_option("-o,--output", args.output,
-                    "Output image; format from the extension: png, exr, tif, hdr, jpg")
-        ->required();
+                    "Output image; format from the extension: png, exr, tif, hdr, jpg "
+                    "(default: the scene's name with .png, as POV-Ray names it)");
     cmd->add_option("--aa", args.aa, "Anti-aliasing: none, adaptive[:T] (POV-Ray +A), grid:N")
         ->capture_default_str();
     cmd->add_option("--threads", args.threads, "Worker threads (0: all hardware threads)")
@@ -124,11 +141,137 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                     "Progress on stderr: bar, lines (`progress 0.42`), none "
                     "(default: bar on a terminal, none otherwise)")
         ->check(CLI::IsMember({"bar", "lines", "none"}));
+    cmd->parse_complete_callback([cmd, &args] {
+        args.given.width = cmd->count("--width") > 0;
+        args.given.height = cmd->count("--height") > 0;
+        args.given.aa = cmd->count("--aa") > 0;
+        args.given.threads = cmd->count("--threads") > 0;
+        args.given.clock = cmd->count("--clock") > 0;
+    });
     return cmd;
 }
 
+namespace {
+
+// Resolves POV-Ray's input name as POV-Ray does: as given, with .pov added when it has no
+// extension, then in the library paths.
+std::string resolve_pov_input(const std::string& name, const std::vector<std::string>& library) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    std::vector<std::string> names{name};
+    if (fs::path(name).extension().empty()) names.push_back(name + ".pov");
+    for (const std::string& n : names)
+        if (fs::is_regular_file(n, ec)) return n;
+    if (fs::path(name).is_relative())
+        for (const std::string& dir : library)
+            for (const std::string& n : names)
+                if (fs::is_regular_file(fs::path(dir) / n, ec)) return (fs::path(dir) / n).string();
+    return name;  // load_scene reports it missing
+}
+
+void warn(const std::string& message) {
+    std::fprintf(stderr, "glint: warning: %s\n", message.c_str());
+}
+
+// glint's flags plus POV-Ray's settings: the render of one frame.
+RenderArgs merge_pov_settings(const RenderArgs& args, const PovSettings& pov) {
+    namespace fs = std::filesystem;
+    RenderArgs a = args;
+    for (const std::string& w : pov.warnings) warn(w);
+    a.scene.include_dirs.insert(a.scene.include_dirs.end(), pov.library_paths.begin(),
+                                pov.library_paths.end());
+    if (a.scene.path.empty()) {
+        if (!pov.input)
+            throw Error(ErrorKind::Usage, {},
+                        "no scene to render: give SCENE.pov, +Iscene.pov or an .ini file with "
+                        "Input_File_Name");
+        a.scene.path = resolve_pov_input(*pov.input, pov.library_paths);
+    }
+    if (!args.given.width && pov.width) a.scene.width = *pov.width;
+    if (!args.given.height && pov.height) a.scene.height = *pov.height;
+    if (!args.given.threads && pov.threads) a.threads = *pov.threads;
+    if (!args.given.clock && pov.clock) a.scene.clock = *pov.clock;
+    a.scene.clock_on = args.given.clock || pov.clock.has_value();
+    a.scene.declares = pov.declares;
+    if (!args.given.aa && pov.antialias.value_or(false)) {
+        int method = pov.sampling_method.value_or(1);
+        if (method != 1)
+            warn("anti-aliasing sampling method " + std::to_string(method) +
+                 " (+AM" + std::to_string(method) + ") is not supported: using method 1");
+        if (pov.jitter.value_or(true))
+            warn("anti-aliasing jitter (+J, POV-Ray's default with +A) is not supported: "
+                 "sub-samples are not jittered, as with -J");
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "adaptive:%.17g", pov.aa_threshold.value_or(0.3));
+        a.aa = buf;
+    } else if (!args.given.aa && pov.antialias) {
+        a.aa = "none";
+    }
+    if (pov.aa_depth) a.aa_depth = *pov.aa_depth;
+    if (a.output.empty()) {
+        // POV-Ray's default: the scene's name with the format's extension, in the current
+        // folder (or in the folder +O names, when it ends with a slash).
+        std::string ext = pov.output_type ? extension_for_output_type(*pov.output_type) : "";
+        if (ext.empty()) ext = ".png";
+        std::string stem = fs::path(a.scene.path).stem().string();
+        std::string out = pov.output.value_or("");
+        std::error_code ec;
+        if (out.empty())
+            out = stem + ext;
+        else if (out.back() == '/' || fs::is_directory(out, ec))
+            out = (fs::path(out) / (stem + ext)).string();
+        else if (fs::path(out).extension().empty())
+            out += ext;
+        a.output = out;
+    }
+    return a;
+}
+
+int render_frame(const RenderArgs& args);
+
+}  // namespace
+
 int run_render(const RenderArgs& args) {
     install_signal_handlers();
+    if (args.pov_args.empty()) {
+        if (args.scene.path.empty())
+            throw Error(ErrorKind::Usage, {}, "no scene to render: give SCENE.pov");
+        if (args.output.empty())
+            throw Error(ErrorKind::Usage, {}, "no output: give -o OUT.png (or POV-Ray's +O)");
+        RenderArgs a = args;
+        a.scene.clock_on = args.given.clock;
+        return render_frame(a);
+    }
+    PovSettings pov = read_pov_arguments(args.pov_args);
+    RenderArgs a = merge_pov_settings(args, pov);
+    AnimationPlan plan = plan_animation(pov);
+    if (!plan.animated) return render_frame(a);
+    if (args.given.clock) warn("--clock is ignored: the animation sets the clock of each frame");
+    if (plan.frames.empty()) throw Error(ErrorKind::Usage, {}, "the frame subset is empty");
+    for (const PovFrame& f : plan.frames) {
+        RenderArgs fa = a;
+        fa.scene.clock = f.clock;
+        fa.scene.clock_on = true;
+        fa.scene.clock_delta = plan.clock_delta;
+        fa.scene.initial_clock = plan.initial_clock;
+        fa.scene.final_clock = plan.final_clock;
+        fa.scene.initial_frame = plan.initial_frame;
+        fa.scene.final_frame = plan.final_frame;
+        fa.scene.frame_number = f.number;
+        fa.output = frame_output_name(a.output, f.number, plan.digits);
+        if (args.verbose)
+            std::fprintf(stderr, "frame %d (%d..%d), clock %g: %s\n", f.number,
+                         plan.frames.front().number, plan.frames.back().number, f.clock,
+                         fa.output.c_str());
+        int rc = render_frame(fa);
+        if (rc != kExitOk) return rc;
+    }
+    return kExitOk;
+}
+
+namespace {
+
+int render_frame(const RenderArgs& args) {
     Clock::time_point start = Clock::now();
 
     render::RenderOptions options;
@@ -137,6 +280,7 @@ int run_render(const RenderArgs& args) {
     options.threads = args.threads;
     options.cancel = &cancel_flag();
     parse_aa(args.aa, options);
+    options.aa_depth = args.aa_depth;
     check_output_path(args.output);
 
     scene::Scene scene = load_scene(args.scene, args.verbose);
@@ -178,5 +322,7 @@ int run_render(const RenderArgs& args) {
     }
     return kExitOk;
 }
+
+}  // namespace
 
 }  // namespace glint::app

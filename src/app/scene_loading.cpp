@@ -12,8 +12,8 @@
 
 namespace glint::app {
 
-void add_scene_options(CLI::App& cmd, SceneRequest& request) {
-    cmd.add_option("SCENE", request.path, "POV-Ray scene file")->required();
+void add_scene_options(CLI::App& cmd, SceneRequest& request, bool scene_required) {
+    cmd.add_option("SCENE", request.path, "POV-Ray scene file")->required(scene_required);
     cmd.add_option("-I,--include", request.include_dirs, "Include folder (repeatable)")
         ->allow_extra_args(false);  // one folder per -I, so `-I dir scene.pov` works
     cmd.add_option("--clock", request.clock, "Value of `clock` in the scene")
@@ -78,6 +78,14 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose) {
     pov::ParseOptions options;
     options.include_dirs = include_search_path(request.include_dirs);
     options.clock = request.clock;
+    options.clock_on = request.clock_on;
+    options.clock_delta = request.clock_delta;
+    options.initial_clock = request.initial_clock;
+    options.final_clock = request.final_clock;
+    options.initial_frame = request.initial_frame;
+    options.final_frame = request.final_frame;
+    options.frame_number = request.frame_number;
+    options.declares = request.declares;
     options.image_width = request.width;
     options.image_height = request.height;
     ParseDiagnosticPrinter printer(verbose);

@@ -2,7 +2,9 @@
 // (search path, clock, image size), prints the parser's warnings on stderr, validates.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scene/scene.h"
@@ -19,11 +21,18 @@ struct SceneRequest {
     double clock = 0;
     int width = 320;
     int height = 240;
+    // POV-Ray's animation identifiers and Declare=Name=Value (pov_options.h sets these).
+    bool clock_on = false;
+    double clock_delta = 1;
+    std::optional<double> initial_clock, final_clock;
+    int initial_frame = 1, final_frame = 1, frame_number = 0;
+    std::vector<std::pair<std::string, double>> declares;
 };
 
 // Registers the flags every scene-reading subcommand shares: SCENE, -I/--include (one folder
-// each, repeatable), --clock, -W/--width and -H/--height (image_width/image_height).
-void add_scene_options(CLI::App& cmd, SceneRequest& request);
+// each, repeatable), --clock, -W/--width and -H/--height (image_width/image_height). SCENE is
+// optional for `render`, where POV-Ray's +I or an .ini may name it.
+void add_scene_options(CLI::App& cmd, SceneRequest& request, bool scene_required = true);
 
 // Throws glint::Error. Warnings go to stderr as `file:line:col: warning: ...` as they come;
 // informational messages only when `verbose`.

@@ -28,7 +28,76 @@ std::vector<T> to_rgb(const std::vector<T>& data, size_t pixels, int channels) {
     return rgb;
 }
 
+// Normalized 1-D Gaussian weights of `size` taps and the given sigma, centred.
+std::vector<double> gaussian_taps(int size, double sigma) {
+    std::vector<double> w(size);
+    double sum = 0, c = (size - 1) / 2.0;
+    for (int i = 0; i < size; ++i) sum += w[i] = std::exp(-(i - c) * (i - c) / (2 * sigma * sigma));
+    for (double& v : w) v /= sum;
+    return w;
+}
+
+// Separable weighted sums over every window position wholly inside a w x h plane:
+// out is (w - taps_x + 1) x (h - taps_y + 1).
+std::vector<double> window_filter(const std::vector<double>& plane, int w, int h,
+                                  const std::vector<double>& tx, const std::vector<double>& ty) {
+    const int ow = w - static_cast<int>(tx.size()) + 1;
+    const int oh = h - static_cast<int>(ty.size()) + 1;
+    std::vector<double> rows(static_cast<size_t>(ow) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < ow; ++x) {
+            double s = 0;
+            for (size_t k = 0; k < tx.size(); ++k) s += tx[k] * plane[size_t(y) * w + x + k];
+            rows[size_t(y) * ow + x] = s;
+        }
+    std::vector<double> out(static_cast<size_t>(ow) * oh);
+    for (int y = 0; y < oh; ++y)
+        for (int x = 0; x < ow; ++x) {
+            double s = 0;
+            for (size_t k = 0; k < ty.size(); ++k) s += ty[k] * rows[(y + k) * ow + x];
+            out[size_t(y) * ow + x] = s;
+        }
+    return out;
+}
+
 }  // namespace
+
+double compute_ssim(const Rgb8Image& a, const Rgb8Image& b) {
+    if (a.width != b.width || a.height != b.height)
+        throw Error(ErrorKind::Usage, {}, "image sizes differ");
+    const int w = a.width, h = a.height;
+    if (w <= 0 || h <= 0) return 1.0;
+    constexpr int kWindow = 11;
+    constexpr double kSigma = 1.5;
+    constexpr double kC1 = (0.01 * 255) * (0.01 * 255);
+    constexpr double kC2 = (0.03 * 255) * (0.03 * 255);
+    const size_t n = static_cast<size_t>(w) * h;
+    std::vector<double> la(n), lb(n), aa(n), bb(n), ab(n);
+    for (size_t i = 0; i < n; ++i) {
+        const unsigned char* pa = &a.rgb[i * 3];
+        const unsigned char* pb = &b.rgb[i * 3];
+        la[i] = 0.299 * pa[0] + 0.587 * pa[1] + 0.114 * pa[2];
+        lb[i] = 0.299 * pb[0] + 0.587 * pb[1] + 0.114 * pb[2];
+        aa[i] = la[i] * la[i];
+        bb[i] = lb[i] * lb[i];
+        ab[i] = la[i] * lb[i];
+    }
+    const std::vector<double> tx = gaussian_taps(std::min(kWindow, w), kSigma);
+    const std::vector<double> ty = gaussian_taps(std::min(kWindow, h), kSigma);
+    const std::vector<double> mu_a = window_filter(la, w, h, tx, ty);
+    const std::vector<double> mu_b = window_filter(lb, w, h, tx, ty);
+    const std::vector<double> e_aa = window_filter(aa, w, h, tx, ty);
+    const std::vector<double> e_bb = window_filter(bb, w, h, tx, ty);
+    const std::vector<double> e_ab = window_filter(ab, w, h, tx, ty);
+    double sum = 0;
+    for (size_t i = 0; i < mu_a.size(); ++i) {
+        const double ma = mu_a[i], mb = mu_b[i];
+        const double va = e_aa[i] - ma * ma, vb = e_bb[i] - mb * mb, cov = e_ab[i] - ma * mb;
+        sum += ((2 * ma * mb + kC1) * (2 * cov + kC2)) /
+               ((ma * ma + mb * mb + kC1) * (va + vb + kC2));
+    }
+    return sum / double(mu_a.size());
+}
 
 Rgb8Image read_rgb8(const std::string& path) {
     auto fail = [&](const std::string& why) {
@@ -84,7 +153,7 @@ CompareResult compare_images(const Rgb8Image& a, const Rgb8Image& b, double tole
                         std::to_string(b.height));
     CompareResult r;
     r.pixels = static_cast<long long>(a.width) * a.height;
-    double sum_sq = 0;
+    double sum_sq = 0, sum_abs = 0;
     r.max_diff = -1;
     for (int y = 0; y < a.height; ++y) {
         for (int x = 0; x < a.width; ++x) {
@@ -94,6 +163,7 @@ CompareResult compare_images(const Rgb8Image& a, const Rgb8Image& b, double tole
                 int d = std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c]));
                 largest = std::max(largest, d);
                 sum_sq += double(d) * d;
+                sum_abs += d;
             }
             if (largest <= tolerance) ++r.within_count;
             if (largest > r.max_diff) {
@@ -106,6 +176,8 @@ CompareResult compare_images(const Rgb8Image& a, const Rgb8Image& b, double tole
     if (r.max_diff < 0) r.max_diff = 0;
     r.within_fraction = r.pixels > 0 ? double(r.within_count) / double(r.pixels) : 1.0;
     r.rmse = r.pixels > 0 ? std::sqrt(sum_sq / (3.0 * double(r.pixels))) : 0.0;
+    r.mae = r.pixels > 0 ? sum_abs / (3.0 * double(r.pixels)) : 0.0;
+    r.ssim = compute_ssim(a, b);
     return r;
 }
 
@@ -144,8 +216,10 @@ void write_rgb8_png(const Rgb8Image& image, const std::string& path) {
 
 std::string format_compare_line(const CompareResult& r) {
     char buf[256];
-    std::snprintf(buf, sizeof buf, "within=%.6f rmse=%.4f max=%d@%d,%d pixels=%lld",
-                  r.within_fraction, r.rmse, r.max_diff, r.max_x, r.max_y, r.pixels);
+    std::snprintf(buf, sizeof buf,
+                  "within=%.6f rmse=%.4f max=%d@%d,%d pixels=%lld mae=%.4f ssim=%.6f",
+                  r.within_fraction, r.rmse, r.max_diff, r.max_x, r.max_y, r.pixels, r.mae,
+                  r.ssim);
     return buf;
 }
 

@@ -1,6 +1,7 @@
 // Comparing two images the way the golden tests judge agreement with POV-Ray (VALIDATION.md):
 // in 8-bit output space, the fraction of pixels whose largest channel difference is within a
-// tolerance, plus RMSE and the largest difference with its location. Used by `glint compare`.
+// tolerance, plus RMSE, mean absolute error, SSIM and the largest difference with its location.
+// Used by `glint compare` and, through it, the golden tests and tests/pov_examples/compat.py.
 #pragma once
 
 #include <string>
@@ -22,7 +23,17 @@ struct CompareResult {
     double rmse = 0;             // over all RGB channels, in 8-bit code values
     int max_diff = 0;            // largest channel difference, in 8-bit code values
     int max_x = 0, max_y = 0;    // the first pixel (row-major) where max_diff occurs
+    double mae = 0;              // mean absolute difference over all RGB channels, 8-bit units
+    double ssim = 1;             // structural similarity of the lumas, see compute_ssim
 };
+
+// SSIM (Wang, Bovik, Sheikh, Simoncelli 2004, "Image quality assessment: from error
+// visibility to structural similarity") of the Rec. 601 lumas of a and b (0.299 R + 0.587 G +
+// 0.114 B on the 8-bit values), with the paper's parameters: an 11x11 Gaussian window of
+// sigma 1.5, K1 = 0.01, K2 = 0.03, L = 255. The mean over every window position that lies
+// wholly inside the image (no padding); an image smaller than 11 pixels in a direction uses
+// the largest window that fits. 1 for identical images. Sizes must match.
+double compute_ssim(const Rgb8Image& a, const Rgb8Image& b);
 
 // Reads an image file as 8-bit RGB. Integer files are rescaled to 8 bits by OpenImageIO
 // (16-bit v -> round(v * 255 / 65535)); float files (exr, hdr) are sRGB-encoded and quantized
@@ -40,7 +51,8 @@ Rgb8Image difference_image(const Rgb8Image& a, const Rgb8Image& b);
 // Writes 8-bit RGB as PNG (atomically, like write_image). Throws Error(Output).
 void write_rgb8_png(const Rgb8Image& image, const std::string& path);
 
-// The contract line: `within=<fraction> rmse=<x> max=<d>@<x>,<y> pixels=<n>`.
+// The contract line: `within=<fraction> rmse=<x> max=<d>@<x>,<y> pixels=<n> mae=<x> ssim=<s>`
+// (fields after `pixels` were added later; readers find fields by name).
 std::string format_compare_line(const CompareResult& r);
 
 }  // namespace glint::io

@@ -65,8 +65,12 @@ TEST(IoCompare, CountsLargestChannelAgainstTolerance) {
     EXPECT_NEAR(r.rmse, std::sqrt(117.0 / 300.0), 1e-12);
     EXPECT_EQ(glint::io::compare_images(a, b, 3).within_count, 99);
     EXPECT_EQ(glint::io::compare_images(a, b, 0).within_count, 97);
-    EXPECT_EQ(glint::io::format_compare_line(r),
-              "within=0.980000 rmse=0.6245 max=10@9,9 pixels=100");
+    // MAE over the same 300 values: (3 + 2 + 2 + 10) / 300.
+    EXPECT_NEAR(r.mae, 17.0 / 300.0, 1e-12);
+    EXPECT_EQ(glint::io::format_compare_line(r).rfind(
+                  "within=0.980000 rmse=0.6245 max=10@9,9 pixels=100 mae=0.0567 ssim=", 0),
+              0u)
+        << glint::io::format_compare_line(r);
 }
 
 TEST(IoCompare, MaxLocationIsFirstInRowOrder) {
@@ -133,4 +137,43 @@ TEST(IoCompare, MissingFileIsReported) {
     } catch (const glint::Error& e) {
         EXPECT_EQ(e.kind(), glint::ErrorKind::MissingFile);
     }
+}
+
+TEST(IoCompare, SsimOfIdenticalImagesIsOne) {
+    Rgb8Image a = flat(40, 30, 0);
+    for (int y = 0; y < 30; ++y)
+        for (int x = 0; x < 40; ++x) at(a, x, y, (x + y) % 3) = static_cast<unsigned char>(x * 6);
+    EXPECT_DOUBLE_EQ(glint::io::compute_ssim(a, a), 1.0);
+    EXPECT_DOUBLE_EQ(glint::io::compare_images(a, a, 2).ssim, 1.0);
+}
+
+TEST(IoCompare, SsimOfFlatImagesIsTheLuminanceTerm) {
+    // Flat images have no variance: SSIM reduces to (2 mu_a mu_b + C1) / (mu_a^2 + mu_b^2 + C1)
+    // in every window.
+    const double c1 = (0.01 * 255) * (0.01 * 255);
+    const double expected = (2 * 100.0 * 110.0 + c1) / (100.0 * 100.0 + 110.0 * 110.0 + c1);
+    EXPECT_NEAR(glint::io::compute_ssim(flat(20, 20, 100), flat(20, 20, 110)), expected, 1e-9);
+    // Smaller than the 11x11 window: the window shrinks to the image.
+    EXPECT_NEAR(glint::io::compute_ssim(flat(5, 3, 100), flat(5, 3, 110)), expected, 1e-9);
+}
+
+TEST(IoCompare, SsimFallsWithStructureNotWithSmallNoise) {
+    // A vertical edge against the same edge moved by 4 pixels, and against the edge with
+    // +-1 noise: the moved edge loses structure, the noise barely does.
+    Rgb8Image a = flat(32, 32, 40);
+    for (int y = 0; y < 32; ++y)
+        for (int x = 16; x < 32; ++x)
+            for (int c = 0; c < 3; ++c) at(a, x, y, c) = 200;
+    Rgb8Image moved = flat(32, 32, 40);
+    for (int y = 0; y < 32; ++y)
+        for (int x = 20; x < 32; ++x)
+            for (int c = 0; c < 3; ++c) at(moved, x, y, c) = 200;
+    Rgb8Image noisy = a;
+    for (size_t i = 0; i < noisy.rgb.size(); ++i) noisy.rgb[i] += (i % 2 ? 1 : -1);
+    const double s_moved = glint::io::compute_ssim(a, moved);
+    const double s_noisy = glint::io::compute_ssim(a, noisy);
+    EXPECT_LT(s_moved, 0.9);
+    EXPECT_GT(s_noisy, 0.99);
+    EXPECT_LT(s_noisy, 1.0);
+    EXPECT_DOUBLE_EQ(glint::io::compute_ssim(moved, a), s_moved);  // symmetric
 }
