@@ -277,7 +277,7 @@ std::string print_ir(const scene::Scene& s) {
                   " noise_generator " + std::to_string(g.noise_generator));
     const Camera& c = s.camera;
     p.line(0, std::string("camera ") +
-                  (c.kind == CameraKind::Perspective ? "perspective" : "orthographic") +
+                  camera_kind_name(c.kind) +
                   where(c.loc));
     p.line(1, "location " + vec(c.location));
     p.line(1, "direction " + vec(c.direction));

@@ -43,12 +43,43 @@ void Parser::parse_camera_body(scene::Camera& cam) {
             n.kind = scene::CameraKind::Perspective;
         } else if (w == "orthographic") {
             n.kind = scene::CameraKind::Orthographic;
-        } else if (w == "fisheye" || w == "ultra_wide_angle" || w == "omnimax" ||
-                   w == "panoramic" || w == "spherical" || w == "cylinder" ||
-                   w == "mesh_camera") {
-            unsupported("the '" + w + "' camera");
+        } else if (w == "fisheye") {
+            n.kind = scene::CameraKind::Fisheye;
+        } else if (w == "ultra_wide_angle") {
+            n.kind = scene::CameraKind::UltraWideAngle;
+        } else if (w == "omnimax") {
+            n.kind = scene::CameraKind::Omnimax;
+        } else if (w == "panoramic") {
+            n.kind = scene::CameraKind::Panoramic;
+        } else if (w == "spherical") {
+            n.kind = scene::CameraKind::Spherical;
+        } else if (w == "cylinder") {
+            FileLoc l = loc();
+            double type = parse_float();
+            static const scene::CameraKind kCyl[] = {
+                scene::CameraKind::Cylinder1, scene::CameraKind::Cylinder2,
+                scene::CameraKind::Cylinder3, scene::CameraKind::Cylinder4};
+            int i = static_cast<int>(type);
+            if (i < 1 || i > 4)
+                fail_at(l, "invalid cylinder camera type " + std::to_string(i) +
+                               "; valid types are 1 to 4");
+            n.kind = kCyl[i - 1];
+        } else if (w == "mesh_camera") {
+            warn_unsupported(*this, w, loc(), "the camera stays a perspective camera");
+            skip_braced_block(*this, w);
         } else if (w == "angle") {
             FileLoc l = loc();
+            if (n.kind == scene::CameraKind::Spherical) {
+                // angle H [, V]: V defaults to half of H (Parse_Camera).
+                double h = parse_float();
+                if (h < 0) fail_at(l, "negative horizontal angle");
+                accept(",");
+                double v = allow_float(h * 0.5);
+                if (v < 0) fail_at(l, "negative vertical angle");
+                n.h_angle = h;
+                n.v_angle = v;
+                continue;
+            }
             double a = n.kind == scene::CameraKind::Orthographic ? allow_float(0) : parse_float();
             if (a < 0) fail_at(l, "negative viewing angle");
             angle = a;
@@ -67,14 +98,17 @@ void Parser::parse_camera_body(scene::Camera& cam) {
         } else if (w == "focal_point") {
             parse_vector();  // only used by focal blur
         } else if (w == "aperture") {
-            if (parse_float() != 0) unsupported("focal blur (aperture)");
+            FileLoc at = loc();
+            if (parse_float() != 0)
+                warn_unsupported(*this, "focal blur", at, "the image is rendered all in focus");
         } else if (w == "blur_samples") {
             parse_float();
             if (accept(",")) parse_float();
         } else if (w == "confidence" || w == "variance") {
             parse_float();
         } else if (w == "normal" || w == "bokeh") {
-            unsupported("camera '" + w + "'");
+            warn_unsupported(*this, "camera " + w, loc(), "ignored");
+            skip_braced_block(*this, w);
         } else {
             unget();
             Transform delta;
@@ -86,7 +120,12 @@ void Parser::parse_camera_body(scene::Camera& cam) {
     }
     if (up) n.up = *up;
     if (right) n.right = *right;
-    if (angle) {
+    const bool linear = n.kind == scene::CameraKind::Perspective ||
+                        n.kind == scene::CameraKind::Orthographic;
+    if (!linear && n.angle == 0) n.angle = 90;  // POV-Ray's Camera::Init default
+    if (angle && !linear) {
+        n.angle = *angle;  // the non-linear projections use the angle as given
+    } else if (angle) {
         FileLoc l = n.loc;
         if (*angle >= 180) fail_at(l, "the viewing angle must be smaller than 180 degrees");
         if (*angle > 0) {

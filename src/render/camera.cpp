@@ -1,9 +1,39 @@
 #include "render/camera.h"
 
+#include <cmath>
+
 namespace glint::render {
 
+using scene::CameraKind;
+
 Camera::Camera(const scene::Camera& camera, int width, int height)
-    : camera_(camera), width_(width), height_(height) {}
+    : camera_(camera), width_(width), height_(height) {
+    // TracePixel::SetupCamera: the aspect ratio each projection uses, from the vectors'
+    // lengths, and the projections other than perspective/orthographic/panoramic/spherical
+    // work with unit vectors.
+    const double lr = length(camera.right), lu = length(camera.up);
+    bool unit = true;
+    switch (camera.kind) {
+        case CameraKind::Cylinder1:
+        case CameraKind::Cylinder3: aspect_ = lu; break;
+        case CameraKind::Cylinder2:
+        case CameraKind::Cylinder4: aspect_ = lr; break;
+        case CameraKind::UltraWideAngle: aspect_ = lu / lr; break;
+        case CameraKind::Omnimax:
+        case CameraKind::Fisheye: aspect_ = lr / lu; break;
+        default:
+            aspect_ = lu > 0 ? lr / lu : 1;
+            unit = false;
+            break;
+    }
+    length_right_ = lr;
+    length_up_ = lu;
+    if (unit) {
+        camera_.right = normalize(camera_.right);
+        camera_.up = normalize(camera_.up);
+        camera_.direction = normalize(camera_.direction);
+    }
+}
 
 void Camera::screen(double x, double y, double* sx, double* sy) const {
     // POV-Ray moves to the pixel centre with x += 0.5, y -= 0.5 and then maps
@@ -12,18 +42,129 @@ void Camera::screen(double x, double y, double* sx, double* sy) const {
     *sy = ((height_ - 1) - (y - 0.5)) / height_ - 0.5;
 }
 
-Ray Camera::generate(double x, double y) const {
+namespace {
+
+// Polar angle of (x, y) as POV-Ray's fisheye/omnimax compute it (asin based).
+double polar_angle(double x, double y, double rad) {
+    if (rad == 0.0) return 0.0;
+    return x < 0.0 ? kPi - std::asin(y / rad) : std::asin(y / rad);
+}
+
+// Rotation of v about the unit axis by `angle` radians (right-handed, as
+// Compute_Axis_Rotation_Transform followed by MTransPoint).
+Vec3 rotate_about(const Vec3& v, const Vec3& axis, double angle) {
+    Vec3 a = normalize(axis);
+    double c = std::cos(angle), s = std::sin(angle);
+    return v * c + cross(a, v) * s + a * (dot(a, v) * (1 - c));
+}
+
+}  // namespace
+
+std::optional<Ray> Camera::generate(double x, double y) const {
     double sx, sy;
     screen(x, y, &sx, &sy);
+    const scene::Camera& c = camera_;
     Ray ray;
-    if (camera_.kind == scene::CameraKind::Orthographic) {
-        ray.origin = camera_.location + camera_.right * sx + camera_.up * sy;
-        ray.dir = normalize(camera_.direction);
-    } else {
-        ray.origin = camera_.location;
-        ray.dir = normalize(camera_.direction + camera_.right * sx + camera_.up * sy);
+    ray.origin = c.location;
+    const double deg = kPi / 180.0;
+    switch (c.kind) {
+        case CameraKind::Perspective:
+            ray.dir = c.direction + c.right * sx + c.up * sy;
+            break;
+        case CameraKind::Orthographic:
+            ray.origin = c.location + c.right * sx + c.up * sy;
+            ray.dir = c.direction;
+            break;
+        case CameraKind::Fisheye: {
+            double x0 = 2 * sx * length_right_, y0 = 2 * sy * length_up_;
+            double rad = std::sqrt(x0 * x0 + y0 * y0);
+            if (rad > 1.0) return std::nullopt;  // outside the image circle: no ray
+            double phi = polar_angle(x0, y0, rad);
+            double theta = rad * c.angle * kPi / 360.0;
+            ray.dir = c.right * (std::cos(phi) * std::sin(theta)) +
+                      c.up * (std::sin(phi) * std::sin(theta)) + c.direction * std::cos(theta);
+            break;
+        }
+        case CameraKind::Omnimax: {
+            double x0 = 2 * sx, y0 = 2 * sy;
+            if (aspect_ > 1.0) {
+                if (aspect_ > 1.283458) {
+                    x0 *= aspect_ / 1.283458;
+                    y0 = (y0 - 1.0) / 1.283458 + 1.0;
+                } else {
+                    y0 = (y0 - 1.0) / aspect_ + 1.0;
+                }
+            } else {
+                y0 /= aspect_;
+            }
+            double rad = std::sqrt(x0 * x0 + y0 * y0);
+            if (rad > 1.0) return std::nullopt;
+            double phi = polar_angle(x0, y0, rad);
+            double theta = 1.411269 * rad - 0.09439 * rad * rad * rad +
+                           0.25674 * rad * rad * rad * rad * rad;
+            double cx = std::cos(phi), sxp = std::sin(phi);
+            double cy = std::cos(theta), sy2 = std::sin(theta);
+            // Nothing below 45 degrees under the projection axis.
+            if (sxp * sy2 < std::tan(135.0 * deg) * cy) return std::nullopt;
+            ray.dir = c.right * (cx * sy2) + c.up * (sxp * sy2) + c.direction * cy;
+            break;
+        }
+        case CameraKind::Panoramic: {
+            double x0 = (1.0 - (sx + 0.5)) * kPi;
+            double y0 = 0.5 * kPi * (2 * sy);
+            double ty;
+            if (std::fabs(0.5 * kPi - std::fabs(y0)) < kPovEpsilon)
+                ty = y0 > 0 ? 1e10 : -1e10;  // BOUND_HUGE
+            else
+                ty = std::tan(y0);
+            ray.dir = c.right * std::cos(x0) + c.up * ty + c.direction * std::sin(x0);
+            break;
+        }
+        case CameraKind::UltraWideAngle: {
+            double x0 = sx * c.angle * deg, y0 = sy * c.angle * aspect_ * deg;
+            ray.dir = c.right * std::sin(x0) + c.up * std::sin(y0) +
+                      c.direction * (std::cos(x0) * std::cos(y0));
+            break;
+        }
+        case CameraKind::Cylinder1: {
+            double x0 = sx * c.angle * deg, y0 = sy * aspect_;
+            ray.dir = c.right * std::sin(x0) + c.up * y0 + c.direction * std::cos(x0);
+            break;
+        }
+        case CameraKind::Cylinder2: {
+            double y0 = sy * c.angle * deg, x0 = sx * aspect_;
+            ray.dir = c.right * x0 + c.up * std::sin(y0) + c.direction * std::cos(y0);
+            break;
+        }
+        case CameraKind::Cylinder3: {
+            double x0 = sx * c.angle * deg, y0 = sy * aspect_;
+            ray.dir = c.right * std::sin(x0) + c.direction * std::cos(x0);
+            ray.origin = c.location + c.up * y0;
+            break;
+        }
+        case CameraKind::Cylinder4: {
+            double y0 = sy * c.angle * deg, x0 = sx * aspect_;
+            ray.dir = c.up * std::sin(y0) + c.direction * std::cos(y0);
+            ray.origin = c.location + c.right * x0;
+            break;
+        }
+        case CameraKind::Spherical: {
+            double y0 = sy * c.v_angle * deg, x0 = sx * c.h_angle * deg;
+            // Latitude about `right`, then longitude about `up`.
+            Vec3 v = rotate_about(c.direction, c.right, -y0);
+            ray.dir = rotate_about(v, c.up, x0);
+            break;
+        }
     }
+    if (!(length_squared(ray.dir) > 0) || !std::isfinite(length_squared(ray.dir)))
+        return std::nullopt;
+    ray.dir = normalize(ray.dir);
     return ray;
+}
+
+bool Camera::rays_start_at_location() const {
+    return camera_.kind != CameraKind::Orthographic && camera_.kind != CameraKind::Cylinder3 &&
+           camera_.kind != CameraKind::Cylinder4;
 }
 
 }  // namespace glint::render

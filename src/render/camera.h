@@ -3,6 +3,8 @@
 // raster positions; pixel (x, y), top row first, has its centre at (x, y).
 #pragma once
 
+#include <optional>
+
 #include "render/ray.h"
 #include "scene/camera.h"
 
@@ -14,7 +16,12 @@ public:
 
     // Ray through raster position (x, y): integer values are pixel centres, x grows to the right
     // and y downwards (so supersamples at x +- 0.3 stay inside pixel x). Direction normalized.
-    Ray generate(double x, double y) const;
+    // None where the projection traces no ray (outside a fisheye's circle): POV-Ray leaves
+    // such pixels black.
+    std::optional<Ray> generate(double x, double y) const;
+    // Whether every primary ray starts at the camera location (not orthographic, not the
+    // cylinder projections that are orthographic along one axis).
+    bool rays_start_at_location() const;
     // Normalized screen coordinates of a raster position, as in scene/camera.h.
     void screen(double x, double y, double* sx, double* sy) const;
 
@@ -22,6 +29,8 @@ private:
     scene::Camera camera_;
     double width_;
     double height_;
+    double aspect_ = 1;
+    double length_right_ = 1, length_up_ = 1;
 };
 
 }  // namespace glint::render

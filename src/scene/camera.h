@@ -3,7 +3,9 @@
 // normalized screen coordinates (sx, sy) in [-0.5, 0.5] is
 //   perspective:  origin = location,                     dir = direction + sx*right + sy*up
 //   orthographic: origin = location + sx*right + sy*up,  dir = direction
-// with sx growing to the right and sy growing upwards.
+// with sx growing to the right and sy growing upwards. The other kinds are POV-Ray's
+// non-linear projections (render/camera.cpp); for them `angle` is always set (POV-Ray's
+// default 90) and right/up/direction keep their lengths (the renderer normalizes them).
 #pragma once
 
 #include "core/error.h"
@@ -11,7 +13,22 @@
 
 namespace glint::scene {
 
-enum class CameraKind { Perspective, Orthographic };
+enum class CameraKind {
+    Perspective,
+    Orthographic,
+    Fisheye,
+    UltraWideAngle,
+    Omnimax,
+    Panoramic,
+    Cylinder1,  // vertical cylinder, `angle` horizontally
+    Cylinder2,  // horizontal cylinder, `angle` vertically
+    Cylinder3,  // vertical cylinder, orthographic vertically
+    Cylinder4,  // horizontal cylinder, orthographic horizontally
+    Spherical,  // `angle H [, V]`
+};
+
+// The keyword of a camera kind ("cylinder 1" for Cylinder1).
+const char* camera_kind_name(CameraKind kind);
 
 struct Camera {
     CameraKind kind = CameraKind::Perspective;
@@ -20,7 +37,9 @@ struct Camera {
     Vec3 right{1.33, 0, 0};
     Vec3 up{0, 1, 0};
     Vec3 sky{0, 1, 0};       // kept for printing; already applied to right/up
-    double angle = 0;        // horizontal field of view in degrees if given, else 0
+    double angle = 0;        // field of view in degrees if given, else 0 (perspective/ortho)
+    double h_angle = 360;    // spherical camera: horizontal and vertical field of view
+    double v_angle = 180;
     FileLoc loc;
 };
 

@@ -1,5 +1,5 @@
 // Camera rays: POV-Ray's pixel-centre mapping (tracepixel.cpp CreateCameraRay) for perspective
-// and orthographic cameras.
+// and orthographic cameras, and its non-linear projections.
 #include <gtest/gtest.h>
 
 #include "render/camera.h"
@@ -18,7 +18,7 @@ scene::Camera basic_camera() {
 
 TEST(Camera, CentrePixelOfOddImageLooksAlongDirection) {
     Camera cam(basic_camera(), 5, 3);
-    Ray r = cam.generate(2, 1);
+    Ray r = *cam.generate(2, 1);
     EXPECT_NEAR(r.dir.x, 0.0, 1e-15);
     EXPECT_NEAR(r.dir.y, 0.0, 1e-15);
     EXPECT_NEAR(r.dir.z, 1.0, 1e-15);
@@ -32,7 +32,7 @@ TEST(Camera, TopLeftPixelCentre) {
     cam.screen(0, 0, &sx, &sy);
     EXPECT_DOUBLE_EQ(sx, -0.5 + 0.5 / w);
     EXPECT_DOUBLE_EQ(sy, 0.5 - 0.5 / h);
-    Ray r = cam.generate(0, 0);
+    Ray r = *cam.generate(0, 0);
     Vec3 expected = normalize(Vec3((4.0 / 3.0) * sx, sy, 1.0));
     EXPECT_NEAR(r.dir.x, expected.x, 1e-14);
     EXPECT_NEAR(r.dir.y, expected.y, 1e-14);
@@ -53,7 +53,7 @@ TEST(Camera, BottomRightPixelCentre) {
 TEST(Camera, DirectionsAreUnitLength) {
     Camera cam(basic_camera(), 64, 48);
     for (int y = 0; y < 48; y += 7)
-        for (int x = 0; x < 64; x += 9) EXPECT_NEAR(length(cam.generate(x, y).dir), 1.0, 1e-14);
+        for (int x = 0; x < 64; x += 9) EXPECT_NEAR(length(cam.generate(x, y)->dir), 1.0, 1e-14);
 }
 
 TEST(Camera, OrthographicMovesOriginNotDirection) {
@@ -62,12 +62,57 @@ TEST(Camera, OrthographicMovesOriginNotDirection) {
     c.right = Vec3(8, 0, 0);
     c.up = Vec3(0, 6, 0);
     Camera cam(c, 4, 4);
-    Ray r = cam.generate(0, 3);
+    Ray r = *cam.generate(0, 3);
     // sx = 0.5/4 - 0.5 = -0.375, sy = (3 - 2.5)/4 - 0.5 = -0.375
     EXPECT_NEAR(r.origin.x, -3.0, 1e-14);
     EXPECT_NEAR(r.origin.y, -2.25, 1e-14);
     EXPECT_NEAR(r.origin.z, -5.0, 1e-14);
     EXPECT_EQ(r.dir, Vec3(0, 0, 1));
+}
+
+TEST(Camera, FisheyeTracesNoRayOutsideItsCircle) {
+    scene::Camera c = basic_camera();
+    c.kind = scene::CameraKind::Fisheye;
+    c.angle = 180;
+    c.right = Vec3(1, 0, 0);  // square view: the circle touches the image edges
+    Camera cam(c, 101, 101);
+    EXPECT_FALSE(cam.generate(0, 0).has_value());  // corner
+    std::optional<Ray> centre = cam.generate(50, 50);
+    ASSERT_TRUE(centre.has_value());
+    EXPECT_NEAR(centre->dir.z, 1.0, 1e-12);
+    // The angle off axis grows linearly with the distance from the centre: angle/2 at the
+    // circle's edge. Pixel 75's centre lies at radius 2 * (75.5 / 101 - 0.5).
+    std::optional<Ray> mid = cam.generate(75, 50);
+    ASSERT_TRUE(mid.has_value());
+    EXPECT_NEAR(std::acos(mid->dir.z) * 180 / kPi, 2 * (75.5 / 101 - 0.5) * 90, 1e-9);
+    EXPECT_GT(mid->dir.x, 0);
+}
+
+TEST(Camera, SphericalCoversTheFullSphereHorizontally) {
+    scene::Camera c = basic_camera();
+    c.kind = scene::CameraKind::Spherical;
+    c.h_angle = 360;
+    c.v_angle = 180;
+    Camera cam(c, 360, 180);
+    // Right of centre turns towards +x (POV-Ray's rotation about `up`), the far left and right
+    // edges look backwards.
+    Ray right = *cam.generate(269.5, 89.5);
+    EXPECT_NEAR(right.dir.x, 1.0, 1e-9);
+    Ray back = *cam.generate(-0.5, 89.5);
+    EXPECT_NEAR(back.dir.z, -1.0, 1e-9);
+    Ray top = *cam.generate(179.5, -0.5);
+    EXPECT_NEAR(top.dir.y, 1.0, 1e-9);
+}
+
+TEST(Camera, CylinderThreeIsOrthographicVertically) {
+    scene::Camera c = basic_camera();
+    c.kind = scene::CameraKind::Cylinder3;
+    c.angle = 90;
+    Camera cam(c, 64, 64);
+    Ray a = *cam.generate(31.5, 0), b = *cam.generate(31.5, 63);
+    EXPECT_NEAR(a.dir.z, b.dir.z, 1e-15);
+    EXPECT_GT(a.origin.y, b.origin.y);
+    EXPECT_FALSE(cam.rays_start_at_location());
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ TEST(Driver, NoAaTracesPixelCentres) {
     o.width = 40;
     o.height = 30;
     Image img = run_tiles(cam, o, {}, busy);
-    Color expect = busy(cam.generate(17, 11));
+    Color expect = busy(*cam.generate(17, 11));
     EXPECT_EQ(img.pixel(17, 11)[0], static_cast<float>(expect.r));
     EXPECT_EQ(img.pixel(17, 11)[1], static_cast<float>(expect.g));
     EXPECT_EQ(img.pixel(17, 11)[3], 1.0f);

@@ -42,7 +42,9 @@ public:
 
 private:
     Color sample(double x, double y, int px, int py, uint32_t index) const {
-        return radiance_(camera_.generate(x, y), SampleId{px, py, index});
+        std::optional<Ray> ray = camera_.generate(x, y);
+        if (!ray) return Color(0, 0, 0);
+        return radiance_(*ray, SampleId{px, py, index});
     }
     Color sample(int px, int py) const { return sample(px, py, px, py, 0); }
 

@@ -84,8 +84,11 @@ Whitted::Whitted(const scene::Scene& scene, const scene::Features& features,
 
 void Whitted::find_camera_interiors() {
     // Only refraction and interior fading care which objects contain the eye, and only the
-    // perspective camera has one eye point for all primary rays.
-    if (scene_.camera.kind != scene::CameraKind::Perspective) return;
+    // projections whose rays all start at the camera location have one eye point.
+    const scene::CameraKind k = scene_.camera.kind;
+    if (k == scene::CameraKind::Orthographic || k == scene::CameraKind::Cylinder3 ||
+        k == scene::CameraKind::Cylinder4)
+        return;
     // Walk a ray from the eye: an object whose first crossing leaves it (the normal, which
     // points out of the solid, along the ray) contains the eye.
     Ray r;
