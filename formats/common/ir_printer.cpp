@@ -214,6 +214,9 @@ public:
                     for (double c : v.coefficients) r += " " + num(c);
                     return r + (v.sturm ? " sturm" : "");
                 }
+                else if constexpr (std::is_same_v<T, Text>)
+                    return "text ttf \"" + v.file + "\" \"" + v.text + "\" " + num(v.thickness) + " " +
+                           vec(v.offset);
                 else {
                     static const char* kOps[] = {"union", "merge", "intersection", "difference"};
                     return std::string(kOps[static_cast<int>(v.op)]) + " (" +
@@ -289,6 +292,24 @@ std::string print_ir(const scene::Scene& s) {
         p.line(0, "sky_sphere emission " + rgb(s.sky_sphere->emission) + " transform " +
                       matrix(s.sky_sphere->transform) + where(s.sky_sphere->loc));
         for (const auto& pg : s.sky_sphere->pigments) p.pigment(1, "pigment", pg);
+    }
+    for (const Fog& f : s.fogs) {
+        std::string l = "fog type " + std::to_string(static_cast<int>(f.type)) + " distance " +
+                        num(f.distance) + " color " + rgbft(f.color);
+        if (f.type == FogType::Ground)
+            l += " offset " + num(f.offset) + " alt " + num(f.alt) + " up " + vec(f.up);
+        if (f.turbulent)
+            l += " turbulence " + vec(f.turbulence) + " octaves " + std::to_string(f.octaves) +
+                 " omega " + num(f.omega) + " lambda " + num(f.lambda) + " turb_depth " +
+                 num(f.turb_depth);
+        p.line(0, l + where(f.loc));
+    }
+    for (const Rainbow& r : s.rainbows) {
+        p.line(0, "rainbow angle " + num(r.angle) + " width " + num(r.width) + " distance " +
+                      num(r.distance) + " jitter " + num(r.jitter) + " direction " +
+                      vec(r.antisolar) + " up " + vec(r.up) + " arc_angle " + num(r.arc_angle) +
+                      " falloff_angle " + num(r.falloff_angle) + " color_map " +
+                      std::to_string(r.color_map.size()) + where(r.loc));
     }
     for (size_t i = 0; i < s.lights.size(); ++i) p.light(static_cast<int>(i), s.lights[i]);
     for (size_t i = 0; i < s.materials.size(); ++i) p.material(static_cast<int>(i), s.materials[i]);

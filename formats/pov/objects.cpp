@@ -15,13 +15,13 @@ const std::unordered_set<std::string>& object_keywords() {
     static const std::unordered_set<std::string> k = {
         "sphere", "plane", "box", "cylinder", "cone", "disc", "torus", "triangle",
         "smooth_triangle", "mesh", "mesh2", "union", "merge", "intersection", "difference",
-        "object", "light_source"};
+        "object", "light_source", "text"};
     return k;
 }
 
 const std::unordered_set<std::string>& unsupported_objects() {
     static const std::unordered_set<std::string> k = {
-        "isosurface", "julia_fractal", "parametric", "sphere_sweep", "text", "bicubic_patch",
+        "isosurface", "julia_fractal", "parametric", "sphere_sweep", "bicubic_patch",
         "ovus", "lemon", "light_group"};
     return k;
 }
@@ -248,6 +248,7 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
             po = **obj;
             if (po.obj.name.empty()) po.obj.name = first.text;
             if (w != "object" && !po.is_light && shape_name(po.obj.shape) != w &&
+                !(w == "light_source" && !po.lights.empty()) &&
                 !(w == "union" || w == "merge" || w == "intersection" || w == "difference"))
                 fail("'" + first.text + "' is a " + shape_name(po.obj.shape) + ", not a " + w);
             parse_object_mods(po, w.c_str(), o);
@@ -369,12 +370,39 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
         }
     } else if (is_solid_keyword(w)) {
         parse_solid_body(*this, w, kloc, &po.obj.shape);
+    } else if (w == "text") {
+        // text { ttf "font.ttf" "string" thickness, <offset> } (parse.cpp Parse_TrueType).
+        scene::Text s;
+        if (accept("internal")) unsupported("text with POV-Ray's built-in fonts ('internal')");
+        expect("ttf", "in text (ttf \"font.ttf\" \"string\" thickness, offset)");
+        peek();
+        FileLoc floc = loc();
+        s.file = parse_string();
+        s.font = resolve_file(s.file, floc);
+        skip_comma();
+        s.text = parse_string();
+        skip_comma();
+        s.thickness = parse_float();
+        skip_comma();
+        s.offset = parse_vector();
+        po.obj.shape = s;
+        // POV-Ray turns every text object by 0.001 degrees about each axis "to fix cracks in
+        // text that lies along an axis"; the same rays must hit the same glyph edges.
+        po.obj.transform = Transform::rotate_xyz_degrees(Vec3(0.001, 0.001, 0.001));
     } else if (w == "light_source") {
         scene::Light l;
         l.loc = kloc;
         po.is_light = true;
-        parse_light_body(l);
+        std::optional<PovObject> looks_like;
+        parse_light_body(l, &looks_like);
         po.lights.push_back(l);
+        if (looks_like) {
+            // The light carries its looks_like object: a union holding it, placed with the
+            // light (parse.cpp makes it a child of the light source).
+            po.is_light = false;
+            po.obj.shape = scene::Csg{};
+            po.children.push_back(std::move(*looks_like));
+        }
         out = std::move(po);
         return true;
     } else {  // object { sphere { ... } mods }
@@ -386,7 +414,7 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
     return true;
 }
 
-void Parser::parse_light_body(scene::Light& l) {
+void Parser::parse_light_body(scene::Light& l, std::optional<PovObject>* looks_like) {
     FileLoc opened = loc();
     l.location = parse_vector();
     skip_comma();
@@ -427,6 +455,18 @@ void Parser::parse_light_body(scene::Light& l) {
             a.size2 = static_cast<int>(parse_float());
             if (a.size1 < 1 || a.size2 < 1) fail("area_light sizes must be at least 1");
             l.area = a;
+        } else if (w == "looks_like" && looks_like) {
+            // looks_like { object mods }: moved to the light's location, casts no shadows.
+            if (*looks_like) fail("only one looks_like allowed per light_source");
+            expect_open("looks_like");
+            FileLoc lo = loc();
+            const Token& ot = next();
+            PovObject obj;
+            if (!parse_object(ot, obj)) fail("expected an object in looks_like, got " + got(ot));
+            apply_transform(obj, Transform::translate(l.location));
+            parse_object_mods(obj, "looks_like", lo);
+            obj.obj.no_shadow = true;
+            *looks_like = std::move(obj);
         } else if (w == "looks_like" || w == "projected_through" || w == "photons") {
             unsupported("light_source '" + w + "'");
         } else {
@@ -442,6 +482,7 @@ void Parser::parse_light_body(scene::Light& l) {
         }
     }
     transform_light(l, tr);
+    if (looks_like && *looks_like) apply_transform(**looks_like, tr);
 }
 
 void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& opened) {

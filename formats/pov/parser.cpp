@@ -244,7 +244,9 @@ static void parse_statements(Parser& p) {
             if (w == "default") { p.parse_default(); continue; }  // old form of #default
             if (w == "background") { p.parse_background(); continue; }
             if (w == "sky_sphere") { p.parse_sky_sphere(); continue; }
-            if (w == "fog" || w == "media" || w == "rainbow" || w == "light_group")
+            if (w == "fog") { p.parse_fog(); continue; }
+            if (w == "rainbow") { p.parse_rainbow(); continue; }
+            if (w == "media" || w == "light_group")
                 p.unsupported("'" + w + "'");
             PovObject o;
             if (p.parse_object(t, o)) {

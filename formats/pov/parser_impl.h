@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -148,13 +149,17 @@ public:
     bool parse_object(const Token& kw, PovObject& out);
     void parse_object_mods(PovObject& o, const char* what, const FileLoc& opened);
     void apply_transform(PovObject& o, const Transform& t);
-    void parse_light_body(scene::Light& l);
+    // `looks_like`, when given, receives the light's looks_like object (placed at the light).
+    void parse_light_body(scene::Light& l, std::optional<PovObject>* looks_like = nullptr);
 
     // ---- camera and scene settings (camera.cpp)
     void parse_camera_body(scene::Camera& cam);
     void parse_global_settings();
     void parse_background();
     void parse_sky_sphere();
+    // ---- atmosphere (atmosphere.cpp): fog { ... } and rainbow { ... } statements
+    void parse_fog();
+    void parse_rainbow();
 
     // ---- top level (parser.cpp)
     void place_object(PovObject o);

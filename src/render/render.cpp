@@ -20,12 +20,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 // Features the Whitted integrator does not implement yet are announced, never silently
 // rendered as something else.
 void warn_unsupported(const scene::Scene& scene, const scene::Features& f, Diagnostics& diag) {
-    if (f.area_lights) {
-        for (const scene::Light& l : scene.lights)
-            if (l.area && l.area->jitter)
-                diag.warning(l.loc,
-                             "area_light jitter is not supported; sampled on the regular grid");
-    }
     if (f.normals) {
         for (const scene::Material& m : scene.materials)
             if (m.texture.normal.kind != scene::PatternKind::Plain) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/atmosphere.h"
 #include "scene/camera.h"
 #include "scene/color.h"
 #include "scene/light.h"
@@ -43,6 +44,8 @@ struct Scene {
     GlobalSettings global;
     ColorFT background{Color(0, 0, 0)};
     std::optional<SkySphere> sky_sphere;
+    std::vector<Fog> fogs;
+    std::vector<Rainbow> rainbows;
     // Files the scene was read from (main file first), for messages and `glint ir`.
     std::vector<std::string> source_files;
 };

@@ -138,6 +138,16 @@ struct Poly {
     bool sturm = false;
 };
 
+// text (POV-Ray 3.7 manual 2.4.2.7): the string's TrueType glyphs extruded from z = 0 to
+// z = thickness, laid out along +x from the origin, `offset` added after each character.
+struct Text {
+    std::string file;  // the font as written in the scene
+    std::string font;  // its resolved path
+    std::string text;
+    double thickness = 1;
+    Vec3 offset{0, 0, 0};
+};
+
 enum class CsgOp { Union, Merge, Intersection, Difference };
 
 struct Csg {
@@ -147,7 +157,7 @@ struct Csg {
 
 using Shape = std::variant<Sphere, Plane, Box, Cylinder, Cone, Disc, Torus, Triangle,
                            SmoothTriangle, MeshRef, Csg, Quadric, Polygon, Prism, Lathe, Sor,
-                           Superellipsoid, Blob, HeightField, Poly>;
+                           Superellipsoid, Blob, HeightField, Poly, Text>;
 
 // Names for messages and `glint ir`, in variant order.
 const char* shape_name(const Shape& shape);

@@ -184,6 +184,10 @@ private:
             fail(loc, "internal: poly coefficient count does not match its order");
         for (double c : s.coefficients) check_finite(c, loc, "poly coefficient");
     }
+    void shape(const Text& s, const FileLoc& loc) {
+        check_finite(s.thickness, loc, "text thickness");
+        check_finite(s.offset, loc, "text offset");
+    }
     void shape(const Csg& s, const FileLoc&) {
         for (const Object& c : s.children) object(c, false);
     }

@@ -70,6 +70,7 @@ Whitted::Whitted(const scene::Scene& scene, const scene::Features& features,
       features_(features),
       geometry_(geometry),
       pigments_(textures),
+      atmosphere_(scene),
       lights_(prepare_lights(scene.lights)),
       max_level_(scene.global.max_trace_level),
       adc_bailout_(scene.global.adc_bailout),
@@ -150,8 +151,24 @@ Color Whitted::trace(const Ray& ray, double weight, const RayState& in, bool con
     bool found = find_hit(ray, in, &hit);
     RayState state = in;
     if (!continued) ++state.level;
-    if (!found) return sky(ray.dir);
-    return shade(ray, hit, weight, state);
+    Color c = found ? shade(ray, hit, weight, state) : sky(ray.dir);
+    // Rainbow and fog act on rays through open space (Ray::IsHollowRay: every object the ray
+    // is inside of is hollow).
+    if (!atmosphere_.empty() && hollow(in)) {
+        double len = length(ray.dir);
+        c = atmosphere_.apply(ray.origin, ray.dir / len,
+                              found ? hit.t * len : Atmosphere::kMissDepth, c);
+    }
+    return c;
+}
+
+bool Whitted::hollow(const RayState& state) const {
+    for (int i = 0; i < state.interiors.count; ++i) {
+        int obj = state.interiors.object[i];
+        if (obj >= 0 && obj < static_cast<int>(scene_.objects.size()) && !scene_.objects[obj].hollow)
+            return false;
+    }
+    return true;
 }
 
 Color Whitted::fade(const scene::Interior& interior, double depth) const {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "render/geometry.h"
+#include "render/integrators/atmosphere.h"
 #include "render/lights/light.h"
 #include "render/materials/classic_finish.h"
 #include "render/textures/pigment.h"
@@ -59,6 +60,7 @@ private:
     bool refract(const Ray& ray, const Hit& hit, const Vec3& n, double weight,
                  const RayState& state, Color* out) const;
     Color sky(const Vec3& dir) const;
+    bool hollow(const RayState& state) const;
     Color fade(const scene::Interior& interior, double depth) const;
     double relative_ior(const RayState& state, int object, double ior) const;
 
@@ -66,6 +68,7 @@ private:
     const scene::Features& features_;
     const Geometry& geometry_;
     PigmentEvaluator pigments_;
+    Atmosphere atmosphere_;  // fog and rainbow
     std::vector<PreparedLight> lights_;
     std::vector<ClassicFinish> finishes_;
     std::vector<bool> opaque_;  // per material: the pigment can never let light through

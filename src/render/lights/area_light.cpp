@@ -1,10 +1,29 @@
 #include "render/lights/area_light.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace glint::render {
 namespace {
+
+// A uniform number in [0, 1) for grid sample (u, v) seen from point p, component k. POV-Ray
+// jitters with its thread's random number stream, whose position depends on the render order;
+// hashing the shading point instead keeps images independent of the thread count (the noise
+// has the same amplitude, its pixels differ from POV-Ray's).
+double jitter_random(const Vec3& p, int u, int v, int k) {
+    uint64_t h = 0x9E3779B97F4A7C15ull * (static_cast<uint64_t>(u) * 131 + v * 2 + k + 1);
+    for (double c : {p.x, p.y, p.z}) {
+        h ^= std::bit_cast<uint64_t>(c) + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2);
+        h ^= h >> 31;
+        h *= 0xBF58476D1CE4E5B9ull;
+    }
+    h ^= h >> 29;
+    h *= 0x94D049BB133111EBull;
+    h ^= h >> 32;
+    return static_cast<double>(h >> 11) * (1.0 / 9007199254740992.0);
+}
 
 double colour_distance(const Color& a, const Color& b) {
     return std::fabs(a.r - b.r) + std::fabs(a.g - b.g) + std::fabs(a.b - b.b);
@@ -41,6 +60,10 @@ private:
         size_t i = static_cast<size_t>(u) * area_.size2 + v;
         if (known_[i]) return grid_[i];
         double ju = u, jv = v;
+        if (area_.jitter) {
+            ju += jitter_random(p_, u, v, 0) - 0.5;
+            jv += jitter_random(p_, u, v, 1) - 0.5;
+        }
         Vec3 offset;
         if (area_.circular) {
             // Map the square grid onto a disc, shell by shell.

@@ -32,7 +32,8 @@ private:
 };
 
 // The light reaching `p` from an area light whose centre-attenuated color is `light_color`.
-// Jitter is not applied (POV-Ray's jitter draws random numbers); the caller warns about it.
+// With jitter, each grid sample moves by up to half a cell in each direction, by glint's own
+// random numbers (POV-Ray's come from a per-thread stream that cannot be replayed).
 Color area_light_shadow(const PreparedLight& light, const Vec3& p, const Color& light_color,
                         const PointShadowFn& shadow);
 

@@ -7,6 +7,7 @@
 #include "core/float.h"
 #include "render/shapes/mesh_prim.h"
 #include "render/shapes/shapes.h"
+#include "render/shapes/text.h"
 
 namespace glint::render {
 
@@ -93,6 +94,8 @@ struct Builder {
                 } else if constexpr (std::is_same_v<T, scene::SmoothTriangle>) {
                     p = make_triangle(s.p, s.n);
                     if (!p) why = "degenerate smooth_triangle (zero area or non-finite vertices)";
+                } else if constexpr (std::is_same_v<T, scene::Text>) {
+                    p = make_text(s, obj.loc, &why);
                 } else if constexpr (std::is_same_v<T, scene::MeshRef>) {
                     if (s.mesh < 0 || s.mesh >= static_cast<int>(scene.meshes.size()))
                         throw Error(ErrorKind::Scene, obj.loc, "mesh reference out of range");
