@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <unordered_set>
 
+#include "core/noise.h"
 #include "formats/pov/parser_impl.h"
 
 namespace glint::pov {
@@ -28,6 +29,9 @@ std::string value_kind_name(const Value& v) {
         case 10: return "a transform";
         case 11: return "a macro";
         case 12: return "an array";
+        case 13: return "a function";
+        case 14: return "a spline";
+        case 15: return "a file handle";
     }
     return "a value";
 }
@@ -49,7 +53,7 @@ const std::unordered_set<std::string>& function_names() {
         "vcross", "vrotate", "vaxis_rotate", "select", "strlen", "val", "asc", "strcmp",
         "defined", "str", "concat", "chr", "substr", "strupr", "strlwr", "bitwise_and",
         "bitwise_or", "bitwise_xor", "odd", "even", "sqr", "file_exists", "seed", "rand",
-        "dimensions", "dimension_size"};
+        "dimensions", "dimension_size", "vturbulence", "vstr"};
     return k;
 }
 
@@ -290,6 +294,17 @@ public:
         if (const Symbol* s = p_.lookup(t.text)) {
             const Symbol& sym = p_.use_symbol(t);
             (void)s;
+            if (auto fr = std::get_if<FunctionRef>(&sym.value)) {
+                int index = fr->index;
+                std::string name = t.text;
+                FileLoc at = p_.loc();
+                return p_.call_function_now(index, name, at);
+            }
+            if (auto sp = std::get_if<std::shared_ptr<const scene::Spline>>(&sym.value)) {
+                auto keep = *sp;
+                std::string name = t.text;
+                return p_.call_spline_now(*keep, name);
+            }
             if (std::holds_alternative<Num>(sym.value) ||
                 std::holds_alternative<std::string>(sym.value))
                 return sym.value;
@@ -304,8 +319,8 @@ public:
         if (constant_names().count(w)) return constant(w);
         if (function_names().count(w)) return function(w);
         static const std::unordered_set<std::string> kUnsupportedFns = {
-            "vturbulence", "eval_pigment", "trace", "inside", "min_extent",
-            "max_extent", "vstr", "datetime", "now"};
+            "eval_pigment", "trace", "inside", "min_extent",
+            "max_extent", "datetime", "now"};
         if (kUnsupportedFns.count(w)) p_.unsupported("the '" + w + "' function");
         p_.fail("unknown identifier '" + w + "'");
     }
@@ -469,6 +484,15 @@ public:
             if (a.size() == 3) return c < 0 ? a[1] : a[2];
             return c < 0 ? a[1] : c == 0 ? a[2] : a[3];
         }
+        if (f == "vturbulence") {
+            // vturbulence(lambda, omega, octaves, point): POV-Ray's DTurbulence.
+            need(4);
+            TurbulenceParams turb;
+            turb.lambda = F(0);
+            turb.omega = F(1);
+            turb.octaves = std::clamp(static_cast<int>(F(2)), 1, 10);
+            return Value(Num::vec(dturbulence(V(3), turb)));
+        }
         if (f == "vlength") { need(1); return R(length(V(0))); }
         if (f == "vdot") { need(2); return R(dot(V(0), V(1))); }
         if (f == "vcross") { need(2); return Value(Num::vec(cross(V(0), V(1)))); }
@@ -521,6 +545,26 @@ public:
             else
                 std::snprintf(buf, sizeof buf, "%*.*f", w, prec, F(0));
             return std::string(buf);
+        }
+        if (f == "vstr") {
+            // vstr(N, V, separator, width, precision): N components of V, each like str().
+            need(5);
+            Num n = num(a[1], "a vector argument of vstr");
+            int count = std::clamp(static_cast<int>(F(0)), 2, 5);
+            n.promote(count);
+            int w = static_cast<int>(F(3)), prec = static_cast<int>(F(4));
+            if (prec < 0) prec = 6;
+            std::string sep = S(2), r;
+            for (int i = 0; i < count; ++i) {
+                char buf[512];
+                if (w < 0)
+                    std::snprintf(buf, sizeof buf, "%0*.*f", -w, prec, n.v[i]);
+                else
+                    std::snprintf(buf, sizeof buf, "%*.*f", w, prec, n.v[i]);
+                if (i > 0) r += sep;
+                r += buf;
+            }
+            return r;
         }
         if (f == "concat") {
             std::string r;
@@ -713,12 +757,22 @@ bool Parser::next_is_expression_start() {
             return t.is_symbol('<') || t.is_symbol('(') || t.is("-") || t.is("+") || t.is("!");
         case TokKind::Word: {
             if (const Symbol* s = lookup(t.text))
-                return s->unusable || std::holds_alternative<Num>(s->value);
+                return s->unusable || std::holds_alternative<Num>(s->value) ||
+                       std::holds_alternative<FunctionRef>(s->value) ||
+                       std::holds_alternative<std::shared_ptr<const scene::Spline>>(s->value);
             return constant_names().count(t.text) > 0 || function_names().count(t.text) > 0 ||
                    color_keywords().count(t.text) > 0;
         }
         default: return false;
     }
+}
+
+bool Parser::float_constant(const std::string& name, double& out) const {
+    if (!constant_names().count(name) || name.size() == 1) return false;  // x y z t u v
+    Num n = std::get<Num>(ExprParser(const_cast<Parser&>(*this)).constant(name));
+    if (n.terms != 1) return false;
+    out = n.v[0];
+    return true;
 }
 
 double Parser::allow_float(double fallback) {

@@ -72,8 +72,10 @@ Value Parser::parse_rvalue() {
             const Symbol& s = use_symbol(t);
             if (auto arr = std::get_if<std::shared_ptr<ArrayValue>>(&s.value))
                 return std::make_shared<ArrayValue>(**arr);  // arrays are copied
+            bool callable = std::holds_alternative<FunctionRef>(s.value) ||
+                            std::holds_alternative<std::shared_ptr<const scene::Spline>>(s.value);
             if (!std::holds_alternative<Num>(s.value) &&
-                !std::holds_alternative<std::string>(s.value))
+                !std::holds_alternative<std::string>(s.value) && !(callable && raw_next_is("(")))
                 return s.value;
             unget();
             return parse_expression_value();
@@ -137,8 +139,11 @@ Value Parser::parse_rvalue() {
             });
         if (w == "transform") return braced([&] { return parse_transform_body(); });
         if (w == "array") return parse_array();
+        if (w == "function") return FunctionRef{parse_function_definition()};
+        if (w == "spline")
+            return braced([&] { return std::make_shared<const scene::Spline>(parse_spline_body()); });
         static const std::unordered_set<std::string> kUnsupported = {
-            "function", "spline", "fog", "media", "rainbow", "sky_sphere", "density",
+            "fog", "media", "rainbow", "sky_sphere", "density",
             "color_map", "colour_map", "pigment_map", "normal_map", "texture_map", "slope_map",
             "density_map", "material_map", "background", "light_group"};
         if (kUnsupported.count(w)) unsupported("declaring '" + w + "'");

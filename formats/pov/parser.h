@@ -35,6 +35,12 @@ struct ParseOptions {
     int max_include_depth = 64;
     int max_macro_depth = 256;
     long long max_tokens = 2'000'000'000;
+    // Hooks the application installs for what lives above the importer (formats/ must not
+    // depend on render/); a null hook makes the feature that needs it "not supported".
+    // Pattern and pigment functions called at parse time (scene::FunctionEnv::pattern).
+    void (*pattern_hook)(const void* user, const scene::Function& f, const Vec3& p,
+                         double out[5]) = nullptr;
+    const void* hook_user = nullptr;
 };
 
 // Throws glint::Error (ErrorKind::Scene or MissingFile) with the FileLoc of the problem.

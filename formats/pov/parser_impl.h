@@ -9,8 +9,10 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -120,8 +122,21 @@ public:
     scene::ColorFT parse_color();
     Color parse_rgb();
     bool next_is_expression_start();
+    // A float-valued keyword constant (pi, clock, true, image_width, ...) by name.
+    bool float_constant(const std::string& name, double& out) const;
     double allow_float(double fallback);  // an optional float (POV-Ray's Allow_Float)
     void skip_comma() { accept(","); }
+
+    // ---- functions and splines (functions.cpp)
+    // After `function`: parameters and body; returns the index into scene.functions.
+    int parse_function_definition();
+    scene::Spline parse_spline_body();  // after spline {
+    // Parse-time calls `F(1, 2, 3)` / `S(t [, type])`, after the name.
+    Value call_function_now(int index, const std::string& name, const FileLoc& at);
+    Value call_spline_now(const scene::Spline& s, const std::string& name);
+    scene::FunctionEnv function_env() const;
+    void warn_unimplemented_internal(int id, const FileLoc& at);
+    bool warned_pigment_call() { return warned_once_.insert(" pigment call").second; }
 
     // ---- materials (materials.cpp)
     scene::Texture parse_texture_body();      // after texture {
@@ -234,6 +249,24 @@ private:
     std::vector<Token> synth_ = std::vector<Token>(256);
     size_t synth_next_ = 0;
     Token fake_end_;  // ends a #declare value at the next statement directive
+    std::set<int> warned_internals_;
+    std::set<std::string> warned_once_;  // deprecated-once names, one-time warnings
+    // #fopen: open files by handle name; written files are kept in memory (see GRAMMAR.md).
+    struct OpenFile {
+        std::string path;  // as resolved (read) or as written (write/append)
+        bool writing = false;
+        std::vector<Token> tokens;  // read: the file's tokens
+        size_t pos = 0;
+        std::shared_ptr<const std::string> name;
+    };
+    std::map<std::string, OpenFile> open_files_;
+    std::map<std::string, std::string> written_files_;  // name -> contents written
+    bool warned_writes_ = false;
+    void handle_fopen(const FileLoc& dloc);
+    void handle_fclose(const FileLoc& dloc);
+    void handle_read(const FileLoc& dloc);
+    void handle_write(const FileLoc& dloc);
+    void warn_deprecated(const std::string& name, const Symbol& s, const FileLoc& at);
 };
 
 }  // namespace glint::pov

@@ -3,6 +3,7 @@
 // #while jumps back to its condition at #end, a false #if skips raw tokens to its #else/#end,
 // a macro call pushes a frame at the macro body and #end pops it.
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -243,7 +244,13 @@ const Symbol& Parser::use_symbol(const Token& t) {
         e.with_note(s->loc, "the unsupported feature in the declaration of '" + t.text + "'");
         throw e;
     }
+    if (!s->deprecated.empty()) warn_deprecated(t.text, *s, loc());
     return *s;
+}
+
+void Parser::warn_deprecated(const std::string& name, const Symbol& s, const FileLoc& at) {
+    if (s.deprecated_once && !warned_once_.insert(name).second) return;
+    diag.warning(at, s.deprecated);
 }
 
 void Parser::declare(const std::string& name, Value v, const FileLoc& l, bool local) {
@@ -331,9 +338,17 @@ bool Parser::handle_directive(const Token& d, int file) {
         version_set_ = true;
     } else if (k == "default") {
         parse_default();
-    } else if (k == "fopen" || k == "fclose" || k == "read" || k == "write" ||
-               k == "statistics" || k == "render") {
-        throw Unsupported(dloc, "#" + k + " is not supported yet");
+    } else if (k == "fopen") {
+        handle_fopen(dloc);
+    } else if (k == "fclose") {
+        handle_fclose(dloc);
+    } else if (k == "read") {
+        handle_read(dloc);
+    } else if (k == "write") {
+        handle_write(dloc);
+    } else if (k == "statistics" || k == "render") {
+        // Messages to POV-Ray's statistics/render streams: shown like #debug.
+        handle_message("debug", dloc);
     } else {
         fail_at(dloc, "unknown directive '#" + k + "'");
     }
@@ -342,14 +357,20 @@ bool Parser::handle_directive(const Token& d, int file) {
 
 void Parser::handle_declare(bool local, const FileLoc& dloc) {
     std::string name = read_name(local ? "#local" : "#declare");
+    std::string deprecated;
+    bool deprecated_once = false;
     if (name == "deprecated") {
-        // #declare deprecated [once] "message" Name = ...: POV-Ray warns when Name is used;
-        // glint keeps the value and drops the warning.
+        // #declare deprecated [once] "message" Name = ...: POV-Ray warns when Name is used
+        // (once: only the first time).
         Frame& f = frames_.back();
         const auto& toks = files_[f.file]->tokens;
-        if (toks[f.pos].is("once")) ++f.pos;
-        if (toks[f.pos].kind == TokKind::String) ++f.pos;
+        if (toks[f.pos].is("once")) {
+            ++f.pos;
+            deprecated_once = true;
+        }
+        if (toks[f.pos].kind == TokKind::String) deprecated = toks[f.pos++].text;
         name = read_name("#declare deprecated");
+        if (deprecated.empty()) deprecated = "Identifier '" + name + "' was declared deprecated.";
     }
     FileLoc nloc = loc();
     if (raw_next_is("[")) {
@@ -384,7 +405,19 @@ void Parser::handle_declare(bool local, const FileLoc& dloc) {
         Value v = parse_rvalue();
         declare_frame_ = saved;
         pending_declare_frame_ = size_t(-1);
+        if (auto fr = std::get_if<FunctionRef>(&v)) {
+            auto& fn = scene.functions[static_cast<size_t>(fr->index)];
+            if (fn.name.empty()) fn.name = name;
+        }
         declare(name, std::move(v), nloc, local);
+        if (!deprecated.empty()) {
+            auto& scope = local ? scopes_.back() : scopes_.front();
+            auto it = scope.find(name);
+            if (it != scope.end()) {
+                it->second.deprecated = deprecated;
+                it->second.deprecated_once = deprecated_once;
+            }
+        }
     } catch (const Unsupported& e) {
         declare_frame_ = saved;
         pending_declare_frame_ = size_t(-1);
@@ -499,8 +532,19 @@ void Parser::handle_macro_def(const FileLoc& dloc) {
         if (t.is_symbol(')')) break;
         if (t.is_symbol(',')) continue;
         if (t.kind != TokKind::Word) fail("expected a parameter name, got " + got(t));
-        if (t.text == "optional") unsupported("optional macro parameters");
-        m->params.push_back(t.text);
+        bool opt = false;
+        if (t.text == "optional") {
+            // POV-Ray 3.8's optional parameters: the argument may be left out (empty or
+            // missing at the end); the parameter is then undefined in the body.
+            const Token& n = raw();
+            if (n.kind != TokKind::Word)
+                fail("expected a parameter name after 'optional', got " + got(n));
+            opt = true;
+            m->params.push_back(n.text);
+        } else {
+            m->params.push_back(t.text);
+        }
+        m->optional.push_back(opt);
     }
     m->file = frames_.back().file;
     m->body = frames_.back().pos;
@@ -521,7 +565,18 @@ void Parser::call_macro(const Macro& m, const FileLoc& cloc) {
     declare_frame_ = size_t(-1);
     pending_declare_frame_ = size_t(-1);
     for (size_t i = 0; i < m.params.size(); ++i) {
+        bool opt = i < m.optional.size() && m.optional[i];
+        if (raw_next_is(")") && (i > 0 || !opt)) {
+            if (opt) continue;  // left out at the end: undefined in the body
+            size_t need = 0;
+            for (size_t k = 0; k < m.params.size(); ++k)
+                need += (k < m.optional.size() && m.optional[k]) ? 0 : 1;
+            next();
+            fail("macro '" + m.name + "' expects " + std::to_string(need) +
+                 " argument(s), but only " + std::to_string(i) + " were given");
+        }
         if (i > 0) expect(",", "between macro arguments");
+        if (opt && (raw_next_is(",") || raw_next_is(")"))) continue;  // left out: undefined
         Symbol s;
         {
             // A lone identifier argument is passed by reference (POV-Ray semantics).
@@ -772,6 +827,205 @@ void Parser::handle_message(const std::string& kind, const FileLoc& dloc) {
         diag.warning(dloc, text);
     else
         diag.info(text);
+}
+
+
+// ---------------------------------------------------------------- #fopen #read #write
+
+// Files a scene writes are kept in memory, never written to disk: a scene file must not be
+// able to write anywhere on the user's machine, and scenes that write a file mostly read it back
+// in the same parse (caches of computed data), which the memory copy serves.
+void Parser::handle_fopen(const FileLoc& dloc) {
+    std::string handle = read_name("#fopen");
+    FileLoc hloc = loc();
+    std::string name = parse_string();
+    FileLoc sloc = loc();
+    const Token& mode = next();
+    OpenFile f;
+    f.name = std::make_shared<const std::string>(name);
+    if (mode.is("read")) {
+        auto w = written_files_.find(name);
+        std::string text;
+        if (w != written_files_.end()) {
+            text = w->second;
+            f.path = name;
+        } else {
+            f.path = resolve_file(name, sloc);
+            std::ifstream in(f.path, std::ios::binary);
+            if (!in)
+                throw Error(ErrorKind::MissingFile, sloc, "cannot read the file '" + name + "'");
+            std::stringstream ss;
+            ss << in.rdbuf();
+            text = ss.str();
+            f.name = std::make_shared<const std::string>(f.path);
+        }
+        f.tokens = scan(text, f.name);
+    } else if (mode.is("write") || mode.is("append")) {
+        if (!warned_writes_) {
+            diag.warning(dloc, "#fopen for " + mode.text + ": glint keeps written files in memory "
+                               "(a later #fopen ... read of the same name sees them); nothing "
+                               "is written to disk");
+            warned_writes_ = true;
+        }
+        f.writing = true;
+        f.path = name;
+        if (mode.is("write")) written_files_[name].clear();
+        else written_files_[name];
+    } else {
+        fail("expected read, write or append after the file name in #fopen, got " + got(mode));
+    }
+    Symbol sym;
+    sym.value = FileHandle{handle};
+    sym.loc = hloc;
+    scopes_.front()[handle] = std::move(sym);
+    open_files_[handle] = std::move(f);
+}
+
+void Parser::handle_fclose(const FileLoc& dloc) {
+    (void)dloc;
+    std::string handle = read_name("#fclose");
+    // POV-Ray ignores #fclose of a name that is not an open file (e.g. after the end of the
+    // file was read, which closes it).
+    if (!open_files_.erase(handle)) return;
+    for (size_t i = scopes_.size(); i-- > 0;)
+        if (scopes_[i].erase(handle)) break;
+}
+
+namespace {
+
+// A float in a data file: an optionally signed number.
+bool read_number(const std::vector<Token>& toks, size_t& i, double& out) {
+    double sign = 1;
+    size_t k = i;
+    while (toks[k].is("-") || toks[k].is("+")) {
+        if (toks[k].is("-")) sign = -sign;
+        ++k;
+    }
+    if (toks[k].kind != TokKind::Number) return false;
+    out = sign * toks[k].number;
+    i = k + 1;
+    return true;
+}
+
+}  // namespace
+
+void Parser::handle_read(const FileLoc& dloc) {
+    expect("(", "after #read");
+    const Token& h = raw();
+    if (h.kind != TokKind::Word) fail("expected a file handle after '#read (', got " + got(h));
+    std::string handle = h.text;
+    auto it = open_files_.find(handle);
+    if (it == open_files_.end()) fail("'" + handle + "' is not a file opened with #fopen");
+    if (it->second.writing)
+        fail("cannot read from '" + handle + "': the file is open for writing");
+    OpenFile& f = it->second;
+    bool at_end = false;
+    for (;;) {
+        const Token& t = raw();
+        if (t.is_symbol(')')) break;
+        if (t.is_symbol(',')) continue;
+        std::string var;
+        if (t.kind == TokKind::Word) {
+            var = t.text;
+        } else {
+            fail("expected an identifier to read into, got " + got(t));
+        }
+        if (at_end) continue;
+        const auto& toks = f.tokens;
+        size_t& i = f.pos;
+        FileLoc vloc{f.name, toks[i].line, toks[i].column};
+        Value v;
+        double d;
+        if (toks[i].kind == TokKind::End) {
+            at_end = true;
+            continue;
+        }
+        if (read_number(toks, i, d)) {
+            v = Num::scalar(d);
+        } else if (toks[i].is_symbol('<')) {
+            ++i;
+            Num n;
+            n.terms = 0;
+            for (;;) {
+                if (toks[i].is_symbol('>')) {
+                    ++i;
+                    break;
+                }
+                if (toks[i].is_symbol(',')) {
+                    ++i;
+                    continue;
+                }
+                if (n.terms == 5 || !read_number(toks, i, n.v[n.terms]))
+                    fail_at(vloc, "bad vector in the data file read by #read");
+                ++n.terms;
+            }
+            if (n.terms < 2) fail_at(vloc, "bad vector in the data file read by #read");
+            v = n;
+        } else if (toks[i].kind == TokKind::String) {
+            v = toks[i++].text;
+        } else {
+            fail_at(vloc, "expected a float, vector or string in the data file, got " +
+                              describe(toks[i]));
+        }
+        if (toks[i].is_symbol(',')) ++i;
+        if (toks[i].kind == TokKind::End) at_end = true;  // as POV-Ray: the last value closes
+        // #read assigns where the identifier lives, else declares it globally (POV-Ray's
+        // Add_Symbol at the current table; a fresh name in a macro would vanish with it).
+        bool done = false;
+        for (size_t k = scopes_.size(); k-- > 0 && !done;) {
+            auto e = scopes_[k].find(var);
+            if (e != scopes_[k].end()) {
+                e->second.value = v;
+                e->second.loc = dloc;
+                done = true;
+            }
+        }
+        if (!done) declare(var, v, dloc, false);
+    }
+    if (at_end) {
+        open_files_.erase(handle);
+        for (size_t i = scopes_.size(); i-- > 0;)
+            if (scopes_[i].erase(handle)) break;
+    }
+}
+
+void Parser::handle_write(const FileLoc& dloc) {
+    (void)dloc;
+    expect("(", "after #write");
+    const Token& h = raw();
+    if (h.kind != TokKind::Word) fail("expected a file handle after '#write (', got " + got(h));
+    std::string handle = h.text;
+    auto it = open_files_.find(handle);
+    if (it == open_files_.end()) fail("'" + handle + "' is not a file opened with #fopen");
+    if (!it->second.writing)
+        fail("cannot write to '" + handle + "': the file is open for reading");
+    std::string path = it->second.path;
+    std::string out;
+    for (;;) {
+        const Token& t = next();
+        if (t.is_symbol(')')) break;
+        if (t.is_symbol(',')) continue;
+        unget();
+        Value v = parse_expression_value();
+        if (auto str = std::get_if<std::string>(&v)) {
+            out += *str;
+            continue;
+        }
+        const Num& n = std::get<Num>(v);
+        char buf[64];
+        if (n.terms == 1) {
+            std::snprintf(buf, sizeof buf, "%g", n.v[0]);
+            out += buf;
+        } else {
+            out += '<';
+            for (int k = 0; k < n.terms; ++k) {
+                std::snprintf(buf, sizeof buf, k == 0 ? "%g" : ",%g", n.v[k]);
+                out += buf;
+            }
+            out += "> ";
+        }
+    }
+    written_files_[path] += out;
 }
 
 }  // namespace glint::pov

@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/transform.h"
 #include "scene/camera.h"
+#include "scene/function.h"
 #include "scene/light.h"
 #include "scene/shape.h"
 #include "scene/texture.h"
@@ -56,6 +57,7 @@ struct MaterialValue {
 struct Macro {
     std::string name;
     std::vector<std::string> params;
+    std::vector<bool> optional;  // per parameter: `optional` (may be left out at the call)
     int file = -1;      // index into the parser's source files
     size_t body = 0;    // token index of the first body token
     FileLoc loc;
@@ -63,10 +65,22 @@ struct Macro {
 
 struct ArrayValue;
 
+// A declared function: an index into the scene's functions (Scene::functions), which only grow
+// during a parse, so the index stays valid.
+struct FunctionRef {
+    int index = -1;
+};
+
+// #fopen handle: the name of the open file in the parser's file table.
+struct FileHandle {
+    std::string name;
+};
+
 using Value = std::variant<Num, std::string, std::shared_ptr<const PovObject>, scene::Texture,
                            scene::Pigment, scene::Finish, scene::Normal, scene::Interior,
                            MaterialValue, scene::Camera, Transform, std::shared_ptr<const Macro>,
-                           std::shared_ptr<ArrayValue>>;
+                           std::shared_ptr<ArrayValue>, FunctionRef,
+                           std::shared_ptr<const scene::Spline>, FileHandle>;
 
 // POV-Ray `array[n][m]...`: row-major elements, null until assigned. Held by shared_ptr so
 // that `#declare A[i] = v` can fill it in place; `#declare B = A` copies (Parser::declare).
@@ -89,6 +103,9 @@ struct Symbol {
     // so `#declare Param = ...` in the body assigns the caller's identifier (scope index).
     std::string ref_name;
     size_t ref_scope = 0;
+    // #declare deprecated [once] "message" Name = ...: warned about on use.
+    std::string deprecated;
+    bool deprecated_once = false;
 };
 
 }  // namespace glint::pov

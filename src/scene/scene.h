@@ -9,6 +9,7 @@
 #include "scene/atmosphere.h"
 #include "scene/camera.h"
 #include "scene/color.h"
+#include "scene/function.h"
 #include "scene/light.h"
 #include "scene/mesh.h"
 #include "scene/shape.h"
@@ -44,6 +45,8 @@ struct Scene {
     GlobalSettings global;
     ColorFT background{Color(0, 0, 0)};
     std::optional<SkySphere> sky_sphere;
+    // User-defined functions (function patterns refer to them by index; calls between them too).
+    std::vector<Function> functions;
     std::vector<Fog> fogs;
     std::vector<Rainbow> rainbows;
     // Files the scene was read from (main file first), for messages and `glint ir`.

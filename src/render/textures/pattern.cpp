@@ -773,6 +773,33 @@ double wrinkles(const Vec3& p, int gen) {
     return value / 2.0;
 }
 
+// `function { pattern { ... } }` called from a function (POV-Ray's f_pattern): the pattern's
+// own transform, then the pattern value.
+void function_hook(const void* user, const scene::Function& f, const Vec3& p, double out[5]) {
+    const PatternContext& ctx = *static_cast<const PatternContext*>(user);
+    const scene::Pigment& pg = f.pigment.at(0);
+    if (f.kind == scene::FunctionKind::Pattern) {
+        out[0] = evaluate_pattern(pg.kind, pg.params, pg.transform.inverse_point(p), ctx);
+        return;
+    }
+    // Pigment functions would need the pigment evaluator (a layer above); the importer warns
+    // that they evaluate to 0.
+    for (int k = 0; k < 5; ++k) out[k] = 0;
+}
+
+// POV-Ray's function_pattern: the function at the point, values above 1 wrapped by fmod.
+double function_pattern(const PatternParams& params, const Vec3& p, const PatternContext& ctx) {
+    if (!ctx.functions || params.function < 0) return 0.0;
+    scene::FunctionEnv env;
+    env.functions = ctx.functions;
+    env.noise_generator = ctx.noise_generator;
+    env.pattern = &function_hook;
+    env.user = &ctx;
+    const double args[3] = {p.x, p.y, p.z};
+    double v = scene::evaluate_function(env, params.function, args, 3);
+    return v > 1.0 ? std::fmod(v, 1.0) : v;
+}
+
 double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
                    const PatternContext& ctx) {
     switch (kind) {
@@ -846,10 +873,11 @@ double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
             return wood(params, p);
         case PatternKind::Wrinkles:
             return wrinkles(p, noise_generator(params, ctx));
+        case PatternKind::Function:
+            return function_pattern(params, p, ctx);
         case PatternKind::Facets:  // normal-only; as a value POV-Ray has none
         case PatternKind::Plain:
         case PatternKind::ImageMap:
-        case PatternKind::Function:
         case PatternKind::Average:
             return 0.0;
     }

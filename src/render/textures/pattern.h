@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/math.h"
+#include "scene/function.h"
 #include "scene/texture.h"
 
 namespace glint::render {
@@ -14,6 +15,9 @@ namespace glint::render {
 struct PatternContext {
     int noise_generator = 2;   // global_settings { noise_generator N }; POV-Ray 3.7 default 2
     int number_of_waves = 10;  // global_settings { number_of_waves N }: ripples and waves
+    // Scene::functions, for PatternKind::Function (params.function indexes it); null: the
+    // function pattern evaluates to 0.
+    const std::vector<scene::Function>* functions = nullptr;
 };
 
 // POV-Ray's Warp_EPoint + Evaluate_TPat.
