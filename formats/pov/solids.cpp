@@ -114,6 +114,21 @@ scene::Prism parse_prism(Parser& p, const FileLoc& kw) {
         s.points.push_back(parse_uv(p));
     }
     if (p.accept("open")) s.open = true;
+    if (s.spline == SplineType::Quadratic || s.spline == SplineType::Cubic) {
+        // Compute_Prism's walk: a segment needs its control points after each closed outline.
+        const int span = s.spline == SplineType::Quadratic ? 3 : 4;
+        const int skip = s.spline == SplineType::Quadratic ? 2 : 3;
+        Vec2 first = s.points[1];
+        for (int i = 0; i < n - 1; ++i) {
+            if (i + span - 1 >= n) p.fail_at(at, "too few points in prism (an outline is not "
+                                                 "closed or its control points are missing)");
+            const Vec2& end = s.points[i + 2];
+            if (std::fabs(end.x - first.x) < kEps && std::fabs(end.y - first.y) < kEps) {
+                i += skip;
+                if (i + 2 < n) first = s.points[i + 2];
+            }
+        }
+    }
     if (s.spline == SplineType::Linear) {
         // An open outline is closed back to the start of its last sub-outline.
         Vec2 first = s.points[0];

@@ -248,6 +248,7 @@ std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const 
     const bool high_depth = spec.format.size() > 1;
     const bool palette = format == "gif" || spec.get_int_attribute("png:ColorType", -1) == 3 ||
                          spec.get_int_attribute("oiio:ColorType", -1) == 3;
+    const bool png_grey8 = format == "png" && !high_depth && !palette;
     in->close();
     const int colors = nc >= 3 ? 3 : 1;
     std::vector<uint16_t> map(static_cast<size_t>(w) * h);
@@ -259,6 +260,14 @@ std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const 
             if (palette) {
                 // The palette index is not kept by the reader; grey palettes map index to level.
                 v = std::round(px[0] * 255.0) * 256.0;
+            } else if (colors == 1 && png_grey8) {
+                // POV-Ray reads 8-bit grey PNGs through a grey colour table and stores each
+                // value back as uint8(grey(g, g, g) * 255) in float (png.cpp, image.cpp), which
+                // truncates some levels by one.
+                float g = static_cast<float>(std::round(px[0] * 255.0)) / 255.0f;
+                float grey = g * 0.297f + g * 0.589f + g * 0.114f;
+                auto stored = static_cast<unsigned char>(grey * 255.0f);
+                v = static_cast<double>(static_cast<float>(stored) / 255.0f * 65535.0f);
             } else if (colors == 1) {
                 v = static_cast<double>(static_cast<float>(px[0] * 65535.0f));
             } else if (high_depth) {
