@@ -7,6 +7,7 @@
 #include "app/cli_common.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "formats/obj/obj_importer.h"
 #include "formats/pov/parser.h"
 #include "scene/validate.h"
 
@@ -74,6 +75,17 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose) {
         throw Error(ErrorKind::MissingFile, {}, "scene file not found: " + request.path);
     if (fs::is_directory(request.path, ec))
         throw Error(ErrorKind::MissingFile, {}, "scene path is a folder: " + request.path);
+
+    std::string ext = fs::path(request.path).extension().string();
+    for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (ext == ".obj") {
+        // A model alone: framed by a camera and lit by a default rig (obj_importer.h).
+        ParseDiagnosticPrinter printer(verbose);
+        Diagnostics diag([&printer](const Diagnostic& d) { printer.print(d); });
+        scene::Scene scene = obj::viewer_scene(request.path, request.width, request.height, diag);
+        scene::validate(scene);
+        return scene;
+    }
 
     pov::ParseOptions options;
     options.include_dirs = include_search_path(request.include_dirs);

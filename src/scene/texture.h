@@ -251,6 +251,18 @@ struct Interior {
 
 // Physically based half of the material (Blender Principled BSDF / MTL PBR extension).
 // `derived` = filled by the documented mapping from the POV finish, not by the importer.
+// A texture image driving one PBR parameter (MTL `map_Kd -o u v w -s u v w -bm b file`),
+// looked up at the surface's uv coordinates (offset and scale applied as MTL defines).
+struct PbrMap {
+    std::string file;           // as written
+    std::string resolved_path;  // empty when the file was not found (the importer warned)
+    Vec3 offset{0, 0, 0};       // -o
+    Vec3 scale{1, 1, 1};        // -s
+    double bump_multiplier = 1;  // -bm (bump maps)
+    FileLoc loc;
+    bool present() const { return !resolved_path.empty(); }
+};
+
 struct Pbr {
     Color base_color{0.8, 0.8, 0.8};
     double metallic = 0;
@@ -261,6 +273,20 @@ struct Pbr {
     Color emission{0, 0, 0};
     double emission_strength = 0;
     double alpha = 1;
+    double sheen = 0;
+    double clearcoat = 0;
+    double clearcoat_roughness = 0;
+    double anisotropy = 0;
+    double anisotropy_rotation = 0;
+    // Texture maps (OBJ/MTL); absent ones have an empty resolved_path.
+    PbrMap base_color_map;     // map_Kd
+    PbrMap specular_map;       // map_Ks
+    PbrMap emission_map;       // map_Ke
+    PbrMap roughness_map;      // map_Pr
+    PbrMap metallic_map;       // map_Pm
+    PbrMap exponent_map;       // map_Ns (specular exponent, converted like Ns)
+    PbrMap alpha_map;          // map_d
+    PbrMap bump_map;           // map_Bump / bump (-bm)
     bool derived = true;
 };
 

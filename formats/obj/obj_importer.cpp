@@ -1,0 +1,406 @@
+#include "formats/obj/obj_importer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <regex>
+#include <sstream>
+
+#include <tiny_obj_loader.h>
+
+namespace glint::obj {
+namespace {
+
+namespace fs = std::filesystem;
+
+Color rgb(const tinyobj::real_t* c) { return Color(c[0], c[1], c[2]); }
+double average(const Color& c) { return (c.r + c.g + c.b) / 3.0; }
+
+FileLoc file_loc(const std::shared_ptr<const std::string>& file, int line, int column = 1) {
+    FileLoc l;
+    l.file = file;
+    l.line = line;
+    l.column = line > 0 ? column : 0;
+    return l;
+}
+
+// tinyobjloader reports lines as "... line 12.)" or "(line 12.)"; the first such number.
+int reported_line(const std::string& message) {
+    static const std::regex kLine(R"(line:?\s*(\d+))");
+    std::smatch m;
+    if (std::regex_search(message, m, kLine)) return std::stoi(m[1]);
+    return 0;
+}
+
+std::string first_line(const std::string& s) {
+    std::string t = s.substr(0, s.find('\n'));
+    while (!t.empty() && (t.back() == '\r' || t.back() == ' ')) t.pop_back();
+    return t;
+}
+
+// tinyobjloader only checks face indices against the final counts and names the last line.
+// On that error path, find the first face whose index is out of range where it is written
+// (OBJ indices are 1-based, negative ones count back from the last element defined so far).
+FileLoc locate_bad_index(const std::string& path, const std::shared_ptr<const std::string>& file,
+                         std::string* what) {
+    std::ifstream in(path);
+    std::string line;
+    long long nv = 0, nvt = 0, nvn = 0;
+    int line_no = 0;
+    while (std::getline(in, line)) {
+        ++line_no;
+        std::istringstream ls(line);
+        std::string cmd;
+        ls >> cmd;
+        if (cmd == "v") ++nv;
+        else if (cmd == "vt") ++nvt;
+        else if (cmd == "vn") ++nvn;
+        else if (cmd == "f" || cmd == "l" || cmd == "p") {
+            std::string corner;
+            while (ls >> corner) {
+                size_t col = line.find(corner) + 1;
+                const long long counts[3] = {nv, nvt, nvn};
+                const char* names[3] = {"vertex", "texture coordinate", "normal"};
+                size_t start = 0;
+                for (int k = 0; k < 3 && start <= corner.size(); ++k) {
+                    size_t slash = corner.find('/', start);
+                    std::string field = corner.substr(start, slash - start);
+                    start = slash == std::string::npos ? corner.size() + 1 : slash + 1;
+                    if (field.empty()) continue;
+                    long long idx = std::strtoll(field.c_str(), nullptr, 10);
+                    long long resolved = idx < 0 ? counts[k] + idx + 1 : idx;
+                    if (idx == 0 || resolved < 1 || resolved > counts[k]) {
+                        *what = std::string(names[k]) + " index " + field + " is out of range (" +
+                                std::to_string(counts[k]) + " defined so far)";
+                        return file_loc(file, line_no, static_cast<int>(col));
+                    }
+                }
+            }
+        }
+    }
+    *what = "a face index is out of range";
+    return file_loc(file, 0);
+}
+
+scene::PbrMap map_ref(const std::string& name, const tinyobj::texture_option_t& opt,
+                      const fs::path& base, const std::string& material, const FileLoc& loc,
+                      Diagnostics& diag) {
+    scene::PbrMap m;
+    if (name.empty()) return m;
+    m.file = name;
+    m.loc = loc;
+    m.offset = Vec3(opt.origin_offset[0], opt.origin_offset[1], opt.origin_offset[2]);
+    m.scale = Vec3(opt.scale[0], opt.scale[1], opt.scale[2]);
+    m.bump_multiplier = opt.bump_multiplier;
+    fs::path p = fs::path(name).is_absolute() ? fs::path(name) : base / name;
+    std::error_code ec;
+    if (fs::is_regular_file(p, ec)) {
+        m.resolved_path = p.string();
+    } else {
+        diag.warning(loc, "material '" + material + "': texture '" + name +
+                              "' not found (looked for " + p.string() +
+                              "); the material renders without it");
+    }
+    return m;
+}
+
+// The classic pigment for a PBR base color map: POV-Ray's uv-mapped image_map, bilinear.
+void set_image_pigment(scene::Pigment& pig, const scene::PbrMap& map) {
+    pig.kind = scene::PatternKind::ImageMap;
+    pig.uv_mapping = true;
+    scene::ImageMap& im = pig.params.image;
+    im.file = map.file;
+    im.resolved_path = map.resolved_path;
+    std::string ext = fs::path(map.file).extension().string();
+    if (!ext.empty()) ext = ext.substr(1);
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    im.type = ext;
+    im.map_type = 0;
+    im.interpolate = 2;
+    im.loc = map.loc;
+    // MTL -o/-s: the lookup is at uv * s + o; the pigment transform maps pattern -> uv space.
+    Vec3 s(map.scale.x != 0 ? map.scale.x : 1, map.scale.y != 0 ? map.scale.y : 1, 1);
+    pig.transform = Transform::translate(Vec3(-map.offset.x, -map.offset.y, 0))
+                        .then(Transform::scale(Vec3(1 / s.x, 1 / s.y, 1)));
+}
+
+}  // namespace
+
+scene::Material material_from_mtl(const MtlValues& v) {
+    scene::Material m;
+    scene::Pbr& p = m.pbr;
+    p.derived = false;
+    p.base_color = v.Kd;
+    p.metallic = v.has_Pm ? v.Pm : 0.0;
+    if (v.has_Pr) {
+        p.roughness = v.Pr;
+    } else {
+        // Inverse of Blender's exporter, Ns = 1000 (1 - roughness)^2.
+        double ns = std::clamp(v.Ns, 0.0, 1000.0);
+        p.roughness = 1.0 - std::sqrt(ns / 1000.0);
+    }
+    p.roughness = std::clamp(p.roughness, 0.0, 1.0);
+    p.metallic = std::clamp(p.metallic, 0.0, 1.0);
+    p.specular = std::clamp(average(v.Ks), 0.0, 1.0);
+    p.ior = v.Ni > 0 ? v.Ni : 1.45;
+    p.transmission = v.has_Tf ? std::clamp(average(v.Tf), 0.0, 1.0) : 0.0;
+    p.emission = v.Ke;
+    p.emission_strength = (v.Ke.r > 0 || v.Ke.g > 0 || v.Ke.b > 0) ? 1.0 : 0.0;
+    p.alpha = std::clamp(v.d, 0.0, 1.0);
+    p.sheen = v.Ps;
+    p.clearcoat = v.Pc;
+    p.clearcoat_roughness = v.Pcr;
+    p.anisotropy = v.aniso;
+    p.anisotropy_rotation = v.anisor;
+
+    // The classic half, for the Whitted integrator (MTL.md, "Classic shading").
+    scene::Texture& t = m.texture;
+    t.pigment.kind = scene::PatternKind::Plain;
+    t.pigment.color = scene::ColorFT(v.Kd, p.transmission, 1.0 - p.alpha);
+    scene::Finish& f = t.finish;
+    f.ambient = Color(0.1, 0.1, 0.1);
+    f.emission = v.Ke;
+    f.diffuse = 1.0 - p.metallic;
+    if (v.Ns > 0 && p.specular > 0) {
+        f.phong = p.specular;
+        f.phong_size = v.Ns;
+    } else {
+        f.phong = 0;
+    }
+    if (p.metallic > 0) {
+        f.reflection.min = f.reflection.max = Color(p.metallic, p.metallic, p.metallic);
+        f.reflection.metallic = 1;
+    }
+    if (p.transmission > 0) m.interior.ior = p.ior;
+    return m;
+}
+
+ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transform& transform,
+                     int material_override, Diagnostics& diag) {
+    auto file = std::make_shared<const std::string>(path);
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec))
+        throw Error(ErrorKind::MissingFile, FileLoc{}, "cannot open OBJ file '" + path + "'");
+
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = true;
+    config.vertex_color = false;
+    config.mtl_search_path = fs::path(path).parent_path().string();
+    tinyobj::ObjReader reader;
+    bool ok = reader.ParseFromFile(path, config);
+    const std::string& warn = reader.Warning();
+    if (!ok) {
+        const std::string& err = reader.Error();
+        if (err.find("Cannot open file") != std::string::npos)
+            throw Error(ErrorKind::MissingFile, FileLoc{}, "cannot open OBJ file '" + path + "'");
+        throw Error(ErrorKind::Scene, file_loc(file, reported_line(err)),
+                    "broken OBJ: " + first_line(err));
+    }
+    if (warn.find("indices out of bounds") != std::string::npos) {
+        std::string what;
+        FileLoc l = locate_bad_index(path, file, &what);
+        throw Error(ErrorKind::Scene, l, what);
+    }
+    // Other warnings (a missing .mtl, both d and Tr, ...) go through, one per line.
+    std::istringstream ws(warn);
+    for (std::string w; std::getline(ws, w);) {
+        if (w.empty()) continue;
+        diag.warning(file_loc(file, reported_line(w)), w);
+    }
+
+    const tinyobj::attrib_t& attrib = reader.GetAttrib();
+    const auto& shapes = reader.GetShapes();
+    const auto& materials = reader.GetMaterials();
+
+    ObjImport result;
+    result.first_material = static_cast<int>(scene.materials.size());
+    const fs::path base = fs::path(path).parent_path();
+    const FileLoc mtl_loc = file_loc(file, 0);
+    for (const tinyobj::material_t& mt : materials) {
+        MtlValues v;
+        v.Ka = rgb(mt.ambient);
+        v.Kd = rgb(mt.diffuse);
+        v.Ks = rgb(mt.specular);
+        v.Ke = rgb(mt.emission);
+        v.Tf = rgb(mt.transmittance);
+        v.has_Tf = v.Tf.r > 0 || v.Tf.g > 0 || v.Tf.b > 0;
+        v.Ns = mt.shininess;
+        v.Ni = mt.ior;
+        v.d = mt.dissolve;
+        v.illum = mt.illum;
+        // tinyobjloader keeps PBR values at 0 when absent; their presence is seen in
+        // unknown_parameter only for extensions it does not know, so Pr/Pm count as given
+        // when non-zero (their defaults in Blender's importer are the same 0 / 0.5 anyway).
+        v.has_Pr = mt.roughness != 0;
+        v.Pr = mt.roughness;
+        v.has_Pm = mt.metallic != 0;
+        v.Pm = mt.metallic;
+        v.Ps = mt.sheen;
+        v.Pc = mt.clearcoat_thickness;
+        v.Pcr = mt.clearcoat_roughness;
+        v.aniso = mt.anisotropy;
+        v.anisor = mt.anisotropy_rotation;
+        scene::Material m = material_from_mtl(v);
+        m.loc = mtl_loc;
+        scene::Pbr& p = m.pbr;
+        auto ref = [&](const std::string& name, const tinyobj::texture_option_t& opt) {
+            return map_ref(name, opt, base, mt.name, mtl_loc, diag);
+        };
+        p.base_color_map = ref(mt.diffuse_texname, mt.diffuse_texopt);
+        p.specular_map = ref(mt.specular_texname, mt.specular_texopt);
+        p.emission_map = ref(mt.emissive_texname, mt.emissive_texopt);
+        p.roughness_map = ref(mt.roughness_texname, mt.roughness_texopt);
+        p.metallic_map = ref(mt.metallic_texname, mt.metallic_texopt);
+        p.exponent_map = ref(mt.specular_highlight_texname, mt.specular_highlight_texopt);
+        p.alpha_map = ref(mt.alpha_texname, mt.alpha_texopt);
+        p.bump_map = ref(mt.bump_texname, mt.bump_texopt);
+        if (p.base_color_map.present()) set_image_pigment(m.texture.pigment, p.base_color_map);
+        scene.materials.push_back(std::move(m));
+    }
+    result.material_count = static_cast<int>(materials.size());
+    int default_material = -1;
+    auto fallback_material = [&]() {
+        if (default_material < 0) {
+            MtlValues v;  // Blender's default: 0.8 gray, no highlight
+            scene::Material m = material_from_mtl(v);
+            m.loc = file_loc(file, 0);
+            scene.materials.push_back(std::move(m));
+            default_material = static_cast<int>(scene.materials.size()) - 1;
+            ++result.material_count;
+        }
+        return default_material;
+    };
+
+    // One mesh and one scene object per OBJ object/group, holding only the vertices, normals
+    // and uvs its faces use (a remap through index tables reset after each shape).
+    const size_t nv = attrib.vertices.size() / 3, nn = attrib.normals.size() / 3,
+                 nt = attrib.texcoords.size() / 2;
+    std::vector<int> vmap(nv, -1), nmap(nn, -1), tmap(nt, -1);
+    result.first_object = static_cast<int>(scene.objects.size());
+    for (const auto& sh : shapes) {
+        scene::Mesh mesh;
+        mesh.loc = file_loc(file, 1);
+        std::vector<int> touched_v, touched_n, touched_t;
+        auto remap = [](std::vector<int>& map, std::vector<int>& touched, int i, auto add) {
+            if (i < 0) return -1;
+            if (map[i] < 0) {
+                map[i] = add(i);
+                touched.push_back(i);
+            }
+            return map[i];
+        };
+        auto add_v = [&](int i) {
+            mesh.positions.emplace_back(attrib.vertices[3 * i], attrib.vertices[3 * i + 1],
+                                        attrib.vertices[3 * i + 2]);
+            result.bounds.extend(transform.point(mesh.positions.back()));
+            return static_cast<int>(mesh.positions.size()) - 1;
+        };
+        auto add_n = [&](int i) {
+            mesh.normals.emplace_back(attrib.normals[3 * i], attrib.normals[3 * i + 1],
+                                      attrib.normals[3 * i + 2]);
+            return static_cast<int>(mesh.normals.size()) - 1;
+        };
+        auto add_t = [&](int i) {
+            mesh.uvs.emplace_back(attrib.texcoords[2 * i], attrib.texcoords[2 * i + 1]);
+            return static_cast<int>(mesh.uvs.size()) - 1;
+        };
+        size_t index = 0;
+        const auto& fv = sh.mesh.num_face_vertices;
+        mesh.faces.reserve(fv.size());
+        for (size_t f = 0; f < fv.size(); ++f) {
+            if (fv[f] != 3) {  // triangulate=true leaves only lines and points here
+                index += fv[f];
+                continue;
+            }
+            scene::MeshFace face;
+            bool smooth = true, textured = true;
+            for (int k = 0; k < 3; ++k) {
+                const tinyobj::index_t& ix = sh.mesh.indices[index + k];
+                face.v[k] = remap(vmap, touched_v, ix.vertex_index, add_v);
+                smooth &= ix.normal_index >= 0;
+                textured &= ix.texcoord_index >= 0;
+            }
+            for (int k = 0; k < 3; ++k) {
+                const tinyobj::index_t& ix = sh.mesh.indices[index + k];
+                // Flat unless every corner has a normal; no uvs unless every corner has one.
+                if (smooth) face.n[k] = remap(nmap, touched_n, ix.normal_index, add_n);
+                if (textured) face.uv[k] = remap(tmap, touched_t, ix.texcoord_index, add_t);
+            }
+            int mid = f < sh.mesh.material_ids.size() ? sh.mesh.material_ids[f] : -1;
+            if (material_override >= 0)
+                face.material = material_override;
+            else
+                face.material = mid >= 0 && mid < static_cast<int>(materials.size())
+                                    ? result.first_material + mid
+                                    : fallback_material();
+            mesh.faces.push_back(face);
+            index += 3;
+        }
+        for (int i : touched_v) vmap[i] = -1;
+        for (int i : touched_n) nmap[i] = -1;
+        for (int i : touched_t) tmap[i] = -1;
+        if (mesh.faces.empty()) continue;
+        result.triangles += static_cast<long long>(mesh.faces.size());
+        int first_face_material = mesh.faces[0].material;
+        scene.meshes.push_back(std::move(mesh));
+        scene::Object o;
+        o.shape = scene::MeshRef{static_cast<int>(scene.meshes.size()) - 1};
+        o.transform = transform;
+        o.material = first_face_material;
+        o.name = sh.name.empty() ? fs::path(path).stem().string() : sh.name;
+        o.loc = file_loc(file, 1);
+        scene.objects.push_back(std::move(o));
+        ++result.object_count;
+    }
+    if (result.triangles == 0)
+        diag.warning(file_loc(file, 0), "OBJ file '" + path + "' has no faces; nothing added");
+    return result;
+}
+
+scene::Scene viewer_scene(const std::string& path, int width, int height, Diagnostics& diag) {
+    scene::Scene scene;
+    scene.source_files.push_back(path);
+    scene.global.assumed_gamma = 1.0;
+    scene.background = scene::ColorFT(Color(0.18, 0.18, 0.2));
+    ObjImport im = import_obj(path, scene, Transform::scale(Vec3(1, 1, -1)), -1, diag);
+    Bounds3 b = im.bounds;
+    if (b.empty()) b = Bounds3{Vec3(-1, -1, -1), Vec3(1, 1, 1)};
+    const Vec3 c = b.centroid();
+    double r = 0.5 * length(b.diagonal());
+    if (!(r > 0)) r = 1;
+    const double aspect = static_cast<double>(width) / height;
+    const double vfov = 40.0 * kPi / 180.0;
+    const double hfov = 2 * std::atan(std::tan(vfov / 2) * aspect);
+    const double fit = std::min(vfov, hfov) / 2;
+    const Vec3 view = normalize(Vec3(0.55, 0.45, -1.0));  // from front-right-above
+    const double dist = r / std::sin(fit) * 1.05;
+
+    scene::Camera& cam = scene.camera;
+    cam.kind = scene::CameraKind::Perspective;
+    cam.location = c + view * dist;
+    Vec3 dir = normalize(c - cam.location);
+    Vec3 right = normalize(cross(Vec3(0, 1, 0), dir));  // POV-Ray's left-handed right
+    Vec3 up = cross(dir, right);
+    const double h = 2 * std::tan(vfov / 2);
+    cam.direction = dir;
+    cam.up = up * h;
+    cam.right = right * (h * aspect);
+    cam.sky = Vec3(0, 1, 0);
+    cam.angle = hfov * 180 / kPi;
+
+    auto light = [&](Vec3 offset, double intensity) {
+        scene::Light l;
+        l.location = c + offset * (3 * r);
+        l.color = Color(intensity, intensity, intensity);
+        scene.lights.push_back(l);
+    };
+    light(normalize(Vec3(-0.6, 0.8, -0.7)), 0.9);  // key: upper left, in front
+    light(normalize(Vec3(0.9, 0.2, -0.6)), 0.35);  // fill: right, low
+    light(normalize(Vec3(0.2, 0.6, 1.0)), 0.45);   // rim: behind
+    scene.global.ambient_light = Color(0.6, 0.6, 0.6);
+    return scene;
+}
+
+}  // namespace glint::obj
