@@ -503,7 +503,10 @@ void Parser::parse_interior_body(scene::Interior& in) {
         else if (w == "fade_distance") in.fade_distance = parse_float();
         else if (w == "fade_power") in.fade_power = parse_float();
         else if (w == "fade_color" || w == "fade_colour") in.fade_color = parse_rgb();
-        else if (w == "media") unsupported("media");
+        else if (w == "media") {
+            warn_unsupported(*this, "media", loc(), "media and its density are ignored");
+            skip_braced_block(*this, w);
+        }
         else fail("expected an interior item (ior, fade_distance, ...), got " + got(t));
     }
 }

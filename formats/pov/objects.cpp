@@ -233,7 +233,11 @@ static void parse_mesh2(Parser& p, scene::Mesh& mesh) {
 bool Parser::parse_object(const Token& kw, PovObject& out) {
     if (kw.kind != TokKind::Word || lookup(kw.text)) return false;
     const std::string w = kw.text;
-    if (unsupported_objects().count(w)) unsupported("the '" + w + "' object");
+    if (unsupported_objects().count(w)) {
+        FileLoc at = loc();
+        out = skip_unsupported_object(*this, w, at);
+        return true;
+    }
     if (!object_keywords().count(w) && !is_solid_keyword(w)) return false;
     FileLoc kloc = loc();
     expect_open(w.c_str());
@@ -247,6 +251,8 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
         if (auto obj = std::get_if<std::shared_ptr<const PovObject>>(&s.value)) {
             po = **obj;
             if (po.obj.name.empty()) po.obj.name = first.text;
+            if (!po.left_out.empty())  // said where declared; say it where the scene uses it
+                warn_unsupported(*this, po.left_out, kloc, "the object is left out");
             if (w != "object" && !po.is_light && shape_name(po.obj.shape) != w &&
                 !(w == "light_source" && !po.lights.empty()) &&
                 !(w == "union" || w == "merge" || w == "intersection" || w == "difference"))
@@ -366,8 +372,11 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
             }
             for (auto& l : child.lights) po.lights.push_back(l);
             child.lights.clear();
-            if (!child.is_light) po.children.push_back(std::move(child));
+            if (!child.left_out.empty()) po.left_out = child.left_out;
+            else if (!child.is_light) po.children.push_back(std::move(child));
         }
+        // Only when every child was left out does the CSG go too; otherwise it keeps the rest.
+        if (!po.children.empty()) po.left_out.clear();
     } else if (is_solid_keyword(w)) {
         parse_solid_body(*this, w, kloc, &po.obj.shape);
     } else if (w == "text") {
@@ -467,7 +476,10 @@ void Parser::parse_light_body(scene::Light& l, std::optional<PovObject>* looks_l
             parse_object_mods(obj, "looks_like", lo);
             obj.obj.no_shadow = true;
             *looks_like = std::move(obj);
-        } else if (w == "looks_like" || w == "projected_through" || w == "photons") {
+        } else if (w == "projected_through" || w == "photons") {
+            warn_unsupported(*this, w, loc(), "ignored in light_source");
+            skip_braced_block(*this, w);
+        } else if (w == "looks_like") {
             unsupported("light_source '" + w + "'");
         } else {
             unget();
@@ -578,23 +590,17 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
                         unget();
                         break;
                     }
-                    dst.push_back(plain_object(child));
+                    if (child.left_out.empty()) dst.push_back(plain_object(child));
                 }
             }
             expect_close(w.c_str(), lo);
-        } else if (w == "photons" || w == "radiosity") {
-            diag.warning(loc(), std::string("'") + w + "' settings are ignored");
-            expect_open(w.c_str());
-            int depth = 1;
-            while (depth > 0) {
-                const Token& c = next();
-                if (c.kind == TokKind::End) fail("unterminated '" + w + "' block");
-                if (c.is_symbol('{')) ++depth;
-                if (c.is_symbol('}')) --depth;
-            }
-        } else if (w == "uv_mapping" || w == "interior_texture" || w == "split_union" ||
-                   w == "cutaway_textures") {
-            unsupported("object modifier '" + w + "'");
+        } else if (w == "photons" || w == "radiosity" || w == "interior_texture") {
+            warn_unsupported(*this, w, loc(), "the object's " + w + " block is ignored");
+            skip_braced_block(*this, w);
+        } else if (w == "uv_mapping" || w == "cutaway_textures") {
+            warn_unsupported(*this, w, loc(), "ignored; textures keep their usual mapping");
+        } else if (w == "split_union") {
+            flag();  // how POV-Ray bounds a union's parts: no effect on the image
         } else {
             unget();
             Transform delta;

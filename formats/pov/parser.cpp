@@ -54,7 +54,7 @@ static void propagate_flags(scene::Object& o) {
 
 void Parser::place_object(PovObject o) {
     for (auto& l : o.lights) scene.lights.push_back(l);
-    if (o.is_light) return;
+    if (o.is_light || !o.left_out.empty()) return;
     scene::Texture def = default_texture_;
     def.loc = o.obj.loc;
     scene.objects.push_back(to_ir(*this, o, def, scene::Interior{}, true));
@@ -146,6 +146,12 @@ Value Parser::parse_rvalue() {
             "fog", "media", "rainbow", "sky_sphere", "density",
             "color_map", "colour_map", "pigment_map", "normal_map", "texture_map", "slope_map",
             "density_map", "material_map", "background", "light_group"};
+        if (w == "media" || w == "density" || w == "density_map") {
+            // Only a media block can use these, and every media block is read over.
+            warn_unsupported(*this, "media", loc(), "media and its density are ignored");
+            skip_braced_block(*this, w);
+            return Num::scalar(0);
+        }
         if (kUnsupported.count(w)) unsupported("declaring '" + w + "'");
     }
     unget();
@@ -251,8 +257,11 @@ static void parse_statements(Parser& p) {
             if (w == "sky_sphere") { p.parse_sky_sphere(); continue; }
             if (w == "fog") { p.parse_fog(); continue; }
             if (w == "rainbow") { p.parse_rainbow(); continue; }
-            if (w == "media" || w == "light_group")
-                p.unsupported("'" + w + "'");
+            if (w == "media") {
+                warn_unsupported(p, "media", p.loc(), "media and its density are ignored");
+                skip_braced_block(p, w);
+                continue;
+            }
             PovObject o;
             if (p.parse_object(t, o)) {
                 p.place_object(std::move(o));

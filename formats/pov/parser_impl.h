@@ -20,6 +20,7 @@
 #include "core/log.h"
 #include "formats/pov/parser.h"
 #include "formats/pov/scanner.h"
+#include "formats/pov/unsupported.h"
 #include "formats/pov/value.h"
 #include "scene/scene.h"
 
@@ -190,6 +191,7 @@ public:
 
     const ParseOptions& options;
     Diagnostics& diag;
+    UnsupportedLog unsupported_log;  // features already warned about (unsupported.h)
     std::vector<uint32_t> rand_streams;  // seed()/rand() state, POV-Ray's LCG
     // Frame depth of the #declare whose expression value is being read (-1: none).
     size_t declare_frame_ = size_t(-1);

@@ -47,6 +47,9 @@ struct PovObject {
     std::optional<scene::Interior> interior;
     std::vector<scene::Light> lights;
     bool is_light = false;  // a bare light_source: only lights[0] matters
+    // Non-empty for an object glint cannot render (the keyword, e.g. "isosurface"): it was
+    // read over with a warning and is dropped where it would be placed (unsupported.h).
+    std::string left_out;
 };
 
 struct MaterialValue {

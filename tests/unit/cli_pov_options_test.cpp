@@ -107,7 +107,8 @@ TEST(PovSwitches, OutputTypeAndIgnoredOptions) {
     EXPECT_EQ(t.output_type, 'T');
     ASSERT_EQ(t.warnings.size(), 3u);
     EXPECT_EQ(t.warnings[1], "+UA (output alpha) is not supported and is ignored");
-    EXPECT_EQ(t.warnings[2], "+SC0.5 (partial render (start column)) is not supported and is ignored");
+    EXPECT_EQ(t.warnings[2],
+              "+SC0.5 (partial render (start column)) is not supported and is ignored");
     EXPECT_EQ(parse({"+FE"}).output_type, 'E');
     EXPECT_EQ(usage_error({"+FZ"}),
               "+FZ: unknown output file type 'Z' (N png, E exr, H hdr, J jpeg, T/C targa, P ppm, "

@@ -1,0 +1,118 @@
+// Features glint lacks: one warning per feature naming it and where it was first met; the
+// object or effect is read over and left out, and the rest of the scene is kept.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "core/log.h"
+#include "formats/pov/parser.h"
+#include "scene/scene.h"
+
+namespace {
+
+struct Parsed {
+    glint::scene::Scene scene;
+    std::vector<std::string> warnings;  // "line:col: message"
+};
+
+Parsed parse_warn(const std::string& text) {
+    Parsed r;
+    glint::Diagnostics diag([&r](const glint::Diagnostic& d) {
+        if (d.level == glint::Diagnostic::Level::Warning && d.loc.line > 0)
+            r.warnings.push_back(std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) +
+                                 ": " + d.message);
+    });
+    r.scene = glint::pov::parse_string("#version 3.7;\n" + text, "test.pov", {}, diag);
+    return r;
+}
+
+}  // namespace
+
+TEST(PovUnsupported, ObjectsAreLeftOutWithOneWarningEach) {
+    Parsed p = parse_warn(
+        "isosurface { function { x*x + y*y + z*z - 1 } contained_by { box { -2, 2 } }\n"
+        "  texture { pigment { rgb 1 } } translate x }\n"
+        "sphere { 0, 1 }\n"
+        "isosurface { function { x } }\n"
+        "parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }\n"
+        "julia_fractal { <-0.083, 0.0, -0.83, -0.025> quaternion sqr max_iteration 8 }\n"
+        "sphere_sweep { linear_spline 2, <0, 0, 0>, 0.5, <1, 0, 0>, 0.5 }\n"
+        "bicubic_patch { type 1 flatness 0.01 u_steps 4 v_steps 4 <0,0,0> }\n"
+        "ovus { 1, 0.5 }\n"
+        "lemon { <0, 0, 0>, 1, <0, 1, 0>, 0.5, 1 }\n");
+    EXPECT_EQ(p.scene.objects.size(), 1u);  // the sphere
+    EXPECT_EQ(p.warnings,
+              (std::vector<std::string>{
+                  "2:1: 'isosurface' is not supported: the object is left out",
+                  "6:1: 'parametric' is not supported: the object is left out",
+                  "7:1: 'julia_fractal' is not supported: the object is left out",
+                  "8:1: 'sphere_sweep' is not supported: the object is left out",
+                  "9:1: 'bicubic_patch' is not supported: the object is left out",
+                  "10:1: 'ovus' is not supported: the object is left out",
+                  "11:1: 'lemon' is not supported: the object is left out"}));
+}
+
+TEST(PovUnsupported, CsgKeepsItsOtherChildrenAndDeclarationsWork) {
+    Parsed p = parse_warn(
+        "#declare Iso = isosurface { function { x } }\n"
+        "union { sphere { 0, 1 } object { Iso } box { 0, 1 } }\n"
+        "object { Iso translate y }\n"
+        "difference { isosurface { function { y } } }\n"
+        "sphere { 0, 1 clipped_by { ovus { 1, 0.5 } } }\n");
+    ASSERT_EQ(p.scene.objects.size(), 2u);  // the union (2 children) and the clipped sphere
+    auto* csg = std::get_if<glint::scene::Csg>(&p.scene.objects[0].shape);
+    ASSERT_NE(csg, nullptr);
+    EXPECT_EQ(csg->children.size(), 2u);
+    EXPECT_TRUE(p.scene.objects[1].clipped_by.empty());
+    EXPECT_EQ(p.warnings,
+              (std::vector<std::string>{
+                  "2:16: 'isosurface' is not supported: the object is left out",
+                  "6:28: 'ovus' is not supported: the object is left out"}));
+}
+
+TEST(PovUnsupported, MediaPhotonsAndRadiosityAreIgnored) {
+    Parsed p = parse_warn(
+        "media { intervals 10 scattering { 1, rgb 0.1 } }\n"
+        "#declare D = density { spherical color_map { [0 rgb 0] [1 rgb 1] } }\n"
+        "sphere { 0, 1 hollow\n"
+        "  interior { ior 1.5 media { emission 1 density { D } } }\n"
+        "  photons { target reflection on }\n"
+        "  radiosity { importance 0.5 }\n"
+        "  interior_texture { pigment { rgb 1 } }\n"
+        "}\n"
+        "light_source { <0, 5, 0> rgb 1 photons { refraction on } }\n");
+    ASSERT_EQ(p.scene.objects.size(), 1u);
+    EXPECT_DOUBLE_EQ(p.scene.materials[p.scene.objects[0].material].interior.ior, 1.5);
+    EXPECT_EQ(p.scene.lights.size(), 1u);
+    EXPECT_EQ(p.warnings,
+              (std::vector<std::string>{
+                  "2:1: 'media' is not supported: media and its density are ignored",
+                  "6:3: 'photons' is not supported: the object's photons block is ignored",
+                  "7:3: 'radiosity' is not supported: the object's radiosity block is ignored",
+                  "8:3: 'interior_texture' is not supported: the object's interior_texture "
+                  "block is ignored"}));
+}
+
+TEST(PovUnsupported, CameraFeatures) {
+    Parsed p = parse_warn(
+        "camera { location <0, 0, -5> look_at 0 aperture 0.4 blur_samples 10 focal_point 0\n"
+        "  normal { bumps 0.1 } }\n"
+        "camera { mesh_camera { 1 0 mesh { triangle { 0, x, y } } } location -z }\n");
+    EXPECT_EQ(p.warnings,
+              (std::vector<std::string>{
+                  "2:40: 'focal blur' is not supported: the image is rendered all in focus",
+                  "3:3: 'camera normal' is not supported: ignored",
+                  "4:10: 'mesh_camera' is not supported: the camera stays a perspective camera"}));
+}
+
+TEST(PovUnsupported, UnterminatedSkippedBlockIsAnError) {
+    glint::Diagnostics diag;
+    try {
+        glint::pov::parse_string("isosurface { function { x }\n", "test.pov", {}, diag);
+        ADD_FAILURE() << "no error";
+    } catch (const glint::Error& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "expected '}' to close the isosurface opened at 1:12, got the end of the file");
+    }
+}
