@@ -4,6 +4,7 @@
 #include <cmath>
 #include <unordered_set>
 
+#include "formats/obj/obj_importer.h"
 #include "formats/pov/parser_impl.h"
 #include "formats/pov/solids.h"
 
@@ -15,7 +16,7 @@ const std::unordered_set<std::string>& object_keywords() {
     static const std::unordered_set<std::string> k = {
         "sphere", "plane", "box", "cylinder", "cone", "disc", "torus", "triangle",
         "smooth_triangle", "mesh", "mesh2", "union", "merge", "intersection", "difference",
-        "object", "light_source", "text"};
+        "object", "light_source", "text", "obj_file"};
     return k;
 }
 
@@ -398,6 +399,36 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
         // POV-Ray turns every text object by 0.001 degrees about each axis "to fix cracks in
         // text that lies along an axis"; the same rays must hit the same glyph edges.
         po.obj.transform = Transform::rotate_xyz_degrees(Vec3(0.001, 0.001, 0.001));
+    } else if (w == "obj_file") {
+        // glint extension: obj_file { "model.obj" [transforms] [texture override] }.
+        peek();
+        FileLoc floc = loc();
+        std::string file = parse_string();
+        std::string path = resolve_file(file, floc);
+        const size_t objects_before = scene.objects.size();
+        const size_t meshes_before = scene.meshes.size();
+        // OBJ is right-handed and y-up; mirroring z shows the model as authored in POV-Ray's
+        // left-handed space (as the model viewer does).
+        obj::import_obj(path, scene, Transform::scale(Vec3(1, 1, -1)), -1, diag);
+        std::vector<scene::Object> parts(scene.objects.begin() + objects_before,
+                                         scene.objects.end());
+        scene.objects.resize(objects_before);
+        if (parts.empty()) fail_at(floc, "'" + file + "' has no faces");
+        po.obj.shape = scene::Csg{};
+        for (auto& part : parts) {
+            PovObject child;
+            child.obj = std::move(part);
+            po.children.push_back(std::move(child));
+        }
+        parse_object_mods(po, w.c_str(), o);
+        if (po.texture) {
+            // A texture given here replaces the MTL materials of every face.
+            for (size_t m = meshes_before; m < scene.meshes.size(); ++m)
+                for (auto& f : scene.meshes[m].faces) f.material = -1;
+            for (auto& c : po.children) c.obj.material = -1;
+        }
+        out = std::move(po);
+        return true;
     } else if (w == "light_source") {
         scene::Light l;
         l.loc = kloc;

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "formats/obj/obj_importer.h"
+#include "formats/pov/parser.h"
 
 namespace glint::obj {
 namespace {
@@ -161,6 +162,38 @@ TEST_F(ObjImporter, ViewerFramesTheModel) {
     // The camera looks at the bounds' centre (1, 0.5, 0).
     Vec3 to_centre = normalize(Vec3(1, 0.5, 0) - s.camera.location);
     EXPECT_NEAR(dot(to_centre, normalize(s.camera.direction)), 1.0, 1e-12);
+}
+
+TEST_F(ObjImporter, PovSceneKeywordPlacesTheModelAndOverridesItsTexture) {
+    write("m.mtl", kMtl);
+    write("a.obj", kTwoObjects);
+    std::string pov = write("s.pov", R"(#version 3.7;
+obj_file { "a.obj" translate <1, 0, 0> }
+obj_file { "a.obj" texture { pigment { rgb <0, 0, 1> } } }
+)");
+    Diagnostics diag;
+    pov::ParseOptions options;
+    scene::Scene s = pov::parse_file(pov, options, diag);
+    ASSERT_EQ(s.objects.size(), 2u);
+    const auto* first = std::get_if<scene::Csg>(&s.objects[0].shape);
+    ASSERT_NE(first, nullptr);
+    ASSERT_EQ(first->children.size(), 2u);  // Quad and Tri
+    // z mirrored (OBJ's right-handed axes), then the scene's translate.
+    auto world = [&](const Vec3& p) {
+        return s.objects[0].transform.point(first->children[0].transform.point(p));
+    };
+    EXPECT_DOUBLE_EQ(world(Vec3(0, 0, 2)).z, -2.0);
+    EXPECT_DOUBLE_EQ(world(Vec3(0, 0, 0)).x, 1.0);
+    // The first keeps the MTL's per-face materials; the override clears them.
+    const auto& mesh0 = s.meshes[std::get<scene::MeshRef>(first->children[0].shape).mesh];
+    EXPECT_GE(mesh0.faces[0].material, 0);
+    const auto* second = std::get_if<scene::Csg>(&s.objects[1].shape);
+    ASSERT_NE(second, nullptr);
+    for (const auto& c : second->children) {
+        const auto& mesh = s.meshes[std::get<scene::MeshRef>(c.shape).mesh];
+        for (const auto& f : mesh.faces) EXPECT_EQ(f.material, -1);
+    }
+    EXPECT_DOUBLE_EQ(s.materials[s.objects[1].material].texture.pigment.color.rgb.b, 1.0);
 }
 
 }  // namespace
