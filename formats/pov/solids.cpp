@@ -334,7 +334,15 @@ scene::Poly parse_poly(Parser& p, const std::string& w) {
     else {
         p.peek();
         FileLoc at = p.loc();
-        s.order = static_cast<int>(p.parse_float());
+        // `poly { 4 <...> }` (no comma, as in POV-Ray's primitiv.pov): a literal order right
+        // before '<' is not the start of a comparison.
+        const Token& t = p.next();
+        if (t.kind == TokKind::Number && p.raw_next_is("<")) {
+            s.order = static_cast<int>(t.number);
+        } else {
+            p.unget();
+            s.order = static_cast<int>(p.parse_float());
+        }
         p.skip_comma();
         if (s.order < 2 || s.order > 35)
             p.fail_at(at, "order of " + w + " is out of range (2 to 35)");
