@@ -81,6 +81,52 @@ public:
         }
     }
 
+    void normal(int d, const std::string& label, const Normal& n) {
+        std::string s = label + " " + pattern_name(n.kind);
+        if (n.kind == PatternKind::Gradient) s += " " + vec(n.params.vector);
+        s += " amount " + num(n.amount);
+        if (n.accuracy != 0.02) s += " accuracy " + num(n.accuracy);
+        if (n.uv_mapping) s += " uv_mapping";
+        if (!n.transform.is_identity()) s += " transform " + matrix(n.transform);
+        if (n.kind == PatternKind::ImageMap) s += " bump_map \"" + n.params.image.file + "\"";
+        line(d, s);
+        params(d + 1, n.params);
+        for (const auto& e : n.entries) normal(d + 1, "entry", e);
+        for (const auto& e : n.normal_map)
+            for (const auto& q : e.normal) normal(d + 1, "[" + num(e.value) + "]", q);
+        for (const auto& e : n.slope_map)
+            line(d + 1, "slope [" + num(e.value) + " <" + num(e.height) + ", " + num(e.slope) + ">]");
+    }
+
+    // A texture: plain (pigment, normal, finish, then the layers drawn over it) or patterned.
+    void texture_body(int d, const Texture& t) {
+        if (t.kind != PatternKind::Plain) {
+            std::string s = std::string("texture ") + pattern_name(t.kind);
+            if (t.kind == PatternKind::Gradient) s += " " + vec(t.params.vector);
+            if (t.uv_mapping) s += " uv_mapping";
+            if (!t.transform.is_identity()) s += " transform " + matrix(t.transform);
+            line(d, s);
+            params(d + 1, t.params);
+            for (const auto& e : t.entries) {
+                line(d + 1, "entry");
+                texture_body(d + 2, e);
+            }
+            for (const auto& e : t.texture_map)
+                for (const auto& q : e.texture) {
+                    line(d + 1, "[" + num(e.value) + "]");
+                    texture_body(d + 2, q);
+                }
+            return;
+        }
+        pigment(d, "pigment", t.pigment);
+        if (t.normal.kind != PatternKind::Plain || t.normal.amount != 0) normal(d, "normal", t.normal);
+        finish(d, t.finish);
+        for (const auto& l : t.layers) {
+            line(d, "layer");
+            texture_body(d + 1, l);
+        }
+    }
+
     static std::string tail(const Pigment& p) {
         std::string s;
         if (p.uv_mapping) s += " uv_mapping";
@@ -100,9 +146,39 @@ public:
                 s += std::string(w.kind == WarpKind::Turbulence ? " warp" : "") + " turbulence " +
                      vec(w.turbulence.amount) + " octaves " + std::to_string(w.turbulence.octaves) +
                      " omega " + num(w.turbulence.omega) + " lambda " + num(w.turbulence.lambda);
+            else if (w.kind == WarpKind::Transform)
+                s += " warp transform " + matrix(w.transform);
+            else if (w.kind == WarpKind::Repeat)
+                s += " warp repeat " + vec(w.direction) + " offset " + vec(w.offset) + " flip " +
+                     vec(w.flip);
+            else if (w.kind == WarpKind::BlackHole)
+                s += " warp black_hole " + vec(w.center) + " " + num(w.radius) + " strength " +
+                     num(w.strength) + " falloff " + num(w.falloff) + (w.inverse ? " inverse" : "");
             else
-                s += " warp " + std::to_string(static_cast<int>(w.kind));
+                s += " warp " + std::to_string(static_cast<int>(w.kind)) + " orientation " +
+                     vec(w.orientation) + " dist_exp " + num(w.dist_exp);
         }
+        const PatternParams def;
+        if (pp.noise_generator != 0) s += " noise_generator " + std::to_string(pp.noise_generator);
+        if (pp.agate_turb != def.agate_turb) s += " agate_turb " + num(pp.agate_turb);
+        if (!(pp.brick_size == def.brick_size)) s += " brick_size " + vec(pp.brick_size);
+        if (pp.mortar != def.mortar) s += " mortar " + num(pp.mortar);
+        if (pp.arms != 0) s += " arms " + std::to_string(pp.arms);
+        if (pp.control0 != 1 || pp.control1 != 1)
+            s += " control " + num(pp.control0) + " " + num(pp.control1);
+        if (pp.crackle_metric != 2 || pp.crackle_offset != 0 || pp.crackle_solid ||
+            !(pp.crackle_form == def.crackle_form))
+            s += " crackle metric " + num(pp.crackle_metric) + " offset " + num(pp.crackle_offset) +
+                 (pp.crackle_solid ? " solid" : "") + " form " + vec(pp.crackle_form);
+        if (pp.facets_coords != 0 || pp.facets_size != def.facets_size || pp.facets_metric != 2)
+            s += " facets coords " + num(pp.facets_coords) + " size " + num(pp.facets_size) +
+                 " metric " + num(pp.facets_metric);
+        if (pp.iterations != 0)
+            s += " fractal iterations " + std::to_string(pp.iterations) + " exponent " +
+                 num(pp.fractal_exponent) + " julia <" + num(pp.julia_param.x) + ", " +
+                 num(pp.julia_param.y) + "> exterior " + std::to_string(pp.exterior_type) + " " +
+                 num(pp.exterior_factor) + " interior " + std::to_string(pp.interior_type) + " " +
+                 num(pp.interior_factor);
         if (!s.empty()) line(d, "params" + s);
     }
 
@@ -125,11 +201,7 @@ public:
 
     void material(int i, const Material& m) {
         line(0, "material " + std::to_string(i) + where(m.loc));
-        pigment(1, "pigment", m.texture.pigment);
-        if (m.texture.normal.kind != PatternKind::Plain || m.texture.normal.amount != 0)
-            line(1, "normal kind " + std::to_string(static_cast<int>(m.texture.normal.kind)) +
-                        " amount " + num(m.texture.normal.amount));
-        finish(1, m.texture.finish);
+        texture_body(1, m.texture);
         const Interior& in = m.interior;
         Interior def;
         if (in.ior != def.ior || in.dispersion != def.dispersion || in.caustics != def.caustics ||

@@ -32,6 +32,7 @@ std::string value_kind_name(const Value& v) {
         case 13: return "a function";
         case 14: return "a spline";
         case 15: return "a file handle";
+        case 16: return "a " + std::get<BlendMapValue>(v).keyword;
     }
     return "a value";
 }

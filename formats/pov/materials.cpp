@@ -13,34 +13,28 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// POV-Ray pattern names glint does not evaluate yet: named so the error is precise.
-const std::unordered_set<std::string>& unsupported_patterns() {
-    static const std::unordered_set<std::string> k = {
-        "agate", "aoi", "average", "boxed", "bozo", "brick", "bumps", "cells", "crackle",
-        "cylindrical", "density_file", "dents", "facets", "function", "gradient_map", "granite",
-        "hexagon", "julia", "leopard", "mandel", "marble", "object", "onion", "pavement",
-        "pigment_pattern", "planar", "quilted", "radial", "ripples", "slope", "spherical",
-        "spiral1", "spiral2", "spotted", "square", "tiling", "triangular", "waves", "wood",
-        "wrinkles", "pigment_map", "normal_map", "slope_map", "texture_map", "material_map",
-        "tiles", "bump_map", "fractal", "magnet", "cubic", "noise_generator"};
-    return k;
-}
-
 bool is_close(const Token& t) { return t.is_symbol('}') || t.kind == TokKind::End; }
 
 }  // namespace
 
 void transform_pigment(scene::Pigment& p, const Transform& t) {
+    // Map and block entries live in the parent's pattern space: they move with it.
     p.transform = p.transform.then(t);
-    for (auto& e : p.entries) transform_pigment(e, t);
 }
 
 void transform_texture(scene::Texture& tex, const Transform& t) {
+    // Transform_Textures: a patterned texture moves its pattern (its entries follow); a plain
+    // one its pigment and normal, in every layer.
+    if (tex.kind != scene::PatternKind::Plain) {
+        tex.transform = tex.transform.then(t);
+        return;
+    }
     // POV-Ray: `uv_mapping` makes the pigment a UV_MAP_PATTERN whose own warps are ignored
     // (pigment.cpp Compute_Pigment), so texture and object transforms never reach a
     // uv-mapped pigment; only the transforms inside its pigment { } apply.
     if (!tex.pigment.uv_mapping) transform_pigment(tex.pigment, t);
-    tex.normal.transform = tex.normal.transform.then(t);
+    if (!tex.normal.uv_mapping) tex.normal.transform = tex.normal.transform.then(t);
+    for (auto& l : tex.layers) transform_texture(l, t);
 }
 
 bool Parser::parse_transform_item(Transform& t) {
@@ -133,184 +127,7 @@ std::string Parser::resolve_file(const std::string& name, const FileLoc& l) cons
 
 // ---------------------------------------------------------------- pigment
 
-static std::vector<scene::Pigment> default_checker() {
-    // POV-Ray's checker without colors: blue and green (pattern.cpp, Check_Default_Map).
-    scene::Pigment a, b;
-    a.color = scene::ColorFT(Color(0, 0, 1));
-    b.color = scene::ColorFT(Color(0, 1, 0));
-    return {a, b};
-}
-
-void Parser::parse_pigment_body(scene::Pigment& p) {
-    bool first = true;
-    if (!p.loc.valid()) p.loc = loc();
-    for (;; first = false) {
-        const Token& t = next();
-        if (is_close(t)) {
-            unget();
-            return;
-        }
-        if (t.kind == TokKind::Word && lookup(t.text)) {
-            const Symbol& s = use_symbol(t);
-            if (auto pg = std::get_if<scene::Pigment>(&s.value)) {
-                if (!first) fail("a pigment identifier must come first in the pigment");
-                p = *pg;
-                continue;
-            }
-            if (!std::holds_alternative<Num>(s.value))
-                fail("expected a pigment or color, got " + value_kind_name(s.value) + " '" +
-                     t.text + "'");
-        }
-        if (t.kind == TokKind::Word && !lookup(t.text)) {
-            const std::string& w = t.text;
-            unget();
-            Transform delta;
-            if (parse_transform_item(delta)) {
-                transform_pigment(p, delta);
-                continue;
-            }
-            next();
-            if (w == "checker") {
-                p.kind = scene::PatternKind::Checker;
-                p.params.frequency = 0;
-                std::vector<scene::Pigment> e;
-                for (int i = 0; i < 2; ++i) {
-                    skip_comma();
-                    if (accept("pigment")) {
-                        expect_open("pigment");
-                        FileLoc o = loc();
-                        scene::Pigment sub = default_texture_.pigment;
-                        sub.loc = o;
-                        parse_pigment_body(sub);
-                        expect_close("pigment", o);
-                        e.push_back(sub);
-                    } else if (next_is_expression_start()) {
-                        scene::Pigment sub;
-                        sub.loc = loc();
-                        sub.color = parse_color();
-                        e.push_back(sub);
-                    } else {
-                        break;
-                    }
-                }
-                auto d = default_checker();
-                while (e.size() < 2) e.push_back(d[e.size()]);
-                p.entries = e;
-            } else if (w == "gradient") {
-                p.kind = scene::PatternKind::Gradient;
-                FileLoc l = loc();
-                Vec3 v = parse_vector();
-                if (length(v) == 0) fail_at(l, "gradient vector has zero length");
-                p.params.vector = normalize(v);  // POV-Ray normalizes it (parstxtr.cpp)
-            } else if (w == "color_map" || w == "colour_map") {
-                expect_open(w.c_str());
-                FileLoc o = loc();
-                p.color_map = parse_color_map_body();
-                expect_close(w.c_str(), o);
-            } else if (w == "image_map") {
-                expect_open("image_map");
-                FileLoc o = loc();
-                p.kind = scene::PatternKind::ImageMap;
-                p.params.image = scene::ImageMap{};
-                p.params.image.loc = o;
-                parse_image_map_body(p.params.image);
-                expect_close("image_map", o);
-            } else if (w == "uv_mapping") {
-                p.uv_mapping = true;
-            } else if (w == "quick_color" || w == "quick_colour") {
-                parse_color();  // only for POV-Ray's low-quality preview
-            } else if (w == "frequency") {
-                p.params.frequency = parse_float();
-            } else if (w == "phase") {
-                p.params.phase = parse_float();
-            } else if (w == "ramp_wave") {
-                p.params.wave = scene::WaveType::Ramp;
-            } else if (w == "triangle_wave") {
-                p.params.wave = scene::WaveType::Triangle;
-            } else if (w == "sine_wave") {
-                p.params.wave = scene::WaveType::Sine;
-            } else if (w == "scallop_wave") {
-                p.params.wave = scene::WaveType::Scallop;
-            } else if (w == "cubic_wave") {
-                p.params.wave = scene::WaveType::Cubic;
-            } else if (w == "poly_wave") {
-                p.params.wave = scene::WaveType::Poly;
-                p.params.wave_exponent = allow_float(1);
-            } else if (w == "turbulence" || w == "octaves" || w == "omega" || w == "lambda") {
-                // Check_Turb: these modify the classic turbulence warp at the front of the list.
-                auto& warps = p.params.warps;
-                if (warps.empty() || warps.front().kind != scene::WarpKind::ClassicTurbulence) {
-                    scene::Warp t;
-                    t.loc = loc();
-                    warps.insert(warps.begin(), t);
-                }
-                scene::Turbulence& turb = warps.front().turbulence;
-                if (w == "turbulence") {
-                    turb.amount = parse_vector();
-                } else {
-                    double v = parse_float();
-                    if (w == "octaves") turb.octaves = static_cast<int>(v);
-                    if (w == "omega") turb.omega = v;
-                    if (w == "lambda") turb.lambda = v;
-                }
-            } else if (unsupported_patterns().count(w)) {
-                unsupported("the '" + w + "' pattern");
-            } else {
-                unget();
-                if (!next_is_expression_start())
-                    fail("expected a pigment item (color, pattern, transform, ...), got " +
-                         got(next()));
-                p.kind = scene::PatternKind::Plain;
-                p.color = parse_color();
-            }
-            continue;
-        }
-        unget();
-        if (!next_is_expression_start())
-            fail("expected a pigment item (color, pattern, transform, ...), got " + got(next()));
-        p.kind = scene::PatternKind::Plain;
-        p.color = parse_color();
-    }
-}
-
-std::vector<scene::ColorMapEntry> Parser::parse_color_map_body() {
-    std::vector<scene::ColorMapEntry> map;
-    for (;;) {
-        const Token& t = next();
-        if (is_close(t)) {
-            unget();
-            break;
-        }
-        if (!t.is_symbol('['))
-            fail("expected '[' to start a color_map entry, got " + got(t));
-        FileLoc o = loc();
-        double v1 = parse_float();
-        bool old_syntax = false;
-        if (accept(",")) {
-            // `[v1, v2 color c1 color c2]` (old) or `[v, color]` (a comma before the color).
-            const Token& n = peek();
-            old_syntax = n.kind == TokKind::Number || n.is("-") || n.is("+");
-        }
-        if (old_syntax) {
-            // Old syntax: [v1, v2 color c1 color c2]
-            double v2 = parse_float();
-            scene::ColorFT c1 = parse_color();
-            scene::ColorFT c2 = parse_color();
-            map.push_back({v1, c1});
-            map.push_back({v2, c2});
-        } else {
-            map.push_back({v1, parse_color()});
-        }
-        const Token& c = next();
-        if (!c.is_symbol(']'))
-            fail("expected ']' to close the color_map entry opened at " +
-                 std::to_string(o.line) + ":" + std::to_string(o.column) + ", got " + got(c));
-    }
-    if (map.size() > 256) fail("a color_map has at most 256 entries");
-    return map;
-}
-
-void Parser::parse_image_map_body(scene::ImageMap& im) {
+void Parser::parse_image_map_body(scene::ImageMap& im, double* bump_size) {
     static const std::unordered_set<std::string> kTypes = {
         "png", "jpeg", "tga", "gif", "tiff", "ppm", "pgm", "sys", "iff", "hdr", "exr", "bmp"};
     const Token& t = next();
@@ -335,7 +152,9 @@ void Parser::parse_image_map_body(scene::ImageMap& im) {
             unget();
             return;
         }
-        if (k.is("map_type")) {
+        if (bump_size && k.is("bump_size")) {
+            *bump_size = parse_float();
+        } else if (k.is("map_type")) {
             im.map_type = static_cast<int>(parse_float());
             if (im.map_type != 0 && im.map_type != 1 && im.map_type != 2 && im.map_type != 5)
                 fail("map_type " + std::to_string(im.map_type) + " is not supported");
@@ -382,6 +201,12 @@ bool Parser::take_body_identifier(const Token& t, bool first, const char* articl
     return true;
 }
 
+// patterns.cpp reads normal and texture identifiers with it too.
+template bool Parser::take_body_identifier(const Token&, bool, const char*, const char*,
+                                           scene::Normal&);
+template bool Parser::take_body_identifier(const Token&, bool, const char*, const char*,
+                                           scene::Texture&);
+
 void Parser::parse_finish_body(scene::Finish& f) {
     bool first = true;
     if (!f.loc.valid()) f.loc = loc();
@@ -398,18 +223,21 @@ void Parser::parse_finish_body(scene::Finish& f) {
         } else if (w == "emission") {
             f.emission = parse_rgb();
         } else if (w == "diffuse") {
-            if (accept("albedo")) unsupported("'albedo'");
+            if (accept("albedo")) warn_unsupported(*this, "albedo", loc(), "ignored");
             f.diffuse = parse_float();
-            if (accept(",")) unsupported("diffuse backside illumination");
+            if (accept(",")) {
+                warn_unsupported(*this, "diffuse backside illumination", loc(), "ignored");
+                parse_float();
+            }
         } else if (w == "brilliance") {
             f.brilliance = parse_float();
         } else if (w == "phong") {
-            if (accept("albedo")) unsupported("'albedo'");
+            if (accept("albedo")) warn_unsupported(*this, "albedo", loc(), "ignored");
             f.phong = parse_float();
         } else if (w == "phong_size") {
             f.phong_size = parse_float();
         } else if (w == "specular") {
-            if (accept("albedo")) unsupported("'albedo'");
+            if (accept("albedo")) warn_unsupported(*this, "albedo", loc(), "ignored");
             f.specular = parse_float();
         } else if (w == "roughness") {
             f.roughness = parse_float();
@@ -454,35 +282,17 @@ void Parser::parse_finish_body(scene::Finish& f) {
             f.conserve_energy = allow_float(1.0) != 0;
         } else if (w == "crand") {
             f.crand = parse_float();
-        } else if (w == "irid" || w == "subsurface" || w == "ior" || w == "caustics" ||
-                   w == "fade_distance" || w == "fade_power" || w == "refraction") {
-            unsupported("finish '" + w + "'");
+        } else if (w == "irid" || w == "subsurface") {
+            warn_unsupported(*this, w, loc(), "the finish's " + w + " block is ignored");
+            skip_braced_block(*this, w);
+        } else if (w == "ior" || w == "caustics" || w == "fade_distance" || w == "fade_power" ||
+                   w == "refraction") {
+            // POV-Ray 3.0's interior items inside finish.
+            warn_unsupported(*this, "finish " + w, loc(), "ignored (write it in interior)");
+            parse_float();
         } else {
             fail("expected a finish item (ambient, diffuse, phong, ...), got " + got(t));
         }
-    }
-}
-
-void Parser::parse_normal_body(scene::Normal& n) {
-    bool first = true;
-    if (!n.loc.valid()) n.loc = loc();
-    for (;; first = false) {
-        const Token& t = next();
-        if (is_close(t)) {
-            unget();
-            return;
-        }
-        if (take_body_identifier(t, first, "a", "normal", n)) continue;
-        unget();
-        Transform tr = n.transform;
-        if (parse_transform_item(tr)) {
-            n.transform = tr;
-            continue;
-        }
-        const Token& k = next();
-        if (k.kind == TokKind::Word)
-            unsupported("normal pattern '" + k.text + "' (normal perturbation)");
-        fail("expected a normal pattern or transform, got " + got(k));
     }
 }
 
@@ -512,47 +322,6 @@ void Parser::parse_interior_body(scene::Interior& in) {
 }
 
 // ---------------------------------------------------------------- texture, material
-
-scene::Texture Parser::parse_texture_body() {
-    scene::Texture tex = default_texture_;
-    tex.loc = loc();
-    bool first = true;
-    for (;; first = false) {
-        const Token& t = next();
-        if (is_close(t)) {
-            unget();
-            return tex;
-        }
-        if (take_body_identifier(t, first, "a", "texture", tex)) continue;
-        const std::string w = t.kind == TokKind::Word ? t.text : std::string();
-        if (w == "pigment") {
-            expect_open("pigment");
-            FileLoc o = loc();
-            parse_pigment_body(tex.pigment);
-            expect_close("pigment", o);
-        } else if (w == "normal") {
-            expect_open("normal");
-            FileLoc o = loc();
-            parse_normal_body(tex.normal);
-            expect_close("normal", o);
-        } else if (w == "finish") {
-            expect_open("finish");
-            FileLoc o = loc();
-            parse_finish_body(tex.finish);
-            expect_close("finish", o);
-        } else if (unsupported_patterns().count(w) || w == "checker" || w == "gradient" ||
-                   w == "image_map" || w == "hexagon" || w == "brick") {
-            unsupported("a patterned texture ('" + w + "' in a texture)");
-        } else {
-            unget();
-            Transform tr;
-            if (!parse_transform_item(tr))
-                fail("expected a texture item (pigment, normal, finish, transform), got " +
-                     got(next()));
-            transform_texture(tex, tr);
-        }
-    }
-}
 
 MaterialValue Parser::parse_material_body() {
     MaterialValue m;

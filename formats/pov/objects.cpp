@@ -22,8 +22,8 @@ const std::unordered_set<std::string>& object_keywords() {
 
 const std::unordered_set<std::string>& unsupported_objects() {
     static const std::unordered_set<std::string> k = {
-        "isosurface", "julia_fractal", "parametric", "sphere_sweep", "bicubic_patch",
-        "ovus", "lemon", "light_group"};
+        "isosurface", "julia_fractal", "parametric", "sphere_sweep", "bicubic_patch", "ovus",
+        "lemon", "light_group"};
     return k;
 }
 
@@ -40,31 +40,6 @@ void transform_light(scene::Light& l, const Transform& t) {
 void transform_child_textures(PovObject& o, const Transform& t) {
     if (o.texture) transform_texture(*o.texture, t);
     for (auto& c : o.children) transform_child_textures(c, t);
-}
-
-// Whether a pigment is opaque everywhere (no filter/transmit in any color it can produce).
-bool opaque(const scene::Pigment& p) {
-    switch (p.kind) {
-        case scene::PatternKind::Plain: return p.color.opaque();
-        case scene::PatternKind::Checker:
-            for (const auto& e : p.entries)
-                if (!opaque(e)) return false;
-            return true;
-        case scene::PatternKind::Gradient:
-            for (const auto& e : p.color_map)
-                if (!e.color.opaque()) return false;
-            return true;
-        case scene::PatternKind::ImageMap: return false;  // the image's alpha is unknown here
-        default:
-            for (const auto& e : p.color_map)
-                if (!e.color.opaque()) return false;
-            for (const auto& e : p.pigment_map)
-                for (const auto& q : e.pigment)
-                    if (!opaque(q)) return false;
-            for (const auto& e : p.entries)
-                if (!opaque(e)) return false;
-            return true;
-    }
 }
 
 }  // namespace
@@ -548,12 +523,11 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
             FileLoc lo = loc();
             scene::Texture tex = parse_texture_body();
             expect_close("texture", lo);
-            // POV-Ray layers a second texture over the first. An opaque top layer hides the
-            // rest, so it may replace it; anything else would render differently.
-            if (o.texture && !opaque(tex.pigment))
-                throw Unsupported(kw, "layered textures (a see-through texture over another) are "
-                                      "not supported yet");
-            o.texture = tex;
+            // POV-Ray's Link_Textures: a second texture is a layer over the first.
+            if (o.texture)
+                layer_texture(*o.texture, tex, kw);
+            else
+                o.texture = tex;
         } else if (w == "pigment") {
             expect_open("pigment");
             FileLoc lo = loc();

@@ -100,7 +100,11 @@ Value Parser::parse_rvalue() {
         };
         if (w == "texture") {
             scene::Texture tex = braced([&] { return parse_texture_body(); });
-            if (raw_next_is("texture")) unsupported("layered textures");
+            while (raw_next_is("texture")) {  // layered: each one over the ones before
+                next();
+                FileLoc at = loc();
+                layer_texture(tex, braced([&] { return parse_texture_body(); }), at);
+            }
             return tex;
         }
         if (w == "pigment")
@@ -139,12 +143,14 @@ Value Parser::parse_rvalue() {
             });
         if (w == "transform") return braced([&] { return parse_transform_body(); });
         if (w == "array") return parse_array();
+        if (w == "color_map" || w == "colour_map" || w == "pigment_map" || w == "normal_map" ||
+            w == "texture_map" || w == "slope_map")
+            return parse_map_rvalue(w);
         if (w == "function") return FunctionRef{parse_function_definition()};
         if (w == "spline")
             return braced([&] { return std::make_shared<const scene::Spline>(parse_spline_body()); });
         static const std::unordered_set<std::string> kUnsupported = {
             "fog", "media", "rainbow", "sky_sphere", "density",
-            "color_map", "colour_map", "pigment_map", "normal_map", "texture_map", "slope_map",
             "density_map", "material_map", "background", "light_group"};
         if (w == "media" || w == "density" || w == "density_map") {
             // Only a media block can use these, and every media block is read over.

@@ -71,6 +71,8 @@ struct Frame {
 // sub-pigments (checker entries) move with their parent as in POV-Ray's Transform_Pigment.
 void transform_pigment(scene::Pigment& p, const Transform& t);
 void transform_texture(scene::Texture& tex, const Transform& t);
+// POV-Ray's Link_Textures: `top` (with its own layers) is drawn over `base`.
+void layer_texture(scene::Texture& base, const scene::Texture& top, const FileLoc& at);
 
 class Parser {
 public:
@@ -153,7 +155,27 @@ public:
     bool take_body_identifier(const Token& t, bool first, const char* article, const char* noun,
                               T& out);
     std::vector<scene::ColorMapEntry> parse_color_map_body();
-    void parse_image_map_body(scene::ImageMap& im);
+    // bump_size is read into *bump_size when given (bump_map).
+    void parse_image_map_body(scene::ImageMap& im, double* bump_size = nullptr);
+    // ---- patterns and maps (patterns.cpp)
+    void parse_pattern_arguments(scene::PatternKind kind, scene::PatternParams& pp, bool normal);
+    // A pattern modifier (turbulence, frequency, warp, brick_size, ...) if `w` is one; `head`
+    // is the pattern's own transform, which a warp block moves into the warp list.
+    bool parse_pattern_modifier(const std::string& w, scene::PatternKind kind,
+                                scene::PatternParams& pp, Transform& head);
+    scene::Warp parse_warp_body(const FileLoc& at);
+    template <class F>
+    void parse_map_entries(const char* what, bool average, F item);
+    const BlendMapValue* declared_map(const char* keyword);
+    std::vector<scene::PigmentMapEntry> parse_pigment_map_body(bool average);
+    std::vector<scene::NormalMapEntry> parse_normal_map_body(bool average);
+    std::vector<scene::SlopeMapEntry> parse_slope_map_body();
+    std::vector<scene::TextureMapEntry> parse_texture_map_body(bool average);
+    std::vector<scene::Pigment> parse_pigment_entries(scene::PatternKind kind, int count);
+    std::vector<scene::Normal> parse_normal_entries(int count);
+    std::vector<scene::Texture> parse_texture_entries(int count);
+    // `#declare M = color_map { ... }` (and the other maps) after the keyword `w`.
+    Value parse_map_rvalue(const std::string& w);
     // A transform keyword (translate/rotate/scale/matrix/transform) if the next token is one.
     bool parse_transform_item(Transform& t);
     Transform parse_transform_body();

@@ -79,11 +79,22 @@ struct FileHandle {
     std::string name;
 };
 
+// A declared map: `#declare M = color_map { ... }` (or pigment_map, normal_map, slope_map,
+// texture_map), used as `color_map { M }`. `keyword` says which one is filled.
+struct BlendMapValue {
+    std::string keyword;
+    std::vector<scene::ColorMapEntry> colors;
+    std::vector<scene::PigmentMapEntry> pigments;
+    std::vector<scene::NormalMapEntry> normals;
+    std::vector<scene::SlopeMapEntry> slopes;
+    std::vector<scene::TextureMapEntry> textures;
+};
+
 using Value = std::variant<Num, std::string, std::shared_ptr<const PovObject>, scene::Texture,
                            scene::Pigment, scene::Finish, scene::Normal, scene::Interior,
                            MaterialValue, scene::Camera, Transform, std::shared_ptr<const Macro>,
                            std::shared_ptr<ArrayValue>, FunctionRef,
-                           std::shared_ptr<const scene::Spline>, FileHandle>;
+                           std::shared_ptr<const scene::Spline>, FileHandle, BlendMapValue>;
 
 // POV-Ray `array[n][m]...`: row-major elements, null until assigned. Held by shared_ptr so
 // that `#declare A[i] = v` can fill it in place; `#declare B = A` copies (Parser::declare).

@@ -20,19 +20,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 // Features the Whitted integrator does not implement yet are announced, never silently
 // rendered as something else.
 void warn_unsupported(const scene::Scene& scene, const scene::Features& f, Diagnostics& diag) {
-    if (f.normals) {
+    if (f.bump_maps) {
         for (const scene::Material& m : scene.materials)
-            if (m.texture.normal.kind != scene::PatternKind::Plain) {
-                diag.warning(m.texture.normal.loc,
-                             "normal perturbation is not supported yet; the surface is smooth");
+            if (const scene::Normal* n = scene::find_bump_map(m.texture)) {
+                diag.warning(n->loc, "bump_map is not supported yet; the surface is smooth");
                 break;
             }
-    }
-    for (const scene::Material& m : scene.materials) {
-        if (!m.texture.pigment.params.warps.empty()) {
-            diag.warning(m.texture.pigment.loc, "turbulence is not supported yet; ignored");
-            break;
-        }
     }
 }
 

@@ -43,16 +43,52 @@ private:
     }
 
     void material(const Material& m) {
-        const Finish& f = m.texture.finish;
-        if (!f.reflection.min.is_black() || !f.reflection.max.is_black()) f_.reflection = true;
-        if (f.phong > 0 || f.specular > 0) f_.highlights = true;
         if (m.interior.fade_distance > 0) f_.interior_fading = true;
-        bool transparent = pigment(m.texture.pigment);
+        bool transparent = texture(m.texture);
         if (transparent) {
             f_.transparency = true;
             if (m.interior.ior != 1.0) f_.refraction = true;
         }
-        if (m.texture.normal.kind != PatternKind::Plain) f_.normals = true;
+    }
+
+    // Returns whether the texture can let light through.
+    bool texture(const Texture& t) {
+        if (t.kind != PatternKind::Plain) {
+            f_.texture_maps = true;
+            pattern_kind(t.kind);
+            bool transparent = false;
+            for (const TextureMapEntry& e : t.texture_map) transparent |= texture(e.texture[0]);
+            for (const Texture& e : t.entries) transparent |= texture(e);
+            return transparent;
+        }
+        if (!t.layers.empty()) f_.texture_maps = true;
+        bool transparent = layer(t);
+        for (const Texture& l : t.layers) transparent = layer(l) && transparent;
+        return transparent;
+    }
+
+    bool layer(const Texture& t) {
+        const Finish& f = t.finish;
+        if (!f.reflection.min.is_black() || !f.reflection.max.is_black()) f_.reflection = true;
+        if (f.phong > 0 || f.specular > 0) f_.highlights = true;
+        normal(t.normal);
+        return pigment(t.pigment);
+    }
+
+    void normal(const Normal& n) {
+        if (n.kind == PatternKind::Plain) return;
+        f_.normals = true;
+        if (n.kind == PatternKind::ImageMap) f_.bump_maps = true;
+        if (n.uv_mapping) f_.uv_mapping = true;
+        pattern_kind(n.kind);
+        for (const NormalMapEntry& e : n.normal_map) normal(e.normal[0]);
+        for (const Normal& e : n.entries) normal(e);
+    }
+
+    void pattern_kind(PatternKind k) {
+        if (k == PatternKind::Checker) f_.checker = true;
+        else if (k == PatternKind::Gradient) f_.gradient = true;
+        else if (k != PatternKind::Plain && k != PatternKind::ImageMap) f_.patterns = true;
     }
 
     // Returns whether the pigment can be anything but opaque.
@@ -68,7 +104,7 @@ private:
                 transparent = true;
                 break;
             case PatternKind::Plain: break;
-            default: break;
+            default: pattern_kind(p.kind); break;
         }
         for (const PigmentMapEntry& e : p.pigment_map)
             for (const Pigment& q : e.pigment) transparent |= pigment(q);
@@ -83,6 +119,25 @@ private:
 };
 
 }  // namespace
+
+const Normal* find_bump_map(const Texture& t) {
+    auto in_normal = [](auto& self, const Normal& n) -> const Normal* {
+        if (n.kind == PatternKind::ImageMap) return &n;
+        for (const NormalMapEntry& e : n.normal_map)
+            if (const Normal* r = self(self, e.normal[0])) return r;
+        for (const Normal& e : n.entries)
+            if (const Normal* r = self(self, e)) return r;
+        return nullptr;
+    };
+    if (const Normal* r = in_normal(in_normal, t.normal)) return r;
+    for (const Texture& l : t.layers)
+        if (const Normal* r = find_bump_map(l)) return r;
+    for (const TextureMapEntry& e : t.texture_map)
+        if (const Normal* r = find_bump_map(e.texture[0])) return r;
+    for (const Texture& e : t.entries)
+        if (const Normal* r = find_bump_map(e)) return r;
+    return nullptr;
+}
 
 Features analyze(const Scene& scene) {
     Features f;
@@ -119,6 +174,9 @@ std::vector<std::string> Features::used() const {
     add(checker, "checker");
     add(gradient, "gradient");
     add(normals, "normal perturbation");
+    add(bump_maps, "bump_map");
+    add(patterns, "procedural patterns");
+    add(texture_maps, "texture maps/layered textures");
     add(sky_sphere, "sky_sphere");
     return out;
 }

@@ -30,6 +30,9 @@ struct Features {
     bool checker = false;
     bool gradient = false;
     bool normals = false;         // normal perturbation
+    bool bump_maps = false;       // bump_map normals (not rendered yet)
+    bool patterns = false;        // procedural patterns other than checker and gradient
+    bool texture_maps = false;    // texture_map, block patterns of textures, layered textures
     bool sky_sphere = false;
 
     // Whether rays other than primary and shadow rays can be spawned.
@@ -41,5 +44,8 @@ struct Features {
 };
 
 Features analyze(const Scene& scene);
+
+// The first bump_map normal of a texture (its layers and map entries included), or null.
+const Normal* find_bump_map(const Texture& t);
 
 }  // namespace glint::scene

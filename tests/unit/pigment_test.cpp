@@ -105,20 +105,20 @@ TEST(Pigment, FrequencyAndPhase) {
     p.params.frequency = 2;
     p.params.phase = 0.1;
     // fmod(0.3 * 2 + 0.1, 1.00001)
-    EXPECT_NEAR(PigmentEvaluator::pattern_value(p, Vec3(0.3, 0, 0)), 0.7, 1e-12);
+    EXPECT_NEAR(PigmentEvaluator(nullptr).pattern_value(p, Vec3(0.3, 0, 0)), 0.7, 1e-12);
     p.params.wave = scene::WaveType::Triangle;
-    EXPECT_NEAR(PigmentEvaluator::pattern_value(p, Vec3(0.3, 0, 0)), 0.6, 1e-12);
+    EXPECT_NEAR(PigmentEvaluator(nullptr).pattern_value(p, Vec3(0.3, 0, 0)), 0.6, 1e-12);
 }
 
-TEST(Pigment, NestedEntriesCarryTheirFullTransform) {
-    // The importer composes transforms, so an entry's transform already includes its
-    // parent's (POV-Ray evaluates entries in the parent's pattern space): here the outer
-    // checker is scaled by 10 and the inner one by 10 * 0.5 = 5.
+TEST(Pigment, NestedEntriesLiveInTheParentsPatternSpace) {
+    // POV-Ray evaluates entries at the parent's warped pattern-space point, so an entry's
+    // transform is relative: the outer checker is scaled by 10 and the inner one by 0.5 of
+    // that (5 in world space).
     PigmentEvaluator e(nullptr);
     Pigment inner;
     inner.kind = scene::PatternKind::Checker;
     inner.entries = {plain(Color(1, 1, 1)), plain(Color(0, 0, 0))};
-    inner.transform = Transform::scale(Vec3(5, 5, 5));
+    inner.transform = Transform::scale(Vec3(0.5, 0.5, 0.5));
     Pigment outer;
     outer.kind = scene::PatternKind::Checker;
     outer.entries = {inner, plain(Color(1, 0, 0))};

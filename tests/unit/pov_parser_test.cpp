@@ -246,13 +246,13 @@ TEST(PovMaterials, FinishInteriorAndMaps) {
     EXPECT_EQ(r.max, Color(0.1, 0.2, 0.3));
 }
 
-TEST(PovMaterials, SecondTextureReplacesOnlyWhenOpaque) {
+TEST(PovMaterials, SecondTextureIsALayerOverTheFirst) {
     auto s = parse("#declare S = sphere { 0, 1 texture { pigment { rgb x } } }\n"
-                   "object { S texture { pigment { rgb y } } }");
-    EXPECT_EQ(s.materials[s.objects[0].material].texture.pigment.color.rgb, Color(0, 1, 0));
-    EXPECT_EQ(error_of("#declare S = sphere { 0, 1 texture { pigment { rgb x } } }\n"
-                       "object { S texture { pigment { rgbt <0, 1, 0, 0.5> } } }"),
-              "2:12: layered textures (a see-through texture over another) are not supported yet");
+                   "object { S texture { pigment { rgbt <0, 1, 0, 0.5> } } }");
+    const auto& t = s.materials[s.objects[0].material].texture;
+    EXPECT_EQ(t.pigment.color.rgb, Color(1, 0, 0));
+    ASSERT_EQ(t.layers.size(), 1u);
+    EXPECT_EQ(t.layers[0].pigment.color.rgb, Color(0, 1, 0));
 }
 
 TEST(PovMaterials, ColorMapEntryForms) {
@@ -281,14 +281,14 @@ TEST(PovMaterials, ImageMapMissingFile) {
 }
 
 TEST(PovMaterials, UnsupportedFeaturesSaySo) {
-    EXPECT_EQ(error_of("sphere { 0, 1 normal { bumps 0.5 } }"),
-              "1:24: normal pattern 'bumps' (normal perturbation) is not supported yet");
+    EXPECT_EQ(error_of("sphere { 0, 1 normal { pavement 0.5 } }"),
+              "1:24: the 'pavement' pattern is not supported yet");
     EXPECT_EQ(error_of("sphere { 0, 1 finish { irid { 0.3 } } }"),
               "1:24: finish 'irid' is not supported yet");
     // Objects glint lacks are left out with a warning (pov_unsupported_test.cpp).
     EXPECT_EQ(error_of("isosurface { }"), "(no error)");
-    EXPECT_EQ(error_of("sphere { 0, 1 texture { checker texture { } texture { } } }"),
-              "1:25: a patterned texture ('checker' in a texture) is not supported yet");
+    EXPECT_EQ(error_of("sphere { 0, 1 texture { tiles { texture { } tile2 texture { } } } }"),
+              "1:25: a patterned texture ('tiles') is not supported yet");
 }
 
 TEST(PovScene, GlobalSettingsBackgroundSky) {
@@ -331,8 +331,8 @@ TEST(PovErrors, PlacesAndWording) {
     EXPECT_EQ(error_of("#declare S = sphere { 0, 1 }\nS"),
               "2:1: an identifier cannot stand alone here: write object { S } (or camera { ... }) , got 'S'");
     EXPECT_EQ(error_of("sphere { 0, 1 texture { T } }"),
-              "1:25: expected a texture item (pigment, normal, finish, transform), got the "
-              "unknown identifier 'T'");
+              "1:25: expected a texture item (pigment, normal, finish, pattern, transform), "
+              "got the unknown identifier 'T'");
     EXPECT_EQ(error_of("#declare C = rgb 1;\nobject { C }"),
               "2:10: expected an object identifier, got a color 'C'");
 }

@@ -5,6 +5,7 @@
 
 #include "core/float.h"
 #include "render/lights/area_light.h"
+#include "render/textures/normal.h"
 
 namespace glint::render {
 namespace {
@@ -24,13 +25,38 @@ Color rgb_transm(const ColorFT& c) {
 }
 
 bool pigment_can_be_transparent(const scene::Pigment& p) {
-    if (!p.color.opaque()) return true;
+    if (p.kind == scene::PatternKind::Plain) return !p.color.opaque();
     if (p.kind == scene::PatternKind::ImageMap) return true;  // alpha, filter/transmit all
     for (const scene::ColorMapEntry& e : p.color_map)
         if (!e.color.opaque()) return true;
+    for (const scene::PigmentMapEntry& e : p.pigment_map)
+        if (pigment_can_be_transparent(e.pigment[0])) return true;
     for (const scene::Pigment& e : p.entries)
         if (pigment_can_be_transparent(e)) return true;
     return false;
+}
+
+bool texture_can_be_transparent(const scene::Texture& t) {
+    if (t.kind == scene::PatternKind::Plain) {
+        // Layers filter only what the bottom lets through: all must be see-through.
+        if (!pigment_can_be_transparent(t.pigment)) return false;
+        for (const scene::Texture& l : t.layers)
+            if (!pigment_can_be_transparent(l.pigment)) return false;
+        return true;
+    }
+    for (const scene::TextureMapEntry& e : t.texture_map)
+        if (texture_can_be_transparent(e.texture[0])) return true;
+    for (const scene::Texture& e : t.entries)
+        if (texture_can_be_transparent(e)) return true;
+    return false;
+}
+
+// Every finish a texture can show, for ClassicFinish preparation.
+void collect_finishes(const scene::Texture& t, std::vector<const scene::Finish*>* out) {
+    out->push_back(&t.finish);
+    for (const scene::Texture& l : t.layers) collect_finishes(l, out);
+    for (const scene::TextureMapEntry& e : t.texture_map) collect_finishes(e.texture[0], out);
+    for (const scene::Texture& e : t.entries) collect_finishes(e, out);
 }
 
 PatternPoint pattern_point(const Hit& hit) { return {hit.p, hit.uv, hit.has_uv}; }
@@ -69,7 +95,7 @@ Whitted::Whitted(const scene::Scene& scene, const scene::Features& features,
     : scene_(scene),
       features_(features),
       geometry_(geometry),
-      pigments_(textures),
+      pigments_(textures, PatternContext{scene.global.noise_generator, 10}),
       atmosphere_(scene),
       lights_(prepare_lights(scene.lights)),
       max_level_(scene.global.max_trace_level),
@@ -78,7 +104,10 @@ Whitted::Whitted(const scene::Scene& scene, const scene::Features& features,
     finishes_.reserve(scene.materials.size());
     for (const scene::Material& m : scene.materials) {
         finishes_.emplace_back(m.texture.finish);
-        opaque_.push_back(!pigment_can_be_transparent(m.texture.pigment));
+        opaque_.push_back(!texture_can_be_transparent(m.texture));
+        std::vector<const scene::Finish*> all;
+        collect_finishes(m.texture, &all);
+        for (const scene::Finish* f : all) layer_finishes_.emplace(f, ClassicFinish(*f));
     }
     if (features.secondary_rays()) find_camera_interiors();
 }
@@ -198,105 +227,216 @@ Color Whitted::shade(const Ray& ray, const Hit& hit, double weight, const RaySta
     if (hit.material < 0 || hit.material >= static_cast<int>(scene_.materials.size()))
         return Color();
     const scene::Material& mat = scene_.materials[hit.material];
-    const ClassicFinish& f = finishes_[hit.material];
-
     // ComputeTextureColour: the normal faces the incoming ray.
     Vec3 n = hit.n;
     if (dot(n, ray.dir) > 0.0) n = -n;
+    TextureStack stack;
+    return texture_colour(ray, hit, mat.texture, pattern_point(hit), n, weight, state, stack);
+}
 
-    ColorFT pig;
-    bool colour_found = pigments_.evaluate(mat.texture.pigment, pattern_point(hit), &pig);
-
-    // ComputeLightedTexture, single layer.
-    double refl_weight = weight;
-    double cos_incidence = -dot(ray.dir, n);
-    Color reflec = f.reflects()
-                       ? reflectivity(f, cos_incidence,
-                                      relative_ior(state, hit.object, mat.interior.ior),
-                                      &refl_weight)
-                       : Color();
-    if (f.reflect_metallic != 0.0)
-        reflec = metallic_tint(f.reflect_metallic, cos_incidence, pig.rgb, reflec);
-    // The layer's own brightness is reduced by its transparency; 3.6 scenes keep the old
-    // (bogus, but compatible) formula.
-    double att = legacy_ ? 1.0 - (pig.filter * pig.rgb.max() + pig.transmit)
-                         : 1.0 - pig.filter - pig.transmit;
-
-    Color result = pig.rgb * f.ambient * scene_.global.ambient_light * att;
-    result += pig.rgb * f.emission * att;
-
-    if (features_.lights && (f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0)) {
-        bool double_illuminate = (hit.flags & kDoubleIlluminate) != 0;
-        for (const PreparedLight& light : lights_) {
-            LightSample ls;
-            if (!light.sample(hit.p, &ls)) continue;
-            // Light on the far side of the surface from the viewer.
-            if (!double_illuminate && dot(n, ls.dir) < kPovEpsilon) continue;
-            Color lc = ls.color;
-            if (features_.shadows && light.casts_shadows()) {
-                if (light.light().area) {
-                    lc = area_light_shadow(
-                        light, hit.p, lc, [&](const Vec3& d, double depth, const Color& c) {
-                            return c * shadow_filter(hit.p, hit, LightSample{d, depth, c}, state);
-                        });
-                } else {
-                    lc = lc * shadow_filter(hit.p, hit, ls, state);
-                }
-                if (!(std::fabs(lc.r) > kPovEpsilon || std::fabs(lc.g) > kPovEpsilon ||
-                      std::fabs(lc.b) > kPovEpsilon))
-                    continue;
-            }
-            result += diffuse_term(f, n, ls.dir, pig.rgb, lc, att);
-            // shadowless lights are POV-Ray's FILL_LIGHT_SOURCE: diffuse only, no highlights.
-            if (!light.casts_shadows()) continue;
-            if (f.phong > 0.0) result += phong_term(f, n, ls.dir, ray.dir, pig.rgb, lc);
-            if (f.specular > 0.0) result += specular_term(f, n, ls.dir, ray.dir, pig.rgb, lc);
-        }
+Color Whitted::texture_colour(const Ray& ray, const Hit& hit, const scene::Texture& tex,
+                              const PatternPoint& at, const Vec3& n, double weight,
+                              const RayState& state, TextureStack stack) const {
+    // ComputeOneTextureColour: a patterned texture picks (and blends) the textures of its map
+    // by its pattern value; each one is lit on its own, in the pattern's warped space.
+    if (tex.kind == scene::PatternKind::Plain)
+        return lighted_texture(ray, hit, tex, at, n, weight, state, stack);
+    if (stack.count < TextureStack::kMax) stack.texture[stack.count++] = &tex;
+    Vec3 p = at.p;
+    if (tex.uv_mapping) {
+        if (!at.has_uv)
+            throw Error(ErrorKind::Render, tex.loc,
+                        "uv_mapping on a surface that has no uv coordinates");
+        p = Vec3(at.uv.x, at.uv.y, 0);
     }
+    const scene::PatternParams& pp = tex.params;
+    const Vec3 local = tex.transform.is_identity() ? p : tex.transform.inverse_point(p);
+    const Vec3 tp = pp.warps.empty() ? local : warp_point(tex.kind, pp, local);
+    const PatternPoint sub{tp, at.uv, at.has_uv};
+    if (tex.kind == scene::PatternKind::Average) {
+        Color sum;
+        double total = 0;
+        for (const scene::TextureMapEntry& e : tex.texture_map) {
+            sum += texture_colour(ray, hit, e.texture[0], sub, n, weight, state, stack) * e.value;
+            total += e.value;
+        }
+        return sum / total;
+    }
+    const double value = evaluate_pattern(tex.kind, pp, local, pigments_.context());
+    if (is_block_pattern(tex.kind)) {
+        const scene::Texture& e = tex.entries[block_index(value, tex.entries.size())];
+        return texture_colour(ray, hit, e, sub, n, weight, state, stack);
+    }
+    const auto& map = tex.texture_map;
+    BlendPick b = search_blend_map(map, value);
+    Color c = texture_colour(ray, hit, map[b.cur].texture[0], sub, n, weight, state, stack);
+    if (b.prev != b.cur) {
+        Color c2 = texture_colour(ray, hit, map[b.prev].texture[0], sub, n, weight, state, stack);
+        c = c * b.fraction + c2 * (1.0 - b.fraction);
+    }
+    return c;
+}
 
-    // New filter color and remaining translucency.
+Vec3 Whitted::layer_normal(const scene::Normal& normal, const PatternPoint& at, const Vec3& n,
+                           const TextureStack& stack) const {
+    if (normal.kind == scene::PatternKind::Plain || !features_.normals) return n;
+    // The enclosing patterned textures' transforms carry the normal into their space.
+    Vec3 m = n;
+    for (int i = 0; i < stack.count; ++i)
+        m = warp_normal(stack.texture[i]->transform, stack.texture[i]->params, m);
+    m = perturb_normal(normal, at, m, pigments_.context());
+    for (int i = stack.count - 1; i >= 0; --i)
+        m = unwarp_normal(stack.texture[i]->transform, stack.texture[i]->params, m);
+    return m;
+}
+
+Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Texture& tex,
+                               const PatternPoint& at, const Vec3& n, double weight,
+                               const RayState& state, const TextureStack& stack) const {
+    const scene::Material& mat = scene_.materials[hit.material];
+    // ComputeLightedTexture: layers from the top one down; each adds its own light, seen
+    // through the filter of the layers above it, until too little shows through.
+    const int layer_count = 1 + static_cast<int>(tex.layers.size());
+    auto layer_at = [&](int i) -> const scene::Texture& {  // 0 = top
+        return i == layer_count - 1 ? tex : tex.layers[layer_count - 2 - i];
+    };
+    struct LayerReflection {
+        double weight;
+        Vec3 normal;
+        Color reflec;
+        double exponent;
+    };
+    constexpr int kMaxLayers = 16;
+    LayerReflection refl[kMaxLayers];
+    int used = 0;
+
+    Color result;
     Color fil_col(1.0);
-    if (colour_found) {
-        fil_col = rgb_transm(pig);
-        if (f.conserve_energy && f.reflects()) {
-            fil_col *= Color(std::min(1.0, 1.0 - reflec.r), std::min(1.0, 1.0 - reflec.g),
-                             std::min(1.0, 1.0 - reflec.b));
+    double trans = 1.0;
+    bool one_colour_found = false;
+    Vec3 top_normal = n;
+    const bool double_illuminate = (hit.flags & kDoubleIlluminate) != 0;
+    for (int li = 0; li < layer_count && trans > adc_bailout_; ++li) {
+        const scene::Texture& layer = layer_at(li);
+        const ClassicFinish& f = finish_for(layer.finish, hit.material);
+        const Vec3 lay_n = layer_normal(layer.normal, at, n, stack);
+        if (li == 0) top_normal = lay_n;
+        const double new_weight = weight * trans;
+        ColorFT pig;
+        const bool colour_found = pigments_.evaluate(layer.pigment, at, &pig);
+        one_colour_found = one_colour_found || colour_found;
+
+        double refl_weight = new_weight;
+        const double cos_incidence = -dot(ray.dir, lay_n);
+        Color reflec = f.reflects()
+                           ? reflectivity(f, cos_incidence,
+                                          relative_ior(state, hit.object, mat.interior.ior),
+                                          &refl_weight)
+                           : Color();
+        if (f.reflect_metallic != 0.0)
+            reflec = metallic_tint(f.reflect_metallic, cos_incidence, pig.rgb, reflec);
+        if (used < kMaxLayers) refl[used++] = {refl_weight, lay_n, reflec, f.reflect_exponent};
+
+        // The layer's own brightness is reduced by its transparency; 3.6 scenes keep the old
+        // (bogus, but compatible) formula.
+        const double att = legacy_ ? 1.0 - (pig.filter * pig.rgb.max() + pig.transmit)
+                                   : 1.0 - pig.filter - pig.transmit;
+        Color tmp = pig.rgb * f.ambient * scene_.global.ambient_light * att;
+        tmp += pig.rgb * f.emission * att;
+        if (features_.lights && (f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0)) {
+            for (const PreparedLight& light : lights_) {
+                LightSample ls;
+                if (!light.sample(hit.p, &ls)) continue;
+                // Light on the far side of the surface from the viewer.
+                if (!double_illuminate && dot(lay_n, ls.dir) < kPovEpsilon) continue;
+                Color lc = ls.color;
+                if (features_.shadows && light.casts_shadows()) {
+                    if (light.light().area) {
+                        lc = area_light_shadow(
+                            light, hit.p, lc, [&](const Vec3& d, double depth, const Color& c) {
+                                return c * shadow_filter(hit.p, hit, LightSample{d, depth, c},
+                                                         state);
+                            });
+                    } else {
+                        lc = lc * shadow_filter(hit.p, hit, ls, state);
+                    }
+                    if (!(std::fabs(lc.r) > kPovEpsilon || std::fabs(lc.g) > kPovEpsilon ||
+                          std::fabs(lc.b) > kPovEpsilon))
+                        continue;
+                }
+                tmp += diffuse_term(f, lay_n, ls.dir, pig.rgb, lc, att);
+                // shadowless lights are POV-Ray's FILL_LIGHT_SOURCE: diffuse only.
+                if (!light.casts_shadows()) continue;
+                if (f.phong > 0.0) tmp += phong_term(f, lay_n, ls.dir, ray.dir, pig.rgb, lc);
+                if (f.specular > 0.0)
+                    tmp += specular_term(f, lay_n, ls.dir, ray.dir, pig.rgb, lc);
+            }
         }
+        result += tmp * fil_col;
+
+        // New filter color and remaining translucency.
+        if (colour_found) {
+            fil_col *= rgb_transm(pig);
+            if (f.conserve_energy && f.reflects()) {
+                fil_col *= Color(std::min(1.0, 1.0 - reflec.r), std::min(1.0, 1.0 - reflec.g),
+                                 std::min(1.0, 1.0 - reflec.b));
+            }
+        }
+        trans = std::min(1.0, std::fabs(greyscale(fil_col)));
     }
-    double trans = std::min(1.0, std::fabs(greyscale(fil_col)));
 
     bool tir = false;
     if (trans > adc_bailout_ && features_.secondary_rays()) {
         double w1 = std::max(std::fabs(fil_col.r), std::max(std::fabs(fil_col.g),
                                                             std::fabs(fil_col.b)));
         Color rfr;
-        tir = refract(ray, hit, n, weight * w1, state, &rfr);
+        tir = refract(ray, hit, top_normal, n, weight * w1, state, &rfr);
         Color att_col(1.0);
         const scene::Interior& interior = mat.interior;
         if (state.interiors.contains(hit.object) && std::fabs(interior.fade_distance) > kPovEpsilon)
             att_col = fade(interior, hit.t);
-        if (tir || !colour_found)
+        if (tir || !one_colour_found)
             result += att_col * rfr;
         else
             result += att_col * rfr * fil_col;
     }
 
-    // Reflection; after total internal reflection the mirror ray was already traced.
-    if (!tir && !reflec.is_black()) {
-        Color rfl = reflect(ray, hit, n, refl_weight, state);
-        if (f.reflect_exponent != 1.0) {
-            rfl = Color(std::pow(rfl.r, f.reflect_exponent), std::pow(rfl.g, f.reflect_exponent),
-                        std::pow(rfl.b, f.reflect_exponent));
+    // Reflection per layer, with that layer's normal; after total internal reflection the
+    // mirror ray about the top normal was already traced.
+    for (int i = 0; i < used; ++i) {
+        const LayerReflection& r = refl[i];
+        if (tir && std::fabs(top_normal.x - r.normal.x) <= kPovEpsilon &&
+            std::fabs(top_normal.y - r.normal.y) <= kPovEpsilon &&
+            std::fabs(top_normal.z - r.normal.z) <= kPovEpsilon)
+            continue;
+        if (r.reflec.is_black()) continue;
+        Color rfl = reflect(ray, hit, r.normal, n, r.weight, state);
+        if (r.exponent != 1.0) {
+            rfl = Color(std::pow(rfl.r, r.exponent), std::pow(rfl.g, r.exponent),
+                        std::pow(rfl.b, r.exponent));
         }
-        result += reflec * rfl;
+        result += r.reflec * rfl;
     }
     return result;
 }
 
-Color Whitted::reflect(const Ray& ray, const Hit& hit, const Vec3& n, double weight,
-                       const RayState& state) const {
-    // ComputeReflection: mirror about the (unperturbed) normal.
+const ClassicFinish& Whitted::finish_for(const scene::Finish& f, int material) const {
+    if (&f == &scene_.materials[material].texture.finish) return finishes_[material];
+    auto it = layer_finishes_.find(&f);
+    return it != layer_finishes_.end() ? it->second : finishes_[material];
+}
+
+Color Whitted::reflect(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3& raw_n,
+                       double weight, const RayState& state) const {
+    // ComputeReflection: mirror about the (perturbed) normal; a mirror ray that would enter
+    // the surface is corrected with the raw normal.
     Vec3 d = ray.dir + n * (-2.0 * dot(ray.dir, n));
+    if (dot(d, raw_n) < 0.0) {
+        if (dot(d, n) < 0.0)
+            d = ray.dir + raw_n * (-2.0 * dot(ray.dir, raw_n));
+        else
+            d = d + raw_n * (-2.0 * dot(d, raw_n));
+    }
     d = normalize(d);
     Ray r;
     r.dir = d;
@@ -307,8 +447,8 @@ Color Whitted::reflect(const Ray& ray, const Hit& hit, const Vec3& n, double wei
     return trace(r, weight, next, false);
 }
 
-bool Whitted::refract(const Ray& ray, const Hit& hit, const Vec3& n, double weight,
-                      const RayState& state, Color* out) const {
+bool Whitted::refract(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3& raw_n,
+                      double weight, const RayState& state, Color* out) const {
     const double ior_obj = scene_.materials[hit.material].interior.ior;
     RayState next = state;
     next.primary = false;
@@ -338,15 +478,22 @@ bool Whitted::refract(const Ray& ray, const Hit& hit, const Vec3& n, double weig
         *out = trace(r, weight, next, true);
         return false;
     }
-    // TraceRefractionRay (Heckbert's method); n faces the incoming ray.
-    double c = -dot(ray.dir, n);
+    // TraceRefractionRay (Heckbert's method) with the normal turned against the ray (a
+    // perturbed normal may not be).
+    double c = dot(ray.dir, n);
+    Vec3 local_n = n;
+    if (c <= 0.0) {
+        c = -c;
+    } else {
+        local_n = -n;
+    }
     double t = 1.0 + ior * ior * (c * c - 1.0);
     if (t < 0.0) {
-        *out = reflect(ray, hit, n, weight, state);
+        *out = reflect(ray, hit, n, raw_n, weight, state);
         return true;
     }
     t = ior * c - std::sqrt(t);
-    r.dir = normalize(ray.dir * ior + n * t);
+    r.dir = normalize(ray.dir * ior + local_n * t);
     r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
     *out = trace(r, weight, next, false);
     return false;
@@ -373,10 +520,7 @@ Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls
             if (hit.material < 0 || opaque_[hit.material]) return Color();
             // ComputeShadowColour / ComputeShadowTexture.
             const scene::Material& mat = scene_.materials[hit.material];
-            ColorFT pig;
-            Color filter(1.0);
-            if (pigments_.evaluate(mat.texture.pigment, pattern_point(hit), &pig))
-                filter = rgb_transm(pig);
+            Color filter = shadow_texture(mat.texture, pattern_point(hit));
             const scene::Interior& interior = mat.interior;
             if (inside.contains(hit.object) && interior.fade_power > 0.0 &&
                 std::fabs(interior.fade_distance) > kPovEpsilon) {
@@ -395,6 +539,42 @@ Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls
         if (dot(r.dir, ls.dir) <= 0.0) return colour;
     }
     return colour;
+}
+
+Color Whitted::shadow_texture(const scene::Texture& tex, const PatternPoint& at) const {
+    if (tex.kind == scene::PatternKind::Plain) {
+        // Every layer filters the light (ComputeShadowTexture).
+        Color filter(1.0);
+        ColorFT pig;
+        if (pigments_.evaluate(tex.pigment, at, &pig)) filter *= rgb_transm(pig);
+        for (const scene::Texture& l : tex.layers)
+            if (pigments_.evaluate(l.pigment, at, &pig)) filter *= rgb_transm(pig);
+        return filter;
+    }
+    Vec3 p = at.p;
+    if (tex.uv_mapping && at.has_uv) p = Vec3(at.uv.x, at.uv.y, 0);
+    const scene::PatternParams& pp = tex.params;
+    const Vec3 local = tex.transform.is_identity() ? p : tex.transform.inverse_point(p);
+    const PatternPoint sub{pp.warps.empty() ? local : warp_point(tex.kind, pp, local), at.uv,
+                           at.has_uv};
+    if (tex.kind == scene::PatternKind::Average) {
+        Color sum;
+        double total = 0;
+        for (const scene::TextureMapEntry& e : tex.texture_map) {
+            sum += shadow_texture(e.texture[0], sub) * e.value;
+            total += e.value;
+        }
+        return sum / total;
+    }
+    const double value = evaluate_pattern(tex.kind, pp, local, pigments_.context());
+    if (is_block_pattern(tex.kind))
+        return shadow_texture(tex.entries[block_index(value, tex.entries.size())], sub);
+    BlendPick b = search_blend_map(tex.texture_map, value);
+    Color c = shadow_texture(tex.texture_map[b.cur].texture[0], sub);
+    if (b.prev != b.cur)
+        c = c * b.fraction + shadow_texture(tex.texture_map[b.prev].texture[0], sub) *
+                                 (1.0 - b.fraction);
+    return c;
 }
 
 Color Whitted::sky(const Vec3& dir) const {

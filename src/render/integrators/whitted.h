@@ -3,6 +3,7 @@
 // per-ray function the tile driver calls. Prepared once per render; read-only while rendering.
 #pragma once
 
+#include <unordered_map>
 #include <vector>
 
 #include "render/geometry.h"
@@ -52,12 +53,30 @@ private:
     Color trace(const Ray& ray, double weight, const RayState& state, bool continued) const;
     bool find_hit(const Ray& ray, const RayState& state, Hit* hit) const;
     Color shade(const Ray& ray, const Hit& hit, double weight, const RayState& state) const;
+    // The patterned textures a hit point was routed through (POV-Ray's texture warps list):
+    // their transforms carry perturbed normals into and out of their pattern space.
+    struct TextureStack {
+        static constexpr int kMax = 8;
+        const scene::Texture* texture[kMax];
+        int count = 0;
+    };
+    Color texture_colour(const Ray& ray, const Hit& hit, const scene::Texture& tex,
+                         const PatternPoint& at, const Vec3& n, double weight,
+                         const RayState& state, TextureStack stack) const;
+    Color lighted_texture(const Ray& ray, const Hit& hit, const scene::Texture& tex,
+                          const PatternPoint& at, const Vec3& n, double weight,
+                          const RayState& state, const TextureStack& stack) const;
+    Vec3 layer_normal(const scene::Normal& normal, const PatternPoint& at, const Vec3& n,
+                      const TextureStack& stack) const;
+    Color shadow_texture(const scene::Texture& tex, const PatternPoint& at) const;
+    const ClassicFinish& finish_for(const scene::Finish& f, int material) const;
     Color shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls,
                         const RayState& eye) const;
-    Color reflect(const Ray& ray, const Hit& hit, const Vec3& n, double weight,
+    // `n` is the (perturbed) normal, `raw_n` the surface normal facing the ray.
+    Color reflect(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3& raw_n, double weight,
                   const RayState& state) const;
     // Returns true on total internal reflection.
-    bool refract(const Ray& ray, const Hit& hit, const Vec3& n, double weight,
+    bool refract(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3& raw_n, double weight,
                  const RayState& state, Color* out) const;
     Color sky(const Vec3& dir) const;
     bool hollow(const RayState& state) const;
@@ -71,6 +90,8 @@ private:
     Atmosphere atmosphere_;  // fog and rainbow
     std::vector<PreparedLight> lights_;
     std::vector<ClassicFinish> finishes_;
+    // Finishes of layers and texture map entries (keyed by the IR finish they come from).
+    std::unordered_map<const scene::Finish*, ClassicFinish> layer_finishes_;
     std::vector<bool> opaque_;  // per material: the pigment can never let light through
     int max_level_;
     double adc_bailout_;

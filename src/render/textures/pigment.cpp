@@ -8,25 +8,7 @@ namespace glint::render {
 namespace {
 
 using scene::ColorFT;
-
-double checker_value(const Vec3& p) {
-    // pattern.cpp checker_pattern: parity of the summed floors, nudged by EPSILON.
-    long long v = static_cast<long long>(std::floor(p.x + kPovEpsilon) +
-                                         std::floor(p.y + kPovEpsilon) +
-                                         std::floor(p.z + kPovEpsilon));
-    return (v & 1) ? 1.0 : 0.0;
-}
-
-double gradient_value(const Vec3& p, const Vec3& axis) {
-    // pattern.cpp gradient_pattern: values above 1 wrap; negative ones are wrapped later.
-    double r = dot(p, axis);
-    return r > 1.0 ? std::fmod(r, 1.0) : r;
-}
-
-double triangle_wave(double v) {
-    double offset = v - std::floor(v);
-    return offset >= 0.5 ? 2.0 * (1.0 - offset) : 2.0 * offset;
-}
+using scene::PatternKind;
 
 // POV-Ray's wrap(): v modulo m in [0, m).
 double wrap(double v, double m) {
@@ -36,59 +18,51 @@ double wrap(double v, double m) {
     return r;
 }
 
-// Search_Blend_Map + interpolation for color maps (texture.cpp, pigment.cpp).
 ColorFT lookup_color_map(const std::vector<scene::ColorMapEntry>& map, double value) {
     if (map.empty()) return ColorFT{};
-    const scene::ColorMapEntry* prev;
-    const scene::ColorMapEntry* cur;
-    size_t last = map.size() - 1;
-    if (value >= map[last].value) {
-        prev = cur = &map[last];
-    } else {
-        size_t i = 0;
-        prev = cur = &map[0];
-        while (value > map[i].value) {
-            prev = &map[i];
-            ++i;
-            cur = &map[i];
-        }
-        if (value == cur->value) prev = cur;
-    }
-    if (prev == cur) return cur->color;
-    double f = (value - prev->value) / (cur->value - prev->value);
-    return scene::lerp(prev->color, cur->color, f);
+    BlendPick b = search_blend_map(map, value);
+    if (b.prev == b.cur) return map[b.cur].color;
+    return scene::lerp(map[b.prev].color, map[b.cur].color, b.fraction);
+}
+
+std::vector<scene::ColorMapEntry> make_map(
+    std::initializer_list<std::pair<double, Color>> entries) {
+    std::vector<scene::ColorMapEntry> m;
+    for (const auto& [v, c] : entries) m.push_back({v, ColorFT(c)});
+    return m;
 }
 
 }  // namespace
 
-const std::vector<scene::ColorMapEntry>& default_color_map() {
-    static const std::vector<scene::ColorMapEntry> kMap = {
-        {0.0, ColorFT(Color(0, 0, 0))},
-        {1.0, ColorFT(Color(1, 1, 1))},
-    };
-    return kMap;
+const std::vector<scene::ColorMapEntry>& default_color_map(PatternKind kind) {
+    // pigment.cpp's default maps (Post_Pigment).
+    static const auto kGray = make_map({{0.0, {0, 0, 0}}, {1.0, {1, 1, 1}}});
+    static const auto kBozo = make_map({{0.4, {1, 1, 1}}, {0.4, {0, 1, 0}}, {0.6, {0, 1, 0}},
+                                        {0.6, {0, 0, 1}}, {0.8, {0, 0, 1}}, {0.8, {1, 0, 0}}});
+    static const auto kWood = make_map({{0.6, {0.666, 0.312, 0.2}}, {0.6, {0.4, 0.1333, 0.066}}});
+    static const auto kMandel = make_map({{0.001, {0, 0, 0}}, {0.001, {0, 1, 1}},
+                                          {0.012, {1, 1, 0}}, {0.015, {1, 0, 1}},
+                                          {0.1, {0, 1, 1}}});
+    static const auto kAgate = make_map({{0.0, {1, 1, 1}}, {0.5, {0.95, 0.75, 0.5}},
+                                         {0.5, {0.9, 0.7, 0.5}}, {0.6, {0.9, 0.7, 0.4}},
+                                         {0.6, {1.0, 0.7, 0.4}}, {1.0, {0.6, 0.3, 0.0}}});
+    static const auto kRadial = make_map(
+        {{0.0, {0, 1, 1}}, {0.333, {1, 1, 0}}, {0.666, {1, 0, 1}}, {1.0, {0, 1, 1}}});
+    static const auto kMarble =
+        make_map({{0.0, {0.9, 0.8, 0.8}}, {0.9, {0.9, 0.08, 0.08}}, {0.9, {0, 0, 0}}});
+    switch (kind) {
+        case PatternKind::Bozo: return kBozo;
+        case PatternKind::Wood: return kWood;
+        case PatternKind::Mandel: return kMandel;
+        case PatternKind::Agate: return kAgate;
+        case PatternKind::Radial: return kRadial;
+        case PatternKind::Marble: return kMarble;
+        default: return kGray;
+    }
 }
 
-double PigmentEvaluator::pattern_value(const scene::Pigment& pigment, const Vec3& local) {
-    const scene::PatternParams& pp = pigment.params;
-    double value = 0;
-    switch (pigment.kind) {
-        case scene::PatternKind::Checker: value = checker_value(local); break;
-        case scene::PatternKind::Gradient: value = gradient_value(local, pp.vector); break;
-        default: return 0;
-    }
-    // Evaluate_TPat: frequency/phase (with POV-Ray's 1.00001 modulus), then the wave type.
-    if (pp.frequency != 0.0) value = std::fmod(value * pp.frequency + pp.phase, 1.00001);
-    if (value < 0.0) value -= std::floor(value);
-    switch (pp.wave) {
-        case scene::WaveType::Ramp: break;
-        case scene::WaveType::Sine: value = (1.0 + std::sin(value * 2 * kPi)) * 0.5; break;
-        case scene::WaveType::Triangle: value = triangle_wave(value); break;
-        case scene::WaveType::Scallop: value = std::fabs(std::sin(value * 0.5 * 2 * kPi)); break;
-        case scene::WaveType::Cubic: value = value * value * (-2.0 * value + 3.0); break;
-        case scene::WaveType::Poly: value = std::pow(value, pp.wave_exponent); break;
-    }
-    return value;
+double PigmentEvaluator::pattern_value(const scene::Pigment& pigment, const Vec3& local) const {
+    return evaluate_pattern(pigment.kind, pigment.params, local, ctx_);
 }
 
 bool PigmentEvaluator::evaluate(const scene::Pigment& pigment, const PatternPoint& at,
@@ -106,46 +80,72 @@ bool PigmentEvaluator::evaluate(const scene::Pigment& pigment, const PatternPoin
 
 bool PigmentEvaluator::eval(const scene::Pigment& pigment, const Vec3& parent,
                             ColorFT* out) const {
-    // Warp_EPoint: the pattern's own transform, applied inversely to the point.
+    // Warp_EPoint: the pattern's own transform, applied inversely to the point; map and block
+    // entries are evaluated in the warped pattern space (their transforms are relative).
+    const scene::PatternParams& pp = pigment.params;
     Vec3 local = pigment.transform.is_identity() ? parent
                                                  : pigment.transform.inverse_point(parent);
     switch (pigment.kind) {
-        case scene::PatternKind::Plain:
+        case PatternKind::Plain:
             *out = pigment.color;
             return true;
-        case scene::PatternKind::ImageMap:
-            return image_map(pigment, local, out);
-        case scene::PatternKind::Checker: {
-            double v = pattern_value(pigment, local);
-            if (pigment.entries.size() >= 2) {
-                // Block pattern map: entry 0 at value 0, entry 1 at value 1; no blending
-                // between them for the values 0 and 1 a checker produces.
-                // Entry transforms are absolute (entry pattern -> world, the importer has
-                // composed the parent's), so entries see the same point as their parent.
-                const scene::Pigment& e = pigment.entries[v >= 1.0 ? 1 : 0];
-                bool found = eval(e, parent, out);
-                if (v > 0.0 && v < 1.0) {
-                    ColorFT other;
-                    found |= eval(pigment.entries[0], parent, &other);
-                    *out = scene::lerp(other, *out, v);
-                }
-                return found;
+        case PatternKind::ImageMap:
+            return image_map(pigment, pp.warps.empty() ? local : warp_point(pigment.kind, pp, local),
+                             out);
+        case PatternKind::Average: {
+            // Do_Average_Pigments: weights need not sum to 1.
+            Vec3 tp = pp.warps.empty() ? local : warp_point(pigment.kind, pp, local);
+            ColorFT sum;
+            double total = 0;
+            for (const scene::PigmentMapEntry& e : pigment.pigment_map) {
+                ColorFT c;
+                eval(e.pigment[0], tp, &c);
+                sum = sum + c * e.value;
+                total += e.value;
             }
-            // Check_Default_Map: blue and green.
-            static const std::vector<scene::ColorMapEntry> kCheckDefault = {
-                {0.0, ColorFT(Color(0, 0, 1))}, {1.0, ColorFT(Color(0, 1, 0))}};
-            *out = lookup_color_map(kCheckDefault, v);
+            *out = sum * (1.0 / total);
             return true;
         }
-        case scene::PatternKind::Gradient: {
-            double v = pattern_value(pigment, local);
-            const auto& map = pigment.color_map.empty() ? default_color_map() : pigment.color_map;
-            *out = lookup_color_map(map, v);
-            return true;
-        }
+        case PatternKind::Function:
+            throw Error(ErrorKind::Render, pigment.loc,
+                        "function patterns are not supported by the renderer");
         default: break;
     }
-    throw Error(ErrorKind::Render, pigment.loc, "pigment pattern not supported by the renderer");
+    const double value = evaluate_pattern(pigment.kind, pp, local, ctx_);
+    if (is_block_pattern(pigment.kind)) {
+        if (pigment.entries.empty()) {
+            // An IR pigment without entries: POV-Ray's default map (checker: blue, green).
+            static const Color kDefault[] = {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}};
+            *out = ColorFT(kDefault[block_index(value, 4)]);
+            return true;
+        }
+        const scene::Pigment& e = pigment.entries[block_index(value, pigment.entries.size())];
+        if (e.kind == PatternKind::Plain) {
+            *out = e.color;
+            return true;
+        }
+        return eval(e, pp.warps.empty() ? local : warp_point(pigment.kind, pp, local), out);
+    }
+    if (pigment.pigment_map.empty()) {
+        const bool own_map = !pigment.color_map.empty();
+        const bool mandel2 = pigment.kind != PatternKind::Mandel || pp.fractal_exponent == 2;
+        const auto& map = own_map  ? pigment.color_map
+                          : mandel2 ? default_color_map(pigment.kind)
+                                    : default_color_map(PatternKind::Gradient);
+        *out = lookup_color_map(map, value);
+        return true;
+    }
+    // pigment_map: the two entries around the value, each in the warped pattern space.
+    const auto& map = pigment.pigment_map;
+    BlendPick b = search_blend_map(map, value);
+    Vec3 tp = pp.warps.empty() ? local : warp_point(pigment.kind, pp, local);
+    bool found = eval(map[b.cur].pigment[0], tp, out);
+    if (b.prev != b.cur) {
+        ColorFT prev;
+        found |= eval(map[b.prev].pigment[0], tp, &prev);
+        *out = scene::lerp(prev, *out, b.fraction);
+    }
+    return found;
 }
 
 bool PigmentEvaluator::image_map(const scene::Pigment& pigment, const Vec3& q,

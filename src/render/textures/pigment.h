@@ -1,9 +1,11 @@
 // Pigment evaluation: POV-Ray 3.7's Compute_Pigment (texture/pigment.cpp, pattern/pattern.cpp,
-// support/imageutil.cpp) for plain colors, checker, gradient with color_map and image_map.
-// Used by the Whitted integrator for surfaces, shadow rays and the sky sphere.
+// support/imageutil.cpp): plain colors, every pattern of render/textures/pattern.h with its
+// color_map (or POV-Ray's default map), pigment_map, block-pattern entries, average and
+// image_map. Used by the Whitted integrator for surfaces, shadow rays and the sky sphere.
 #pragma once
 
 #include "render/textures/image_texture.h"
+#include "render/textures/pattern.h"
 #include "scene/texture.h"
 
 namespace glint::render {
@@ -19,15 +21,18 @@ struct PatternPoint {
 class PigmentEvaluator {
 public:
     // `textures` may be null when the scene has no image maps.
-    explicit PigmentEvaluator(const TextureCache* textures) : textures_(textures) {}
+    explicit PigmentEvaluator(const TextureCache* textures, PatternContext ctx = {})
+        : textures_(textures), ctx_(ctx) {}
 
     // Returns false where POV-Ray finds no color (outside an image_map used `once`); `out` is
     // then fully clear, like POV-Ray's <1,1,1,0,1>.
     bool evaluate(const scene::Pigment& pigment, const PatternPoint& at, scene::ColorFT* out) const;
 
-    // Pattern value in [0, 1] of a continuous or block pattern at a pattern-space point,
-    // after frequency, phase and wave shaping (Evaluate_TPat).
-    static double pattern_value(const scene::Pigment& pigment, const Vec3& local);
+    // Pattern value in [0, 1] of a continuous pattern (the entry index of a block pattern) at
+    // a pattern-space point, after warps, frequency, phase and wave shaping (Evaluate_TPat).
+    double pattern_value(const scene::Pigment& pigment, const Vec3& local) const;
+
+    const PatternContext& context() const { return ctx_; }
 
 private:
     // `parent` is the world point (or (u, v, 0) under uv_mapping); every pigment, nested
@@ -36,10 +41,41 @@ private:
     bool image_map(const scene::Pigment& pigment, const Vec3& local, scene::ColorFT* out) const;
 
     const TextureCache* textures_;
+    PatternContext ctx_;
 };
 
-// POV-Ray's default color_map for patterns without one (pigment.cpp Gray_Default_Map):
-// black at 0 to white at 1.
-const std::vector<scene::ColorMapEntry>& default_color_map();
+// POV-Ray's Search_Blend_Map over map values: the entries around `value` (the same one when
+// it is outside the map or exactly on an entry) and the fraction between them.
+struct BlendPick {
+    size_t prev = 0, cur = 0;
+    double fraction = 0;
+};
+template <class Entry>
+BlendPick search_blend_map(const std::vector<Entry>& map, double value) {
+    BlendPick b;
+    const size_t last = map.size() - 1;
+    if (value >= map[last].value) {
+        b.prev = b.cur = last;
+    } else {
+        while (value > map[b.cur].value) b.prev = b.cur++;
+    }
+    if (value == map[b.cur].value) b.prev = b.cur;
+    if (b.prev != b.cur)
+        b.fraction = (value - map[b.prev].value) / (map[b.cur].value - map[b.prev].value);
+    return b;
+}
+
+// The entry of a block pattern for its value (an index); out-of-range values clamp.
+inline size_t block_index(double value, size_t count) {
+    if (!(value > 0)) return 0;
+    size_t i = static_cast<size_t>(value);
+    return i >= count ? count - 1 : i;
+}
+
+// POV-Ray's default color_map for patterns without one (pigment.cpp Post_Pigment): bozo,
+// wood, mandel, radial, agate and marble have their own; the rest Gray_Default_Map, black at 0
+// to white at 1.
+const std::vector<scene::ColorMapEntry>& default_color_map(
+    scene::PatternKind kind = scene::PatternKind::Gradient);
 
 }  // namespace glint::render
