@@ -116,3 +116,20 @@ TEST(PovUnsupported, UnterminatedSkippedBlockIsAnError) {
                   "expected '}' to close the isosurface opened at 1:12, got the end of the file");
     }
 }
+
+TEST(PovUnsupported, FinishFeatures) {
+    Parsed p = parse_warn(
+        "sphere { 0, 1 finish { diffuse albedo 0.6, 0.2 irid { 0.3 thickness 0.2 }\n"
+        "  subsurface { translucency 0.5 } ior 1.5 phong 0.5 } }\n");
+    ASSERT_EQ(p.scene.objects.size(), 1u);
+    const auto& f = p.scene.materials[p.scene.objects[0].material].texture.finish;
+    EXPECT_DOUBLE_EQ(f.diffuse, 0.6);
+    EXPECT_DOUBLE_EQ(f.phong, 0.5);
+    EXPECT_EQ(p.warnings,
+              (std::vector<std::string>{
+                  "2:32: 'albedo' is not supported: ignored",
+                  "2:42: 'diffuse backside illumination' is not supported: ignored",
+                  "2:48: 'irid' is not supported: the finish's irid block is ignored",
+                  "3:3: 'subsurface' is not supported: the finish's subsurface block is ignored",
+                  "3:35: 'finish ior' is not supported: ignored (write it in interior)"}));
+}
