@@ -354,7 +354,7 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
         // Only when every child was left out does the CSG go too; otherwise it keeps the rest.
         if (!po.children.empty()) po.left_out.clear();
     } else if (is_solid_keyword(w)) {
-        parse_solid_body(*this, w, kloc, &po.obj.shape);
+        parse_solid_body(*this, w, kloc, &po.obj.shape, &po.left_out);
     } else if (w == "text") {
         // text { ttf "font.ttf" "string" thickness, <offset> } (parse.cpp Parse_TrueType).
         scene::Text s;

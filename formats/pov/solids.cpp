@@ -7,11 +7,22 @@
 #include <cmath>
 #include <unordered_set>
 
+#include "formats/pov/unsupported.h"
+
 namespace glint::pov {
 
 namespace {
 
 constexpr double kEps = 1e-10;  // POV-Ray's EPSILON for "same point" tests
+
+// A float that may be followed directly by a point list (`4 <1, 2>`): POV-Ray compares only
+// inside parentheses, so a literal number right before '<' is the whole value.
+double parse_float_before_points(Parser& p) {
+    const Token& t = p.next();
+    if (t.kind == TokKind::Number && p.raw_next_is("<")) return t.number;
+    p.unget();
+    return p.parse_float();
+}
 
 Vec2 parse_uv(Parser& p) {
     Num n = p.parse_num(2);
@@ -22,7 +33,7 @@ Vec2 parse_uv(Parser& p) {
 int parse_count(Parser& p, int min, const std::string& too_few) {
     p.peek();
     FileLoc at = p.loc();
-    double v = p.parse_float();
+    double v = parse_float_before_points(p);
     int n = static_cast<int>(v);
     if (n < min) p.fail_at(at, too_few);
     if (n > 10000000) p.fail_at(at, "point count " + std::to_string(n) + " is too large");
@@ -93,7 +104,7 @@ scene::Prism parse_prism(Parser& p, const FileLoc& kw) {
     if (s.height1 > s.height2) std::swap(s.height1, s.height2);
     p.peek();
     FileLoc at = p.loc();
-    int n = static_cast<int>(p.parse_float());
+    int n = static_cast<int>(parse_float_before_points(p));
     switch (s.spline) {
         case SplineType::Linear:
             if (n < 3) p.fail_at(at, "prism needs at least 3 points");
@@ -156,7 +167,7 @@ scene::Lathe parse_lathe(Parser& p) {
     spline_keyword(p, &s.spline);
     p.peek();
     FileLoc at = p.loc();
-    int n = static_cast<int>(p.parse_float());
+    int n = static_cast<int>(parse_float_before_points(p));
     switch (s.spline) {
         case SplineType::Linear:
             if (n < 2) p.fail_at(at, "lathe needs at least 2 points");
@@ -296,12 +307,33 @@ scene::Blob parse_blob(Parser& p, const FileLoc& kw) {
     return b;
 }
 
-scene::HeightField parse_height_field(Parser& p) {
+// Reads over the rest of an object's body, up to (not including) its closing '}'.
+void skip_to_body_end(Parser& p) {
+    int depth = 0;
+    for (;;) {
+        const Token& t = p.next();
+        if (t.kind == TokKind::End || (depth == 0 && t.is_symbol('}'))) {
+            p.unget();
+            return;
+        }
+        if (t.is_symbol('{')) ++depth;
+        if (t.is_symbol('}')) --depth;
+    }
+}
+
+scene::HeightField parse_height_field(Parser& p, std::string* left_out) {
     static const std::unordered_set<std::string> kTypes = {
         "gif", "tga", "iff", "pgm", "ppm", "png", "jpeg", "tiff", "sys", "exr", "hdr"};
     scene::HeightField h;
     const Token& t = p.peek();
-    if (t.is("function")) p.unsupported("height_field from a function");
+    if (t.is("function") || t.is("pot")) {
+        // Height fields from functions and Fractint .pot files: left out, the render goes on.
+        *left_out = t.is("pot") ? "height_field from a pot file" : "height_field from a function";
+        p.next();
+        warn_unsupported(p, *left_out, p.loc(), "the object is left out");
+        skip_to_body_end(p);
+        return h;
+    }
     if (t.kind == TokKind::Word && kTypes.count(t.text) && !p.lookup(t.text)) p.next();
     p.peek();
     h.file_loc = p.loc();
@@ -336,13 +368,7 @@ scene::Poly parse_poly(Parser& p, const std::string& w) {
         FileLoc at = p.loc();
         // `poly { 4 <...> }` (no comma, as in POV-Ray's primitiv.pov): a literal order right
         // before '<' is not the start of a comparison.
-        const Token& t = p.next();
-        if (t.kind == TokKind::Number && p.raw_next_is("<")) {
-            s.order = static_cast<int>(t.number);
-        } else {
-            p.unget();
-            s.order = static_cast<int>(p.parse_float());
-        }
+        s.order = static_cast<int>(parse_float_before_points(p));
         p.skip_comma();
         if (s.order < 2 || s.order > 35)
             p.fail_at(at, "order of " + w + " is out of range (2 to 35)");
@@ -392,7 +418,8 @@ bool is_solid_keyword(const std::string& w) {
     return k.count(w) > 0;
 }
 
-void parse_solid_body(Parser& p, const std::string& w, const FileLoc& kw, scene::Shape* out) {
+void parse_solid_body(Parser& p, const std::string& w, const FileLoc& kw, scene::Shape* out,
+                      std::string* left_out) {
     if (w == "quadric") *out = parse_quadric(p);
     else if (w == "polygon") *out = parse_polygon(p, kw);
     else if (w == "prism") *out = parse_prism(p, kw);
@@ -400,7 +427,7 @@ void parse_solid_body(Parser& p, const std::string& w, const FileLoc& kw, scene:
     else if (w == "sor") *out = parse_sor(p);
     else if (w == "superellipsoid") *out = parse_superellipsoid(p);
     else if (w == "blob") *out = parse_blob(p, kw);
-    else if (w == "height_field") *out = parse_height_field(p);
+    else if (w == "height_field") *out = parse_height_field(p, left_out);
     else *out = parse_poly(p, w);
 }
 

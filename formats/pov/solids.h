@@ -12,7 +12,10 @@ namespace glint::pov {
 
 bool is_solid_keyword(const std::string& word);
 
-// Parses the body of the solid named `word` into `out`. `kw`: the keyword's location.
-void parse_solid_body(Parser& p, const std::string& word, const FileLoc& kw, scene::Shape* out);
+// Parses the body of the solid named `word` into `out`. `kw`: the keyword's location. A body
+// glint cannot render (a height_field from a function) is read over with a warning and named
+// in `left_out`, which makes the caller drop the object.
+void parse_solid_body(Parser& p, const std::string& word, const FileLoc& kw, scene::Shape* out,
+                      std::string* left_out);
 
 }  // namespace glint::pov

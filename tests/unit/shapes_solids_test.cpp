@@ -329,8 +329,11 @@ TEST(SolidsParser, BodiesIntoTheIr) {
         "prism { 0, 1, 3, <0,0>, <1,0>, <0,1> }\n"
         "blob { threshold 0.4 sphere { <1,0,0>, 2, strength 3 scale 2 } "
         "cylinder { 0, y, 1, -1 } component 1, 2, <0,1,0> }\n"
-        "polynomial { 2, xyz(2,0,0): 1, xyz(0,0,0): -1 }");
-    ASSERT_EQ(sc.objects.size(), 4u);
+        "polynomial { 2, xyz(2,0,0): 1, xyz(0,0,0): -1 }\n"
+        "height_field { function 8, 8 { x } translate y }\n"  // left out with a warning
+        "prism { -0.5, 0.5, 4 <-1, -0.3>, <1, 0>, <-1, 0.3>, <-1, -0.3> }");  // no comma
+    ASSERT_EQ(sc.objects.size(), 5u);
+    EXPECT_EQ(std::get<scene::Prism>(sc.objects[4].shape).points.size(), 4u);
     const auto& p = std::get<scene::Prism>(sc.objects[0].shape);
     EXPECT_TRUE(p.conic);
     EXPECT_TRUE(p.open);
