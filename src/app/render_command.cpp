@@ -130,7 +130,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
     add_scene_options(*cmd, args.scene, /*scene_required=*/false);
     cmd->add_option("-o,--output", args.output,
                     "Output image; format from the extension: png, exr, tif, hdr, jpg "
-                    "(default: the scene's name with .png, as POV-Ray names it)");
+                    "(with POV-Ray options it may be left out: the scene's name with .png, as "
+                    "POV-Ray names it)");
     cmd->add_option("--aa", args.aa, "Anti-aliasing: none, adaptive[:T] (POV-Ray +A), grid:N")
         ->capture_default_str();
     cmd->add_option("--threads", args.threads, "Worker threads (0: all hardware threads)")
