@@ -130,6 +130,19 @@ TEST(ParserFunction, NoiseAndVturbulence) {
     EXPECT_LT(length(c), 3);
 }
 
+TEST(ParserFunction, FunctionPatternInPigment) {
+    auto s = parse(
+        "#declare F = function { x * 0.5 }\n"
+        "sphere { 0, 1 pigment { function { F(x, y, z) + 0.25 } color_map { [0 rgb 0] [1 rgb 1] } } }\n");
+    const auto& pig = s.materials.at(static_cast<size_t>(s.objects[0].material)).texture.pigment;
+    EXPECT_EQ(pig.kind, scene::PatternKind::Function);
+    ASSERT_EQ(pig.params.function, 1);
+    scene::FunctionEnv env;
+    env.functions = &s.functions;
+    double p[3] = {1, 0, 0};
+    EXPECT_DOUBLE_EQ(scene::evaluate_function(env, 1, p, 3), 0.75);
+}
+
 TEST(ParserFunction, Errors) {
     EXPECT_EQ(error_of("#declare F = function { x + Nope }"),
               "1:29: unknown identifier 'Nope' in the function (a function must be declared "
