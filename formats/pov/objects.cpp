@@ -363,7 +363,17 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
         peek();
         FileLoc floc = loc();
         s.file = parse_string();
-        s.font = resolve_file(s.file, floc);
+        // Like POV-Ray's Locate_File, a name without its extension also finds "name.ttf".
+        try {
+            s.font = resolve_file(s.file, floc);
+        } catch (const Error& e) {
+            if (e.kind() != ErrorKind::MissingFile) throw;
+            try {
+                s.font = resolve_file(s.file + ".ttf", floc);
+            } catch (const Error&) {
+                throw e;
+            }
+        }
         skip_comma();
         s.text = parse_string();
         skip_comma();
@@ -477,7 +487,12 @@ void Parser::parse_light_body(scene::Light& l, std::optional<PovObject>* looks_l
             FileLoc lo = loc();
             const Token& ot = next();
             PovObject obj;
-            if (!parse_object(ot, obj)) fail("expected an object in looks_like, got " + got(ot));
+            const Symbol* sym = ot.kind == TokKind::Word ? lookup(ot.text) : nullptr;
+            if (sym && std::holds_alternative<std::shared_ptr<const PovObject>>(sym->value)) {
+                obj = *std::get<std::shared_ptr<const PovObject>>(use_symbol(ot).value);
+            } else if (!parse_object(ot, obj)) {
+                fail("expected an object in looks_like, got " + got(ot));
+            }
             apply_transform(obj, Transform::translate(l.location));
             parse_object_mods(obj, "looks_like", lo);
             obj.obj.no_shadow = true;
