@@ -25,8 +25,9 @@ constexpr double kOffset = 0.001;  // HFIELD_OFFSET: the box is this much taller
 
 class HeightFieldPrim final : public Primitive {
 public:
-    HeightFieldPrim(int w, int h, std::vector<uint16_t> map, bool smooth, double water)
-        : w_(w), h_(h), map_(std::move(map)), smooth_(smooth) {
+    HeightFieldPrim(int w, int h, std::vector<uint16_t> map, bool smooth, double water,
+                    const Transform& shading)
+        : w_(w), h_(h), map_(std::move(map)), smooth_(smooth), shading_(shading) {
         int lo = 65535, hi = 0;
         for (uint16_t v : map_) lo = std::min<int>(lo, v), hi = std::max<int>(hi, v);
         ylo_ = std::max(static_cast<double>(lo), 65536.0 * water) - kOffset;
@@ -164,8 +165,12 @@ private:
             double t = dot(N, P - o) / dn;
             if (!(t >= tmin && t <= tmax)) continue;
             double s = o.x + t * d.x - x, u = o.z + t * d.z - z;
-            bool in = tri ? (s <= 1.0001 && u <= 1.0001 && s + u >= 0.9999)
-                          : (s >= -0.0001 && u >= -0.0001 && s + u <= 1.0001);
+            // POV-Ray lets each triangle reach 1e-4 cells past its edges; that much lets a
+            // shadow ray leaving one triangle hit its neighbour's overhang (dark specks on
+            // smooth terrain), so the margin here only closes rounding cracks.
+            constexpr double kMargin = 1e-9;
+            bool in = tri ? (s <= 1 + kMargin && u <= 1 + kMargin && s + u >= 1 - kMargin)
+                          : (s >= -kMargin && u >= -kMargin && s + u <= 1 + kMargin);
             if (!in) continue;
             LocalHit& h = hits->emplace_back();
             h.t = t;
@@ -214,16 +219,23 @@ private:
         int px = std::clamp(static_cast<int>(p.x), 0, w_ - 2);
         int pz = std::clamp(static_cast<int>(p.z), 0, h_ - 2);
         double x = p.x - px, z = p.z - pz;
-        auto n = [&](int i, int k) { return normals_[static_cast<size_t>(pz + k) * w_ + px + i]; };
+        // POV-Ray normalizes the corner normals in world space before blending them.
+        auto n = [&](int i, int k) {
+            Vec3 c = shading_.normal(normals_[static_cast<size_t>(pz + k) * w_ + px + i]);
+            double l = length(c);
+            return l > 0 ? c / l : c;
+        };
         Vec3 r = (n(0, 0) * (1 - x) + n(1, 0) * x) * (1 - z) + (n(0, 1) * (1 - x) + n(1, 1) * x) * z;
+        r = shading_.inverse().normal(r);
         double l = length(r);
-        return l > 0 ? r / l : Vec3(0, 1, 0);
+        return l > 0 && std::isfinite(l) ? r / l : Vec3(0, 1, 0);
     }
 
     int w_, h_;
     std::vector<uint16_t> map_;  // row z = 0 is the image's bottom row
     std::vector<Vec3> normals_;
     bool smooth_;
+    Transform shading_;  // object space -> the space smooth normals are blended in
     double ylo_, yhi_, sx_, sz_;
 };
 
@@ -261,7 +273,7 @@ std::vector<std::array<uint8_t, 3>> read_palette(const std::string& path) {
 }  // namespace
 
 std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const FileLoc& loc,
-                                             const char** why) {
+                                             const Transform& shading, const char** why) {
     const std::string& path = s.resolved_path.empty() ? s.file : s.resolved_path;
     FileLoc at = s.file_loc.line > 0 ? s.file_loc : loc;
     auto in = OIIO::ImageInput::open(path);
@@ -320,7 +332,8 @@ std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const 
                 static_cast<uint16_t>(std::clamp(v, 0.0, 65535.0));
         }
     }
-    return std::make_unique<HeightFieldPrim>(w, h, std::move(map), s.smooth, s.water_level);
+    return std::make_unique<HeightFieldPrim>(w, h, std::move(map), s.smooth, s.water_level,
+                                             shading);
 }
 
 }  // namespace glint::render

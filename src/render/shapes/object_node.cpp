@@ -116,7 +116,7 @@ struct Builder {
                 } else if constexpr (std::is_same_v<T, scene::Blob>) {
                     p = make_blob(s, &why);
                 } else if constexpr (std::is_same_v<T, scene::HeightField>) {
-                    p = make_height_field(s, obj.loc, &why);
+                    p = make_height_field(s, obj.loc, obj.transform, &why);
                 } else if constexpr (std::is_same_v<T, scene::Poly>) {
                     p = make_poly(s, &why);
                 }

@@ -33,8 +33,9 @@ std::unique_ptr<Primitive> make_lathe(const scene::Lathe& s, const char** why);
 std::unique_ptr<Primitive> make_sor(const scene::Sor& s, const char** why);
 std::unique_ptr<Primitive> make_superellipsoid(const scene::Superellipsoid& s, const char** why);
 std::unique_ptr<Primitive> make_blob(const scene::Blob& s, const char** why);
+// `shading`: the object's transform, in whose space POV-Ray blends smooth normals.
 std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const FileLoc& loc,
-                                             const char** why);
+                                             const Transform& shading, const char** why);
 std::unique_ptr<Primitive> make_poly(const scene::Poly& s, const char** why);
 
 }  // namespace glint::render
