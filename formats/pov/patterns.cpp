@@ -417,11 +417,10 @@ std::vector<scene::ColorMapEntry> Parser::parse_color_map_body() {
         FileLoc o = loc();
         double v1 = parse_float();
         bool old_syntax = false;
-        if (accept(",")) {
-            // `[v1, v2 color c1 color c2]` (old) or `[v, color]` (a comma before the color).
-            const Token& n = peek();
-            old_syntax = n.kind == TokKind::Number || n.is("-") || n.is("+");
-        }
+        // `[v1, v2 color c1 color c2]` (old, the comma optional) or `[v, color]`.
+        skip_comma();
+        const Token& n = peek();
+        old_syntax = n.kind == TokKind::Number || n.is("-") || n.is("+");
         if (old_syntax) {
             double v2 = parse_float();
             scene::ColorFT c1 = parse_color();

@@ -106,9 +106,6 @@ bool PigmentEvaluator::eval(const scene::Pigment& pigment, const Vec3& parent,
             *out = sum * (1.0 / total);
             return true;
         }
-        case PatternKind::Function:
-            throw Error(ErrorKind::Render, pigment.loc,
-                        "function patterns are not supported by the renderer");
         default: break;
     }
     const double value = evaluate_pattern(pigment.kind, pp, local, ctx_);
