@@ -45,9 +45,10 @@ struct Turbulence {
 };
 
 // POV-Ray's warps (backend/pattern/warps.h), applied in list order to the pattern-space point
-// before the pattern function. `turbulence`/`octaves`/`omega`/`lambda` written directly in a
-// pattern make (or modify) a ClassicTurbulence warp at the front of the list, as POV-Ray's
-// Check_Turb does; agate, marble, spiral1/2 and wood apply classic turbulence inside the
+// (after the pattern's own `transform`) before the pattern function. A `warp { }` block goes in
+// front (POV-Ray prepends it, so the pattern's transform so far becomes a Transform warp behind
+// it); `turbulence`/`octaves`/`omega`/`lambda` written directly in a pattern make (or modify) a
+// ClassicTurbulence warp at the end of the list, as POV-Ray's Check_Turb does; agate, marble, spiral1/2 and wood apply classic turbulence inside the
 // pattern function instead, the others through the warp.
 enum class WarpKind {
     ClassicTurbulence,  // turbulence written in the pattern
