@@ -860,6 +860,25 @@ TEST(Pattern, WarpTransformAndRepeat) {
     EXPECT_NEAR(evaluate_pattern(PatternKind::Gradient, rep, Vec3(1.1, 0, 0), ctx), 0.1, 1e-12);
 }
 
+TEST(Pattern, HugeAndNonFiniteCoordinatesStayDefined) {
+    // POV-Ray converts cell coordinates with (int) casts, undefined past the int range; the
+    // block tables must never be indexed out of range there.
+    const PatternContext ctx;
+    PatternParams pp;
+    const double big = 1e30, nan = std::nan("");
+    const Vec3 points[] = {{big, -big, big}, {-big, 3, big}, {nan, 0, 0}, {1e17, 1e17, -1e17}};
+    for (int k = static_cast<int>(PatternKind::Plain); k <= static_cast<int>(PatternKind::Average);
+         ++k) {
+        for (const Vec3& p : points) {
+            double v = evaluate_pattern(static_cast<PatternKind>(k), pp, p, ctx);
+            if (is_block_pattern(static_cast<PatternKind>(k)) && std::isfinite(p.x)) {
+                EXPECT_GE(v, 0.0);
+                EXPECT_LE(v, 5.0);
+            }
+        }
+    }
+}
+
 TEST(Pattern, SpecialNormalWithoutPerturbationKeepsTheNormal) {
     const PatternContext ctx;
     PatternParams pp;

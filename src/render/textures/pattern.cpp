@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "core/noise.h"
 
@@ -43,6 +44,13 @@ double clip_density(double r) {
 
 // POV-Ray's FLOOR macro (texture.h).
 double pov_floor(double x) { return x >= 0.0 ? std::floor(x) : (0.0 - std::floor(0.0 - x) - 1.0); }
+
+// POV-Ray's (int) casts of cell coordinates; x86 turns an out-of-range or NaN value into
+// INT_MIN, which C++ leaves undefined, so that case is spelled out.
+int pov_int(double v) {
+    if (!(v > -2147483649.0 && v < 2147483648.0)) return INT32_MIN;
+    return static_cast<int>(v);
+}
 
 TurbulenceParams turb_params(const scene::Turbulence& t) {
     return TurbulenceParams{t.octaves, t.omega, t.lambda};
@@ -181,7 +189,7 @@ Vec3 warp_repeat(const Warp& w, const Vec3& p) {
     float block = static_cast<float>(std::floor(p[axis] / width));
     Vec3 r = p;
     r[axis] = p[axis] - block * width;
-    if (static_cast<int>(block) & 1) {
+    if (pov_int(block) & 1) {
         // A non-zero flip component mirrors that axis in odd blocks.
         Vec3 flip(w.flip.x != 0.0 ? -1.0 : 1.0, w.flip.y != 0.0 ? -1.0 : 1.0,
                   w.flip.z != 0.0 ? -1.0 : 1.0);
@@ -208,7 +216,7 @@ Vec3 warp_black_hole(const Warp& w, const Vec3& p) {
         }
         int block[3] = {0, 0, 0};
         for (int k = 0; k < 3; ++k)
-            if (cell[k] >= kPovEpsilon) block[k] = static_cast<int>(std::floor(p[k] / cell[k]));
+            if (cell[k] >= kPovEpsilon) block[k] = pov_int(std::floor(p[k] / cell[k]));
         if (uncertainty != Vec3(0, 0, 0)) {
             unsigned seed = static_cast<unsigned>(hash3d(block[0], block[1], block[2]));
             for (int k = 0; k < 3; ++k) center[k] += pattern_random(seed + k) * uncertainty[k];
@@ -285,7 +293,7 @@ double boxed(const Vec3& p) {
 
 // The fractional part as POV-Ray's brick computes it: truncation, then +1 if negative.
 double brick_frac(double v) {
-    double f = v - static_cast<double>(static_cast<int>(v));
+    double f = v - static_cast<double>(pov_int(v));
     return f < 0.0 ? f + 1.0 : f;
 }
 
@@ -306,15 +314,14 @@ double brick(const PatternParams& params, const Vec3& p) {
 }
 
 double cells(const Vec3& p) {
-    int h = hash3d(static_cast<int>(std::floor(p.x + kPovEpsilon)),
-                   static_cast<int>(std::floor(p.y + kPovEpsilon)),
-                   static_cast<int>(std::floor(p.z + kPovEpsilon)));
+    int h = hash3d(pov_int(std::floor(p.x + kPovEpsilon)), pov_int(std::floor(p.y + kPovEpsilon)),
+                   pov_int(std::floor(p.z + kPovEpsilon)));
     return std::min(pattern_random(static_cast<unsigned>(h)), 1.0);
 }
 
 double checker(const Vec3& p) {
-    int v = static_cast<int>(std::floor(p.x + kPovEpsilon) + std::floor(p.y + kPovEpsilon) +
-                             std::floor(p.z + kPovEpsilon));
+    int v = pov_int(std::floor(p.x + kPovEpsilon) + std::floor(p.y + kPovEpsilon) +
+                    std::floor(p.z + kPovEpsilon));
     return (v & 1) ? 1.0 : 0.0;
 }
 
@@ -333,6 +340,11 @@ struct CubeOffsets {
 };
 constexpr CubeOffsets kCubeOffsets;
 
+// fx + d without signed overflow at INT_MIN (huge coordinates).
+int wrap_add(int a, int d) {
+    return static_cast<int>(static_cast<unsigned>(a) + static_cast<unsigned>(d));
+}
+
 // IntPickInCube: the jittered feature point of lattice cube (x, y, z).
 Vec3 cube_point(int x, int y, int z) {
     unsigned seed = static_cast<unsigned>(hash3d(x & 0xFFF, y & 0xFFF, z & 0xFFF));
@@ -348,13 +360,13 @@ double crackle_distance(const Vec3& d, double metric) {
 
 double crackle(const PatternParams& params, const Vec3& p, int gen) {
     const double metric = params.crackle_metric;
-    const int fx = static_cast<int>(std::floor(p.x - kPovEpsilon));
-    const int fy = static_cast<int>(std::floor(p.y - kPovEpsilon));
-    const int fz = static_cast<int>(std::floor(p.z - kPovEpsilon));
+    const int fx = pov_int(std::floor(p.x - kPovEpsilon));
+    const int fy = pov_int(std::floor(p.y - kPovEpsilon));
+    const int fz = pov_int(std::floor(p.z - kPovEpsilon));
     Vec3 pts[81];
     for (int i = 0; i < 81; ++i) {
         const auto& o = kCubeOffsets.d[i];
-        pts[i] = cube_point(fx + o[0], fy + o[1], fz + o[2]);
+        pts[i] = cube_point(wrap_add(fx, o[0]), wrap_add(fy, o[1]), wrap_add(fz, o[2]));
     }
     // The three smallest distances, kept as POV-Ray keeps them (ties resolve the same way).
     double m1 = crackle_distance(pts[0] - p, metric);
@@ -440,6 +452,10 @@ double hexagon(const Vec3& p) {
     double xs = x / kXFactor, zs = z / kZFactor;
     xs -= std::floor(xs / 6.0) * 6.0;
     zs -= std::floor(zs / 6.0) * 6.0;
+    // xs and zs are in [0, 6) but for huge or non-finite coordinates, where POV-Ray's int
+    // conversion is undefined; keep the block indices inside the tables there.
+    if (!(xs >= 0.0 && xs < 6.0)) xs = 0.0;
+    if (!(zs >= 0.0 && zs < 6.0)) zs = 0.0;
     int xm = static_cast<int>(pov_floor(xs)) % 6;
     int zm = static_cast<int>(pov_floor(zs)) % 6;
     // Blocks 0/5 and 2/3 along x depend on zm only; blocks 1/4 are split by a diagonal.
@@ -475,8 +491,8 @@ double cubic(const Vec3& p) {
 }
 
 double square(const Vec3& p) {
-    int vx = static_cast<int>(std::floor(p.x));
-    int vz = static_cast<int>(std::floor(p.z));
+    int vx = pov_int(std::floor(p.x));
+    int vz = pov_int(std::floor(p.z));
     if (vx & 1) return (vz & 1) ? 2.0 : 3.0;
     return (vz & 1) ? 1.0 : 0.0;
 }
@@ -484,7 +500,7 @@ double square(const Vec3& p) {
 double triangular(const Vec3& p) {
     double xs = p.x - 3.0 * std::floor(p.x / 3.0);
     double zs = p.z - kSqrt3 * std::floor(p.z / kSqrt3);
-    int a = static_cast<int>(std::floor(xs));
+    int a = pov_int(std::floor(xs));
     xs -= a;
     bool b = !(zs < kSqrt3Half);
     if (b) zs = kSqrt3 - zs;  // mirror the upper half
@@ -890,8 +906,7 @@ double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
 Vec3 pick_in_cube(const Vec3& tv) {
     Vec3 flo(std::floor(tv.x - kPovEpsilon), std::floor(tv.y - kPovEpsilon),
              std::floor(tv.z - kPovEpsilon));
-    unsigned seed = static_cast<unsigned>(
-        hash3d(static_cast<int>(flo.x), static_cast<int>(flo.y), static_cast<int>(flo.z)));
+    unsigned seed = static_cast<unsigned>(hash3d(pov_int(flo.x), pov_int(flo.y), pov_int(flo.z)));
     return {flo.x + pattern_random(seed), flo.y + pattern_random(seed + 1),
             flo.z + pattern_random(seed + 2)};
 }
@@ -957,7 +972,7 @@ Vec3 warp_point(PatternKind kind, const PatternParams& params, const Vec3& p) {
 
 double evaluate_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
                         const PatternContext& ctx) {
-    const Vec3 q = params.warps.empty() ? p : apply_warps(kind, params, p);
+    const Vec3 q = apply_warps(kind, params, p);
     double value = raw_pattern(kind, params, q, ctx);
     if (is_block_pattern(kind)) return value;
     // Evaluate_TPat: frequency and phase, with POV-Ray's 1.00001 modulus, then the wave.
@@ -1007,7 +1022,7 @@ Vec3 special_normal(PatternKind kind, const PatternParams& params, const Vec3& p
     Vec3 n = normal;
     for (const Warp& w : params.warps)
         if (w.kind == WarpKind::Transform) n = w.transform.inverse().normal(n);
-    const Vec3 p = params.warps.empty() ? p_pattern : apply_warps(kind, params, p_pattern);
+    const Vec3 p = apply_warps(kind, params, p_pattern);
     switch (kind) {
         case PatternKind::Bumps:
             n += dnoise(p) * amount;
