@@ -202,13 +202,15 @@ void Parser::parse_global_settings() {
             scene.global.adc_bailout = parse_float();
         } else if (w == "noise_generator") {
             scene.global.noise_generator = static_cast<int>(parse_float());
+        } else if (w == "number_of_waves") {
+            scene.global.number_of_waves = static_cast<int>(parse_float());
         } else if (w == "radiosity" || w == "photons" || w == "subsurface") {
             diag.warning(loc(), "global_settings '" + w + "' is not supported and is ignored");
             skip_block_tokens(*this, w);
         } else if (w == "charset") {
             diag.warning(loc(), "global_settings 'charset' is ignored");
             next();
-        } else if (w == "max_intersections" || w == "number_of_waves" || w == "irid_wavelength" ||
+        } else if (w == "max_intersections" || w == "irid_wavelength" ||
                    w == "hf_gray_16" || w == "mm_per_unit") {
             diag.warning(loc(), "global_settings '" + w + "' is ignored");
             if (w == "irid_wavelength") parse_rgb();

@@ -24,6 +24,7 @@ struct GlobalSettings {
     // assumed_gamma as given; unset means POV-Ray's default for the #version.
     std::optional<double> assumed_gamma;
     int noise_generator = 2;
+    int number_of_waves = 10;  // ripples and waves sum this many wave sources
     FileLoc loc;
 };
 
@@ -45,10 +46,10 @@ struct Scene {
     GlobalSettings global;
     ColorFT background{Color(0, 0, 0)};
     std::optional<SkySphere> sky_sphere;
-    // User-defined functions (function patterns refer to them by index; calls between them too).
-    std::vector<Function> functions;
     std::vector<Fog> fogs;
     std::vector<Rainbow> rainbows;
+    // User-defined functions (function patterns refer to them by index; calls between them too).
+    std::vector<Function> functions;
     // Files the scene was read from (main file first), for messages and `glint ir`.
     std::vector<std::string> source_files;
 };
