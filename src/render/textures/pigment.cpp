@@ -183,6 +183,20 @@ bool PigmentEvaluator::image_map(const scene::Pigment& pigment, const Vec3& q,
             u = angle_from_x(x / lxz, z / lxz) / (2 * kPi) * w;
             break;
         }
+        case 5: {  // torus (torus_image_map): major radius 1, POV-Ray's gradient x
+            double len = std::sqrt(q.x * q.x + q.z * q.z);
+            if (len == 0.0) { *out = kClear; return false; }
+            double theta = q.z == 0.0 ? (q.x > 0 ? 0.0 : kPi) : std::acos(q.x / len);
+            if (q.z != 0.0 && q.z < 0.0) theta = 2 * kPi - theta;
+            theta = 0.0 - theta;
+            double x = len - 1.0;
+            double l2 = std::sqrt(x * x + q.y * q.y);
+            double phi = std::acos(-x / l2);
+            if (q.y > 0.0) phi = 2 * kPi - phi;
+            u = -(theta / (2 * kPi)) * w;
+            v = (phi / (2 * kPi)) * h;
+            break;
+        }
         case 0:
         default: {  // planar, POV-Ray's default gradient <1, -1, 0>: x -> u, y -> v
             if (im.once && (q.x < 0.0 || q.x > 1.0)) { *out = kClear; return false; }
