@@ -18,6 +18,15 @@ double srgb_decode(double v) {
 void collect(const scene::Pigment& p, std::vector<const scene::ImageMap*>* out) {
     if (p.kind == scene::PatternKind::ImageMap) out->push_back(&p.params.image);
     for (const scene::Pigment& e : p.entries) collect(e, out);
+    for (const scene::PigmentMapEntry& e : p.pigment_map) collect(e.pigment[0], out);
+}
+
+// ... and from a texture: its layers, texture_map and block entries.
+void collect(const scene::Texture& t, std::vector<const scene::ImageMap*>* out) {
+    collect(t.pigment, out);
+    for (const scene::Texture& l : t.layers) collect(l, out);
+    for (const scene::TextureMapEntry& e : t.texture_map) collect(e.texture[0], out);
+    for (const scene::Texture& e : t.entries) collect(e, out);
 }
 
 }  // namespace
@@ -141,7 +150,7 @@ void TextureCache::add(const scene::ImageMap& map) {
 
 void TextureCache::preload(const scene::Scene& scene) {
     std::vector<const scene::ImageMap*> maps;
-    for (const scene::Material& m : scene.materials) collect(m.texture.pigment, &maps);
+    for (const scene::Material& m : scene.materials) collect(m.texture, &maps);
     if (scene.sky_sphere)
         for (const scene::Pigment& p : scene.sky_sphere->pigments) collect(p, &maps);
     for (const scene::ImageMap* m : maps) add(*m);
