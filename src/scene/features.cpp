@@ -78,7 +78,7 @@ private:
     void normal(const Normal& n) {
         if (n.kind == PatternKind::Plain) return;
         f_.normals = true;
-        if (n.kind == PatternKind::ImageMap) f_.bump_maps = true;
+        if (n.kind == PatternKind::ImageMap) f_.bump_maps = f_.image_textures = true;
         if (n.uv_mapping) f_.uv_mapping = true;
         pattern_kind(n.kind);
         for (const NormalMapEntry& e : n.normal_map) normal(e.normal[0]);
@@ -150,7 +150,8 @@ std::vector<std::string> Features::used() const {
     static const Shape kSamples[] = {Sphere{}, Plane{}, Box{}, Cylinder{}, Cone{}, Disc{},
                                      Torus{}, Triangle{}, SmoothTriangle{}, MeshRef{}, Csg{},
                                      Quadric{}, Polygon{}, Prism{}, Lathe{}, Sor{},
-                                     Superellipsoid{}, Blob{}, HeightField{}, Poly{}};
+                                     Superellipsoid{}, Blob{}, HeightField{}, Poly{}, Text{}};
+    static_assert(std::size(kSamples) == std::variant_size_v<Shape>);
     for (size_t i = 0; i < shapes.size(); ++i)
         if (shapes[i] && i != kSamples[10].index()) out.push_back(shape_name(kSamples[i]));
     auto add = [&](bool on, const char* name) {
