@@ -3,6 +3,7 @@
 // every component, a shorter vector pads with zeros); strings are a separate kind.
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <unordered_set>
 
 #include "core/noise.h"
@@ -319,6 +320,8 @@ public:
         }
         if (constant_names().count(w)) return constant(w);
         if (function_names().count(w)) return function(w);
+        if ((w == "trace" || w == "min_extent" || w == "max_extent") && p_.options.object_query)
+            return object_function(w);
         static const std::unordered_set<std::string> kUnsupportedFns = {
             "eval_pigment", "trace", "inside", "min_extent",
             "max_extent", "datetime", "now"};
@@ -366,6 +369,49 @@ public:
                 p_.fail("expected ',' or ')' in the arguments of '" + name + "', got " +
                         p_.got(t));
         }
+    }
+
+    // trace(Obj, start, dir [, NormalVar]), min_extent(Obj), max_extent(Obj): answered by the
+    // application's geometry (ParseOptions::object_query) for a scene holding only Obj.
+    Value object_function(const std::string& f) {
+        const FileLoc fn_loc = p_.loc();
+        p_.expect("(", ("after '" + f + "'").c_str());
+        const Token& t = p_.next();
+        const Symbol* s = t.kind == TokKind::Word ? p_.lookup(t.text) : nullptr;
+        if (s) s = &p_.use_symbol(t);
+        auto obj = s ? std::get_if<std::shared_ptr<const PovObject>>(&s->value) : nullptr;
+        if (!obj) p_.fail("expected an object identifier in " + f + "(), got " + p_.got(t));
+        auto keep = *obj;
+        scene::Scene one = p_.one_object_scene(*keep);
+        Vec3 lo, hi;
+        if (f != "trace") {
+            p_.expect(")", ("to close " + f + "()").c_str());
+            bool ok = p_.options.object_query(one, kObjectBounds, Vec3(), Vec3(), lo, hi);
+            // POV-Ray's bounding boxes of unbounded objects are large, not infinite.
+            auto clamp = [](double v) { return std::clamp(v, -1e10, 1e10); };
+            Vec3 r = f == "min_extent" ? lo : hi;
+            if (!ok) r = Vec3(0, 0, 0);
+            return Value(Num::vec(Vec3(clamp(r.x), clamp(r.y), clamp(r.z))));
+        }
+        p_.expect(",", "after the object in trace()");
+        Vec3 from = p_.parse_vector();
+        p_.expect(",", "after the start point in trace()");
+        Vec3 dir = p_.parse_vector();
+        std::string normal_var;
+        FileLoc nloc;
+        if (p_.accept(",")) {
+            const Token& n = p_.next();
+            if (n.kind != TokKind::Word)
+                p_.fail("expected an identifier for the normal in trace(), got " + p_.got(n));
+            normal_var = n.text;
+            nloc = p_.loc();
+        }
+        p_.expect(")", "to close trace()");
+        (void)fn_loc;
+        bool hit = length(dir) > 0 && p_.options.object_query(one, kObjectTrace, from, dir, lo, hi);
+        if (!hit) lo = hi = Vec3(0, 0, 0);
+        if (!normal_var.empty()) p_.assign_existing_or_declare(normal_var, Num::vec(hi), nloc);
+        return Value(Num::vec(lo));
     }
 
     Value function(const std::string& f) {
@@ -778,6 +824,40 @@ bool Parser::float_constant(const std::string& name, double& out) const {
 
 double Parser::allow_float(double fallback) {
     return next_is_expression_start() ? parse_float() : fallback;
+}
+
+}  // namespace glint::pov
+
+namespace glint::pov {
+
+// The object alone, with the scene's meshes (MeshRef indices stay valid) and one material.
+scene::Scene Parser::one_object_scene(const PovObject& po) const {
+    scene::Scene one;
+    one.meshes = scene.meshes;
+    one.materials.resize(1);
+    std::function<scene::Object(const PovObject&, bool)> conv = [&](const PovObject& p, bool top) {
+        scene::Object o = p.obj;
+        o.material = top ? 0 : -1;
+        if (auto csg = std::get_if<scene::Csg>(&o.shape)) {
+            csg->children.clear();
+            for (const auto& c : p.children) csg->children.push_back(conv(c, false));
+        }
+        return o;
+    };
+    if (!po.is_light) one.objects.push_back(conv(po, true));
+    return one;
+}
+
+void Parser::assign_existing_or_declare(const std::string& name, Value v, const FileLoc& at) {
+    for (size_t k = scopes_.size(); k-- > 0;) {
+        auto e = scopes_[k].find(name);
+        if (e != scopes_[k].end()) {
+            e->second.value = std::move(v);
+            e->second.loc = at;
+            return;
+        }
+    }
+    declare(name, std::move(v), at, false);
 }
 
 }  // namespace glint::pov

@@ -140,6 +140,10 @@ public:
     scene::FunctionEnv function_env() const;
     void warn_unimplemented_internal(int id, const FileLoc& at);
     bool warned_pigment_call() { return warned_once_.insert(" pigment call").second; }
+    // trace/min_extent/max_extent (expressions.cpp): the object alone in a scene.
+    scene::Scene one_object_scene(const PovObject& po) const;
+    // `#read` and trace()'s normal: assigns where the name lives, else declares it globally.
+    void assign_existing_or_declare(const std::string& name, Value v, const FileLoc& at);
 
     // ---- materials (materials.cpp)
     scene::Texture parse_texture_body();      // after texture {

@@ -9,6 +9,7 @@
 #include "core/log.h"
 #include "formats/obj/obj_importer.h"
 #include "formats/pov/parser.h"
+#include "render/object_query.h"
 #include "scene/validate.h"
 
 namespace glint::app {
@@ -100,6 +101,7 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose) {
     options.declares = request.declares;
     options.image_width = request.width;
     options.image_height = request.height;
+    options.object_query = render::answer_object_query;  // trace(), min_extent(), max_extent()
     ParseDiagnosticPrinter printer(verbose);
     Diagnostics diag([&printer](const Diagnostic& d) { printer.print(d); });
     scene::Scene scene = pov::parse_file(request.path, options, diag);

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "render/object_query.h"
 #include "scene/function.h"
 #include "tests/unit/pov_test_util.h"
 
@@ -168,6 +169,35 @@ TEST(ParserFunction, Errors) {
               "one component: .x, .red, .gray, ...), got '}'");
     EXPECT_EQ(error_of("#declare F = function { sin(x, y) }"),
               "1:25: 'sin' takes 1 argument, got 2");
+}
+
+TEST(ParserObjectQueries, TraceAndExtents) {
+    ParseOptions o;
+    o.object_query = render::answer_object_query;
+    auto s = parse(
+        "#declare S = sphere { <1, 0, 0>, 2 }\n"
+        "#declare B = box { <-1, -2, -3>, <1, 2, 3> translate x }\n"
+        "#declare N = <9, 9, 9>;\n"
+        "#declare P = trace(S, <1, 10, 0>, -y, N);\n"
+        "sphere { P, N.y }\n"
+        "sphere { min_extent(B), 1 } sphere { max_extent(B), 1 }\n"
+        "#declare Q = trace(S, <10, 10, 10>, y, M);\n"
+        "sphere { Q, 1 + vlength(M) }\n",
+        o);
+    EXPECT_EQ(std::get<scene::Sphere>(s.objects[0].shape).center, Vec3(1, 2, 0));
+    EXPECT_DOUBLE_EQ(radius(s, 0), 1);
+    // The renderer's boxes are conservative by a few ulps.
+    auto near = [](Vec3 a, Vec3 b) { return length(a - b) < 1e-9; };
+    EXPECT_TRUE(near(std::get<scene::Sphere>(s.objects[1].shape).center, Vec3(0, -2, -3)));
+    EXPECT_TRUE(near(std::get<scene::Sphere>(s.objects[2].shape).center, Vec3(2, 2, 3)));
+    // A miss gives <0,0,0> and a zero normal.
+    EXPECT_EQ(std::get<scene::Sphere>(s.objects[3].shape).center, Vec3(0, 0, 0));
+    EXPECT_DOUBLE_EQ(radius(s, 3), 1);
+    EXPECT_EQ(error_of("#declare V = min_extent(<1, 2, 3>);", o),
+              "1:25: expected an object identifier in min_extent(), got '<'");
+    // Without the application's geometry the functions are not supported.
+    EXPECT_EQ(error_of("#declare S = sphere { 0, 1 }\n#declare V = min_extent(S);"),
+              "2:14: the 'min_extent' function is not supported yet");
 }
 
 TEST(ParserSpline, TypesAndCalls) {

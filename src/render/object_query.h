@@ -1,0 +1,19 @@
+// Questions the scene language asks about one object while parsing: POV-Ray's trace() and
+// min_extent()/max_extent(). The importer cannot see the renderer, so the application passes
+// answer_object_query as ParseOptions::object_query; it builds the renderer's geometry for a
+// scene holding only that object.
+#pragma once
+
+#include "core/math.h"
+#include "scene/scene.h"
+
+namespace glint::render {
+
+// kind 0 (bounds): lo/hi = the world bounding box; false when empty.
+// kind 1 (trace): the first hit from `a` along `b` (any length); true on a hit with the point
+// in lo and the surface normal (facing the ray's origin side as POV-Ray's trace returns the
+// object's normal) in hi.
+bool answer_object_query(const scene::Scene& one, int kind, const Vec3& a, const Vec3& b, Vec3& lo,
+                         Vec3& hi);
+
+}  // namespace glint::render
