@@ -737,6 +737,8 @@ void Parser::parse_normal_body(scene::Normal& n) {
             n.params.image.loc = o;
             parse_image_map_body(n.params.image, &n.amount);
             expect_close("bump_map", o);
+            // Parse_Image without gamma correction: bump heights are the values as stored.
+            if (n.params.image.gamma == 0) n.params.image.gamma = 1.0;
             skip_comma();
             n.amount = allow_float(n.amount);
         } else if (w == "bump_size") {

@@ -17,18 +17,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Features the Whitted integrator does not implement yet are announced, never silently
-// rendered as something else.
-void warn_unsupported(const scene::Scene& scene, const scene::Features& f, Diagnostics& diag) {
-    if (f.bump_maps) {
-        for (const scene::Material& m : scene.materials)
-            if (const scene::Normal* n = scene::find_bump_map(m.texture)) {
-                diag.warning(n->loc, "bump_map is not supported yet; the surface is smooth");
-                break;
-            }
-    }
-}
-
 }  // namespace
 
 RenderResult render(const scene::Scene& scene, const RenderOptions& options, Diagnostics& diag) {
@@ -36,7 +24,6 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
     RenderResult result;
     result.features = scene::analyze(scene);
     const scene::Features& features = result.features;
-    warn_unsupported(scene, features, diag);
 
     std::unique_ptr<Geometry> geometry = build_geometry(scene, features, diag);
     // The texture system is opened only for scenes with image maps.

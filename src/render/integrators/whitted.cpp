@@ -285,7 +285,7 @@ Vec3 Whitted::layer_normal(const scene::Normal& normal, const PatternPoint& at, 
     Vec3 m = n;
     for (int i = 0; i < stack.count; ++i)
         m = warp_normal(stack.texture[i]->transform, stack.texture[i]->params, m);
-    m = perturb_normal(normal, at, m, pigments_.context());
+    m = perturb_normal(normal, at, m, pigments_.context(), pigments_.textures());
     for (int i = stack.count - 1; i >= 0; --i)
         m = unwarp_normal(stack.texture[i]->transform, stack.texture[i]->params, m);
     return m;

@@ -21,9 +21,17 @@ void collect(const scene::Pigment& p, std::vector<const scene::ImageMap*>* out) 
     for (const scene::PigmentMapEntry& e : p.pigment_map) collect(e.pigment[0], out);
 }
 
+// ... from a normal tree (bump_map) ...
+void collect(const scene::Normal& n, std::vector<const scene::ImageMap*>* out) {
+    if (n.kind == scene::PatternKind::ImageMap) out->push_back(&n.params.image);
+    for (const scene::Normal& e : n.entries) collect(e, out);
+    for (const scene::NormalMapEntry& e : n.normal_map) collect(e.normal[0], out);
+}
+
 // ... and from a texture: its layers, texture_map and block entries.
 void collect(const scene::Texture& t, std::vector<const scene::ImageMap*>* out) {
     collect(t.pigment, out);
+    collect(t.normal, out);
     for (const scene::Texture& l : t.layers) collect(l, out);
     for (const scene::TextureMapEntry& e : t.texture_map) collect(e.texture[0], out);
     for (const scene::Texture& e : t.entries) collect(e, out);

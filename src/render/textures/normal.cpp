@@ -57,23 +57,64 @@ scene::PatternParams unwarped(PatternKind kind, const scene::PatternParams& para
 }
 
 Vec3 perturb(const scene::Normal& nrm, const Vec3& point, const Vec3& n_in,
-             const PatternContext& ctx);
+             const PatternContext& ctx, const TextureCache* textures);
+
+// imageutil.cpp bump_map: the heights (greyscale) of three neighbouring pixels make a small
+// triangle whose normal replaces `normal`, expressed in a frame around it.
+Vec3 bump_map(const scene::Normal& nrm, const Vec3& tp, const Vec3& normal,
+              const TextureCache* textures) {
+    const scene::ImageMap& im = nrm.params.image;
+    const ImageTexture* tex = textures ? textures->find(im) : nullptr;
+    if (!tex) throw Error(ErrorKind::Render, im.loc, "image '" + im.file + "' was not loaded");
+    double x, y;
+    if (!image_map_position(im, *tex, tp, &x, &y)) return normal;
+    const double w = tex->width(), h = tex->height();
+    auto grey = [](const scene::ColorFT& c) {
+        return 0.297 * c.rgb.r + 0.589 * c.rgb.g + 0.114 * c.rgb.b;
+    };
+    const double g1 = grey(image_map_sample(im, *tex, x, y));
+    x -= 1.0;
+    y += 1.0;
+    if (x < 0.0) x += w;
+    else if (x >= w) x -= w;
+    if (y < 0.0) y += h;
+    else if (y >= h) y -= h;
+    const double g2 = grey(image_map_sample(im, *tex, x, y));
+    x += 2.0;
+    if (x < 0.0) x += w;
+    else if (x >= w) x -= w;
+    const double g3 = grey(image_map_sample(im, *tex, x, y));
+    const double a = nrm.amount;
+    const Vec3 p1(0, a * g1, 0), p2(-1, a * g2, 1), p3(1, a * g3, 1);
+    const Vec3 bump = safe_normalize(cross(p3 - p2, p1 - p2));
+    Vec3 yp = normal;
+    Vec3 xp = cross(yp, Vec3(0, 1, 0));
+    double len = length(xp);
+    if (len < kPovEpsilon) {
+        yp = std::fabs(normal.y - 1.0) < kPovEpsilon ? Vec3(0, 1, 0) : Vec3(0, -1, 0);
+        xp = Vec3(1, 0, 0);
+        len = 1.0;
+    }
+    xp = xp / len;
+    const Vec3 zp = safe_normalize(cross(xp, yp));
+    return xp * bump.x + yp * bump.y - zp * bump.z;
+}
 
 Vec3 perturb_entries(const scene::Normal& nrm, const Vec3& local, const Vec3& n_in,
-                     const PatternContext& ctx) {
+                     const PatternContext& ctx, const TextureCache* textures) {
     const scene::PatternParams& pp = nrm.params;
     const double value = evaluate_pattern(nrm.kind, pp, local, ctx);
     Vec3 n = warp_normal(Transform(), pp, n_in);
     const Vec3 tp = pp.warps.empty() ? local : warp_point(nrm.kind, pp, local);
     Vec3 out;
     if (!nrm.entries.empty()) {
-        out = perturb(nrm.entries[block_index(value, nrm.entries.size())], tp, n, ctx);
+        out = perturb(nrm.entries[block_index(value, nrm.entries.size())], tp, n, ctx, textures);
     } else {
         const auto& map = nrm.normal_map;
         BlendPick b = search_blend_map(map, value);
-        out = perturb(map[b.cur].normal[0], tp, n, ctx);
+        out = perturb(map[b.cur].normal[0], tp, n, ctx, textures);
         if (b.prev != b.cur) {
-            Vec3 prev = perturb(map[b.prev].normal[0], tp, n, ctx);
+            Vec3 prev = perturb(map[b.prev].normal[0], tp, n, ctx, textures);
             out = prev * (1.0 - b.fraction) + out * b.fraction;
         }
     }
@@ -82,7 +123,7 @@ Vec3 perturb_entries(const scene::Normal& nrm, const Vec3& local, const Vec3& n_
 
 // Perturb_Normal at `point` (the parent's pattern space); `n_in` is in that space too.
 Vec3 perturb(const scene::Normal& nrm, const Vec3& point, const Vec3& n_in,
-             const PatternContext& ctx) {
+             const PatternContext& ctx, const TextureCache* textures) {
     if (nrm.kind == PatternKind::Plain) return n_in;
     const scene::PatternParams& pp = nrm.params;
     const Vec3 local = nrm.transform.is_identity() ? point : nrm.transform.inverse_point(point);
@@ -90,7 +131,7 @@ Vec3 perturb(const scene::Normal& nrm, const Vec3& point, const Vec3& n_in,
         // The entries see the normal in this pattern's space.
         Vec3 n = safe_normalize(nrm.transform.is_identity() ? n_in
                                                             : nrm.transform.inverse().normal(n_in));
-        n = perturb_entries(nrm, local, n, ctx);
+        n = perturb_entries(nrm, local, n, ctx, textures);
         return nrm.transform.is_identity() ? n : safe_normalize(nrm.transform.normal(n));
     }
     if (has_special_normal(nrm.kind)) {
@@ -106,12 +147,16 @@ Vec3 perturb(const scene::Normal& nrm, const Vec3& point, const Vec3& n_in,
         Vec3 sum(0, 0, 0);
         double total = 0;
         for (const scene::NormalMapEntry& e : nrm.normal_map) {
-            sum += perturb(e.normal[0], tp, n, ctx) * e.value;
+            sum += perturb(e.normal[0], tp, n, ctx, textures) * e.value;
             total += e.value;
         }
         return unwarp_normal(nrm.transform, pp, sum / total);
     }
-    if (nrm.kind == PatternKind::ImageMap) return n_in;  // bump_map: announced as unsupported
+    if (nrm.kind == PatternKind::ImageMap) {
+        Vec3 n = warp_normal(nrm.transform, pp, n_in);
+        const Vec3 tp = pp.warps.empty() ? local : warp_point(nrm.kind, pp, local);
+        return unwarp_normal(nrm.transform, pp, bump_map(nrm, tp, n, textures));
+    }
     // The slope of the pattern value: four samples around the warped point.
     Vec3 n = warp_normal(nrm.transform, pp, n_in);
     const double amount = nrm.amount * -5.0 * (0.02 / nrm.accuracy);
@@ -146,7 +191,7 @@ Vec3 unwarp_normal(const Transform& head, const scene::PatternParams& params, co
 }
 
 Vec3 perturb_normal(const scene::Normal& normal, const PatternPoint& at, const Vec3& n,
-                    const PatternContext& ctx) {
+                    const PatternContext& ctx, const TextureCache* textures) {
     if (normal.kind == PatternKind::Plain) return n;
     Vec3 p = at.p;
     if (normal.uv_mapping) {
@@ -155,7 +200,7 @@ Vec3 perturb_normal(const scene::Normal& normal, const PatternPoint& at, const V
                         "uv_mapping on a surface that has no uv coordinates");
         p = Vec3(at.uv.x, at.uv.y, 0);
     }
-    return perturb(normal, p, n, ctx);
+    return perturb(normal, p, n, ctx, textures);
 }
 
 }  // namespace glint::render

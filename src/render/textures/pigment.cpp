@@ -150,8 +150,19 @@ bool PigmentEvaluator::image_map(const scene::Pigment& pigment, const Vec3& q,
     const scene::ImageMap& im = pigment.params.image;
     const ImageTexture* tex = textures_ ? textures_->find(im) : nullptr;
     if (!tex) throw Error(ErrorKind::Render, im.loc, "image '" + im.file + "' was not loaded");
+    double xc, yc;
+    if (!image_map_position(im, *tex, q, &xc, &yc)) {
+        *out = ColorFT(Color(1, 1, 1), 0, 1);  // POV-Ray's clear <1,1,1,0,1>
+        return false;
+    }
+    *out = image_map_sample(im, *tex, xc, yc);
+    return true;
+}
+
+bool image_map_position(const scene::ImageMap& im, const ImageTexture& image, const Vec3& q,
+                        double* xc_out, double* yc_out) {
+    const ImageTexture* tex = &image;
     const double w = tex->width(), h = tex->height();
-    const ColorFT kClear(Color(1, 1, 1), 0, 1);
     double u = 0, v = 0;
     // map_pos + the per-type mappers (imageutil.cpp).
     auto angle_from_x = [](double x, double z) {
@@ -163,7 +174,7 @@ bool PigmentEvaluator::image_map(const scene::Pigment& pigment, const Vec3& q,
     switch (im.map_type) {
         case 1: {  // spherical
             double len = length(q);
-            if (len == 0.0) { *out = kClear; return false; }
+            if (len == 0.0) { return false; }
             Vec3 n = q / len;
             double phi = 0.5 + std::asin(std::clamp(n.y, -1.0, 1.0)) / kPi;
             double lxz = std::sqrt(n.x * n.x + n.z * n.z);
@@ -173,19 +184,19 @@ bool PigmentEvaluator::image_map(const scene::Pigment& pigment, const Vec3& q,
             break;
         }
         case 2: {  // cylindrical
-            if (im.once && (q.y < 0.0 || q.y > 1.0)) { *out = kClear; return false; }
+            if (im.once && (q.y < 0.0 || q.y > 1.0)) { return false; }
             v = std::fmod(q.y * h, h);
             double len = length(q);
-            if (len == 0.0) { *out = kClear; return false; }
+            if (len == 0.0) { return false; }
             double x = q.x / len, z = q.z / len;
             double lxz = std::sqrt(x * x + z * z);
-            if (lxz == 0.0) { *out = kClear; return false; }
+            if (lxz == 0.0) { return false; }
             u = angle_from_x(x / lxz, z / lxz) / (2 * kPi) * w;
             break;
         }
         case 5: {  // torus (torus_image_map): major radius 1, POV-Ray's gradient x
             double len = std::sqrt(q.x * q.x + q.z * q.z);
-            if (len == 0.0) { *out = kClear; return false; }
+            if (len == 0.0) { return false; }
             double theta = q.z == 0.0 ? (q.x > 0 ? 0.0 : kPi) : std::acos(q.x / len);
             if (q.z != 0.0 && q.z < 0.0) theta = 2 * kPi - theta;
             theta = 0.0 - theta;
@@ -199,9 +210,9 @@ bool PigmentEvaluator::image_map(const scene::Pigment& pigment, const Vec3& q,
         }
         case 0:
         default: {  // planar, POV-Ray's default gradient <1, -1, 0>: x -> u, y -> v
-            if (im.once && (q.x < 0.0 || q.x > 1.0)) { *out = kClear; return false; }
+            if (im.once && (q.x < 0.0 || q.x > 1.0)) { return false; }
             u = std::fmod(q.x * w, w);
-            if (im.once && (q.y < 0.0 || q.y > 1.0)) { *out = kClear; return false; }
+            if (im.once && (q.y < 0.0 || q.y > 1.0)) { return false; }
             v = std::fmod(q.y * h, h);
             break;
         }
@@ -209,12 +220,17 @@ bool PigmentEvaluator::image_map(const scene::Pigment& pigment, const Vec3& q,
     double xc = u + kPovEpsilon;
     double yc = v + kPovEpsilon;
     if (im.once && (xc >= w || yc >= h || xc < 0.0 || yc < 0.0)) {
-        *out = kClear;
         return false;
     }
-    xc = wrap(xc, w);
-    yc = wrap(-yc, h);  // image rows run top-down
+    *xc_out = wrap(xc, w);
+    *yc_out = wrap(-yc, h);  // image rows run top-down
+    return true;
+}
 
+
+ColorFT image_map_sample(const scene::ImageMap& im, const ImageTexture& image, double xc,
+                         double yc) {
+    const ImageTexture* tex = &image;
     const int iw = tex->width(), ih = tex->height();
     auto fetch = [&](double x, double y) {
         int ix, iy;
@@ -255,8 +271,7 @@ bool PigmentEvaluator::image_map(const scene::Pigment& pigment, const Vec3& q,
             }
             ColorFT sum;
             for (int i = 0; i < 4; ++i) sum = sum + c[i] * f[i];
-            *out = sum;
-            return true;
+            return sum;
         }
         case 3: {  // bicubic
             double x = xc + 0.5, y = yc + 0.5;
@@ -275,12 +290,10 @@ bool PigmentEvaluator::image_map(const scene::Pigment& pigment, const Vec3& q,
             for (int i = 0; i < 4; ++i)
                 for (int j = 0; j < 4; ++j)
                     sum = sum + fetch(ix + i - 2.0, iy + j - 2.0) * (fx[i] * fy[j]);
-            *out = sum;
-            return true;
+            return sum;
         }
         default:
-            *out = fetch(xc, yc);
-            return true;
+            return fetch(xc, yc);
     }
 }
 

@@ -33,6 +33,7 @@ public:
     double pattern_value(const scene::Pigment& pigment, const Vec3& local) const;
 
     const PatternContext& context() const { return ctx_; }
+    const TextureCache* textures() const { return textures_; }
 
 private:
     // `parent` is the world point (or (u, v, 0) under uv_mapping); every pigment, nested
@@ -43,6 +44,15 @@ private:
     const TextureCache* textures_;
     PatternContext ctx_;
 };
+
+// POV-Ray's map_pos: the image coordinates (wrapped, rows top-down) of a pattern-space point
+// for an image_map/bump_map; false where the point is off an image used `once`.
+bool image_map_position(const scene::ImageMap& im, const ImageTexture& image, const Vec3& q,
+                        double* xc, double* yc);
+// image_colour_at: the image's color (with filter/transmit all) at image coordinates, with the
+// map's interpolation.
+scene::ColorFT image_map_sample(const scene::ImageMap& im, const ImageTexture& image, double xc,
+                                double yc);
 
 // POV-Ray's Search_Blend_Map over map values: the entries around `value` (the same one when
 // it is outside the map or exactly on an entry) and the fraction between them.
