@@ -34,6 +34,7 @@ std::string value_kind_name(const Value& v) {
         case 14: return "a spline";
         case 15: return "a file handle";
         case 16: return "a " + std::get<BlendMapValue>(v).keyword;
+        case 17: return "a sky_sphere";
     }
     return "a value";
 }

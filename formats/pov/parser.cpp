@@ -147,10 +147,18 @@ Value Parser::parse_rvalue() {
             w == "texture_map" || w == "slope_map")
             return parse_map_rvalue(w);
         if (w == "function") return FunctionRef{parse_function_definition()};
+        if (w == "sky_sphere") {
+            // parse_sky_sphere sets the scene's sky; a declaration keeps it instead.
+            std::optional<scene::SkySphere> saved = scene.sky_sphere;
+            parse_sky_sphere();
+            scene::SkySphere sky = std::move(*scene.sky_sphere);
+            scene.sky_sphere = std::move(saved);
+            return sky;
+        }
         if (w == "spline")
             return braced([&] { return std::make_shared<const scene::Spline>(parse_spline_body()); });
         static const std::unordered_set<std::string> kUnsupported = {
-            "fog", "media", "rainbow", "sky_sphere", "density",
+            "fog", "media", "rainbow", "density",
             "density_map", "material_map", "background", "light_group"};
         if (w == "media" || w == "density" || w == "density_map") {
             // Only a media block can use these, and every media block is read over.
@@ -242,6 +250,38 @@ void Parser::parse_default() {
     expect_close("#default", o);
 }
 
+// sky_sphere { SkyIdent [pigment {..}] [emission c] [transforms] }: a copy of the declared
+// sky, with more pigment layers and transforms (camera.cpp reads the literal form).
+static void parse_declared_sky_sphere(Parser& p) {
+    p.expect_open("sky_sphere");
+    FileLoc o = p.loc();
+    scene::SkySphere sky = std::get<scene::SkySphere>(p.use_symbol(p.next()).value);
+    for (;;) {
+        const Token& t = p.next();
+        if (t.is_symbol('}')) break;
+        if (t.kind == TokKind::End) p.expect_close("sky_sphere", o);
+        if (t.is("pigment")) {
+            p.expect_open("pigment");
+            FileLoc po = p.loc();
+            scene::Pigment pg;
+            pg.loc = po;
+            p.parse_pigment_body(pg);
+            p.expect_close("pigment", po);
+            sky.pigments.push_back(pg);
+        } else if (t.is("emission")) {
+            sky.emission = p.parse_rgb();
+        } else {
+            p.unget();
+            Transform delta;
+            if (!p.parse_transform_item(delta))
+                p.fail("expected pigment, emission or a transform in sky_sphere, got " +
+                       p.got(p.next()));
+            sky.transform = sky.transform.then(delta);
+        }
+    }
+    p.scene.sky_sphere = std::move(sky);
+}
+
 static void parse_statements(Parser& p) {
     for (;;) {
         const Token& t = p.next();
@@ -260,6 +300,10 @@ static void parse_statements(Parser& p) {
             if (w == "global_settings") { p.parse_global_settings(); continue; }
             if (w == "default") { p.parse_default(); continue; }  // old form of #default
             if (w == "background") { p.parse_background(); continue; }
+            if (w == "sky_sphere" && p.declared_sky_sphere_follows()) {
+                parse_declared_sky_sphere(p);
+                continue;
+            }
             if (w == "sky_sphere") { p.parse_sky_sphere(); continue; }
             if (w == "fog") { p.parse_fog(); continue; }
             if (w == "rainbow") { p.parse_rainbow(); continue; }

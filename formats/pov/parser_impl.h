@@ -140,6 +140,16 @@ public:
     scene::FunctionEnv function_env() const;
     void warn_unimplemented_internal(int id, const FileLoc& at);
     bool warned_pigment_call() { return warned_once_.insert(" pigment call").second; }
+    // `sky_sphere { SkyIdent ...}` (parser.cpp): true when the raw tokens ahead are '{' and an
+    // identifier holding a declared sky_sphere.
+    bool declared_sky_sphere_follows() const {
+        if (ungot_ || frames_.empty()) return false;
+        const Frame& f = frames_.back();
+        const auto& toks = files_[f.file]->tokens;
+        if (!toks[f.pos].is_symbol('{') || toks[f.pos + 1].kind != TokKind::Word) return false;
+        const Symbol* s = lookup(toks[f.pos + 1].text);
+        return s && !s->unusable && std::holds_alternative<scene::SkySphere>(s->value);
+    }
     // trace/min_extent/max_extent (expressions.cpp): the object alone in a scene.
     scene::Scene one_object_scene(const PovObject& po) const;
     // `#read` and trace()'s normal: assigns where the name lives, else declares it globally.

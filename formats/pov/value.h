@@ -14,6 +14,7 @@
 #include "core/transform.h"
 #include "scene/camera.h"
 #include "scene/function.h"
+#include "scene/scene.h"
 #include "scene/light.h"
 #include "scene/shape.h"
 #include "scene/texture.h"
@@ -94,7 +95,8 @@ using Value = std::variant<Num, std::string, std::shared_ptr<const PovObject>, s
                            scene::Pigment, scene::Finish, scene::Normal, scene::Interior,
                            MaterialValue, scene::Camera, Transform, std::shared_ptr<const Macro>,
                            std::shared_ptr<ArrayValue>, FunctionRef,
-                           std::shared_ptr<const scene::Spline>, FileHandle, BlendMapValue>;
+                           std::shared_ptr<const scene::Spline>, FileHandle, BlendMapValue,
+                           scene::SkySphere>;
 
 // POV-Ray `array[n][m]...`: row-major elements, null until assigned. Held by shared_ptr so
 // that `#declare A[i] = v` can fill it in place; `#declare B = A` copies (Parser::declare).

@@ -346,6 +346,17 @@ TEST(ParserDirective, LocalShadowsInsideMacros) {
               "1:12: macro calls nested deeper than 10 (runaway recursion?)");
 }
 
+TEST(ParserDirective, DeclaredSkySphere) {
+    auto s = parse(
+        "#declare Sky = sky_sphere { pigment { rgb <0, 0, 1> } }\n"
+        "sky_sphere { Sky pigment { rgbt <1, 1, 1, 0.5> } translate y }\n");
+    ASSERT_TRUE(s.sky_sphere.has_value());
+    EXPECT_EQ(s.sky_sphere->pigments.size(), 2u);
+    EXPECT_EQ(s.sky_sphere->transform.point(Vec3(0, 0, 0)), Vec3(0, 1, 0));
+    // Declaring does not set the scene's sky.
+    EXPECT_FALSE(parse("#declare Sky = sky_sphere { pigment { rgb 1 } }").sky_sphere.has_value());
+}
+
 TEST(ParserStandardIncludes, EveryIncludeFileParses) {
     std::string dir = testing::povray_include_dir();
     if (dir.empty()) GTEST_SKIP() << "POV-Ray includes not installed";
