@@ -21,6 +21,12 @@ struct RenderArgs {
     int aa_depth = 3;  // POV-Ray's +R (adaptive anti-aliasing recursion depth)
     bool verbose = false;
     std::string progress;  // empty: bar on a terminal, none otherwise
+    // Path tracer (--integrator path): samples per pixel, bounces, sampler seed, time limit.
+    std::string integrator = "whitted";
+    int spp = 16;
+    int max_depth = 8;
+    unsigned seed = 0;
+    double time_limit = 0;
     // POV-Ray switches and .ini files (pov_options.h), in command-line order. glint's own
     // flags, where given, win over them; `given` records which were.
     std::vector<std::string> pov_args;

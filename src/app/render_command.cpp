@@ -137,6 +137,21 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
     cmd->add_option("--threads", args.threads, "Worker threads (0: all hardware threads)")
         ->capture_default_str()
         ->check(CLI::Range(0, 4096));
+    cmd->add_option("--integrator", args.integrator,
+                    "whitted (POV-Ray's classic model) or path (Monte Carlo path tracer)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"whitted", "path"}));
+    cmd->add_option("--spp", args.spp, "Path tracer: samples per pixel (at most, with --time-limit)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1 << 24));
+    cmd->add_option("--max-depth", args.max_depth, "Path tracer: maximum bounces")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 4096));
+    cmd->add_option("--seed", args.seed, "Path tracer: sampler seed")->capture_default_str();
+    cmd->add_option("--time-limit", args.time_limit,
+                    "Path tracer: stop after the progressive pass that passes S seconds (0: none)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1e9));
     cmd->add_flag("-v,--verbose", args.verbose, "Print features used and skipped, and timings");
     cmd->add_option("--progress", args.progress,
                     "Progress on stderr: bar, lines (`progress 0.42`), none "
@@ -282,6 +297,11 @@ int render_frame(const RenderArgs& args) {
     options.cancel = &cancel_flag();
     parse_aa(args.aa, options);
     options.aa_depth = args.aa_depth;
+    if (args.integrator == "path") options.integrator = render::IntegratorKind::Path;
+    options.spp = args.spp;
+    options.max_depth = args.max_depth;
+    options.seed = args.seed;
+    options.time_limit = args.time_limit;
     check_output_path(args.output);
 
     scene::Scene scene = load_scene(args.scene, args.verbose);
@@ -315,6 +335,10 @@ int render_frame(const RenderArgs& args) {
         print_features(result.features);
         std::fprintf(stderr, "image: %dx%d, aa %s, 8/16-bit encoding %s\n", result.image.width,
                      result.image.height, args.aa.c_str(), encoding_name(encoding).c_str());
+        if (options.integrator == render::IntegratorKind::Path)
+            std::fprintf(stderr, "path: %d spp, max depth %d, seed %u, %llu non-finite paths dropped\n",
+                         result.samples_per_pixel, options.max_depth, options.seed,
+                         static_cast<unsigned long long>(result.nonfinite_paths));
         std::fprintf(stderr,
                      "time: parse %.3f s, prepare %.3f s, render %.3f s, write %.3f s, "
                      "total %.3f s\n",

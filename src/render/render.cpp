@@ -7,6 +7,7 @@
 #include "render/camera.h"
 #include "render/geometry.h"
 #include "render/integrators/driver.h"
+#include "render/integrators/path.h"
 #include "render/integrators/whitted.h"
 #include "render/textures/image_texture.h"
 
@@ -32,8 +33,23 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
         textures = std::make_unique<TextureCache>(image_gamma(scene));
         textures->preload(scene);
     }
-    Whitted whitted(scene, features, *geometry, textures.get());
     Camera camera(scene.camera, options.width, options.height);
+    if (options.integrator == IntegratorKind::Path) {
+        PathSettings ps;
+        ps.max_depth = std::max(0, options.max_depth);
+        PathIntegrator path(scene, *geometry, textures.get(), ps);
+        result.prepare_seconds = seconds_since(t0);
+        auto t1 = std::chrono::steady_clock::now();
+        const uint32_t seed = options.seed;
+        RadianceFn radiance = [&path, seed](const Ray& ray, const SampleId& id) {
+            return path.li(ray, PixelSampler(id.x, id.y, id.index, seed));
+        };
+        result.samples_per_pixel = run_path_tiles(camera, options, radiance, &result.image);
+        result.nonfinite_paths = path.nonfinite();
+        result.render_seconds = seconds_since(t1);
+        return result;
+    }
+    Whitted whitted(scene, features, *geometry, textures.get());
     DriverSettings settings;
     if (scene.global.assumed_gamma) settings.working_gamma = *scene.global.assumed_gamma;
     result.prepare_seconds = seconds_since(t0);

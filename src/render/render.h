@@ -3,6 +3,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -19,6 +20,11 @@ enum class AaMode {
     Grid,      // N x N regular grid per pixel, box filtered
 };
 
+enum class IntegratorKind {
+    Whitted,  // POV-Ray's classic model
+    Path,     // Monte Carlo path tracer (spp samples per pixel, averaged)
+};
+
 struct RenderOptions {
     int width = 320;
     int height = 240;
@@ -27,6 +33,13 @@ struct RenderOptions {
     int aa_depth = 3;           // POV-Ray's +R default
     int grid_n = 2;
     int threads = 0;  // 0 = all hardware threads
+    IntegratorKind integrator = IntegratorKind::Whitted;
+    // Path tracer: samples per pixel (with a time limit: at most), bounces, sampler seed, and
+    // a wall-clock limit in seconds (0: none) checked between progressive passes.
+    int spp = 16;
+    int max_depth = 8;
+    uint32_t seed = 0;
+    double time_limit = 0;
     // Called with the finished fraction in [0, 1], from any thread, at most every tile.
     std::function<void(double)> progress;
     const std::atomic<bool>* cancel = nullptr;  // render throws Error(Cancelled) when set
@@ -37,6 +50,8 @@ struct RenderResult {
     scene::Features features;
     double prepare_seconds = 0;
     double render_seconds = 0;
+    int samples_per_pixel = 0;      // path tracer: samples each pixel got
+    uint64_t nonfinite_paths = 0;   // path tracer: NaN/Inf paths dropped
 };
 
 RenderResult render(const scene::Scene& scene, const RenderOptions& options, Diagnostics& diag);

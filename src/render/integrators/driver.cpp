@@ -5,11 +5,13 @@
 #include <tbb/task_arena.h>
 
 #include <atomic>
+#include <chrono>
 #include <cfloat>
 #include <cmath>
 #include <vector>
 
 #include "core/error.h"
+#include "render/sampling/sampler.h"
 
 namespace glint::render {
 namespace {
@@ -188,6 +190,79 @@ Image run_tiles(const Camera& camera, const RenderOptions& options,
         throw Error(ErrorKind::Cancelled, {}, "render cancelled");
     }
     return image;
+}
+
+int run_path_tiles(const Camera& camera, const RenderOptions& options, const RadianceFn& radiance,
+                   Image* image) {
+    if (options.width <= 0 || options.height <= 0) {
+        throw Error(ErrorKind::Usage, {}, "image size must be positive");
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const size_t pixels = static_cast<size_t>(options.width) * options.height;
+    std::vector<double> sum(pixels * 3, 0.0);
+    std::vector<Tile> tiles;
+    for (int y = 0; y < options.height; y += kBlockSize)
+        for (int x = 0; x < options.width; x += kBlockSize)
+            tiles.push_back({x, y, std::min(x + kBlockSize, options.width),
+                             std::min(y + kBlockSize, options.height)});
+    const int total = std::max(1, options.spp);
+    int done = 0;
+    std::atomic<bool> cancelled{false};
+    int threads = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
+    tbb::task_arena arena(threads);
+    while (done < total) {
+        const int pass = std::min(total - done, std::max(1, done));
+        const int s0 = done, s1 = done + pass;
+        std::atomic<size_t> finished{0};
+        auto body = [&](const tbb::blocked_range<size_t>& range) {
+            for (size_t i = range.begin(); i != range.end(); ++i) {
+                if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
+                    cancelled = true;
+                    return;
+                }
+                const Tile& t = tiles[i];
+                for (int y = t.y0; y < t.y1; ++y) {
+                    for (int x = t.x0; x < t.x1; ++x) {
+                        double* acc = &sum[(static_cast<size_t>(y) * options.width + x) * 3];
+                        for (int s = s0; s < s1; ++s) {
+                            const uint32_t index = static_cast<uint32_t>(s);
+                            const Sample2 j = PixelSampler(x, y, index, options.seed).get2(0);
+                            std::optional<Ray> ray = camera.generate(x + j.u - 0.5, y + j.v - 0.5);
+                            if (!ray) continue;
+                            const Color c = radiance(*ray, SampleId{x, y, index});
+                            acc[0] += sanitize(c.r);
+                            acc[1] += sanitize(c.g);
+                            acc[2] += sanitize(c.b);
+                        }
+                    }
+                }
+                const size_t n = ++finished;
+                if (options.progress)
+                    options.progress((s0 + static_cast<double>(pass) * n / tiles.size()) / total);
+            }
+        };
+        arena.execute([&] {
+            tbb::parallel_for(tbb::blocked_range<size_t>(0, tiles.size(), 1), body,
+                              tbb::simple_partitioner());
+        });
+        if (cancelled || (options.cancel && options.cancel->load())) {
+            throw Error(ErrorKind::Cancelled, {}, "render cancelled");
+        }
+        done = s1;
+        if (options.time_limit > 0 &&
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >=
+                options.time_limit)
+            break;
+    }
+    image->width = options.width;
+    image->height = options.height;
+    image->rgba.assign(pixels * 4, 0.0f);
+    const double inv = 1.0 / done;
+    for (size_t i = 0; i < pixels; ++i) {
+        for (int c = 0; c < 3; ++c) image->rgba[i * 4 + c] = sanitize(sum[i * 3 + c] * inv);
+        image->rgba[i * 4 + 3] = 1.0f;
+    }
+    return done;
 }
 
 }  // namespace glint::render

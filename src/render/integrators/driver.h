@@ -38,4 +38,12 @@ struct DriverSettings {
 Image run_tiles(const Camera& camera, const RenderOptions& options,
                 const DriverSettings& settings, const RadianceFn& radiance);
 
+// The path tracer's loop: options.spp jittered samples per pixel (pixel jitter from pair 0 of
+// the PixelSampler of (pixel, sample, options.seed)), averaged with a box filter. Samples are
+// taken in progressive passes (1, 1, 2, 4, ... per pixel); with options.time_limit > 0 the
+// render stops after the pass that crosses the limit. Each pixel sums its samples in sample
+// order, so the image is bit-identical whatever the thread count. Returns the samples taken.
+int run_path_tiles(const Camera& camera, const RenderOptions& options, const RadianceFn& radiance,
+                   Image* image);
+
 }  // namespace glint::render

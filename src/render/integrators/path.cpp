@@ -1,0 +1,203 @@
+#include "render/integrators/path.h"
+
+#include <cmath>
+
+#include "core/float.h"
+#include "render/bsdf/bsdf.h"
+
+namespace glint::render {
+namespace {
+
+// Sampler pairs used per path vertex: (lobe, roulette), BSDF direction, (alpha, light pick),
+// then one per light slot.
+constexpr uint32_t kPairsPerVertex = 3 + PathLights::kSampleAllMax;
+// Stochastic-alpha pass-throughs allowed on top of max_depth bounces.
+constexpr int kMaxAlphaSkips = 64;
+
+double power_heuristic(double a, double b) {
+    const double a2 = a * a, b2 = b * b;
+    if (!(a2 + b2 > 0)) return 0;
+    if (std::isinf(a2)) return 1;
+    return a2 / (a2 + b2);
+}
+
+bool finite(const Color& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
+
+}  // namespace
+
+PathIntegrator::PathIntegrator(const scene::Scene& scene, const Geometry& geometry,
+                               const TextureCache* textures, const PathSettings& settings)
+    : scene_(scene),
+      geometry_(geometry),
+      pigments_(textures, PatternContext{scene.global.noise_generator, 10, &scene.functions}),
+      settings_(settings) {
+    const size_t n = scene.materials.size();
+    constant_.resize(n);
+    emission_.assign(n, Color());
+    has_alpha_.assign(n, 1);
+    for (size_t i = 0; i < n; ++i) {
+        const scene::Material& m = scene.materials[i];
+        if (!m.pbr.derived) {
+            if (!m.pbr.base_color_map.present()) constant_[i] = pbr_surface(m.pbr, m.pbr.base_color);
+        } else {
+            const scene::Texture& t = base_texture(m.texture);
+            if (t.pigment.kind == scene::PatternKind::Plain)
+                constant_[i] = pov_to_pbr(t.finish, m.interior, t.pigment.color);
+        }
+        if (constant_[i]) {
+            emission_[i] = constant_[i]->emission;
+            has_alpha_[i] = constant_[i]->alpha < 1;
+        }
+        any_alpha_ = any_alpha_ || has_alpha_[i];
+    }
+    lights_.emplace(scene, emission_);
+}
+
+SurfacePbr PathIntegrator::surface(const Hit& hit) const {
+    if (hit.material < 0 || hit.material >= static_cast<int>(scene_.materials.size())) {
+        SurfacePbr s;
+        s.bsdf.specular = 0;
+        return s;
+    }
+    if (const auto& c = constant_[hit.material]) return *c;
+    const scene::Material& m = scene_.materials[hit.material];
+    const PatternPoint at{hit.p, hit.uv, hit.has_uv};
+    if (!m.pbr.derived) {
+        Color base = m.pbr.base_color;
+        scene::ColorFT c;
+        const scene::Pigment& pig = m.texture.pigment;
+        if (pig.kind == scene::PatternKind::ImageMap && pigments_.evaluate(pig, at, &c))
+            base = c.rgb;
+        return pbr_surface(m.pbr, base);
+    }
+    const scene::Texture& t = base_texture(m.texture);
+    scene::ColorFT c;
+    if (!pigments_.evaluate(t.pigment, at, &c)) c = scene::ColorFT(Color(1, 1, 1), 0, 1);
+    return pov_to_pbr(t.finish, m.interior, c);
+}
+
+double PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dist) const {
+    // Stop short of the light sample so an emitter does not shadow itself.
+    const double tmax = std::isinf(dist) ? kInfinity : dist * (1 - 1e-5);
+    Ray r;
+    r.origin = offset_ray_origin(from.p, from.p_error, from.ng, dir);
+    r.dir = dir;
+    r.tmax = tmax;
+    if (!any_alpha_) return geometry_.occluded(r) ? 0.0 : 1.0;
+    double t = 1;
+    double travelled = 0;
+    for (int i = 0; i < kMaxAlphaSkips; ++i) {
+        Hit h;
+        if (!geometry_.intersect(r, &h)) return t;
+        if (!(h.flags & kNoShadow)) {
+            if (h.material < 0 || !has_alpha_[h.material]) return 0;
+            t *= 1 - surface(h).alpha;
+            if (!(t > 0)) return 0;
+        }
+        const Vec3 o = offset_ray_origin(h.p, h.p_error, h.ng, dir);
+        travelled += length(o - r.origin);
+        r.origin = o;
+        r.tmax = std::isinf(tmax) ? kInfinity : tmax - travelled;
+        if (!(r.tmax > 0)) return t;
+    }
+    return 0;
+}
+
+Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler) const {
+    Color L;
+    Color beta(1, 1, 1);
+    Ray r = camera_ray;
+    r.dir = normalize(r.dir);
+    bool specular = true;  // camera rays and delta bounces: emission is not light-sampled
+    double prev_pdf = 0;
+    double seg_dist = 0;  // distance from the last scattering vertex (across alpha skips)
+    int depth = 0;
+    const PathLights& lights = *lights_;
+    const int max_vertices = settings_.max_depth + 1 + kMaxAlphaSkips;
+    for (int v = 0; v < max_vertices; ++v) {
+        const uint32_t base = 1 + static_cast<uint32_t>(v) * kPairsPerVertex;
+        Hit hit;
+        if (!geometry_.intersect(r, &hit)) {
+            if (lights.has_environment()) {
+                const double w =
+                    specular ? 1.0 : power_heuristic(prev_pdf, lights.environment_pdf());
+                L += beta * lights.environment() * w;
+            }
+            break;
+        }
+        const SurfacePbr s = surface(hit);
+        const Sample2 ua = sampler.get2(base + 2);
+        if (s.alpha < 1 && ua.u >= s.alpha) {
+            const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
+            seg_dist += length(o - r.origin);
+            r.origin = o;
+            r.tmax = kInfinity;
+            continue;
+        }
+        if (!s.emission.is_black()) {
+            double w = 1;
+            if (!specular && lights.emitter_object(hit.object)) {
+                const double pl = lights.triangle_pdf(s.emission, seg_dist + hit.t,
+                                                      std::fabs(dot(hit.ng, r.dir)));
+                w = power_heuristic(prev_pdf, pl);
+            }
+            L += beta * s.emission * w;
+        }
+        if (depth >= settings_.max_depth) break;
+
+        const Bsdf bsdf = Bsdf::principled(s.bsdf);
+        const Frame frame = Frame::from_normal(hit.n);
+        const Vec3 wo = frame.to_local(-r.dir);
+
+        // Next-event estimation.
+        if (!bsdf.all_delta() && lights.count() > 0) {
+            auto light = [&](int slot, Sample2 u) {
+                PathLightSample ls;
+                if (!lights.sample(slot, hit.p, u, &ls)) return;
+                const Vec3 wi = frame.to_local(ls.wi);
+                const Color f = bsdf.eval(wo, wi);
+                if (f.is_black()) return;
+                const double tr = transmittance(hit, ls.wi, ls.dist);
+                if (!(tr > 0)) return;
+                Color c = f * ls.value * (std::fabs(wi.z) * tr);
+                if (ls.pdf > 0) c *= power_heuristic(ls.pdf, bsdf.pdf(wo, wi));
+                L += beta * c;
+            };
+            if (lights.sample_all()) {
+                for (int k = 0; k < lights.count(); ++k)
+                    light(k, sampler.get2(base + 3 + static_cast<uint32_t>(k)));
+            } else {
+                const int k = std::min(lights.count() - 1, static_cast<int>(ua.v * lights.count()));
+                light(k, sampler.get2(base + 3));
+            }
+        }
+
+        // Continue the path by sampling the BSDF.
+        const Sample2 ul = sampler.get2(base);
+        const Sample2 ud = sampler.get2(base + 1);
+        BsdfSample bs;
+        if (!bsdf.sample(wo, ul.u, ud.u, ud.v, &bs)) break;
+        beta *= bs.weight;
+        specular = bs.delta;
+        prev_pdf = bs.pdf;
+        ++depth;
+        if (depth >= settings_.rr_start) {
+            const double p = std::min(0.95, beta.max());
+            if (!(ul.v < p)) break;
+            beta *= 1.0 / p;
+        }
+        if (beta.is_black() || !finite(beta)) break;
+        const Vec3 wi = normalize(frame.to_world(bs.wi));
+        r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, wi);
+        r.dir = wi;
+        r.tmax = kInfinity;
+        seg_dist = 0;
+    }
+    if (!finite(L)) {
+        nonfinite_.fetch_add(1, std::memory_order_relaxed);
+        return Color();
+    }
+    return L;
+}
+
+}  // namespace glint::render

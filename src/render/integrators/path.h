@@ -1,0 +1,57 @@
+// The Monte Carlo path tracer (--integrator path): unidirectional path tracing with
+// next-event estimation and multiple importance sampling (power heuristic, Veach 1997) for
+// emissive triangles and the environment, Russian roulette after a few bounces, a maximum
+// depth, and stochastic alpha. Materials come from the IR's Pbr half, or from the POV-Ray
+// finish through docs/pbr-mapping.md. Prepared once per render, read-only while rendering,
+// allocation-free per sample; random numbers come from the deterministic PixelSampler.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "render/bsdf/pov_to_pbr.h"
+#include "render/geometry.h"
+#include "render/integrators/path_lights.h"
+#include "render/sampling/sampler.h"
+#include "render/textures/pigment.h"
+#include "scene/features.h"
+#include "scene/scene.h"
+
+namespace glint::render {
+
+struct PathSettings {
+    int max_depth = 8;       // bounces after the camera ray (1 = direct light only)
+    int rr_start = 3;        // Russian roulette from this bounce on
+};
+
+class PathIntegrator {
+public:
+    PathIntegrator(const scene::Scene& scene, const Geometry& geometry,
+                   const TextureCache* textures, const PathSettings& settings);
+
+    // Radiance along a camera ray. Pair 0 of the sampler is the driver's pixel jitter.
+    Color li(const Ray& ray, const PixelSampler& sampler) const;
+
+    // Paths whose radiance was NaN or infinite (dropped, counted).
+    uint64_t nonfinite() const { return nonfinite_.load(std::memory_order_relaxed); }
+
+private:
+    SurfacePbr surface(const Hit& hit) const;
+    // Fraction of light passing from `origin` along `dir` for `dist` (alpha-aware shadows).
+    double transmittance(const Hit& from, const Vec3& dir, double dist) const;
+
+    const scene::Scene& scene_;
+    const Geometry& geometry_;
+    PigmentEvaluator pigments_;
+    PathSettings settings_;
+    std::vector<std::optional<SurfacePbr>> constant_;  // per material, where the hit can't change it
+    std::vector<Color> emission_;                      // per material, where constant
+    std::vector<char> has_alpha_;                      // per material: alpha may be < 1
+    bool any_alpha_ = false;
+    std::optional<PathLights> lights_;
+    mutable std::atomic<uint64_t> nonfinite_{0};
+};
+
+}  // namespace glint::render
