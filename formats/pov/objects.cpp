@@ -441,6 +441,9 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
 
 void Parser::parse_light_body(scene::Light& l, std::optional<PovObject>* looks_like) {
     FileLoc opened = loc();
+    // jitter, adaptive, circular and orient may come before area_light (parse.cpp sets them
+    // on the light source, and POV-Ray accepts them on a point light too).
+    scene::AreaLight sampling = l.area.value_or(scene::AreaLight{});
     l.location = parse_vector();
     skip_comma();
     l.color = parse_rgb();
@@ -461,14 +464,15 @@ void Parser::parse_light_body(scene::Light& l, std::optional<PovObject>* looks_l
         else if (w == "fade_power") l.fade_power = parse_float();
         else if (w == "media_interaction" || w == "media_attenuation") allow_float(1);
         else if (w == "circular" || w == "orient" || w == "jitter") {
-            if (!l.area) fail("'" + w + "' needs an area_light");
+            // Flags of the light, whether or not it is (or becomes) an area light.
+            if (!l.area && w != "jitter")
+                diag.warning(loc(), "'" + w + "' only affects area_light");
             bool on = allow_float(1) != 0;
-            if (w == "circular") l.area->circular = on;
-            if (w == "orient") l.area->orient = on;
-            if (w == "jitter") l.area->jitter = on;
+            if (w == "circular") sampling.circular = on;
+            if (w == "orient") sampling.orient = on;
+            if (w == "jitter") sampling.jitter = on;
         } else if (w == "adaptive") {
-            if (!l.area) fail("'adaptive' needs an area_light");
-            l.area->adaptive = static_cast<int>(parse_float());
+            sampling.adaptive = static_cast<int>(parse_float());
         } else if (w == "area_light") {
             scene::AreaLight a;
             a.axis1 = parse_vector();
@@ -513,6 +517,12 @@ void Parser::parse_light_body(scene::Light& l, std::optional<PovObject>* looks_l
             }
             tr = tr.then(delta);
         }
+    }
+    if (l.area) {
+        l.area->jitter = sampling.jitter;
+        l.area->circular = sampling.circular;
+        l.area->orient = sampling.orient;
+        l.area->adaptive = sampling.adaptive;
     }
     transform_light(l, tr);
     if (looks_like && *looks_like) apply_transform(**looks_like, tr);
