@@ -336,9 +336,12 @@ int render_frame(const RenderArgs& args) {
         std::fprintf(stderr, "image: %dx%d, aa %s, 8/16-bit encoding %s\n", result.image.width,
                      result.image.height, args.aa.c_str(), encoding_name(encoding).c_str());
         if (options.integrator == render::IntegratorKind::Path)
-            std::fprintf(stderr, "path: %d spp, max depth %d, seed %u, %llu non-finite paths dropped\n",
+            std::fprintf(stderr,
+                         "path: %d spp, max depth %d, seed %u, %llu non-finite paths dropped, "
+                         "%.2f Mrays/s\n",
                          result.samples_per_pixel, options.max_depth, options.seed,
-                         static_cast<unsigned long long>(result.nonfinite_paths));
+                         static_cast<unsigned long long>(result.nonfinite_paths),
+                         result.render_seconds > 0 ? result.rays / result.render_seconds * 1e-6 : 0.0);
         std::fprintf(stderr,
                      "time: parse %.3f s, prepare %.3f s, render %.3f s, write %.3f s, "
                      "total %.3f s\n",

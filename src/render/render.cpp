@@ -46,6 +46,7 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
         };
         result.samples_per_pixel = run_path_tiles(camera, options, radiance, &result.image);
         result.nonfinite_paths = path.nonfinite();
+        result.rays = path.rays();
         result.render_seconds = seconds_since(t1);
         return result;
     }

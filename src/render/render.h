@@ -52,6 +52,7 @@ struct RenderResult {
     double render_seconds = 0;
     int samples_per_pixel = 0;      // path tracer: samples each pixel got
     uint64_t nonfinite_paths = 0;   // path tracer: NaN/Inf paths dropped
+    uint64_t rays = 0;              // path tracer: rays traced (camera, bounce, shadow)
 };
 
 RenderResult render(const scene::Scene& scene, const RenderOptions& options, Diagnostics& diag);

@@ -76,18 +76,21 @@ SurfacePbr PathIntegrator::surface(const Hit& hit) const {
     return pov_to_pbr(t.finish, m.interior, c);
 }
 
-double PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dist) const {
+double PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dist,
+                                     uint64_t* rays) const {
     // Stop short of the light sample so an emitter does not shadow itself.
     const double tmax = std::isinf(dist) ? kInfinity : dist * (1 - 1e-5);
     Ray r;
     r.origin = offset_ray_origin(from.p, from.p_error, from.ng, dir);
     r.dir = dir;
     r.tmax = tmax;
+    ++*rays;
     if (!any_alpha_) return geometry_.occluded(r) ? 0.0 : 1.0;
     double t = 1;
     double travelled = 0;
     for (int i = 0; i < kMaxAlphaSkips; ++i) {
         Hit h;
+        if (i > 0) ++*rays;
         if (!geometry_.intersect(r, &h)) return t;
         if (!(h.flags & kNoShadow)) {
             if (h.material < 0 || !has_alpha_[h.material]) return 0;
@@ -112,11 +115,13 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler) con
     double prev_pdf = 0;
     double seg_dist = 0;  // distance from the last scattering vertex (across alpha skips)
     int depth = 0;
+    uint64_t rays = 0;
     const PathLights& lights = *lights_;
     const int max_vertices = settings_.max_depth + 1 + kMaxAlphaSkips;
     for (int v = 0; v < max_vertices; ++v) {
         const uint32_t base = 1 + static_cast<uint32_t>(v) * kPairsPerVertex;
         Hit hit;
+        ++rays;
         if (!geometry_.intersect(r, &hit)) {
             if (lights.has_environment()) {
                 const double w =
@@ -157,7 +162,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler) con
                 const Vec3 wi = frame.to_local(ls.wi);
                 const Color f = bsdf.eval(wo, wi);
                 if (f.is_black()) return;
-                const double tr = transmittance(hit, ls.wi, ls.dist);
+                const double tr = transmittance(hit, ls.wi, ls.dist, &rays);
                 if (!(tr > 0)) return;
                 Color c = f * ls.value * (std::fabs(wi.z) * tr);
                 if (ls.pdf > 0) c *= power_heuristic(ls.pdf, bsdf.pdf(wo, wi));
@@ -193,6 +198,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler) con
         r.tmax = kInfinity;
         seg_dist = 0;
     }
+    rays_.fetch_add(rays, std::memory_order_relaxed);
     if (!finite(L)) {
         nonfinite_.fetch_add(1, std::memory_order_relaxed);
         return Color();

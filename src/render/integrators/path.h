@@ -36,11 +36,13 @@ public:
 
     // Paths whose radiance was NaN or infinite (dropped, counted).
     uint64_t nonfinite() const { return nonfinite_.load(std::memory_order_relaxed); }
+    // Rays traced so far (camera, continuation and shadow rays), for -v's Mrays/s.
+    uint64_t rays() const { return rays_.load(std::memory_order_relaxed); }
 
 private:
     SurfacePbr surface(const Hit& hit) const;
     // Fraction of light passing from `origin` along `dir` for `dist` (alpha-aware shadows).
-    double transmittance(const Hit& from, const Vec3& dir, double dist) const;
+    double transmittance(const Hit& from, const Vec3& dir, double dist, uint64_t* rays) const;
 
     const scene::Scene& scene_;
     const Geometry& geometry_;
@@ -52,6 +54,7 @@ private:
     bool any_alpha_ = false;
     std::optional<PathLights> lights_;
     mutable std::atomic<uint64_t> nonfinite_{0};
+    mutable std::atomic<uint64_t> rays_{0};
 };
 
 }  // namespace glint::render
