@@ -70,9 +70,21 @@ TEST(PovCamera, TransformsApplyLast) {
     expect_near(s.camera.direction, {0, 0, 1});
 }
 
-TEST(PovCamera, UnsupportedKindsFail) {
-    EXPECT_EQ(error_of("camera {\n  fisheye angle 180 }"),
-              "2:3: the 'fisheye' camera is not supported yet");
+TEST(PovCamera, NonLinearProjections) {
+    auto s = parse("camera { fisheye angle 180 location <0, 0, -5> look_at 0 }");
+    EXPECT_EQ(s.camera.kind, scene::CameraKind::Fisheye);
+    EXPECT_DOUBLE_EQ(s.camera.angle, 180);  // used as given, not folded into direction
+    s = parse("camera { cylinder 3 location <0, 0, -5> }");
+    EXPECT_EQ(s.camera.kind, scene::CameraKind::Cylinder3);
+    EXPECT_DOUBLE_EQ(s.camera.angle, 90);  // POV-Ray's default
+    s = parse("camera { spherical angle 120 location 0 }");
+    EXPECT_DOUBLE_EQ(s.camera.h_angle, 120);
+    EXPECT_DOUBLE_EQ(s.camera.v_angle, 60);  // half of H unless given
+    EXPECT_EQ(error_of("camera {\n  cylinder 5 }"),
+              "2:3: invalid cylinder camera type 5; valid types are 1 to 4");
+}
+
+TEST(PovCamera, BadCamerasFail) {
     EXPECT_EQ(error_of("camera { location 0 look_at 0 }"),
               "1:8: the camera location and look_at point must be different");
 }
