@@ -76,6 +76,23 @@ SurfacePbr PathIntegrator::surface(const Hit& hit) const {
     return pov_to_pbr(t.finish, m.interior, c);
 }
 
+Color PathIntegrator::environment(const Vec3& dir) const {
+    const scene::SkySphere* sky = scene_.sky_sphere ? &*scene_.sky_sphere : nullptr;
+    Color col;
+    Color fil(1.0);
+    if (sky && !sky->pigments.empty()) {
+        const Vec3 d = normalize(dir);
+        const Vec3 p = sky->transform.is_identity() ? d : sky->transform.inverse_point(d);
+        for (int i = static_cast<int>(sky->pigments.size()) - 1; i >= 0; --i) {
+            scene::ColorFT c;
+            pigments_.evaluate(sky->pigments[i], {p, {}, false}, &c);
+            col += c.rgb * (1.0 - c.filter - c.transmit) * fil * sky->emission;
+            fil *= c.rgb * c.filter + Color(c.transmit);
+        }
+    }
+    return col + scene_.background.rgb * fil;
+}
+
 double PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dist,
                                      uint64_t* rays) const {
     // Stop short of the light sample so an emitter does not shadow itself.
@@ -126,7 +143,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler) con
             if (lights.has_environment()) {
                 const double w =
                     specular ? 1.0 : power_heuristic(prev_pdf, lights.environment_pdf());
-                L += beta * lights.environment() * w;
+                L += beta * environment(r.dir) * w;
             }
             break;
         }
@@ -165,6 +182,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler) con
                 const double tr = transmittance(hit, ls.wi, ls.dist, &rays);
                 if (!(tr > 0)) return;
                 Color c = f * ls.value * (std::fabs(wi.z) * tr);
+                if (ls.environment) c *= environment(ls.wi);
                 if (ls.pdf > 0) c *= power_heuristic(ls.pdf, bsdf.pdf(wo, wi));
                 L += beta * c;
             };

@@ -41,6 +41,9 @@ public:
 
 private:
     SurfacePbr surface(const Hit& hit) const;
+    // Radiance from the environment along a direction: the background with the sky_sphere's
+    // layers over it (POV-Ray 3.7's sky).
+    Color environment(const Vec3& dir) const;
     // Fraction of light passing from `origin` along `dir` for `dist` (alpha-aware shadows).
     double transmittance(const Hit& from, const Vec3& dir, double dist, uint64_t* rays) const;
 

@@ -75,8 +75,8 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
         tri_total_ = sum;
         slots_.push_back({SlotKind::Triangles, -1});
     }
-    env_ = scene.background.rgb;
-    has_env_ = average(env_) > 0;
+    has_env_ = average(scene.background.rgb) > 0 ||
+               (scene.sky_sphere && !scene.sky_sphere->pigments.empty());
     if (has_env_) slots_.push_back({SlotKind::Environment, -1});
 }
 
@@ -150,7 +150,8 @@ bool PathLights::sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out
             out->wi = Vec3(r * std::cos(phi), r * std::sin(phi), z);
             out->dist = kInfinity;
             out->pdf = environment_pdf();
-            out->value = env_ / out->pdf;
+            out->value = Color(1.0 / out->pdf);
+            out->environment = true;
             return true;
         }
     }

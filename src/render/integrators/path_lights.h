@@ -7,7 +7,8 @@
 //   shows C * cos as POV-Ray's diffuse 1.0 shows it (docs/pbr-mapping.md).
 // - Emissive triangles (meshes and triangles whose material emits), sampled by area times
 //   emitted power; BSDF rays that hit them are weighted by MIS (power heuristic).
-// - A uniform environment from the background color, sampled uniformly over the sphere.
+// - The environment (background color, with the sky_sphere laid over it as POV-Ray 3.7 does),
+//   sampled uniformly over the sphere; the integrator evaluates its radiance.
 #pragma once
 
 #include <vector>
@@ -23,6 +24,7 @@ struct PathLightSample {
     double dist = 0;        // distance to the light sample along wi (kInfinity: far away)
     Color value;            // radiance / pdf (delta lights: the irradiance factor)
     double pdf = 0;         // solid-angle pdf of this sample; 0 for lights BSDFs cannot hit
+    bool environment = false;  // value is 1 / pdf: multiply by the environment along wi
 };
 
 class PathLights {
@@ -38,7 +40,6 @@ public:
     bool sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out) const;
 
     bool has_environment() const { return has_env_; }
-    const Color& environment() const { return env_; }
     double environment_pdf() const { return has_env_ ? select_prob() / (4 * kPi) : 0.0; }
     // Whether BSDF rays hitting this object could have been light-sampled.
     bool emitter_object(int object) const {
@@ -70,7 +71,6 @@ private:
     std::vector<double> tri_cdf_;  // normalized cumulative area * average emission
     double tri_total_ = 0;
     std::vector<char> emitter_object_;
-    Color env_;
     bool has_env_ = false;
 };
 
