@@ -8,6 +8,7 @@
 
 #include "core/log.h"
 #include "render/camera.h"
+#include "render/integrators/path_lights.h"
 #include "render/render.h"
 
 namespace glint::render {
@@ -281,6 +282,35 @@ TEST(PathRender, EmissiveQuadOverDiffusePlaneMatchesQuadrature) {
     const double se = std::sqrt(std::max(0.0, s2 / count - mean * mean) / count);
     std::printf("emissive quad: mean pixel - quadrature %.3g, stderr %.2g\n", mean, se);
     EXPECT_NEAR(mean, 0.0, 3 * se + 2e-4) << "stderr " << se;
+}
+
+TEST(PathLights, SpotConeFollowsPovRaysAttenuation) {
+    // POV-Ray's spot: full inside radius (times cos^tightness), POV-Ray's cubic between
+    // radius and falloff, nothing outside falloff; irradiance factor pi * color.
+    scene::Scene s;
+    scene::Light l;
+    l.kind = scene::LightKind::Spot;
+    l.location = Vec3(0, 10, 0);
+    l.point_at = Vec3(0, 0, 0);
+    l.radius = 10;
+    l.falloff = 20;
+    l.color = Color(1, 1, 1);
+    s.lights.push_back(l);
+    PathLights lights(s, {});
+    ASSERT_EQ(lights.count(), 1);
+    auto at_angle = [&](double deg) {
+        const Vec3 p(10 * std::tan(deg * kPi / 180), 0, 0);
+        PathLightSample ls;
+        EXPECT_TRUE(lights.sample(0, p, {0.5, 0.5}, &ls) || deg > 20);
+        return ls.value.r / kPi;
+    };
+    EXPECT_NEAR(at_angle(0), 1.0, 1e-12);
+    EXPECT_NEAR(at_angle(9.9), 1.0, 1e-12);
+    const double c = std::cos(15 * kPi / 180), lo = std::cos(20 * kPi / 180),
+                 hi = std::cos(10 * kPi / 180);
+    const double t = (c - lo) / (hi - lo);
+    EXPECT_NEAR(at_angle(15), (3 - 2 * t) * t * t, 1e-12);
+    EXPECT_EQ(at_angle(25), 0.0);
 }
 
 }  // namespace

@@ -176,6 +176,10 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler) con
             auto light = [&](int slot, Sample2 u) {
                 PathLightSample ls;
                 if (!lights.sample(slot, hit.p, u, &ls)) return;
+                // An opaque surface is lit only from the side the eye is on, whatever an
+                // interpolated shading normal says (no light leaks through smooth meshes).
+                if (s.bsdf.transmission <= 0 && dot(ls.wi, hit.ng) * dot(r.dir, hit.ng) >= 0)
+                    return;
                 const Vec3 wi = frame.to_local(ls.wi);
                 const Color f = bsdf.eval(wo, wi);
                 if (f.is_black()) return;
