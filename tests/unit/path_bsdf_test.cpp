@@ -131,6 +131,9 @@ TEST(PathBsdf, EnergyAtMostOneAndSamplingMatchesEval) {
         {"rough glass", Bsdf::principled(params(Color(1, 1, 1), 0, 0.5, 0.5, 1, 1.5))},
         {"rough glass ior 1.33", Bsdf::principled(params(Color(1, 1, 1), 0, 0.7, 0.5, 1, 1.33))},
         {"half glass", Bsdf::principled(params(Color(1, 1, 1), 0, 0.6, 0.5, 0.5, 1.5))},
+        {"phong n 1", Bsdf::phong(Color(0.5, 0.5, 0.5), Color(0.5, 0.5, 0.5), 1)},
+        {"phong n 10", Bsdf::phong(Color(0, 0, 0), Color(1, 1, 1), 10)},
+        {"phong n 100", Bsdf::phong(Color(0.3, 0.2, 0.1), Color(0.7, 0.7, 0.7), 100)},
     };
     for (const Case& c : cases) {
         for (double theta : {10.0, 45.0, 75.0, 120.0}) {
@@ -166,6 +169,23 @@ TEST(PathBsdf, ExtremeParametersStayFinite) {
                     }
                 }
             }
+}
+
+TEST(PathBsdf, PhongExtremeExponentsStayFiniteAndPeakAtTheMirror) {
+    for (double n : {0.0, 1.0, 1e5, 1e6}) {
+        const Bsdf b = Bsdf::phong(Color(0, 0, 0), Color(1, 1, 1), n);
+        const Vec3 wo = dir_from(30);
+        const Vec3 mirror(-wo.x, -wo.y, wo.z);
+        const Color f = b.eval(wo, mirror);
+        EXPECT_TRUE(std::isfinite(f.r) && f.r > 0) << n;
+        const Estimate e = by_sampling(b, wo, 1024, 4, nullptr);
+        EXPECT_TRUE(std::isfinite(e.mean)) << n;
+        EXPECT_LE(e.mean, 1.0 + 1e-9) << n;
+        if (n >= 1e5) {
+            // A narrow modified-Phong lobe reflects (n + 2) / (n + 1) * cos(theta_o) ~ cos 30.
+            EXPECT_NEAR(e.mean, std::cos(30 * kPi / 180), 1e-4) << n;
+        }
+    }
 }
 
 TEST(PathPbrMapping, PovFinishesMapAsDocumented) {

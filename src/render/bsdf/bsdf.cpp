@@ -77,6 +77,12 @@ double dielectric_eval(const Ggx& ggx, double eta, const Vec3& wo, const Vec3& w
            std::fabs(dot(wi, wm) * dot(wo, wm) / (cos_i * cos_o * denom));
 }
 
+// Cosine of the angle between wi and the mirror direction of wo about z, and the lobe value.
+double phong_cos(const Vec3& wo, const Vec3& wi) {
+    return std::max(0.0, 2 * wo.z * wi.z - dot(wo, wi));
+}
+double phong_pow(double c, double n) { return c > 0 ? std::pow(c, n) : (n == 0 ? 1.0 : 0.0); }
+
 }  // namespace
 
 double fresnel_dielectric(double cos_i, double eta) {
@@ -135,6 +141,16 @@ Bsdf Bsdf::lambert(const Color& albedo) {
     return b;
 }
 
+Bsdf Bsdf::phong(const Color& kd, const Color& ks, double exponent) {
+    Bsdf b;
+    b.diffuse_color_ = kd;
+    b.w_diffuse_ = average(kd) > 0 ? 1 : 0;
+    b.phong_ks_ = ks;
+    b.phong_n_ = std::max(0.0, exponent);
+    b.w_phong_ = average(ks) > 0 ? 1 : 0;
+    return b;
+}
+
 Bsdf Bsdf::principled(const PrincipledParams& p) {
     Bsdf b;
     const double m = std::clamp(p.metallic, 0.0, 1.0);
@@ -163,7 +179,7 @@ Color Bsdf::spec_fresnel(double cos_h) const {
     return spec_color_ + (Color(1) - spec_color_) * w;
 }
 
-void Bsdf::lobe_probs(const Vec3& wo, double* pd, double* ps, double* pt) const {
+void Bsdf::lobe_probs(const Vec3& wo, double* pd, double* ps, double* pt, double* pp) const {
     const double c = std::fabs(wo.z);
     const double fd = diffuse_fresnel_
                           ? diffuse_fresnel_f0_ + (1 - diffuse_fresnel_f0_) * schlick_weight(c)
@@ -171,6 +187,7 @@ void Bsdf::lobe_probs(const Vec3& wo, double* pd, double* ps, double* pt) const 
     *pd = w_diffuse_ > 0 ? average(diffuse_color_) * (1 - fd) : 0;
     *ps = w_spec_ > 0 ? w_spec_ * average(spec_fresnel(c)) : 0;
     *pt = w_trans_ > 0 ? w_trans_ * std::max(average(trans_tint_), 1e-3) : 0;
+    *pp = w_phong_ > 0 ? average(phong_ks_) : 0;
     // A lobe that contributes must keep a chance of being sampled.
     if (w_diffuse_ > 0 && *pd <= 0 && average(diffuse_color_) > 0) *pd = 1e-3;
 }
@@ -186,6 +203,8 @@ Color Bsdf::eval(const Vec3& wo, const Vec3& wi) const {
                              : 0.0;
         f += diffuse_color_ * (kInvPi * (1 - fd));
     }
+    if (w_phong_ > 0 && same_side)
+        f += phong_ks_ * ((phong_n_ + 2) / (2 * kPi) * phong_pow(phong_cos(o, i), phong_n_));
     if (spec_delta_) return f;
     if (w_spec_ > 0 && same_side) {
         const Vec3 wm = normalize(o + i);
@@ -200,15 +219,17 @@ Color Bsdf::eval(const Vec3& wo, const Vec3& wi) const {
 }
 
 double Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
-    double pd, ps, pt;
-    lobe_probs(wo, &pd, &ps, &pt);
-    const double sum = pd + ps + pt;
+    double pd, ps, pt, pp;
+    lobe_probs(wo, &pd, &ps, &pt, &pp);
+    const double sum = pd + ps + pt + pp;
     if (!(sum > 0)) return 0;
     const double s = wo.z < 0 ? -1.0 : 1.0;
     const Vec3 o(wo.x, wo.y, wo.z * s), i(wi.x, wi.y, wi.z * s);
     const bool same_side = o.z > 0 && i.z > 0;
     double pdf = 0;
     if (pd > 0 && same_side) pdf += pd * i.z * kInvPi;
+    if (pp > 0 && same_side)
+        pdf += pp * (phong_n_ + 1) / (2 * kPi) * phong_pow(phong_cos(o, i), phong_n_);
     if (!spec_delta_) {
         if (ps > 0 && same_side) {
             const Vec3 wm = normalize(o + i);
@@ -225,9 +246,9 @@ double Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
 
 bool Bsdf::sample(const Vec3& wo, double u_lobe, double u1, double u2, BsdfSample* out) const {
     if (wo.z == 0) return false;
-    double pd, ps, pt;
-    lobe_probs(wo, &pd, &ps, &pt);
-    const double sum = pd + ps + pt;
+    double pd, ps, pt, pp;
+    lobe_probs(wo, &pd, &ps, &pt, &pp);
+    const double sum = pd + ps + pt + pp;
     if (!(sum > 0)) return false;
     const double s = wo.z < 0 ? -1.0 : 1.0;
     const Vec3 o(wo.x, wo.y, wo.z * s);
@@ -235,6 +256,16 @@ bool Bsdf::sample(const Vec3& wo, double u_lobe, double u1, double u2, BsdfSampl
     Vec3 wi;
     if (u < pd) {
         const Vec3 i = cosine_hemisphere(u1, u2);
+        wi = Vec3(i.x, i.y, i.z * s);
+    } else if (u >= pd + ps + pt) {
+        // Phong lobe: cos^n around the mirror direction.
+        const Vec3 r(-o.x, -o.y, o.z);
+        const double cos_a = std::pow(u1, 1.0 / (phong_n_ + 1));
+        const double sin_a = std::sqrt(std::max(0.0, 1 - cos_a * cos_a));
+        const double phi = 2 * kPi * u2;
+        const Frame fr = Frame::from_normal(r);
+        const Vec3 i = fr.to_world(Vec3(sin_a * std::cos(phi), sin_a * std::sin(phi), cos_a));
+        if (i.z <= 0) return false;
         wi = Vec3(i.x, i.y, i.z * s);
     } else if (u < pd + ps) {
         if (spec_delta_) {

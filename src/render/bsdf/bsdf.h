@@ -4,7 +4,7 @@
 // uses; sample() returns the throughput weight f * |cos wi| / pdf directly, which stays exact
 // for delta lobes. Plain values, no allocation: one is built per hit on the stack.
 //
-// Models: Lambert; a Principled-lite BSDF (scene::Pbr): a Lambert base, a GGX reflection
+// Models: Lambert; the modified Phong BRDF (Lafortune & Willems 1994); a Principled-lite BSDF (scene::Pbr): a Lambert base, a GGX reflection
 // lobe with Schlick Fresnel (F0 = 0.08 * specular for dielectrics, the base color for metals)
 // sampled by visible normals (Heitz 2018), and a rough dielectric (Walter et al. 2007) for
 // transmission, all mixed by metallic and transmission as Blender's Principled BSDF mixes them.
@@ -65,17 +65,24 @@ class Bsdf {
 public:
     static Bsdf lambert(const Color& albedo);
     static Bsdf principled(const PrincipledParams& p);
+    // The modified Phong BRDF (Lafortune & Willems 1994): kd / pi + ks (n + 2) / (2 pi) cos^n a,
+    // a the angle between wi and the mirror direction of wo; energy-conserving when kd + ks <= 1.
+    // The glossy lobe is sampled exactly (pdf (n + 1) / (2 pi) cos^n a).
+    static Bsdf phong(const Color& kd, const Color& ks, double exponent);
 
     Color eval(const Vec3& wo, const Vec3& wi) const;
     double pdf(const Vec3& wo, const Vec3& wi) const;
     // `u_lobe` picks a lobe, (u1, u2) the direction. Returns false when no direction results.
     bool sample(const Vec3& wo, double u_lobe, double u1, double u2, BsdfSample* out) const;
     // True when every lobe is a delta (then light sampling is pointless).
-    bool all_delta() const { return w_diffuse_ == 0 && (w_spec_ == 0 || spec_delta_) && (w_trans_ == 0 || spec_delta_); }
+    bool all_delta() const {
+        return w_diffuse_ == 0 && w_phong_ == 0 && (w_spec_ == 0 || spec_delta_) &&
+               (w_trans_ == 0 || spec_delta_);
+    }
 
 private:
     // Lobe selection probabilities for wo (up to normalization).
-    void lobe_probs(const Vec3& wo, double* pd, double* ps, double* pt) const;
+    void lobe_probs(const Vec3& wo, double* pd, double* ps, double* pt, double* pp) const;
     Color spec_fresnel(double cos_h) const;
 
     Color diffuse_color_;  // albedo of the Lambert lobe (already weighted)
@@ -84,6 +91,9 @@ private:
     double w_diffuse_ = 0, w_spec_ = 0, w_trans_ = 0;
     double diffuse_fresnel_f0_ = 0;  // the dielectric F0 the diffuse lobe gives way to
     bool diffuse_fresnel_ = false;   // whether the diffuse lobe gives way to the reflection
+    Color phong_ks_;  // modified Phong glossy lobe (w_phong_ = 1 when present)
+    double phong_n_ = 0;
+    double w_phong_ = 0;
     Ggx ggx_;
     bool spec_delta_ = false;
     double eta_ = 1.5;
