@@ -286,6 +286,8 @@ public:
                 p_.unget();
                 if (!p_.next_is_expression_start())
                     p_.fail("expected ',' or '>' in the vector, got " + p_.got(p_.next()));
+            } else if (p_.accept(">")) {
+                break;  // a trailing comma: <0.2, 0.1, 0.5,> (POV-Ray accepts it)
             }
         }
         --vector_depth_;

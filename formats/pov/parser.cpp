@@ -61,6 +61,8 @@ void Parser::place_object(PovObject o) {
     propagate_flags(scene.objects.back());
 }
 
+static void parse_declared_sky_sphere(Parser& p);
+
 Value Parser::parse_rvalue() {
     const Token& t = next();
     if (pending_declare_frame_ != size_t(-1)) {
@@ -150,7 +152,10 @@ Value Parser::parse_rvalue() {
         if (w == "sky_sphere") {
             // parse_sky_sphere sets the scene's sky; a declaration keeps it instead.
             std::optional<scene::SkySphere> saved = scene.sky_sphere;
-            parse_sky_sphere();
+            if (declared_sky_sphere_follows())
+                parse_declared_sky_sphere(*this);
+            else
+                parse_sky_sphere();
             scene::SkySphere sky = std::move(*scene.sky_sphere);
             scene.sky_sphere = std::move(saved);
             return sky;

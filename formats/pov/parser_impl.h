@@ -148,7 +148,8 @@ public:
         const auto& toks = files_[f.file]->tokens;
         if (!toks[f.pos].is_symbol('{') || toks[f.pos + 1].kind != TokKind::Word) return false;
         const Symbol* s = lookup(toks[f.pos + 1].text);
-        return s && !s->unusable && std::holds_alternative<scene::SkySphere>(s->value);
+        // An unusable one too: use_symbol then says why its declaration was skipped.
+        return s && (s->unusable || std::holds_alternative<scene::SkySphere>(s->value));
     }
     // trace/min_extent/max_extent (expressions.cpp): the object alone in a scene.
     scene::Scene one_object_scene(const PovObject& po) const;

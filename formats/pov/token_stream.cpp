@@ -575,7 +575,7 @@ void Parser::call_macro(const Macro& m, const FileLoc& cloc) {
             fail("macro '" + m.name + "' expects " + std::to_string(need) +
                  " argument(s), but only " + std::to_string(i) + " were given");
         }
-        if (i > 0) expect(",", "between macro arguments");
+        if (i > 0) accept(",");  // POV-Ray's Parse_Comma: the comma is optional
         if (opt && (raw_next_is(",") || raw_next_is(")"))) continue;  // left out: undefined
         Symbol s;
         {

@@ -353,6 +353,16 @@ TEST(ParserDirective, DeclaredSkySphere) {
     ASSERT_TRUE(s.sky_sphere.has_value());
     EXPECT_EQ(s.sky_sphere->pigments.size(), 2u);
     EXPECT_EQ(s.sky_sphere->transform.point(Vec3(0, 0, 0)), Vec3(0, 1, 0));
+    auto s2 = parse(
+        "#declare Sky = sky_sphere { pigment { rgb <0, 0, 1> } }\n"
+        "#declare Sky2 = sky_sphere { Sky scale 2 }\n"
+        "sky_sphere { Sky2 }\n");
+    ASSERT_TRUE(s2.sky_sphere.has_value());
+    EXPECT_EQ(s2.sky_sphere->transform.point(Vec3(1, 0, 0)), Vec3(2, 0, 0));
+    // Commas between macro arguments and before a vector's '>' are optional (Parse_Comma).
+    auto s3 = parse("#macro M(A, B) sphere { A, B } #end\nM(<1, 2, 3,> 4)\n");
+    EXPECT_DOUBLE_EQ(radius(s3, 0), 4);
+    EXPECT_EQ(std::get<scene::Sphere>(s3.objects[0].shape).center, Vec3(1, 2, 3));
     // Declaring does not set the scene's sky.
     EXPECT_FALSE(parse("#declare Sky = sky_sphere { pigment { rgb 1 } }").sky_sphere.has_value());
 }
