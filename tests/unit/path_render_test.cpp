@@ -84,6 +84,25 @@ TEST(PathRender, WhiteFurnaceConvergesToOne) {
     EXPECT_NEAR(st.mean, 1.0, 1e-3);  // VALIDATION.md case 10
 }
 
+TEST(PathRender, ClosedSphereFurnace) {
+    // VALIDATION.md case 11: the camera inside a unit sphere with albedo 0.5 and emission 0.5
+    // sees Le / (1 - albedo) = 1 everywhere (emission found by BSDF sampling only).
+    scene::Material m = lambert(Color(0.5, 0.5, 0.5));
+    m.pbr.emission = Color(0.5, 0.5, 0.5);
+    m.pbr.emission_strength = 1;
+    scene::Scene s = sphere_in_environment(m);
+    s.background = scene::ColorFT(Color(0, 0, 0));
+    s.camera.location = Vec3(0, 0, 0);
+    Diagnostics diag;
+    RenderOptions o = path_options(32, 24, 64);
+    o.max_depth = 64;
+    RenderResult r = render(s, o, diag);
+    const Stats st = image_stats(r.image);
+    std::printf("closed-sphere furnace: mean %.6f, stderr %.2g\n", st.mean, st.stderr_);
+    EXPECT_NEAR(st.mean, 1.0, 3 * st.stderr_ + 1e-6);
+    EXPECT_NEAR(st.mean, 1.0, 0.005);
+}
+
 TEST(PathRender, LosslessSpecularFurnace) {
     // A mirror and a smooth glass sphere (ior 1.5) lose nothing at depth 64 (case 12).
     scene::Material mirror = lambert(Color(1, 1, 1));
