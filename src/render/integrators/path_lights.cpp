@@ -112,7 +112,24 @@ bool PathLights::sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out
                 return true;
             }
             Vec3 q = l.location;
-            if (l.area) q = q + l.area->axis1 * (u.u - 0.5) + l.area->axis2 * (u.v - 0.5);
+            if (l.area) {
+                double a = u.u - 0.5, b = u.v - 0.5;
+                if (l.area->circular) {
+                    // The ellipse inscribed in the rectangle (concentric disc mapping).
+                    const double x = 2 * a, y = 2 * b;
+                    double r = 0, phi = 0;
+                    if (std::fabs(x) > std::fabs(y)) {
+                        r = x;
+                        phi = (kPi / 4) * (y / x);
+                    } else if (y != 0) {
+                        r = y;
+                        phi = kPi / 2 - (kPi / 4) * (x / y);
+                    }
+                    a = 0.5 * r * std::cos(phi);
+                    b = 0.5 * r * std::sin(phi);
+                }
+                q = q + l.area->axis1 * a + l.area->axis2 * b;
+            }
             const Vec3 d = q - p;
             const double dist = length(d);
             if (!(dist > 0)) return false;

@@ -2,8 +2,8 @@
 // - POV-Ray point, spot (the radius/falloff/tightness cone of POV-Ray's spot attenuation, a
 //   smooth cubic between radius and falloff), parallel lights, and area lights (a rectangle
 //   axis1 x axis2 around the location, sampled uniformly; like POV-Ray's grid of point lights
-//   it emits the same in every direction and is invisible to camera and BSDF rays). A POV-Ray
-//   light of color C delivers the irradiance pi * C * cos * fade, so a white Lambert surface
+//   it emits the same in every direction and is invisible to camera and BSDF rays; with
+//   `circular`, the ellipse inscribed in that rectangle). A POV-Ray light of color C delivers the irradiance pi * C * cos * fade, so a white Lambert surface
 //   shows C * cos as POV-Ray's diffuse 1.0 shows it (docs/pbr-mapping.md).
 // - Emissive triangles (meshes and triangles whose material emits), sampled by area times
 //   emitted power; BSDF rays that hit them are weighted by MIS (power heuristic).
