@@ -269,6 +269,19 @@ void Parser::declare(const std::string& name, Value v, const FileLoc& l, bool lo
             }
         }
     }
+    if (!local) {
+        // POV-Ray's #declare of a name that exists modifies it where it is found, local
+        // scopes included (shapes.inc's HF macros count `#local K` up with `#declare K`).
+        for (size_t k = scopes_.size(); k-- > 1;) {
+            auto it = scopes_[k].find(name);
+            if (it == scopes_[k].end() || !it->second.ref_name.empty()) continue;
+            it->second.value = std::move(v);
+            it->second.loc = l;
+            it->second.unusable = false;
+            it->second.unusable_reason.clear();
+            return;
+        }
+    }
     auto& scope = local ? scopes_.back() : scopes_.front();
     Symbol& s = scope[name];
     s.value = std::move(v);

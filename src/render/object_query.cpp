@@ -1,6 +1,7 @@
 #include "render/object_query.h"
 
 #include "render/geometry.h"
+#include "render/textures/pigment.h"
 #include "scene/features.h"
 
 namespace glint::render {
@@ -25,6 +26,23 @@ bool answer_object_query(const scene::Scene& one, int kind, const Vec3& a, const
     // flipped toward the ray).
     hi = hit.n;
     return true;
+}
+
+void parse_time_pattern(const void*, const scene::Function& f, const Vec3& p, double out[5]) {
+    for (int k = 0; k < 5; ++k) out[k] = 0;
+    if (f.pigment.empty()) return;
+    const scene::Pigment& pg = f.pigment[0];
+    if (f.kind == scene::FunctionKind::Pattern) {
+        out[0] = evaluate_pattern(pg.kind, pg.params, pg.transform.inverse_point(p), {});
+        return;
+    }
+    scene::ColorFT c;
+    PigmentEvaluator(nullptr).evaluate(pg, {p, {}, false}, &c);
+    out[0] = c.rgb.r;
+    out[1] = c.rgb.g;
+    out[2] = c.rgb.b;
+    out[3] = c.filter;
+    out[4] = c.transmit;
 }
 
 }  // namespace glint::render

@@ -16,4 +16,9 @@ namespace glint::render {
 bool answer_object_query(const scene::Scene& one, int kind, const Vec3& a, const Vec3& b, Vec3& lo,
                          Vec3& hi);
 
+// ParseOptions::pattern_hook: a pattern function's value (out[0]) or a pigment function's color
+// (out = rgbft) when the scene calls one while parsing (shapes.inc's HF macros do). `user` is
+// unused; functions called from inside such a pattern are not available there.
+void parse_time_pattern(const void* user, const scene::Function& f, const Vec3& p, double out[5]);
+
 }  // namespace glint::render

@@ -331,6 +331,17 @@ TEST(ParserDirective, OptionalMacroParameters) {
               "2:4: macro 'M' expects 2 argument(s), but only 1 were given");
 }
 
+TEST(ParserDirective, DeclareModifiesAnExistingLocal) {
+    // #declare of a name that exists modifies it where it is (shapes.inc's HF macros count a
+    // #local up with #declare); a new name is global.
+    auto s = parse(
+        "#macro M() #local K = 0; #while (K < 3) #declare K = K + 1; #end #declare G = K; #end\n"
+        "M() sphere { 0, G }\n"
+        "#ifdef (K) sphere { 0, 100 } #end\n");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_DOUBLE_EQ(radius(s, 0), 3);
+}
+
 TEST(ParserDirective, LocalShadowsInsideMacros) {
     auto s = parse(
         "#declare R = 1;\n"
