@@ -15,6 +15,7 @@
 #include <unordered_set>
 
 #include "formats/pov/parser_impl.h"
+#include "formats/pov/unsupported.h"
 
 namespace glint::pov {
 
@@ -130,6 +131,64 @@ void prepend_warp(scene::PatternParams& pp, Transform& head, const scene::Warp& 
 int clamp_octaves(double v) {
     int o = static_cast<int>(v);
     return o < 1 ? 1 : (o > 10 ? 10 : o);  // POV-Ray avoids domain errors past 10
+}
+
+// A pattern glint lacks (unsupported_patterns): warns once per feature, reads over the
+// pattern's own arguments so the rest of the block parses, and makes the pattern a constant 0
+// (a gradient along the zero vector): a pigment or texture shows its map's first entry, a
+// normal stays smooth. Returns false for the keywords that carry a whole texture of their own
+// (tiles, material_map), which leave the texture as it was.
+bool skip_unsupported_pattern(Parser& p, const std::string& w, PatternKind* kind,
+                              scene::PatternParams* params, const char* consequence) {
+    if (w == "magnet") {  // magnet N mandel I | magnet N julia <c>, I
+        warn_unsupported(p, w, p.loc(), "drawn as the mandel pattern with its iterations");
+        p.parse_float();
+        bool julia = p.accept("julia");
+        if (!julia) p.accept("mandel");
+        if (julia) {
+            p.parse_vector();
+            p.skip_comma();
+        }
+        // Its interior/exterior modifiers still parse: they are the fractal ones.
+        *kind = PatternKind::Mandel;
+        params->iterations = static_cast<int>(p.parse_float());
+        return true;
+    }
+    warn_unsupported(p, w, p.loc(), consequence);
+    if (w == "object" || w == "pigment_pattern" || w == "image_pattern" || w == "tiles" ||
+        w == "material_map" || w == "gradient_map") {
+        skip_braced_block(p, w);
+    } else if (w == "density_file") {
+        p.next();  // df3
+        p.parse_string();
+        if (p.accept("interpolate")) p.parse_float();
+    } else if (w == "tiling") {
+        p.parse_float();
+    } else if (w == "slope") {  // slope <v> [, lo, hi] [altitude <v> [, lo, hi]] or { ... }
+        if (p.peek().is_symbol('{')) {
+            skip_braced_block(p, w);
+        } else {
+            for (bool first = true; first || p.accept("altitude"); first = false) {
+                p.parse_vector();
+                if (p.accept(",")) {
+                    p.parse_float();
+                    p.skip_comma();
+                    p.parse_float();
+                }
+            }
+        }
+    } else if (w == "aoi") {
+        if (p.next_is_expression_start()) p.parse_vector();
+    } else if (w == "pavement") {
+        while (p.accept("number_of_sides") || p.accept("number_of_tiles") ||
+               p.accept("pattern") || p.accept("exterior") || p.accept("interior") ||
+               p.accept("form"))
+            p.parse_float();
+    }
+    if (w == "tiles" || w == "material_map") return false;
+    *kind = PatternKind::Gradient;
+    params->vector = Vec3(0, 0, 0);
+    return true;
 }
 
 }  // namespace
@@ -635,7 +694,8 @@ void Parser::parse_pigment_body(scene::Pigment& p) {
                 fail("'" + w + "' can only be used in a normal");
             } else if (parse_pattern_modifier(w, p.kind, p.params, p.transform)) {
             } else if (unsupported_patterns().count(w)) {
-                unsupported("the '" + w + "' pattern");
+                skip_unsupported_pattern(*this, w, &p.kind, &p.params,
+                                         "the pattern is constant 0 (its map's first entry)");
             } else {
                 unget();
                 if (!next_is_expression_start())
@@ -770,7 +830,11 @@ void Parser::parse_normal_body(scene::Normal& n) {
             fail("'image_map' can only be used in a pigment (use bump_map in a normal)");
         } else if (!w.empty() && parse_pattern_modifier(w, n.kind, n.params, n.transform)) {
         } else if (unsupported_patterns().count(w)) {
-            unsupported("the '" + w + "' pattern");
+            skip_unsupported_pattern(*this, w, &n.kind, &n.params,
+                                     "the normal is not perturbed by it");
+            skip_comma();
+            n.amount = allow_float(n.amount);
+            if (w == "density_file" && accept("interpolate")) parse_float();
         } else {
             fail("expected a normal pattern or modifier, got " + got(k));
         }
@@ -893,7 +957,12 @@ scene::Texture Parser::parse_texture_body() {
         } else if (!w.empty() && tex.kind != PatternKind::Plain &&
                    parse_pattern_modifier(w, tex.kind, tex.params, tex.transform)) {
         } else if (unsupported_patterns().count(w)) {
-            unsupported("a patterned texture ('" + w + "')");
+            if (skip_unsupported_pattern(*this, w, &tex.kind, &tex.params,
+                                         "the texture is its texture_map's first entry")) {
+                tex.pigment = scene::Pigment{};
+                tex.normal = scene::Normal{};
+                tex.layers.clear();
+            }
         } else {
             unget();
             Transform tr;

@@ -238,7 +238,7 @@ TEST_F(PovIncludeTest, MissingIncludeIsMissingFileAtTheString) {
 
 TEST_F(PovIncludeTest, StandardIncludeSkipsUnsupportedDeclarations) {
     write(root / "sys" / "std.inc",
-          "#declare Good = 1;\n#declare Bad = pigment { bozo color_map { [0 rgb 0] } }\n"
+          "#declare Good = 1;\n#declare Bad = rainbow { angle 42 }\n"
           "#declare Also = texture { pigment { rgb 1 } }\n");
     auto s = parse_scene("#include \"std.inc\"\nsphere { 0, Good texture { Also } }\n");
     EXPECT_EQ(s.objects.size(), 1u);
@@ -249,7 +249,7 @@ TEST_F(PovIncludeTest, StandardIncludeSkipsUnsupportedDeclarations) {
         EXPECT_EQ(e.loc().line, 2);
         EXPECT_EQ(e.loc().column, 25);
         EXPECT_NE(std::string(e.what()).find("'Bad' cannot be used"), std::string::npos);
-        EXPECT_NE(std::string(e.what()).find("the 'bozo' pattern is not supported yet"),
+        EXPECT_NE(std::string(e.what()).find("declaring 'rainbow' is not supported yet"),
                   std::string::npos);
         EXPECT_EQ(e.note_loc().line, 2);
         EXPECT_NE(e.note_loc().filename().find("std.inc"), std::string::npos);
@@ -258,7 +258,7 @@ TEST_F(PovIncludeTest, StandardIncludeSkipsUnsupportedDeclarations) {
 
 // A note made deeper (where the skipped declaration is) is more specific than the macro's.
 TEST_F(PovIncludeTest, MacroCallDoesNotReplaceAnExistingNote) {
-    write(root / "sys" / "std.inc", "#declare Good = 1;\n#declare Bad = pigment { bozo }\n");
+    write(root / "sys" / "std.inc", "#declare Good = 1;\n#declare Bad = rainbow { angle 42 }\n");
     try {
         parse_scene("#include \"std.inc\"\n#macro M() sphere { 0, 1 pigment { Bad } } #end\nM()\n");
         FAIL() << "expected an error";
@@ -288,14 +288,14 @@ TEST_F(PovIncludeTest, IncludeNamingAFolderSaysSo) {
 }
 
 TEST_F(PovIncludeTest, SceneOwnFilesAreStrict) {
-    write(root / "scene" / "mine.inc", "#declare Bad = pigment { bozo }\n");
+    write(root / "scene" / "mine.inc", "#declare Bad = rainbow { angle 42 }\n");
     try {
         parse_scene("#include \"mine.inc\"\n");
         FAIL() << "expected an error";
     } catch (const Error& e) {
         EXPECT_EQ(e.loc().line, 1);
-        EXPECT_EQ(e.loc().column, 26);
-        EXPECT_STREQ(e.what(), "the 'bozo' pattern is not supported yet");
+        EXPECT_EQ(e.loc().column, 16);
+        EXPECT_STREQ(e.what(), "declaring 'rainbow' is not supported yet");
     }
 }
 
