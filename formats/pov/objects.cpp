@@ -358,10 +358,29 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
     } else if (w == "text") {
         // text { ttf "font.ttf" "string" thickness, <offset> } (parse.cpp Parse_TrueType).
         scene::Text s;
-        if (accept("internal")) unsupported("text with POV-Ray's built-in fonts ('internal')");
-        expect("ttf", "in text (ttf \"font.ttf\" \"string\" thickness, offset)");
+        // POV-Ray's built-in font (`internal N` instead of `ttf "file"`) is not in glint:
+        // the text is read and left out.
+        const bool internal = accept("internal");
+        if (internal) {
+            warn_unsupported(*this, "text with a built-in font ('internal')", loc(),
+                             "the object is left out");
+            parse_float();
+            po.left_out = "text";
+        } else {
+            expect("ttf", "in text (ttf \"font.ttf\" \"string\" thickness, offset)");
+        }
         peek();
         FileLoc floc = loc();
+        if (internal) {
+            s.text = parse_string();
+            skip_comma();
+            parse_float();
+            skip_comma();
+            parse_vector();
+            parse_object_mods(po, w.c_str(), o);
+            out = std::move(po);
+            return true;
+        }
         s.file = parse_string();
         // Like POV-Ray's Locate_File, a name without its extension also finds "name.ttf".
         try {

@@ -133,3 +133,13 @@ TEST(PovUnsupported, FinishFeatures) {
                   "3:3: 'subsurface' is not supported: the finish's subsurface block is ignored",
                   "3:35: 'finish ior' is not supported: ignored (write it in interior)"}));
 }
+
+TEST(PovUnsupported, TextWithBuiltInFontIsLeftOut) {
+    Parsed p = parse_warn(
+        "text { internal 1 \"glint\" 0.5, 0 pigment { rgb 1 } translate x }\n"
+        "sphere { 0, 1 }\n");
+    EXPECT_EQ(p.scene.objects.size(), 1u);  // the sphere
+    EXPECT_EQ(p.warnings,
+              (std::vector<std::string>{"2:8: 'text with a built-in font ('internal')' is not "
+                                        "supported: the object is left out"}));
+}
