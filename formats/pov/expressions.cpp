@@ -144,7 +144,24 @@ public:
     Value relational() {
         Value a = additive();
         for (;;) {
-            if (is_string(a)) return a;
+            if (is_string(a)) {
+                // Strings compare like strcmp (POV-Ray 3.7: "a" < "b", S = "", S != "").
+                const Token& t = p_.next();
+                if (t.kind == TokKind::Symbol &&
+                    (t.text == "<" || t.text == "<=" || t.text == "=" || t.text == "!=" ||
+                     t.text == ">=" || (t.text == ">" && vector_depth_ == 0))) {
+                    std::string op = t.text;
+                    Value b = additive();
+                    if (!is_string(b)) p_.fail("expected a string to compare with a string");
+                    int c = std::get<std::string>(a).compare(std::get<std::string>(b));
+                    bool r = op == "<" ? c < 0 : op == "<=" ? c <= 0 : op == ">" ? c > 0
+                           : op == ">=" ? c >= 0 : op == "=" ? c == 0 : c != 0;
+                    a = Num::scalar(r ? 1 : 0);
+                    continue;
+                }
+                p_.unget();
+                return a;
+            }
             const Token& t = p_.next();
             if (t.kind == TokKind::Symbol && std::get<Num>(a).terms == 1 &&
                 (t.text == "<" || t.text == "<=" || t.text == "=" || t.text == "!=" ||

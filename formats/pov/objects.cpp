@@ -109,12 +109,13 @@ template <typename F>
 static void parse_counted(Parser& p, const char* name, F item) {
     p.expect_open(name);
     FileLoc o = p.loc();
-    int n = static_cast<int>(p.parse_float());
+    int n = static_cast<int>(parse_float_before_points(p));
     if (n < 0) p.fail(std::string("negative count in ") + name);
     for (int i = 0; i < n; ++i) {
         p.skip_comma();
         item(i);
     }
+    p.skip_comma();  // POV-Ray accepts a comma after the last item
     p.expect_close(name, o);
 }
 

@@ -886,6 +886,7 @@ scene::Texture Parser::parse_texture_body() {
     tex.loc = loc();
     bool first = true;
     bool modified = false;  // has a pigment, normal or finish: cannot become patterned
+    bool uv_plain = false;  // `uv_mapping` in a plain texture
     for (;; first = false) {
         const Token& t = next();
         if (is_body_end(t)) {
@@ -951,6 +952,10 @@ scene::Texture Parser::parse_texture_body() {
             expect_close("texture_map", o);
         } else if (w == "uv_mapping" && tex.kind != PatternKind::Plain) {
             tex.uv_mapping = true;
+        } else if (w == "uv_mapping") {
+            // A plain texture's uv_mapping maps its pigment and normal (POV-Ray's
+            // Post_Textures passes the flag down), whenever they are given.
+            uv_plain = true;
         } else if (w == "color_map" || w == "colour_map" || w == "pigment_map" ||
                    w == "normal_map" || w == "slope_map") {
             fail("'" + w + "' cannot be used directly in a texture");
@@ -974,6 +979,11 @@ scene::Texture Parser::parse_texture_body() {
     }
     if (tex.kind != PatternKind::Plain && block_count(tex.kind) == 0 && tex.texture_map.empty())
         fail("a patterned texture needs a texture_map");
+    if (uv_plain) {
+        scene::Texture& top = top_layer(tex);
+        top.pigment.uv_mapping = true;
+        top.normal.uv_mapping = true;
+    }
     return tex;
 }
 

@@ -11,18 +11,19 @@
 
 namespace glint::pov {
 
-namespace {
-
-constexpr double kEps = 1e-10;  // POV-Ray's EPSILON for "same point" tests
-
-// A float that may be followed directly by a point list (`4 <1, 2>`): POV-Ray compares only
-// inside parentheses, so a literal number right before '<' is the whole value.
 double parse_float_before_points(Parser& p) {
     const Token& t = p.next();
     if (t.kind == TokKind::Number && p.raw_next_is("<")) return t.number;
     p.unget();
     return p.parse_float();
 }
+
+namespace {
+
+constexpr double kEps = 1e-10;  // POV-Ray's EPSILON for "same point" tests
+
+// A float that may be followed directly by a point list (`4 <1, 2>`): POV-Ray compares only
+// inside parentheses, so a literal number right before '<' is the whole value.
 
 Vec2 parse_uv(Parser& p) {
     Num n = p.parse_num(2);

@@ -12,6 +12,10 @@ namespace glint::pov {
 
 bool is_solid_keyword(const std::string& word);
 
+// A count written before a point list, `4 <1, 0>` as well as `4, <1, 0>`: POV-Ray compares only
+// inside parentheses, so a number followed by `<` is the count, not `4 < ...`.
+double parse_float_before_points(Parser& p);
+
 // Parses the body of the solid named `word` into `out`. `kw`: the keyword's location. A body
 // glint cannot render (a height_field from a function) is read over with a warning and named
 // in `left_out`, which makes the caller drop the object.

@@ -402,5 +402,28 @@ TEST(ParserStandardIncludes, EveryIncludeFileParses) {
     EXPECT_GE(n, 39);
 }
 
+TEST(PovLanguage, StringsCompareLikeStrcmp) {
+    EXPECT_EQ(value_of("#declare S = \"abc\";", "(S = \"abc\") + 1"), 2);
+    EXPECT_EQ(value_of("#declare S = \"\";", "(S != \"\") + 1"), 1);
+    EXPECT_EQ(value_of("", "(\"a\" < \"b\") + (\"b\" <= \"a\") + 1"), 2);
+    EXPECT_EQ(error_of("#if (\"a\" = 1) #end"), "1:13: expected a string to compare with a string");
+}
+
+TEST(PovLanguage, CountsBeforePointListsAndTrailingCommas) {
+    // mesh2 as POV-Ray's own objects/mesh2.pov writes it: no comma after the count, one
+    // after the last vector.
+    auto s = parse(
+        "mesh2 { vertex_vectors { 3 <0, 0, 0>, <1, 0, 0>, <0, 1, 0>, }\n"
+        "  face_indices { 1 <0, 1, 2> } }\n");
+    ASSERT_EQ(s.meshes.size(), 1u);
+    EXPECT_EQ(s.meshes[0].positions.size(), 3u);
+    EXPECT_EQ(s.meshes[0].faces.size(), 1u);
+}
+
+TEST(PovLanguage, UvMappingInAPlainTextureMapsItsPigment) {
+    auto s = parse("sphere { 0, 1 texture { uv_mapping pigment { checker } } }");
+    EXPECT_TRUE(s.materials.back().texture.pigment.uv_mapping);
+}
+
 }  // namespace
 }  // namespace glint::pov
