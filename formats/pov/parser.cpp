@@ -204,7 +204,7 @@ void Parser::parse_array_init(ArrayValue& a, size_t dim, size_t& k) {
     expect_open("array");
     FileLoc o = loc();
     for (int i = 0; i < a.sizes[dim]; ++i) {
-        if (i > 0) expect(",", "between array elements");
+        if (i > 0) skip_comma();  // optional, as POV-Ray's Parse_Comma
         if (dim + 1 < a.sizes.size())
             parse_array_init(a, dim + 1, k);
         else

@@ -425,5 +425,11 @@ TEST(PovLanguage, UvMappingInAPlainTextureMapsItsPigment) {
     EXPECT_TRUE(s.materials.back().texture.pigment.uv_mapping);
 }
 
+TEST(PovLanguage, ArrayInitializerCommasAreOptional) {
+    // As in POV-Ray's grenadine/lemon.inc: rows of vectors without a comma between them.
+    EXPECT_EQ(value_of("#declare A = array[4] { <1, 2>, <3, 4> <5, 6>, <7, 8> }", "A[2].u"), 5);
+    EXPECT_EQ(value_of("#declare B = array[2][2] { {1, 2} {3, 4} }", "B[1][0]"), 3);
+}
+
 }  // namespace
 }  // namespace glint::pov
