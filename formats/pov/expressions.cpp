@@ -146,10 +146,14 @@ public:
         for (;;) {
             if (is_string(a)) {
                 // Strings compare like strcmp (POV-Ray 3.7: "a" < "b", S = "", S != "").
-                const Token& t = p_.next();
-                if (t.kind == TokKind::Symbol &&
-                    (t.text == "<" || t.text == "<=" || t.text == "=" || t.text == "!=" ||
-                     t.text == ">=" || (t.text == ">" && vector_depth_ == 0))) {
+                // Only a raw look: the token after a string may be a macro call, which
+                // reading it would expand.
+                bool op_next = false;
+                for (const char* op : {"<", "<=", "=", "!=", ">=", ">"})
+                    op_next |= p_.raw_next_is(op) && !(op[0] == '>' && op[1] == 0 &&
+                                                       vector_depth_ > 0);
+                if (op_next) {
+                    const Token& t = p_.next();
                     std::string op = t.text;
                     Value b = additive();
                     if (!is_string(b)) p_.fail("expected a string to compare with a string");
@@ -159,7 +163,6 @@ public:
                     a = Num::scalar(r ? 1 : 0);
                     continue;
                 }
-                p_.unget();
                 return a;
             }
             const Token& t = p_.next();
@@ -734,6 +737,12 @@ double Parser::parse_float() {
     ExprParser e(*this);
     FileLoc at = e.start();
     return e.as_float(e.expr(), "a float", at);
+}
+
+double Parser::parse_float_no_compare() {
+    ExprParser e(*this);
+    FileLoc at = e.start();
+    return e.as_float(e.additive(), "a float", at);
 }
 
 double Parser::parse_float_in_angle_brackets() {

@@ -116,6 +116,9 @@ public:
     // ---- expressions (expressions.cpp)
     Num parse_num(int terms);  // an expression promoted to `terms` components
     double parse_float();
+    // An additive expression only, as POV-Ray's Parse_Float reads it: a comparison needs
+    // parentheses there. For counts before point lists (`N <x, y>`).
+    double parse_float_no_compare();
     double parse_float_in_angle_brackets();  // where '>' closes instead of comparing
     Vec3 parse_vector();
     bool try_literal_vector(Vec3& out);

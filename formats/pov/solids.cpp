@@ -11,12 +11,7 @@
 
 namespace glint::pov {
 
-double parse_float_before_points(Parser& p) {
-    const Token& t = p.next();
-    if (t.kind == TokKind::Number && p.raw_next_is("<")) return t.number;
-    p.unget();
-    return p.parse_float();
-}
+double parse_float_before_points(Parser& p) { return p.parse_float_no_compare(); }
 
 namespace {
 
