@@ -164,7 +164,15 @@ void Parser::parse_image_map_body(scene::ImageMap& im, double* bump_size) {
             im.interpolate = static_cast<int>(parse_float());
         } else if (k.is("filter") || k.is("transmit")) {
             bool filter = k.text == "filter";
-            if (!accept("all")) unsupported("per-palette-index filter/transmit in image_map");
+            if (!accept("all")) {
+                // filter/transmit N, V for one palette index: read and left out.
+                warn_unsupported(*this, "per-palette-index filter/transmit in image_map",
+                                 loc(), "ignored");
+                parse_float();
+                skip_comma();
+                parse_float();
+                continue;
+            }
             (filter ? im.filter_all : im.transmit_all) = parse_float();
         } else if (k.is("gamma")) {
             if (accept("srgb")) {

@@ -111,7 +111,10 @@ public:
     const Symbol* lookup(const std::string& name) const;
     // Finds `name` or fails (unknown identifier / unusable declaration).
     const Symbol& use_symbol(const Token& t);
-    void declare(const std::string& name, Value v, const FileLoc& loc, bool local);
+    // `local_scope`: the scope a #local writes to, fixed before its value is parsed (a macro
+    // called in the value has its own scope on the stack until its #end); default innermost.
+    void declare(const std::string& name, Value v, const FileLoc& loc, bool local,
+                 size_t local_scope = size_t(-1));
 
     // ---- expressions (expressions.cpp)
     Num parse_num(int terms);  // an expression promoted to `terms` components

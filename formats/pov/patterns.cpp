@@ -154,7 +154,10 @@ bool skip_unsupported_pattern(Parser& p, const std::string& w, PatternKind* kind
         params->iterations = static_cast<int>(p.parse_float());
         return true;
     }
-    warn_unsupported(p, w, p.loc(), consequence);
+    // The object pattern's entries sit inside its own block: the pigment or texture stays as
+    // it was without it.
+    warn_unsupported(p, w, p.loc(),
+                     w == "object" ? "the pigment or texture is left as it was" : consequence);
     if (w == "object" || w == "pigment_pattern" || w == "image_pattern" || w == "tiles" ||
         w == "material_map" || w == "gradient_map") {
         skip_braced_block(p, w);
@@ -185,7 +188,7 @@ bool skip_unsupported_pattern(Parser& p, const std::string& w, PatternKind* kind
                p.accept("form"))
             p.parse_float();
     }
-    if (w == "tiles" || w == "material_map") return false;
+    if (w == "tiles" || w == "material_map" || w == "object") return false;
     *kind = PatternKind::Gradient;
     params->vector = Vec3(0, 0, 0);
     return true;
@@ -887,6 +890,10 @@ scene::Texture Parser::parse_texture_body() {
     bool first = true;
     bool modified = false;  // has a pigment, normal or finish: cannot become patterned
     bool uv_plain = false;  // `uv_mapping` in a plain texture
+    // A pattern that was left out (object, tiles, material_map): its modifiers are read over.
+    bool dropped_pattern = false;
+    scene::PatternParams dropped_params;
+    Transform dropped_transform;
     for (;; first = false) {
         const Token& t = next();
         if (is_body_end(t)) {
@@ -961,12 +968,18 @@ scene::Texture Parser::parse_texture_body() {
             fail("'" + w + "' cannot be used directly in a texture");
         } else if (!w.empty() && tex.kind != PatternKind::Plain &&
                    parse_pattern_modifier(w, tex.kind, tex.params, tex.transform)) {
+        } else if (!w.empty() && dropped_pattern &&
+                   parse_pattern_modifier(w, PatternKind::Gradient, dropped_params,
+                                          dropped_transform)) {
+            // a modifier (warp, turbulence, ...) of the pattern that was left out
         } else if (unsupported_patterns().count(w)) {
             if (skip_unsupported_pattern(*this, w, &tex.kind, &tex.params,
                                          "the texture is its texture_map's first entry")) {
                 tex.pigment = scene::Pigment{};
                 tex.normal = scene::Normal{};
                 tex.layers.clear();
+            } else {
+                dropped_pattern = true;
             }
         } else {
             unget();

@@ -253,7 +253,8 @@ void Parser::warn_deprecated(const std::string& name, const Symbol& s, const Fil
     diag.warning(at, s.deprecated);
 }
 
-void Parser::declare(const std::string& name, Value v, const FileLoc& l, bool local) {
+void Parser::declare(const std::string& name, Value v, const FileLoc& l, bool local,
+                     size_t local_scope) {
     if (!local) {
         auto it = scopes_.back().find(name);
         if (it != scopes_.back().end() && !it->second.ref_name.empty()) {
@@ -282,7 +283,8 @@ void Parser::declare(const std::string& name, Value v, const FileLoc& l, bool lo
             return;
         }
     }
-    auto& scope = local ? scopes_.back() : scopes_.front();
+    if (local_scope >= scopes_.size()) local_scope = scopes_.size() - 1;
+    auto& scope = local ? scopes_[local_scope] : scopes_.front();
     Symbol& s = scope[name];
     s.value = std::move(v);
     s.loc = l;
@@ -422,9 +424,9 @@ void Parser::handle_declare(bool local, const FileLoc& dloc) {
             auto& fn = scene.functions[static_cast<size_t>(fr->index)];
             if (fn.name.empty()) fn.name = name;
         }
-        declare(name, std::move(v), nloc, local);
+        declare(name, std::move(v), nloc, local, nscopes - 1);
         if (!deprecated.empty()) {
-            auto& scope = local ? scopes_.back() : scopes_.front();
+            auto& scope = local ? scopes_[std::min(nscopes, scopes_.size()) - 1] : scopes_.front();
             auto it = scope.find(name);
             if (it != scope.end()) {
                 it->second.deprecated = deprecated;

@@ -431,5 +431,15 @@ TEST(PovLanguage, ArrayInitializerCommasAreOptional) {
     EXPECT_EQ(value_of("#declare B = array[2][2] { {1, 2} {3, 4} }", "B[1][0]"), 3);
 }
 
+TEST(PovLanguage, LocalTakesAMacroCallsValueIntoTheCallersScope) {
+    // transforms.inc's Spline_Trans: `#local Matrix = Matrix_Trans(...)` without a semicolon;
+    // the called macro's scope is still open when the value ends, the #local must not land
+    // there.
+    EXPECT_EQ(value_of("#macro Two() 2 #end\n"
+                       "#macro Outer() #local V = Two() #local W = V + 1; W #end",
+                       "Outer()"),
+              3);
+}
+
 }  // namespace
 }  // namespace glint::pov

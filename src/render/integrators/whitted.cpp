@@ -521,7 +521,9 @@ Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls
             if (hit.material < 0 || opaque_[hit.material]) return Color();
             // ComputeShadowColour / ComputeShadowTexture.
             const scene::Material& mat = scene_.materials[hit.material];
-            Color filter = shadow_texture(mat.texture, pattern_point(hit));
+            // POV-Ray stores interior { caustics C } as the exponent 45 C (Parse_Interior).
+            Color filter = shadow_texture(mat.texture, pattern_point(hit),
+                                          45.0 * mat.interior.caustics, hit.n, normalize(r.dir));
             const scene::Interior& interior = mat.interior;
             if (inside.contains(hit.object) && interior.fade_power > 0.0 &&
                 std::fabs(interior.fade_distance) > kPovEpsilon) {
@@ -542,14 +544,27 @@ Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls
     return colour;
 }
 
-Color Whitted::shadow_texture(const scene::Texture& tex, const PatternPoint& at) const {
+Color Whitted::shadow_texture(const scene::Texture& tex, const PatternPoint& at,
+                              double caustics, const Vec3& raw_normal, const Vec3& dir) const {
     if (tex.kind == scene::PatternKind::Plain) {
-        // Every layer filters the light (ComputeShadowTexture).
+        // Every layer filters the light (ComputeShadowTexture), and with an interior's
+        // `caustics` each layer brightens it by 1 + |n . d|^caustics (POV-Ray's fake
+        // caustics, n the layer's perturbed normal): light through a curved glass surface
+        // gathers where the surface faces the light.
         Color filter(1.0);
         ColorFT pig;
-        if (pigments_.evaluate(tex.pigment, at, &pig)) filter *= rgb_transm(pig);
-        for (const scene::Texture& l : tex.layers)
+        auto layer = [&](const scene::Texture& l) {
             if (pigments_.evaluate(l.pigment, at, &pig)) filter *= rgb_transm(pig);
+            if (caustics != 0.0) {
+                Vec3 n = raw_normal;
+                if (l.normal.kind != scene::PatternKind::Plain && features_.normals)
+                    n = perturb_normal(l.normal, at, n, pigments_.context(),
+                                       pigments_.textures());
+                filter *= 1.0 + std::pow(std::fabs(dot(n, dir)), caustics);
+            }
+        };
+        layer(tex);
+        for (const scene::Texture& l : tex.layers) layer(l);
         return filter;
     }
     Vec3 p = at.p;
@@ -562,19 +577,21 @@ Color Whitted::shadow_texture(const scene::Texture& tex, const PatternPoint& at)
         Color sum;
         double total = 0;
         for (const scene::TextureMapEntry& e : tex.texture_map) {
-            sum += shadow_texture(e.texture[0], sub) * e.value;
+            sum += shadow_texture(e.texture[0], sub, caustics, raw_normal, dir) * e.value;
             total += e.value;
         }
         return sum / total;
     }
     const double value = evaluate_pattern(tex.kind, pp, local, pigments_.context());
     if (is_block_pattern(tex.kind))
-        return shadow_texture(tex.entries[block_index(value, tex.entries.size())], sub);
+        return shadow_texture(tex.entries[block_index(value, tex.entries.size())], sub, caustics,
+                              raw_normal, dir);
     BlendPick b = search_blend_map(tex.texture_map, value);
-    Color c = shadow_texture(tex.texture_map[b.cur].texture[0], sub);
+    Color c = shadow_texture(tex.texture_map[b.cur].texture[0], sub, caustics, raw_normal, dir);
     if (b.prev != b.cur)
-        c = c * b.fraction + shadow_texture(tex.texture_map[b.prev].texture[0], sub) *
-                                 (1.0 - b.fraction);
+        c = c * b.fraction +
+            shadow_texture(tex.texture_map[b.prev].texture[0], sub, caustics, raw_normal, dir) *
+                (1.0 - b.fraction);
     return c;
 }
 

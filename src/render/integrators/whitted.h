@@ -68,7 +68,11 @@ private:
                           const RayState& state, const TextureStack& stack) const;
     Vec3 layer_normal(const scene::Normal& normal, const PatternPoint& at, const Vec3& n,
                       const TextureStack& stack) const;
-    Color shadow_texture(const scene::Texture& tex, const PatternPoint& at) const;
+    // The light a texture lets through (ComputeShadowTexture). `caustics` is the fake-caustics
+    // exponent, 45 times the interior's value (0 = off); `raw_normal` and `dir` (the shadow
+    // ray, unit) feed it.
+    Color shadow_texture(const scene::Texture& tex, const PatternPoint& at, double caustics,
+                         const Vec3& raw_normal, const Vec3& dir) const;
     const ClassicFinish& finish_for(const scene::Finish& f, int material) const;
     Color shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls,
                         const RayState& eye) const;
