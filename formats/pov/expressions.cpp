@@ -345,6 +345,16 @@ public:
         if (function_names().count(w)) return function(w);
         if ((w == "trace" || w == "min_extent" || w == "max_extent") && p_.options.object_query)
             return object_function(w);
+        if (w == "inside" || w == "eval_pigment") {
+            // inside(Obj, P) and eval_pigment(Pig, P): read, warned about once, and 0.
+            warn_unsupported(p_, w + "()", p_.loc(), "it gives 0");
+            p_.expect("(", ("after '" + w + "'").c_str());
+            p_.next();  // the object or pigment identifier
+            p_.expect(",", ("after the first argument of " + w + "()").c_str());
+            p_.parse_vector();
+            p_.expect(")", ("to close " + w + "()").c_str());
+            return w == "inside" ? Value(Num::scalar(0)) : Value(Num::vec(Vec3(0, 0, 0)));
+        }
         static const std::unordered_set<std::string> kUnsupportedFns = {
             "eval_pigment", "trace", "inside", "min_extent",
             "max_extent", "datetime", "now"};
@@ -405,7 +415,9 @@ public:
         auto obj = s ? std::get_if<std::shared_ptr<const PovObject>>(&s->value) : nullptr;
         if (!obj) p_.fail("expected an object identifier in " + f + "(), got " + p_.got(t));
         auto keep = *obj;
-        scene::Scene one = p_.one_object_scene(*keep);
+        // An object glint left out (its warning said so) is empty here: no bounds, no hits.
+        scene::Scene one;
+        if (keep->left_out.empty()) one = p_.one_object_scene(*keep);
         Vec3 lo, hi;
         if (f != "trace") {
             p_.expect(")", ("to close " + f + "()").c_str());

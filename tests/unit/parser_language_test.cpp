@@ -441,5 +441,13 @@ TEST(PovLanguage, LocalTakesAMacroCallsValueIntoTheCallersScope) {
               3);
 }
 
+TEST(PovLanguage, InsideAndEvalPigmentWarnAndGiveZero) {
+    EXPECT_EQ(warnings_of("#declare S = sphere { 0, 1 }\n#declare A = inside(S, <0, 0, 0>);\n"
+                          "#declare P = pigment { rgb 1 }\n#declare C = eval_pigment(P, 0);\n"
+                          "sphere { 0, A + C.red + 1 }"),
+              (std::vector<std::string>{"2:14: 'inside()' is not supported: it gives 0",
+                                        "4:14: 'eval_pigment()' is not supported: it gives 0"}));
+}
+
 }  // namespace
 }  // namespace glint::pov
