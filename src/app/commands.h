@@ -27,6 +27,10 @@ struct RenderArgs {
     int max_depth = 8;
     unsigned seed = 0;
     double time_limit = 0;
+    // Path tracer outputs beside OUT: --aov albedo,normal,depth and --variance write
+    // <out-stem>.<name>.exr (render_command.cpp: aov_output_path).
+    std::string aov;
+    bool variance = false;
     // POV-Ray switches and .ini files (pov_options.h), in command-line order. glint's own
     // flags, where given, win over them; `given` records which were.
     std::vector<std::string> pov_args;
@@ -52,6 +56,8 @@ CLI::App* add_ir_command(CLI::App& app, IrArgs& args);
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args);
 
 int run_render(const RenderArgs& args);
+// Where --aov NAME (and --variance) writes for OUTPUT: OUT's folder/<OUT's stem>.NAME.exr.
+std::string aov_output_path(const std::string& output, const std::string& name);
 // Where POV-Ray arguments may appear: argv with the POV-Ray ones of `glint render` taken out
 // into `pov_args` (see split_render_args); other commands' arguments pass unchanged.
 std::vector<std::string> take_pov_arguments(const std::vector<std::string>& argv,

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -152,6 +153,17 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                     "Path tracer: stop after the progressive pass that passes S seconds (0: none)")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 1e9));
+    cmd->add_option("--aov", args.aov,
+                    "Path tracer: also write linear EXRs beside OUT, a comma list of albedo "
+                    "(OUT-stem.albedo.exr: the first visible hit's base color, an emitter's "
+                    "emission when its base is black), normal (.normal.exr: world-space shading "
+                    "normal facing the camera, -1..1), depth (.depth.exr, channel Z: distance "
+                    "along the camera ray); each the mean over the pixel's samples, a sample "
+                    "that hits nothing counting 0 (so depth 0 where nothing is hit)");
+    cmd->add_flag("--variance", args.variance,
+                  "Path tracer: also write OUT-stem.variance.exr, per pixel and channel the "
+                  "variance of the pixel's mean (sample variance / n; 0 with fewer than 2 "
+                  "samples)");
     cmd->add_flag("-v,--verbose", args.verbose, "Print features used and skipped, and timings");
     cmd->add_option("--progress", args.progress,
                     "Progress on stderr: bar, lines (`progress 0.42`), none "
@@ -245,7 +257,31 @@ RenderArgs merge_pov_settings(const RenderArgs& args, const PovSettings& pov) {
 
 int render_frame(const RenderArgs& args);
 
+// The AOVs --aov names, each once, in the order given.
+std::vector<std::string> parse_aov_list(const std::string& text) {
+    std::vector<std::string> names;
+    size_t start = 0;
+    while (start <= text.size()) {
+        size_t comma = text.find(',', start);
+        if (comma == std::string::npos) comma = text.size();
+        std::string name = text.substr(start, comma - start);
+        if (name != "albedo" && name != "normal" && name != "depth")
+            throw Error(ErrorKind::Usage, {},
+                        "--aov " + text + ": unknown AOV '" + name +
+                            "' (expected a comma list of albedo, normal, depth)");
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+        start = comma + 1;
+    }
+    return names;
+}
+
 }  // namespace
+
+std::string aov_output_path(const std::string& output, const std::string& name) {
+    namespace fs = std::filesystem;
+    fs::path out(output);
+    return (out.parent_path() / (out.stem().string() + "." + name + ".exr")).string();
+}
 
 int run_render(const RenderArgs& args) {
     install_signal_handlers();
@@ -302,6 +338,14 @@ int render_frame(const RenderArgs& args) {
     options.max_depth = args.max_depth;
     options.seed = args.seed;
     options.time_limit = args.time_limit;
+    const std::vector<std::string> aovs =
+        args.aov.empty() ? std::vector<std::string>{} : parse_aov_list(args.aov);
+    if ((!aovs.empty() || args.variance) && options.integrator != render::IntegratorKind::Path)
+        throw Error(ErrorKind::Usage, {},
+                    std::string(aovs.empty() ? "--variance" : "--aov") +
+                        " needs --integrator path (the Whitted integrator has no AOVs)");
+    options.aovs = !aovs.empty();
+    options.variance = args.variance;
     check_output_path(args.output);
 
     scene::Scene scene = load_scene(args.scene, args.verbose);
@@ -329,6 +373,18 @@ int render_frame(const RenderArgs& args) {
     io::OutputEncoding encoding = io::output_encoding_for(scene);
     Clock::time_point write_start = Clock::now();
     io::write_image(result.image, args.output, encoding);
+    for (const std::string& name : aovs) {
+        const render::Image& aov = name == "albedo"   ? result.albedo
+                                   : name == "normal" ? result.normal
+                                                      : result.depth;
+        io::write_float_exr(aov, aov_output_path(args.output, name), name == "depth" ? 1 : 3);
+    }
+    if (args.variance) {
+        if (result.samples_per_pixel < 2)
+            warn("--variance: only " + std::to_string(result.samples_per_pixel) +
+                 " sample per pixel, the variance image is 0");
+        io::write_float_exr(result.variance, aov_output_path(args.output, "variance"));
+    }
     double write_seconds = seconds_since(write_start);
 
     if (args.verbose) {

@@ -66,6 +66,35 @@ class TempFile {
     std::string path_;
 };
 
+// Writes through a temporary beside the target (so the rename stays on one file system) and
+// renames it, so a failed write never leaves a partial file.
+void write_atomically(const std::string& path, const char* oiio_name, const OIIO::ImageSpec& spec,
+                      OIIO::TypeDesc type, const void* data) {
+    TempFile temp(path + ".tmp-" + std::to_string(static_cast<long>(::getpid())));
+    auto fail = [&](const std::string& why) {
+        return Error(ErrorKind::Output, {}, "cannot write " + path + ": " + why);
+    };
+    {
+        std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(oiio_name);
+        if (!out) throw fail("OpenImageIO has no " + std::string(oiio_name) + " writer");
+        if (!out->open(temp.path(), spec)) {
+            std::string why = out->geterror();
+            throw fail(why.empty() ? "cannot create the file" : why);
+        }
+        bool ok = out->write_image(type, data);
+        std::string why = ok ? std::string() : out->geterror();
+        if (!out->close() && ok) {
+            ok = false;
+            why = out->geterror();
+        }
+        if (!ok) throw fail(why.empty() ? "write failed" : why);
+    }
+    std::error_code ec;
+    fs::rename(temp.path(), path, ec);
+    if (ec) throw fail(ec.message());
+    temp.release();
+}
+
 }  // namespace
 
 std::string output_format_for(const std::string& path) { return format_info(path).oiio_name; }
@@ -124,30 +153,23 @@ void write_image(const render::Image& image, const std::string& path,
         }
     }
 
-    // The temporary sits beside the target so the rename stays on one file system.
-    TempFile temp(path + ".tmp-" + std::to_string(static_cast<long>(::getpid())));
-    auto fail = [&](const std::string& why) {
-        return Error(ErrorKind::Output, {}, "cannot write " + path + ": " + why);
-    };
-    {
-        std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(format.oiio_name);
-        if (!out) throw fail("OpenImageIO has no " + std::string(format.oiio_name) + " writer");
-        if (!out->open(temp.path(), spec)) {
-            std::string why = out->geterror();
-            throw fail(why.empty() ? "cannot create the file" : why);
-        }
-        bool ok = out->write_image(type, data);
-        std::string why = ok ? std::string() : out->geterror();
-        if (!out->close() && ok) {
-            ok = false;
-            why = out->geterror();
-        }
-        if (!ok) throw fail(why.empty() ? "write failed" : why);
-    }
-    std::error_code ec;
-    fs::rename(temp.path(), path, ec);
-    if (ec) throw fail(ec.message());
-    temp.release();
+    write_atomically(path, format.oiio_name, spec, type, data);
+}
+
+void write_float_exr(const render::Image& image, const std::string& path, int channels) {
+    if (channels != 1 && channels != 3)
+        throw Error(ErrorKind::Output, {}, "cannot write " + path + ": 1 or 3 channels only");
+    if (image.width <= 0 || image.height <= 0 ||
+        image.rgba.size() != static_cast<size_t>(image.width) * image.height * 4)
+        throw Error(ErrorKind::Output, {}, "cannot write " + path + ": the image is empty");
+    const size_t pixels = static_cast<size_t>(image.width) * image.height;
+    OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::FLOAT);
+    if (channels == 1) spec.channelnames = {"Z"};
+    spec.attribute("oiio:ColorSpace", "Linear");
+    std::vector<float> data(pixels * channels);
+    for (size_t i = 0; i < pixels; ++i)
+        for (int c = 0; c < channels; ++c) data[i * channels + c] = image.rgba[i * 4 + c];
+    write_atomically(path, "openexr", spec, OIIO::TypeDesc::FLOAT, data.data());
 }
 
 }  // namespace glint::io

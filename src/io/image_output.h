@@ -38,4 +38,9 @@ std::string output_format_for(const std::string& path);
 void write_image(const render::Image& image, const std::string& path,
                  const OutputEncoding& encoding);
 
+// Writes the first `channels` of the image (1 or 3) as a 32-bit float OpenEXR file, values as
+// they are (no encoding): the path tracer's AOVs and variance. One channel is named Z
+// (OpenEXR's depth channel), three R, G, B. Atomic like write_image; throws Error(Output).
+void write_float_exr(const render::Image& image, const std::string& path, int channels = 3);
+
 }  // namespace glint::io

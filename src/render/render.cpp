@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <memory>
+#include <utility>
 
 #include "core/error.h"
 #include "render/camera.h"
@@ -41,10 +42,17 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
         result.prepare_seconds = seconds_since(t0);
         auto t1 = std::chrono::steady_clock::now();
         const uint32_t seed = options.seed;
-        RadianceFn radiance = [&path, seed](const Ray& ray, const SampleId& id) {
-            return path.li(ray, PixelSampler(id.x, id.y, id.index, seed));
+        PathRadianceFn radiance = [&path, seed](const Ray& ray, const SampleId& id,
+                                                FirstHit* first) {
+            return path.li(ray, PixelSampler(id.x, id.y, id.index, seed), first);
         };
-        result.samples_per_pixel = run_path_tiles(camera, options, radiance, &result.image);
+        PathFilm film;
+        result.samples_per_pixel = run_path_tiles(camera, options, radiance, &film);
+        result.image = std::move(film.image);
+        result.albedo = std::move(film.albedo);
+        result.normal = std::move(film.normal);
+        result.depth = std::move(film.depth);
+        result.variance = std::move(film.variance);
         result.nonfinite_paths = path.nonfinite();
         result.rays = path.rays();
         result.render_seconds = seconds_since(t1);

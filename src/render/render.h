@@ -40,6 +40,10 @@ struct RenderOptions {
     int max_depth = 8;
     uint32_t seed = 0;
     double time_limit = 0;
+    // Path tracer: also average the first hit's albedo, normal and depth per pixel, and
+    // estimate the variance of each pixel's mean (RenderResult::albedo ... variance).
+    bool aovs = false;
+    bool variance = false;
     // Called with the finished fraction in [0, 1], from any thread, at most every tile.
     std::function<void(double)> progress;
     const std::atomic<bool>* cancel = nullptr;  // render throws Error(Cancelled) when set
@@ -53,6 +57,8 @@ struct RenderResult {
     int samples_per_pixel = 0;      // path tracer: samples each pixel got
     uint64_t nonfinite_paths = 0;   // path tracer: NaN/Inf paths dropped
     uint64_t rays = 0;              // path tracer: rays traced (camera, bounce, shadow)
+    // Path tracer with RenderOptions::aovs / variance (otherwise empty): see PathFilm.
+    Image albedo, normal, depth, variance;
 };
 
 RenderResult render(const scene::Scene& scene, const RenderOptions& options, Diagnostics& diag);

@@ -4,10 +4,12 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cfloat>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
@@ -192,14 +194,47 @@ Image run_tiles(const Camera& camera, const RenderOptions& options,
     return image;
 }
 
-int run_path_tiles(const Camera& camera, const RenderOptions& options, const RadianceFn& radiance,
-                   Image* image) {
+namespace {
+
+// A finite film value of either sign (normals): NaN becomes 0, infinities the largest float.
+float finite_signed(double v) {
+    if (std::isnan(v)) return 0.0f;
+    return static_cast<float>(std::clamp(v, -static_cast<double>(FLT_MAX),
+                                         static_cast<double>(FLT_MAX)));
+}
+
+Image blank_image(int width, int height) {
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.rgba.assign(static_cast<size_t>(width) * height * 4, 0.0f);
+    for (size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 1.0f;
+    return image;
+}
+
+// Per-pixel running sums of the optional outputs, in sample order.
+struct PixelAccumulators {
+    std::vector<double> aov;      // 7 per pixel: albedo rgb, normal xyz, depth
+    std::vector<double> mean;     // 3 per pixel: Welford's running mean
+    std::vector<double> m2;       // 3 per pixel: Welford's sum of squared deviations
+};
+
+}  // namespace
+
+int run_path_tiles(const Camera& camera, const RenderOptions& options,
+                   const PathRadianceFn& radiance, PathFilm* film) {
     if (options.width <= 0 || options.height <= 0) {
         throw Error(ErrorKind::Usage, {}, "image size must be positive");
     }
     const auto start = std::chrono::steady_clock::now();
     const size_t pixels = static_cast<size_t>(options.width) * options.height;
     std::vector<double> sum(pixels * 3, 0.0);
+    PixelAccumulators extra;
+    if (options.aovs) extra.aov.assign(pixels * 7, 0.0);
+    if (options.variance) {
+        extra.mean.assign(pixels * 3, 0.0);
+        extra.m2.assign(pixels * 3, 0.0);
+    }
     std::vector<Tile> tiles;
     for (int y = 0; y < options.height; y += kBlockSize)
         for (int x = 0; x < options.width; x += kBlockSize)
@@ -223,16 +258,45 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options, const Rad
                 const Tile& t = tiles[i];
                 for (int y = t.y0; y < t.y1; ++y) {
                     for (int x = t.x0; x < t.x1; ++x) {
-                        double* acc = &sum[(static_cast<size_t>(y) * options.width + x) * 3];
+                        const size_t p = static_cast<size_t>(y) * options.width + x;
+                        double* acc = &sum[p * 3];
                         for (int s = s0; s < s1; ++s) {
                             const uint32_t index = static_cast<uint32_t>(s);
                             const Sample2 j = PixelSampler(x, y, index, options.seed).get2(0);
                             std::optional<Ray> ray = camera.generate(x + j.u - 0.5, y + j.v - 0.5);
-                            if (!ray) continue;
-                            const Color c = radiance(*ray, SampleId{x, y, index});
-                            acc[0] += sanitize(c.r);
-                            acc[1] += sanitize(c.g);
-                            acc[2] += sanitize(c.b);
+                            float value[3] = {0, 0, 0};
+                            FirstHit first;
+                            if (ray) {
+                                const Color c = radiance(*ray, SampleId{x, y, index},
+                                                         options.aovs ? &first : nullptr);
+                                value[0] = sanitize(c.r);
+                                value[1] = sanitize(c.g);
+                                value[2] = sanitize(c.b);
+                                acc[0] += value[0];
+                                acc[1] += value[1];
+                                acc[2] += value[2];
+                            }
+                            if (!extra.aov.empty() && first.hit) {
+                                double* a = &extra.aov[p * 7];
+                                a[0] += sanitize(first.albedo.r);
+                                a[1] += sanitize(first.albedo.g);
+                                a[2] += sanitize(first.albedo.b);
+                                a[3] += finite_signed(first.normal.x);
+                                a[4] += finite_signed(first.normal.y);
+                                a[5] += finite_signed(first.normal.z);
+                                a[6] += sanitize(first.depth);
+                            }
+                            if (!extra.mean.empty()) {
+                                // Welford (1962): stable where sum-of-squares cancels. A
+                                // sample without a camera ray counts as 0, as in the mean.
+                                const double k = s + 1.0;
+                                for (int c = 0; c < 3; ++c) {
+                                    double& m = extra.mean[p * 3 + c];
+                                    const double d = value[c] - m;
+                                    m += d / k;
+                                    extra.m2[p * 3 + c] += d * (value[c] - m);
+                                }
+                            }
                         }
                     }
                 }
@@ -254,14 +318,46 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options, const Rad
                 options.time_limit)
             break;
     }
-    image->width = options.width;
-    image->height = options.height;
-    image->rgba.assign(pixels * 4, 0.0f);
+    film->image = blank_image(options.width, options.height);
     const double inv = 1.0 / done;
-    for (size_t i = 0; i < pixels; ++i) {
-        for (int c = 0; c < 3; ++c) image->rgba[i * 4 + c] = sanitize(sum[i * 3 + c] * inv);
-        image->rgba[i * 4 + 3] = 1.0f;
+    for (size_t i = 0; i < pixels; ++i)
+        for (int c = 0; c < 3; ++c) film->image.rgba[i * 4 + c] = sanitize(sum[i * 3 + c] * inv);
+    if (!extra.aov.empty()) {
+        film->albedo = blank_image(options.width, options.height);
+        film->normal = blank_image(options.width, options.height);
+        film->depth = blank_image(options.width, options.height);
+        for (size_t i = 0; i < pixels; ++i) {
+            const double* a = &extra.aov[i * 7];
+            for (int c = 0; c < 3; ++c) {
+                film->albedo.rgba[i * 4 + c] = sanitize(a[c] * inv);
+                film->normal.rgba[i * 4 + c] = finite_signed(a[3 + c] * inv);
+                film->depth.rgba[i * 4 + c] = sanitize(a[6] * inv);
+            }
+        }
     }
+    if (!extra.mean.empty()) {
+        film->variance = blank_image(options.width, options.height);
+        if (done >= 2) {
+            const double scale = 1.0 / (static_cast<double>(done) * (done - 1));
+            for (size_t i = 0; i < pixels; ++i)
+                for (int c = 0; c < 3; ++c)
+                    film->variance.rgba[i * 4 + c] = sanitize(extra.m2[i * 3 + c] * scale);
+        }
+    }
+    return done;
+}
+
+int run_path_tiles(const Camera& camera, const RenderOptions& options, const RadianceFn& radiance,
+                   Image* image) {
+    PathRadianceFn plain = [&radiance](const Ray& ray, const SampleId& id, FirstHit*) {
+        return radiance(ray, id);
+    };
+    RenderOptions o = options;
+    o.aovs = false;
+    o.variance = false;
+    PathFilm film;
+    const int done = run_path_tiles(camera, o, plain, &film);
+    *image = std::move(film.image);
     return done;
 }
 

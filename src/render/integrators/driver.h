@@ -9,6 +9,7 @@
 #include <functional>
 
 #include "render/camera.h"
+#include "render/integrators/aov.h"
 #include "render/image.h"
 #include "render/render.h"
 
@@ -38,11 +39,30 @@ struct DriverSettings {
 Image run_tiles(const Camera& camera, const RenderOptions& options,
                 const DriverSettings& settings, const RadianceFn& radiance);
 
+// The path tracer's radiance along a camera ray; `first` is null unless AOVs are wanted, and
+// then receives what the ray sees at its first visible hit.
+using PathRadianceFn =
+    std::function<Color(const Ray& ray, const SampleId& id, FirstHit* first)>;
+
+// What run_path_tiles fills: the image, and with options.aovs / options.variance the
+// per-pixel outputs (each width x height RGBA, alpha 1; left empty when not asked for).
+struct PathFilm {
+    Image image;
+    Image albedo;    // mean over the pixel's samples of FirstHit::albedo (misses count 0)
+    Image normal;    // mean of FirstHit::normal, -1..1 (not normalized again; misses 0)
+    Image depth;     // mean of FirstHit::depth in R, G and B (misses count 0)
+    Image variance;  // per channel: the variance of the pixel's mean, s^2 / n (0 when n < 2)
+};
+
 // The path tracer's loop: options.spp jittered samples per pixel (pixel jitter from pair 0 of
 // the PixelSampler of (pixel, sample, options.seed)), averaged with a box filter. Samples are
 // taken in progressive passes (1, 1, 2, 4, ... per pixel); with options.time_limit > 0 the
 // render stops after the pass that crosses the limit. Each pixel sums its samples in sample
-// order, so the image is bit-identical whatever the thread count. Returns the samples taken.
+// order (the variance by Welford's update in the same order), so every output is
+// bit-identical whatever the thread count. Returns the samples taken per pixel.
+int run_path_tiles(const Camera& camera, const RenderOptions& options,
+                   const PathRadianceFn& radiance, PathFilm* film);
+// The same without AOVs or variance, for a plain radiance function.
 int run_path_tiles(const Camera& camera, const RenderOptions& options, const RadianceFn& radiance,
                    Image* image);
 

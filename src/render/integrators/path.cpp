@@ -123,7 +123,8 @@ double PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double di
     return 0;
 }
 
-Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler) const {
+Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
+                         FirstHit* first) const {
     Color L;
     Color beta(1, 1, 1);
     Ray r = camera_ray;
@@ -135,6 +136,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler) con
     uint64_t rays = 0;
     const PathLights& lights = *lights_;
     const int max_vertices = settings_.max_depth + 1 + kMaxAlphaSkips;
+    if (first) *first = FirstHit{};
     for (int v = 0; v < max_vertices; ++v) {
         const uint32_t base = 1 + static_cast<uint32_t>(v) * kPairsPerVertex;
         Hit hit;
@@ -155,6 +157,12 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler) con
             r.origin = o;
             r.tmax = kInfinity;
             continue;
+        }
+        if (first && !first->hit) {
+            first->hit = true;
+            first->albedo = s.bsdf.base.is_black() ? s.emission : s.bsdf.base;
+            first->normal = dot(hit.ng, r.dir) > 0 ? -hit.n : hit.n;
+            first->depth = seg_dist + hit.t;
         }
         if (!s.emission.is_black()) {
             double w = 1;

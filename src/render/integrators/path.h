@@ -13,6 +13,7 @@
 
 #include "render/bsdf/pov_to_pbr.h"
 #include "render/geometry.h"
+#include "render/integrators/aov.h"
 #include "render/integrators/path_lights.h"
 #include "render/sampling/sampler.h"
 #include "render/textures/pigment.h"
@@ -31,8 +32,9 @@ public:
     PathIntegrator(const scene::Scene& scene, const Geometry& geometry,
                    const TextureCache* textures, const PathSettings& settings);
 
-    // Radiance along a camera ray. Pair 0 of the sampler is the driver's pixel jitter.
-    Color li(const Ray& ray, const PixelSampler& sampler) const;
+    // Radiance along a camera ray. Pair 0 of the sampler is the driver's pixel jitter. With
+    // `first`, also what the ray sees at its first visible hit (the AOVs).
+    Color li(const Ray& ray, const PixelSampler& sampler, FirstHit* first = nullptr) const;
 
     // Paths whose radiance was NaN or infinite (dropped, counted).
     uint64_t nonfinite() const { return nonfinite_.load(std::memory_order_relaxed); }
