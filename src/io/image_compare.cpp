@@ -123,18 +123,11 @@ Rgb8Image read_rgb8(const std::string& path) {
         std::vector<float> data(pixels * channels);
         if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
             throw fail(in->geterror());
-        std::vector<float> rgb = to_rgb(data, pixels, channels);
-        render::Image linear;
+        LinearImage linear;
         linear.width = spec.width;
         linear.height = spec.height;
-        linear.rgba.resize(pixels * 4, 1.0f);
-        for (size_t i = 0; i < pixels; ++i)
-            for (int c = 0; c < 3; ++c) linear.rgba[i * 4 + c] = rgb[i * 3 + c];
-        OutputEncoding srgb;  // sRGB, linear working space: what a PNG of this film holds
-        std::vector<float> encoded = encode_rgb(linear, srgb);
-        out.rgb.resize(pixels * 3);
-        for (size_t i = 0; i < encoded.size(); ++i)
-            out.rgb[i] = static_cast<unsigned char>(quantize(encoded[i], 255));
+        linear.rgb = to_rgb(data, pixels, channels);
+        out = encode_srgb8(linear);
     } else {
         std::vector<unsigned char> data(pixels * channels);
         if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, data.data()))
@@ -143,6 +136,107 @@ Rgb8Image read_rgb8(const std::string& path) {
     }
     in->close();
     return out;
+}
+
+LinearImage read_linear(const std::string& path) {
+    auto fail = [&](const std::string& why) {
+        return Error(ErrorKind::MissingFile, {}, "cannot read image " + path + ": " + why);
+    };
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+    if (!in) {
+        std::string why = OIIO::geterror();
+        throw fail(why.empty() ? "cannot open the file" : why);
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    const int channels = spec.nchannels;
+    if (spec.width <= 0 || spec.height <= 0 || channels <= 0) throw fail("empty image");
+    if (channels == 2) throw fail("gray+alpha images are not supported");
+    const size_t pixels = static_cast<size_t>(spec.width) * spec.height;
+    const bool is_float = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
+                          spec.format.basetype == OIIO::TypeDesc::HALF ||
+                          spec.format.basetype == OIIO::TypeDesc::DOUBLE;
+    std::vector<float> data(pixels * channels);
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
+        throw fail(in->geterror());
+    in->close();
+    LinearImage out;
+    out.width = spec.width;
+    out.height = spec.height;
+    out.rgb = to_rgb(data, pixels, channels);
+    if (!is_float) {
+        // IEC 61966-2-1 sRGB decoding of the code values OpenImageIO scaled to [0, 1].
+        for (float& v : out.rgb)
+            v = v <= 0.04045f ? v / 12.92f
+                              : static_cast<float>(std::pow((v + 0.055) / 1.055, 2.4));
+    }
+    return out;
+}
+
+Rgb8Image encode_srgb8(const LinearImage& image) {
+    const size_t pixels = static_cast<size_t>(image.width) * image.height;
+    render::Image linear;
+    linear.width = image.width;
+    linear.height = image.height;
+    linear.rgba.resize(pixels * 4, 1.0f);
+    for (size_t i = 0; i < pixels; ++i)
+        for (int c = 0; c < 3; ++c) linear.rgba[i * 4 + c] = image.rgb[i * 3 + c];
+    OutputEncoding srgb;  // sRGB, linear working space: what a PNG of this film holds
+    std::vector<float> encoded = encode_rgb(linear, srgb);
+    Rgb8Image out;
+    out.width = image.width;
+    out.height = image.height;
+    out.rgb.resize(pixels * 3);
+    for (size_t i = 0; i < encoded.size(); ++i)
+        out.rgb[i] = static_cast<unsigned char>(quantize(encoded[i], 255));
+    return out;
+}
+
+LinearMetrics compare_linear(const LinearImage& image, const LinearImage& reference) {
+    if (image.width != reference.width || image.height != reference.height)
+        throw Error(ErrorKind::Usage, {},
+                    "image sizes differ: " + std::to_string(image.width) + "x" +
+                        std::to_string(image.height) + " vs " + std::to_string(reference.width) +
+                        "x" + std::to_string(reference.height));
+    LinearMetrics m;
+    double rel = 0, sq = 0;
+    long long n = 0;
+    for (size_t i = 0; i < image.rgb.size(); ++i) {
+        const double x = image.rgb[i], r = reference.rgb[i];
+        if (!std::isfinite(x) || !std::isfinite(r)) {
+            ++m.nonfinite;
+            continue;
+        }
+        const double d2 = (x - r) * (x - r);
+        rel += d2 / (r * r + 0.01);
+        sq += d2;
+        ++n;
+    }
+    if (n > 0) {
+        m.relmse = rel / double(n);
+        m.rmse = std::sqrt(sq / double(n));
+    }
+    return m;
+}
+
+LinearImage linear_difference(const LinearImage& a, const LinearImage& b) {
+    if (a.width != b.width || a.height != b.height)
+        throw Error(ErrorKind::Usage, {}, "image sizes differ");
+    LinearImage d = a;
+    for (size_t i = 0; i < d.rgb.size(); ++i) {
+        const float v = std::fabs(a.rgb[i] - b.rgb[i]);
+        d.rgb[i] = std::isfinite(v) ? v : 0.0f;
+    }
+    return d;
+}
+
+void write_linear_exr(const LinearImage& image, const std::string& path) {
+    render::Image film;
+    film.width = image.width;
+    film.height = image.height;
+    film.rgba.resize(static_cast<size_t>(image.width) * image.height * 4, 1.0f);
+    for (size_t i = 0; i < film.rgba.size() / 4; ++i)
+        for (int c = 0; c < 3; ++c) film.rgba[i * 4 + c] = image.rgb[i * 3 + c];
+    write_float_exr(film, path, 3);
 }
 
 CompareResult compare_images(const Rgb8Image& a, const Rgb8Image& b, double tolerance) {
@@ -217,9 +311,10 @@ void write_rgb8_png(const Rgb8Image& image, const std::string& path) {
 std::string format_compare_line(const CompareResult& r) {
     char buf[256];
     std::snprintf(buf, sizeof buf,
-                  "within=%.6f rmse=%.4f max=%d@%d,%d pixels=%lld mae=%.4f ssim=%.6f",
+                  "within=%.6f rmse=%.4f max=%d@%d,%d pixels=%lld mae=%.4f ssim=%.6f "
+                  "relmse=%.6g rmse_linear=%.6g",
                   r.within_fraction, r.rmse, r.max_diff, r.max_x, r.max_y, r.pixels, r.mae,
-                  r.ssim);
+                  r.ssim, r.relmse, r.rmse_linear);
     return buf;
 }
 

@@ -95,7 +95,8 @@ TEST_F(CliTest, CompareAgreeingImagesExitsZero) {
     RunResult r = run("compare '" + path("a.png") + "' '" + path("b.png") + "'");
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.out,
-              "within=1.000000 rmse=0.1155 max=2@0,0 pixels=100 mae=0.0067 ssim=1.000000\n");
+              "within=1.000000 rmse=0.1155 max=2@0,0 pixels=100 mae=0.0067 ssim=1.000000 "
+              "relmse=3.55486e-06 rmse_linear=0.000313538\n");
 }
 
 TEST_F(CliTest, CompareDifferingImagesExitsSixAndWritesDiff) {
