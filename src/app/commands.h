@@ -51,9 +51,26 @@ struct CompareArgs {
     double min_fraction = 0.99;
 };
 
+// `glint report` (report_command.cpp): error against run time for the path tracer and a peer.
+struct ReportArgs {
+    SceneRequest scene;  // SCENE, -I, --clock, --width/--height (default: the reference's size)
+    std::string reference;
+    std::string spp_steps = "1,4,16,64";
+    std::string out = "report";
+    int max_depth = 8;
+    unsigned seed = 0;
+    int threads = 0;
+    std::string peer;        // shell command with {spp} and {out}
+    std::string peer_steps;  // empty: spp_steps
+    std::string peer_name = "peer";
+    bool verbose = false;
+    bool given_width = false, given_height = false;
+};
+
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args);
 CLI::App* add_ir_command(CLI::App& app, IrArgs& args);
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args);
+CLI::App* add_report_command(CLI::App& app, ReportArgs& args);
 
 int run_render(const RenderArgs& args);
 // Where --aov NAME (and --variance) writes for OUTPUT: OUT's folder/<OUT's stem>.NAME.exr.
@@ -64,5 +81,6 @@ std::vector<std::string> take_pov_arguments(const std::vector<std::string>& argv
                                             std::vector<std::string>& pov_args);
 int run_ir(const IrArgs& args);
 int run_compare(const CompareArgs& args);
+int run_report(const ReportArgs& args);
 
 }  // namespace glint::app
