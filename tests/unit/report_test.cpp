@@ -144,6 +144,11 @@ TEST(PathAov, DepthNormalAlbedoOfAKnownSphere) {
     Diagnostics diag;
     const RenderResult r = render(s, opt, diag);
     ASSERT_EQ(r.depth.width, 41);
+    opt.threads = 1;
+    const RenderResult r1 = render(s, opt, diag);
+    EXPECT_EQ(r1.depth.rgba, r.depth.rgba);  // the same whatever the thread count
+    EXPECT_EQ(r1.normal.rgba, r.normal.rgba);
+    EXPECT_EQ(r1.albedo.rgba, r.albedo.rgba);
     const float* d = r.depth.pixel(20, 15);
     const float* n = r.normal.pixel(20, 15);
     const float* a = r.albedo.pixel(20, 15);
