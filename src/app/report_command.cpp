@@ -253,7 +253,8 @@ int run_report(const ReportArgs& args) {
                      glint_steps.back().metrics.relmse);
     }
 
-    const std::string peer_file = file_safe(args.peer_name);
+    std::string peer_file = file_safe(args.peer_name);
+    if (peer_file == "glint") peer_file = "peer-glint";  // glint's own renders are glint-N.exr
     for (int spp : peer_steps) {
         if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
         const fs::path out = dir / (peer_file + "-" + std::to_string(spp) + ".exr");
