@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include <tiny_obj_loader.h>
@@ -84,6 +86,60 @@ FileLoc locate_bad_index(const std::string& path, const std::shared_ptr<const st
     return file_loc(file, 0);
 }
 
+// tinyobjloader's MTL reader, noting which files it read: glint reads them once more for what
+// tinyobjloader does not keep (which statements were written, who wrote the file).
+class MtlFileReader final : public tinyobj::MaterialFileReader {
+public:
+    explicit MtlFileReader(const std::string& dir) : MaterialFileReader(dir), dir_(dir) {}
+    bool operator()(const std::string& id, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* names, std::string* warn,
+                    std::string* err) override {
+        const bool ok = MaterialFileReader::operator()(id, materials, names, warn, err);
+        if (ok) files.push_back(dir_.empty() ? id : (fs::path(dir_) / id).string());
+        return ok;
+    }
+    std::vector<std::string> files;
+
+private:
+    std::string dir_;
+};
+
+// What the MTL files say beyond tinyobjloader's values: the statements each material wrote
+// (lowercased keywords), and whether Blender wrote the file (its first line).
+struct MtlStatements {
+    std::map<std::string, std::set<std::string>> keywords;  // by material name
+    std::set<std::string> blender;                          // materials in Blender's files
+};
+
+MtlStatements scan_mtl(const std::vector<std::string>& files) {
+    MtlStatements out;
+    for (const std::string& f : files) {
+        std::ifstream in(f);
+        std::string line, current;
+        bool blender = false, first = true;
+        while (std::getline(in, line)) {
+            if (first && line.rfind("# Blender", 0) == 0) blender = true;
+            first = false;
+            size_t a = line.find_first_not_of(" \t");
+            if (a == std::string::npos || line[a] == '#') continue;
+            size_t b = line.find_first_of(" \t\r", a);
+            std::string key = line.substr(a, b == std::string::npos ? std::string::npos : b - a);
+            std::transform(key.begin(), key.end(), key.begin(), ::tolower);
+            if (key == "newmtl") {
+                size_t s = b == std::string::npos ? line.size() : line.find_first_not_of(" \t", b);
+                current = s == std::string::npos ? "" : line.substr(s);
+                while (!current.empty() && std::isspace(static_cast<unsigned char>(current.back())))
+                    current.pop_back();
+                out.keywords[current];
+                if (blender) out.blender.insert(current);
+            } else if (!current.empty()) {
+                out.keywords[current].insert(key);
+            }
+        }
+    }
+    return out;
+}
+
 scene::PbrMap map_ref(const std::string& name, const tinyobj::texture_option_t& opt,
                       const fs::path& base, const std::string& material, const FileLoc& loc,
                       Diagnostics& diag) {
@@ -133,19 +189,30 @@ scene::Material material_from_mtl(const MtlValues& v) {
     scene::Pbr& p = m.pbr;
     p.derived = false;
     p.base_color = v.Kd;
-    p.metallic = v.has_Pm ? v.Pm : 0.0;
+    // Illumination models with refraction (MTL spec: 4, 6, 7, 9 have transparency) and with
+    // reflection (3 to 8, where Blender's exporter puts metallic into Ka).
+    const bool refracting = v.illum == 4 || v.illum == 6 || v.illum == 7 || v.illum == 9;
+    const bool reflecting = v.illum >= 3 && v.illum <= 8;
+    if (v.has_Pm) p.metallic = v.Pm;
+    else if (v.has_Ka && reflecting) p.metallic = average(v.Ka);
+    else p.metallic = 0;
     if (v.has_Pr) {
         p.roughness = v.Pr;
     } else {
-        // Inverse of Blender's exporter, Ns = 1000 (1 - roughness)^2.
-        double ns = std::clamp(v.Ns, 0.0, 1000.0);
+        // Inverse of Blender's exporter, Ns = 1000 (1 - roughness)^2; no Ns: no highlight.
+        double ns = v.has_Ns ? std::clamp(v.Ns, 0.0, 1000.0) : 0.0;
         p.roughness = 1.0 - std::sqrt(ns / 1000.0);
     }
     p.roughness = std::clamp(p.roughness, 0.0, 1.0);
     p.metallic = std::clamp(p.metallic, 0.0, 1.0);
     p.specular = std::clamp(average(v.Ks), 0.0, 1.0);
-    p.ior = v.Ni > 0 ? v.Ni : 1.45;
-    p.transmission = v.has_Tf ? std::clamp(average(v.Tf), 0.0, 1.0) : 0.0;
+    p.ior = v.has_Ni && v.Ni > 0 ? v.Ni : (refracting ? 1.5 : 1.45);
+    // Tf is a transmission filter that only refracting models use; many exporters write
+    // `Tf 1 1 1` on every opaque material. In the PBR extension (Blender) it is the
+    // transmission whatever illum says.
+    p.transmission = v.has_Tf && (refracting || v.pbr_extension)
+                         ? std::clamp(average(v.Tf), 0.0, 1.0)
+                         : 0.0;
     p.emission = v.Ke;
     p.emission_strength = (v.Ke.r > 0 || v.Ke.g > 0 || v.Ke.b > 0) ? 1.0 : 0.0;
     p.alpha = std::clamp(v.d, 0.0, 1.0);
@@ -184,15 +251,20 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
     if (!fs::is_regular_file(path, ec))
         throw Error(ErrorKind::MissingFile, FileLoc{}, "cannot open OBJ file '" + path + "'");
 
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    config.mtl_search_path = fs::path(path).parent_path().string();
-    tinyobj::ObjReader reader;
-    bool ok = reader.ParseFromFile(path, config);
-    const std::string& warn = reader.Warning();
+    // tinyobjloader's ObjReader::ParseFromFile, with an MTL reader that notes its files.
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string warn, err;
+    MtlFileReader mtl_reader(fs::path(path).parent_path().string());
+    bool ok = false;
+    {
+        std::ifstream in(path);
+        if (!in) throw Error(ErrorKind::MissingFile, FileLoc{}, "cannot open OBJ file '" + path + "'");
+        ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader,
+                              /*triangulate=*/true, /*default_vcols_fallback=*/false);
+    }
     if (!ok) {
-        const std::string& err = reader.Error();
         if (err.find("Cannot open file") != std::string::npos)
             throw Error(ErrorKind::MissingFile, FileLoc{}, "cannot open OBJ file '" + path + "'");
         throw Error(ErrorKind::Scene, file_loc(file, reported_line(err)),
@@ -210,33 +282,40 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
         diag.warning(file_loc(file, reported_line(w)), w);
     }
 
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
-    const auto& shapes = reader.GetShapes();
-    const auto& materials = reader.GetMaterials();
+    const MtlStatements statements = scan_mtl(mtl_reader.files);
 
     ObjImport result;
     result.first_material = static_cast<int>(scene.materials.size());
     const fs::path base = fs::path(path).parent_path();
     const FileLoc mtl_loc = file_loc(file, 0);
     for (const tinyobj::material_t& mt : materials) {
+        // The statements this material wrote (tinyobjloader gives absent ones its own
+        // defaults, 0 for most, so presence comes from glint's own pass over the file).
+        static const std::set<std::string> kNone;
+        auto found = statements.keywords.find(mt.name);
+        const std::set<std::string>& has = found != statements.keywords.end() ? found->second : kNone;
+        auto given = [&](const char* k) { return has.count(k) > 0; };
+        const bool blender = statements.blender.count(mt.name) > 0;
         MtlValues v;
         v.Ka = rgb(mt.ambient);
-        v.Kd = rgb(mt.diffuse);
+        v.has_Ka = given("ka");
+        if (given("kd")) v.Kd = rgb(mt.diffuse);
         v.Ks = rgb(mt.specular);
         v.Ke = rgb(mt.emission);
         v.Tf = rgb(mt.transmittance);
-        v.has_Tf = v.Tf.r > 0 || v.Tf.g > 0 || v.Tf.b > 0;
+        v.has_Tf = given("tf");
         v.Ns = mt.shininess;
+        v.has_Ns = given("ns");
         v.Ni = mt.ior;
+        v.has_Ni = given("ni");
         v.d = mt.dissolve;
-        v.illum = mt.illum;
-        // tinyobjloader keeps PBR values at 0 when absent; their presence is seen in
-        // unknown_parameter only for extensions it does not know, so Pr/Pm count as given
-        // when non-zero (their defaults in Blender's importer are the same 0 / 0.5 anyway).
-        v.has_Pr = mt.roughness != 0;
+        v.illum = given("illum") ? mt.illum : 2;
+        v.has_Pr = given("pr");
         v.Pr = mt.roughness;
-        v.has_Pm = mt.metallic != 0;
+        v.has_Pm = given("pm");
         v.Pm = mt.metallic;
+        for (const char* k : {"pr", "pm", "ps", "pc", "pcr", "aniso", "anisor"})
+            v.pbr_extension = v.pbr_extension || given(k);
         v.Ps = mt.sheen;
         v.Pc = mt.clearcoat_thickness;
         v.Pcr = mt.clearcoat_roughness;
@@ -253,7 +332,22 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
         p.emission_map = ref(mt.emissive_texname, mt.emissive_texopt);
         p.roughness_map = ref(mt.roughness_texname, mt.roughness_texopt);
         p.metallic_map = ref(mt.metallic_texname, mt.metallic_texopt);
-        p.exponent_map = ref(mt.specular_highlight_texname, mt.specular_highlight_texopt);
+        if (blender && mt.roughness_texname.empty()) {
+            // Blender's exporter without PBR extensions writes its roughness image as map_Ns
+            // and its metallic image as map_refl (and its importer reads them back so).
+            p.roughness_map = ref(mt.specular_highlight_texname, mt.specular_highlight_texopt);
+        } else {
+            p.exponent_map = ref(mt.specular_highlight_texname, mt.specular_highlight_texopt);
+        }
+        if (blender && mt.metallic_texname.empty()) {
+            // tinyobjloader keeps `map_refl` (it knows `refl`) among unknown parameters.
+            auto refl = mt.unknown_parameter.find("map_refl");
+            std::string name;
+            tinyobj::texture_option_t opt;
+            if (refl != mt.unknown_parameter.end() &&
+                tinyobj::ParseTextureNameAndOption(&name, &opt, refl->second.c_str()))
+                p.metallic_map = ref(name, opt);
+        }
         p.alpha_map = ref(mt.alpha_texname, mt.alpha_texopt);
         p.bump_map = ref(mt.bump_texname, mt.bump_texopt);
         if (p.base_color_map.present()) set_image_pigment(m.texture.pigment, p.base_color_map);

@@ -37,12 +37,17 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
 scene::Scene viewer_scene(const std::string& path, int width, int height, Diagnostics& diag);
 
 // The classic (Whitted) texture and the PBR half for one MTL material, as MTL.md documents.
-// Exposed for tests.
+// The has_ flags say which statements the material wrote (an absent one keeps the default
+// here, Blender's default material). Exposed for tests.
 struct MtlValues {
     Color Ka{0, 0, 0}, Kd{0.8, 0.8, 0.8}, Ks{0, 0, 0}, Ke{0, 0, 0}, Tf{0, 0, 0};
     double Ns = 0, Ni = 1.45, d = 1;
     int illum = 2;
-    bool has_Pr = false, has_Pm = false, has_Tf = false;
+    bool has_Ka = false, has_Ns = false, has_Ni = false, has_Tf = false;
+    bool has_Pr = false, has_Pm = false;
+    // Any of Pr Pm Ps Pc Pcr aniso anisor: the material is in the PBR extension's terms (what
+    // Blender writes with export_pbr_extensions), so Tf is its transmission.
+    bool pbr_extension = false;
     double Pr = 0.5, Pm = 0, Ps = 0, Pc = 0, Pcr = 0, aniso = 0, anisor = 0;
 };
 scene::Material material_from_mtl(const MtlValues& v);

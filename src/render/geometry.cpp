@@ -79,6 +79,8 @@ private:
         hit->n = h.n;
         hit->uv = h.uv_source ? h.uv_source->uv_at(h.uv_point) : h.uv;
         hit->has_uv = h.has_uv;
+        hit->dpdu = h.dpdu;
+        hit->dpdv = h.dpdv;
         hit->material = h.material;
         hit->flags = h.flags;
         hit->object = id;

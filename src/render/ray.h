@@ -33,6 +33,9 @@ struct Hit {
     Vec3 n;
     Vec2 uv;             // surface parameterization (uv_mapping); valid if has_uv
     bool has_uv = false;
+    // dp/du and dp/dv of the uv parameterization, world space; zero where the shape does not
+    // know them (meshes with uvs fill them: tangents for bump and normal maps).
+    Vec3 dpdu, dpdv;
     int material = -1;   // resolved Scene::materials id (CSG inheritance applied)
     uint32_t flags = 0;  // ObjectFlags
     int object = -1;     // index of the top-level scene object that was hit

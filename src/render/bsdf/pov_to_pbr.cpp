@@ -1,5 +1,6 @@
 #include "render/bsdf/pov_to_pbr.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace glint::render {
@@ -72,6 +73,148 @@ SurfacePbr pbr_surface(const scene::Pbr& pbr, const Color& base) {
     s.emission = pbr.emission * pbr.emission_strength;
     s.alpha = std::clamp(pbr.alpha, 0.0, 1.0);
     return s;
+}
+
+void PbrMapLookup::lookup(Vec2 uv, float out[5]) const {
+    const int w = image->width(), h = image->height();
+    // Texel centres at (i + 0.5) / w; row 0 is the top of the image, v = 0 its bottom.
+    const double x = (uv.x * su + ou) * w - 0.5;
+    const double y = (1.0 - (uv.y * sv + ov)) * h - 0.5;
+    const double fx0 = std::floor(x), fy0 = std::floor(y);
+    const double fx = x - fx0, fy = y - fy0;
+    auto wrap = [](double i, int n) {
+        const double m = std::fmod(i, static_cast<double>(n));
+        const int k = static_cast<int>(m < 0 ? m + n : m);
+        return std::clamp(k, 0, n - 1);  // fmod of a huge or NaN uv stays in range
+    };
+    const int x0 = wrap(fx0, w), x1 = x0 + 1 < w ? x0 + 1 : 0;
+    const int y0 = wrap(fy0, h), y1 = y0 + 1 < h ? y0 + 1 : 0;
+    const float *a = image->texel(x0, y0), *b = image->texel(x1, y0),
+                *c = image->texel(x0, y1), *d = image->texel(x1, y1);
+    const double wa = (1 - fx) * (1 - fy), wb = fx * (1 - fy), wc = (1 - fx) * fy, wd = fx * fy;
+    for (int k = 0; k < 5; ++k)
+        out[k] = static_cast<float>(a[k] * wa + b[k] * wb + c[k] * wc + d[k] * wd);
+}
+
+double PbrMapLookup::value(Vec2 uv) const {
+    float t[5];
+    lookup(uv, t);
+    return 0.2126 * t[0] + 0.7152 * t[1] + 0.0722 * t[2];
+}
+
+namespace {
+
+PbrMapLookup prepare_map(const scene::PbrMap& m, bool color, TextureCache& cache) {
+    PbrMapLookup l;
+    if (!m.present()) return l;
+    cache.add_pbr(m, color);
+    l.image = cache.find_pbr(m, color);
+    if (l.image && (l.image->width() <= 0 || l.image->height() <= 0)) l.image = nullptr;
+    l.ou = m.offset.x;
+    l.ov = m.offset.y;
+    l.su = m.scale.x != 0 ? m.scale.x : 1;
+    l.sv = m.scale.y != 0 ? m.scale.y : 1;
+    return l;
+}
+
+// A gray image (every texel r = g = b) holds heights; a colored one a normal map.
+bool is_gray(const ImageTexture& img) {
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+            const float* t = img.texel(x, y);
+            if (std::fabs(t[0] - t[1]) > 1e-3f || std::fabs(t[1] - t[2]) > 1e-3f) return false;
+        }
+    return true;
+}
+
+}  // namespace
+
+PbrMaps prepare_pbr_maps(const scene::Pbr& pbr, TextureCache& cache) {
+    PbrMaps m;
+    m.base_color = prepare_map(pbr.base_color_map, true, cache);
+    m.specular = prepare_map(pbr.specular_map, true, cache);
+    m.emission = prepare_map(pbr.emission_map, true, cache);
+    m.roughness = prepare_map(pbr.roughness_map, false, cache);
+    m.metallic = prepare_map(pbr.metallic_map, false, cache);
+    m.exponent = prepare_map(pbr.exponent_map, false, cache);
+    m.alpha = prepare_map(pbr.alpha_map, false, cache);
+    m.bump = prepare_map(pbr.bump_map, false, cache);
+    m.bump_multiplier = pbr.bump_map.bump_multiplier;
+    if (m.bump) m.normal_map = !is_gray(*m.bump.image);
+    return m;
+}
+
+SurfacePbr pbr_surface(const scene::Pbr& pbr, const PbrMaps& maps, Vec2 uv) {
+    float t[5];
+    Color base = pbr.base_color;
+    if (maps.base_color) {
+        maps.base_color.lookup(uv, t);
+        base = Color(t[0], t[1], t[2]);
+    }
+    SurfacePbr s = pbr_surface(pbr, base);
+    PrincipledParams& p = s.bsdf;
+    if (maps.specular) p.specular = std::max(0.0, maps.specular.value(uv));
+    if (maps.roughness) {
+        p.roughness = maps.roughness.value(uv);
+    } else if (maps.exponent) {
+        // map_Ns scales the exponent range 0..1000: Ns = 1000 v, roughness as for Ns.
+        p.roughness = 1.0 - std::sqrt(std::clamp(maps.exponent.value(uv), 0.0, 1.0));
+    }
+    p.roughness = std::clamp(p.roughness, 0.0, 1.0);
+    if (maps.metallic) p.metallic = std::clamp(maps.metallic.value(uv), 0.0, 1.0);
+    if (maps.emission) {
+        maps.emission.lookup(uv, t);
+        s.emission = Color(std::max(0.0f, t[0]), std::max(0.0f, t[1]), std::max(0.0f, t[2]));
+    }
+    if (maps.alpha) {
+        // The image's alpha channel where it has one (Blender links the Alpha output), else
+        // its gray value (a mask).
+        if (maps.alpha.image->has_alpha()) {
+            maps.alpha.lookup(uv, t);
+            s.alpha = 1.0 - t[4];
+        } else {
+            s.alpha = maps.alpha.value(uv);
+        }
+        s.alpha = std::clamp(s.alpha, 0.0, 1.0);
+    }
+    return s;
+}
+
+Vec3 mapped_normal(const PbrMaps& maps, Vec2 uv, const Vec3& n, const Vec3& dpdu,
+                   const Vec3& dpdv) {
+    if (!maps.bump) return n;
+    // The tangents in the shading normal's plane.
+    const Vec3 tu = dpdu - n * dot(n, dpdu);
+    const Vec3 tv = dpdv - n * dot(n, dpdv);
+    const double lu = length(tu), lv = length(tv);
+    if (!(lu > 0) || !(lv > 0) || !std::isfinite(lu) || !std::isfinite(lv)) return n;
+    Vec3 r;
+    if (maps.normal_map) {
+        float t[5];
+        maps.bump.lookup(uv, t);
+        const Vec3 c(2.0 * t[0] - 1.0, 2.0 * t[1] - 1.0, 2.0 * t[2] - 1.0);
+        const Vec3 tangent = tu / lu;
+        Vec3 bitangent = cross(n, tangent);
+        if (dot(bitangent, tv) < 0) bitangent = -bitangent;  // mirrored uvs
+        const Vec3 mapped = tangent * c.x + bitangent * c.y + n * c.z;
+        const double strength = std::max(0.0, maps.bump_multiplier);
+        r = n + (mapped - n) * strength;
+    } else {
+        // Central differences one texel apart (in the surface's uv, so -s is included).
+        const PbrMapLookup& b = maps.bump;
+        const double du = 1.0 / (b.image->width() * std::fabs(b.su));
+        const double dv = 1.0 / (b.image->height() * std::fabs(b.sv));
+        const double hu = (b.value(Vec2(uv.x + du / 2, uv.y)) -
+                           b.value(Vec2(uv.x - du / 2, uv.y))) / du;
+        const double hv = (b.value(Vec2(uv.x, uv.y + dv / 2)) -
+                           b.value(Vec2(uv.x, uv.y - dv / 2))) / dv;
+        const double k = maps.bump_multiplier;
+        r = cross(tu + n * (k * hu), tv + n * (k * hv));
+        if (dot(r, n) < 0) r = -r;
+    }
+    const double len = length(r);
+    if (!(len > 0) || !std::isfinite(len)) return n;
+    return r / len;
 }
 
 const scene::Texture& base_texture(const scene::Texture& texture) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "render/bsdf/bsdf.h"
+#include "render/textures/image_texture.h"
 #include "scene/color.h"
 #include "scene/texture.h"
 
@@ -21,6 +22,45 @@ SurfacePbr pov_to_pbr(const scene::Finish& finish, const scene::Interior& interi
 
 // An importer-filled Pbr; `base` is the base color at the hit (base_color or its map).
 SurfacePbr pbr_surface(const scene::Pbr& pbr, const Color& base);
+
+// One PBR image map ready for lookups at a surface uv: the image (nullptr when the material
+// has no such map or its file is missing) and MTL's -o/-s (the image is read at uv * s + o).
+struct PbrMapLookup {
+    const ImageTexture* image = nullptr;
+    double ou = 0, ov = 0, su = 1, sv = 1;
+    explicit operator bool() const { return image != nullptr; }
+    // Bilinear, repeating, (0, 0) at the image's bottom left: r, g, b, filter, transmit.
+    void lookup(Vec2 uv, float out[5]) const;
+    // Luminance (Rec. 709 weights) of the color: a data map's value.
+    double value(Vec2 uv) const;
+};
+
+// The maps of one importer-filled material, loaded at prepare time (formats/obj/MTL.md).
+struct PbrMaps {
+    PbrMapLookup base_color, specular, emission, roughness, metallic, exponent, alpha, bump;
+    // The bump image is colored: a tangent-space normal map (what Blender writes as map_Bump)
+    // rather than a gray height map.
+    bool normal_map = false;
+    double bump_multiplier = 1;
+    bool any() const {
+        return base_color || specular || emission || roughness || metallic || exponent || alpha ||
+               bump;
+    }
+};
+
+// Loads `pbr`'s maps into `cache` (color maps sRGB-decoded, data maps as stored).
+PbrMaps prepare_pbr_maps(const scene::Pbr& pbr, TextureCache& cache);
+
+// The surface at `uv`: each map present replaces its constant (MTL.md says how each is read).
+SurfacePbr pbr_surface(const scene::Pbr& pbr, const PbrMaps& maps, Vec2 uv);
+
+// The shading normal `n` bent by the material's bump map at `uv`, given the uv tangents dpdu,
+// dpdv (world space). A height map displaces the surface by bump_multiplier * h along n
+// (h the image value, in world units); a normal map is decoded in the tangent frame (tangent
+// along dpdu, bitangent on dpdv's side) and mixed with n by the strength bump_multiplier, as
+// Blender's Normal Map node does. `n` unchanged without a bump map or without tangents.
+Vec3 mapped_normal(const PbrMaps& maps, Vec2 uv, const Vec3& n, const Vec3& dpdu,
+                   const Vec3& dpdv);
 
 // The plain texture the path tracer reads a POV-Ray texture's finish and pigment from: the
 // texture itself, or for patterned textures their first entry (layers are not combined).

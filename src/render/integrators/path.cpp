@@ -38,7 +38,23 @@ PathIntegrator::PathIntegrator(const scene::Scene& scene, const Geometry& geomet
     for (size_t i = 0; i < n; ++i) {
         const scene::Material& m = scene.materials[i];
         if (!m.pbr.derived) {
-            if (!m.pbr.base_color_map.present()) constant_[i] = pbr_surface(m.pbr, m.pbr.base_color);
+            PbrMaps maps;
+            const scene::Pbr& p = m.pbr;
+            if (p.base_color_map.present() || p.specular_map.present() ||
+                p.emission_map.present() || p.roughness_map.present() ||
+                p.metallic_map.present() || p.exponent_map.present() || p.alpha_map.present() ||
+                p.bump_map.present()) {
+                if (!pbr_textures_)
+                    pbr_textures_ =
+                        std::make_unique<TextureCache>(ImageGamma{ImageGamma::Mode::V37, 1.0});
+                maps = prepare_pbr_maps(p, *pbr_textures_);
+            }
+            if (maps.any()) {
+                if (maps_.empty()) maps_.resize(n);
+                maps_[i] = maps;
+            } else {
+                constant_[i] = pbr_surface(p, p.base_color);
+            }
         } else {
             const scene::Texture& t = base_texture(m.texture);
             if (t.pigment.kind == scene::PatternKind::Plain)
@@ -53,7 +69,7 @@ PathIntegrator::PathIntegrator(const scene::Scene& scene, const Geometry& geomet
     lights_.emplace(scene, emission_);
 }
 
-SurfacePbr PathIntegrator::surface(const Hit& hit) const {
+SurfacePbr PathIntegrator::surface(Hit& hit) const {
     if (hit.material < 0 || hit.material >= static_cast<int>(scene_.materials.size())) {
         SurfacePbr s;
         s.bsdf.specular = 0;
@@ -63,12 +79,11 @@ SurfacePbr PathIntegrator::surface(const Hit& hit) const {
     const scene::Material& m = scene_.materials[hit.material];
     const PatternPoint at{hit.p, hit.uv, hit.has_uv};
     if (!m.pbr.derived) {
-        Color base = m.pbr.base_color;
-        scene::ColorFT c;
-        const scene::Pigment& pig = m.texture.pigment;
-        if (pig.kind == scene::PatternKind::ImageMap && pigments_.evaluate(pig, at, &c))
-            base = c.rgb;
-        return pbr_surface(m.pbr, base);
+        // Only materials with maps get here; without uvs they show their constants.
+        const PbrMaps& maps = maps_[hit.material];
+        if (!hit.has_uv) return pbr_surface(m.pbr, m.pbr.base_color);
+        if (maps.bump) hit.n = mapped_normal(maps, hit.uv, hit.n, hit.dpdu, hit.dpdv);
+        return pbr_surface(m.pbr, maps, hit.uv);
     }
     const scene::Texture& t = base_texture(m.texture);
     scene::ColorFT c;

@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -42,7 +43,8 @@ public:
     uint64_t rays() const { return rays_.load(std::memory_order_relaxed); }
 
 private:
-    SurfacePbr surface(const Hit& hit) const;
+    // The surface at a hit. Bump and normal maps (OBJ/MTL map_Bump) bend hit.n in place.
+    SurfacePbr surface(Hit& hit) const;
     // Radiance from the environment along a direction: the background with the sky_sphere's
     // layers over it (POV-Ray 3.7's sky).
     Color environment(const Vec3& dir) const;
@@ -56,6 +58,10 @@ private:
     std::vector<std::optional<SurfacePbr>> constant_;  // per material, where the hit can't change it
     std::vector<Color> emission_;                      // per material, where constant
     std::vector<char> has_alpha_;                      // per material: alpha may be < 1
+    // OBJ/MTL image maps per material (empty where none), in a cache of their own that is
+    // opened only when some material has one.
+    std::unique_ptr<TextureCache> pbr_textures_;
+    std::vector<PbrMaps> maps_;
     bool any_alpha_ = false;
     std::optional<PathLights> lights_;
     mutable std::atomic<uint64_t> nonfinite_{0};

@@ -122,9 +122,21 @@ private:
             }
         }
         h->has_uv = face.uv[0] >= 0 && face.uv[1] >= 0 && face.uv[2] >= 0;
-        if (h->has_uv)
-            h->uv = mesh_.uvs[face.uv[0]] * th.b[0] + mesh_.uvs[face.uv[1]] * th.b[1] +
-                    mesh_.uvs[face.uv[2]] * th.b[2];
+        if (h->has_uv) {
+            const Vec2 &t0 = mesh_.uvs[face.uv[0]], &t1 = mesh_.uvs[face.uv[1]],
+                       &t2 = mesh_.uvs[face.uv[2]];
+            h->uv = t0 * th.b[0] + t1 * th.b[1] + t2 * th.b[2];
+            // The triangle's uv tangents: p - p2 = dpdu (u - u2) + dpdv (v - v2) solved over
+            // its two edges; zero when the uvs are degenerate (no tangent frame).
+            const Vec2 d02 = t0 - t2, d12 = t1 - t2;
+            const double det = d02.x * d12.y - d02.y * d12.x;
+            if (std::fabs(det) > 1e-12) {
+                const Vec3 e02 = p0 - p2, e12 = p1 - p2;
+                const double inv = 1 / det;
+                h->dpdu = (e02 * d12.y - e12 * d02.y) * inv;
+                h->dpdv = (e12 * d02.x - e02 * d12.x) * inv;
+            }
+        }
         h->material = face.material;
     }
 

@@ -33,6 +33,10 @@ void transform_hit(const Transform& xf, LocalHit* h) {
     h->p = p;
     h->ng = normalize(xf.normal(h->ng));
     h->n = normalize(xf.normal(h->n));
+    if (h->has_uv) {
+        h->dpdu = xf.vector(h->dpdu);
+        h->dpdv = xf.vector(h->dpdv);
+    }
 }
 
 namespace {

@@ -27,6 +27,7 @@ struct LocalHit {
     // the object-space point it needs (uv_source->uv_at(uv_point)).
     const class Primitive* uv_source = nullptr;
     Vec3 uv_point;
+    Vec3 dpdu, dpdv;     // uv tangents where known (meshes with uvs), else zero
     int material = -1;   // -1: inherit from the enclosing object
     uint32_t flags = 0;  // ObjectFlags accumulated on the way up
 };

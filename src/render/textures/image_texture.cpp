@@ -129,6 +129,7 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const scene::ImageMap& ma
     auto tex = std::make_shared<ImageTexture>();
     tex->width_ = w;
     tex->height_ = h;
+    tex->has_alpha_ = alpha_channel >= 0;
     tex->data_.resize(static_cast<size_t>(w) * h * 5);
     for (size_t i = 0; i < static_cast<size_t>(w) * h; ++i) {
         const float* s = &raw[i * nc];
@@ -162,6 +163,24 @@ void TextureCache::preload(const scene::Scene& scene) {
     if (scene.sky_sphere)
         for (const scene::Pigment& p : scene.sky_sphere->pigments) collect(p, &maps);
     for (const scene::ImageMap* m : maps) add(*m);
+}
+
+void TextureCache::add_pbr(const scene::PbrMap& map, bool color) {
+    if (!map.present()) return;
+    const KeyView k{map.resolved_path, color ? 1.0 : 0.0};
+    if (pbr_images_.find(k) != pbr_images_.end()) return;
+    scene::ImageMap im;
+    im.file = map.file;
+    im.resolved_path = map.resolved_path;
+    im.loc = map.loc;
+    im.gamma = color ? 0.0 : 1.0;  // 0: the file's gamma (sRGB by default); 1: as stored
+    const ImageGamma linear{ImageGamma::Mode::V37, 1.0};
+    pbr_images_.emplace(Key{map.resolved_path, k.gamma}, ImageTexture::load(im, linear));
+}
+
+const ImageTexture* TextureCache::find_pbr(const scene::PbrMap& map, bool color) const {
+    auto it = pbr_images_.find(KeyView{map.resolved_path, color ? 1.0 : 0.0});
+    return it == pbr_images_.end() ? nullptr : it->second.get();
 }
 
 const ImageTexture* TextureCache::find(const scene::ImageMap& map) const {

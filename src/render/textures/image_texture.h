@@ -37,6 +37,8 @@ public:
     const float* texel(int x, int y) const {
         return &data_[(static_cast<size_t>(y) * width_ + x) * 5];
     }
+    // Whether the file has an alpha channel (otherwise transmit is 0 everywhere).
+    bool has_alpha() const { return has_alpha_; }
 
     // Throws Error(MissingFile) if the file cannot be read.
     static std::shared_ptr<const ImageTexture> load(const scene::ImageMap& map,
@@ -45,6 +47,7 @@ public:
 private:
     int width_ = 0;
     int height_ = 0;
+    bool has_alpha_ = false;
     std::vector<float> data_;
 };
 
@@ -57,7 +60,15 @@ public:
     void preload(const scene::Scene& scene);
     // nullptr if `map` was not preloaded.
     const ImageTexture* find(const scene::ImageMap& map) const;
-    size_t size() const { return images_.size(); }
+    size_t size() const { return images_.size() + pbr_images_.size(); }
+
+    // PBR maps (OBJ/MTL) for the path tracer, in linear values whatever the scene's gamma:
+    // `color` maps (map_Kd, map_Ks, map_Ke) decoded from sRGB (or the file's own gamma), data
+    // maps (roughness, metallic, alpha, bump, ...) read as stored. Loaded on first add; throws
+    // Error(MissingFile) if a file that exists cannot be decoded. Maps without a resolved file
+    // (the importer warned) are skipped; find_pbr() gives nullptr for them.
+    void add_pbr(const scene::PbrMap& map, bool color);
+    const ImageTexture* find_pbr(const scene::PbrMap& map, bool color) const;
 
 private:
     // find() runs for every image_map evaluation: it looks up by a view of the path, so a
@@ -81,6 +92,7 @@ private:
     static KeyView key(const scene::ImageMap& map);
     ImageGamma gamma_;
     std::map<Key, std::shared_ptr<const ImageTexture>, KeyLess> images_;
+    std::map<Key, std::shared_ptr<const ImageTexture>, KeyLess> pbr_images_;  // gamma: 1 color, 0 data
 };
 
 }  // namespace glint::render
