@@ -52,6 +52,11 @@ PathIntegrator::PathIntegrator(const scene::Scene& scene, const Geometry& geomet
             if (maps.any()) {
                 if (maps_.empty()) maps_.resize(n);
                 maps_[i] = maps;
+                // Where the maps leave emission and coverage constant, the emitter is still
+                // light-sampled and shadow rays need not look for holes.
+                const SurfacePbr c = pbr_surface(p, p.base_color);
+                if (!maps.emission && !maps.alpha) emission_[i] = c.emission;
+                has_alpha_[i] = maps.alpha || c.alpha < 1;
             } else {
                 constant_[i] = pbr_surface(p, p.base_color);
             }
