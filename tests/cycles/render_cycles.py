@@ -1,0 +1,37 @@
+"""Renders one of the Cycles cross-check scenes with Cycles: a peer for `glint report`.
+
+    blender -b --factory-startup --python tests/cycles/render_cycles.py -- \
+        --scene NAME --spp N --out OUT.exr [--seed S] [--threads T]
+
+    glint report tests/cycles/scenes/NAME.pov --reference tests/cycles/ref/NAME_mean.exr \
+        --spp-steps 4,16,64,256 --out report-NAME \
+        --peer "blender -b --factory-startup --python tests/cycles/render_cycles.py -- \
+                --scene NAME --spp {spp} --out {out}"
+
+The scene is rebuilt from the same code as make_scenes.py (no .blend files are kept), with the
+same Cycles settings as the references (make_scenes.setup_render), and written as a linear
+float OpenEXR.
+"""
+
+import argparse
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import make_scenes  # noqa: E402  (Blender's Python finds it through the path above)
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(prog="render_cycles.py")
+    ap.add_argument("--scene", required=True, choices=sorted(make_scenes.BUILDERS))
+    ap.add_argument("--spp", type=int, required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--threads", type=int, default=0)
+    args = ap.parse_args(argv)
+    make_scenes.build(args.scene)
+    make_scenes.render_to(os.path.abspath(args.out), args.spp, args.seed, threads=args.threads)
+
+
+if __name__ == "__main__":
+    main(sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else [])
