@@ -117,14 +117,16 @@ PbrMapLookup prepare_map(const scene::PbrMap& m, bool color, TextureCache& cache
     return l;
 }
 
-// A gray image (every texel r = g = b) holds heights; a colored one a normal map.
+// A gray image (r = g = b, up to the odd rounding a JPEG adds) holds heights; a colored one a
+// normal map, whose texels are far from gray (about (0.5, 0.5, 1)).
 bool is_gray(const ImageTexture& img) {
+    double spread = 0;
     for (int y = 0; y < img.height(); ++y)
         for (int x = 0; x < img.width(); ++x) {
             const float* t = img.texel(x, y);
-            if (std::fabs(t[0] - t[1]) > 1e-3f || std::fabs(t[1] - t[2]) > 1e-3f) return false;
+            spread += std::fabs(t[0] - t[1]) + std::fabs(t[1] - t[2]);
         }
-    return true;
+    return spread < 0.02 * img.width() * img.height();
 }
 
 }  // namespace
