@@ -71,7 +71,7 @@ PathIntegrator::PathIntegrator(const scene::Scene& scene, const Geometry& geomet
         }
         any_alpha_ = any_alpha_ || has_alpha_[i];
     }
-    lights_.emplace(scene, emission_);
+    lights_.emplace(scene, emission_, [this](const Vec3& d) { return environment(d); }, textures);
 }
 
 SurfacePbr PathIntegrator::surface(Hit& hit) const {
@@ -152,6 +152,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
     bool specular = true;  // camera rays and delta bounces: emission is not light-sampled
     double prev_pdf = 0;
     double seg_dist = 0;  // distance from the last scattering vertex (across alpha skips)
+    Vec3 prev_p = r.origin;  // the last scattering vertex
     int depth = 0;
     uint64_t rays = 0;
     const PathLights& lights = *lights_;
@@ -164,7 +165,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         if (!geometry_.intersect(r, &hit)) {
             if (lights.has_environment()) {
                 const double w =
-                    specular ? 1.0 : power_heuristic(prev_pdf, lights.environment_pdf());
+                    specular ? 1.0 : power_heuristic(prev_pdf, lights.environment_pdf(r.dir));
                 L += beta * environment(r.dir) * w;
             }
             break;
@@ -187,8 +188,8 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         if (!s.emission.is_black()) {
             double w = 1;
             if (!specular && lights.emitter_object(hit.object)) {
-                const double pl = lights.triangle_pdf(s.emission, seg_dist + hit.t,
-                                                      std::fabs(dot(hit.ng, r.dir)));
+                const double pl =
+                    lights.emitter_pdf(hit.object, prev_p, hit.p, hit.ng, s.emission);
                 w = power_heuristic(prev_pdf, pl);
             }
             L += beta * s.emission * w;
@@ -247,6 +248,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         r.dir = wi;
         r.tmax = kInfinity;
         seg_dist = 0;
+        prev_p = hit.p;
     }
     rays_.fetch_add(rays, std::memory_order_relaxed);
     if (!finite(L)) {

@@ -17,17 +17,55 @@ double smooth_step(double low, double high, double pos) {
     return (3 - 2 * t) * t * t;
 }
 
+// Two unit vectors completing the unit vector n to an orthonormal frame.
+void tangents(const Vec3& n, Vec3* a, Vec3* b) {
+    *a = normalize(std::fabs(n.x) > 0.9 ? cross(n, Vec3(0, 1, 0)) : cross(n, Vec3(1, 0, 0)));
+    *b = cross(n, *a);
+}
+
+// Whether the linear part of `x` is a rotation times a uniform scale; *scale gets the scale.
+bool similarity(const Transform& x, double* scale) {
+    const Vec3 c[3] = {x.vector(Vec3(1, 0, 0)), x.vector(Vec3(0, 1, 0)), x.vector(Vec3(0, 0, 1))};
+    const double s2 = length_squared(c[0]);
+    constexpr double kTol = 1e-9;
+    for (int i = 0; i < 3; ++i) {
+        if (std::fabs(length_squared(c[i]) - s2) > kTol * s2) return false;
+        if (std::fabs(dot(c[i], c[(i + 1) % 3])) > kTol * s2) return false;
+    }
+    *scale = std::sqrt(s2);
+    return s2 > 0 && std::isfinite(s2);
+}
+
+// Cone sampling needs the point clearly outside the sphere: a point on it (the sphere's own
+// shading points) sees the inside of the sphere, which area sampling covers.
+bool outside_sphere(double dist2_to_centre, double radius2) {
+    return dist2_to_centre > radius2 * (1 + 1e-6);
+}
+
+// A uniformly distributed unit vector.
+Vec3 uniform_sphere(Sample2 u) {
+    const double z = 1 - 2 * u.u;
+    const double r = std::sqrt(std::max(0.0, 1 - z * z));
+    const double phi = 2 * kPi * u.v;
+    return Vec3(r * std::cos(phi), r * std::sin(phi), z);
+}
+
 }  // namespace
 
-PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emission)
+PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emission,
+                       const EnvironmentDistribution::Radiance& environment,
+                       const TextureCache* textures)
     : scene_(scene) {
     for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i)
         slots_.push_back({SlotKind::Pov, i});
-    emitter_object_.assign(scene.objects.size(), 0);
+    object_emitter_.assign(scene.objects.size(), kNotSampled);
+    auto emits = [&](int material) -> const Color* {
+        if (material < 0 || material >= static_cast<int>(emission.size())) return nullptr;
+        return average(emission[material]) > 0 ? &emission[material] : nullptr;
+    };
     auto add = [&](int object, const Vec3& a, const Vec3& b, const Vec3& c, int material) {
-        if (material < 0 || material >= static_cast<int>(emission.size())) return;
-        const Color& le = emission[material];
-        if (!(average(le) > 0)) return;
+        const Color* le = emits(material);
+        if (!le) return;
         Tri t;
         t.p0 = a;
         t.e1 = b - a;
@@ -36,9 +74,9 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
         t.area = 0.5 * length(n);
         if (!(t.area > 0) || !std::isfinite(t.area)) return;
         t.n = n / (2 * t.area);
-        t.le = le;
+        t.le = *le;
         tris_.push_back(t);
-        emitter_object_[object] = 1;
+        object_emitter_[object] = kTriangles;
     };
     for (int oi = 0; oi < static_cast<int>(scene.objects.size()); ++oi) {
         const scene::Object& o = scene.objects[oi];
@@ -52,9 +90,7 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
             const scene::Mesh& m = scene.meshes[mr->mesh];
             for (const scene::MeshFace& f : m.faces) {
                 const int mat = f.material >= 0 ? f.material : o.material;
-                if (mat < 0 || mat >= static_cast<int>(emission.size()) ||
-                    !(average(emission[mat]) > 0))
-                    continue;
+                if (!emits(mat)) continue;
                 bool ok = true;
                 for (int k = 0; k < 3; ++k)
                     ok = ok && f.v[k] >= 0 && f.v[k] < static_cast<int>(m.positions.size());
@@ -62,22 +98,73 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
                 add(oi, x.point(m.positions[f.v[0]]), x.point(m.positions[f.v[1]]),
                     x.point(m.positions[f.v[2]]), mat);
             }
+        } else if (const Color* le = emits(o.material);
+                   le && !o.inverse && o.clipped_by.empty()) {
+            // Spheres and discs: the whole surface, as the geometry intersects it.
+            Shape e;
+            e.le = *le;
+            if (const auto* sp = std::get_if<scene::Sphere>(&o.shape)) {
+                if (!(sp->radius > 0)) continue;
+                double scale = 1;
+                e.sphere = true;
+                if (similarity(x, &scale)) {
+                    e.cone = true;
+                    e.center = x.point(sp->center);
+                    e.radius = sp->radius * scale;
+                    e.area = 4 * kPi * e.radius * e.radius;
+                } else {
+                    e.center = sp->center;
+                    e.radius = sp->radius;
+                    e.to_world = x;
+                    // For choosing among emitters only: 4 pi r^2 |det|^(2/3).
+                    const double det = dot(x.vector(Vec3(1, 0, 0)),
+                                           cross(x.vector(Vec3(0, 1, 0)), x.vector(Vec3(0, 0, 1))));
+                    e.area = 4 * kPi * e.radius * e.radius * std::pow(std::fabs(det), 2.0 / 3.0);
+                }
+            } else if (const auto* d = std::get_if<scene::Disc>(&o.shape)) {
+                if (!(d->radius > d->hole_radius) || !(length_squared(d->normal) > 0)) continue;
+                Vec3 s, t;
+                tangents(normalize(d->normal), &s, &t);
+                e.sphere = false;
+                e.center = x.point(d->center);
+                e.a1 = x.vector(s * d->radius);
+                e.a2 = x.vector(t * d->radius);
+                const Vec3 n = cross(e.a1, e.a2);
+                const double hole = std::max(0.0, d->hole_radius) / d->radius;
+                e.inner2 = hole * hole;
+                e.area = kPi * length(n) * (1 - e.inner2);
+                e.n = normalize(n);
+            } else {
+                continue;
+            }
+            if (!(e.area > 0) || !std::isfinite(e.area)) continue;
+            e.weight = e.area * average(e.le);
+            object_emitter_[oi] = static_cast<int>(shapes_.size());
+            shapes_.push_back(e);
         }
     }
-    if (!tris_.empty()) {
+    if (!tris_.empty() || !shapes_.empty()) {
         double sum = 0;
-        tri_cdf_.reserve(tris_.size());
+        emitter_cdf_.reserve(tris_.size() + shapes_.size());
         for (const Tri& t : tris_) {
             sum += t.area * average(t.le);
-            tri_cdf_.push_back(sum);
+            emitter_cdf_.push_back(sum);
         }
-        for (double& v : tri_cdf_) v /= sum;
-        tri_total_ = sum;
-        slots_.push_back({SlotKind::Triangles, -1});
+        for (const Shape& e : shapes_) {
+            sum += e.weight;
+            emitter_cdf_.push_back(sum);
+        }
+        for (double& v : emitter_cdf_) v /= sum;
+        emitter_total_ = sum;
+        slots_.push_back({SlotKind::Emitters, -1});
     }
     has_env_ = average(scene.background.rgb) > 0 ||
                (scene.sky_sphere && !scene.sky_sphere->pigments.empty());
-    if (has_env_) slots_.push_back({SlotKind::Environment, -1});
+    if (has_env_) {
+        slots_.push_back({SlotKind::Environment, -1});
+        if (environment && !environment_uniform(scene))
+            env_.emplace(environment, environment_grid(scene, textures));
+    }
 }
 
 Color PathLights::pov_factor(const scene::Light& l, const Vec3& from_light, double dist) const {
@@ -139,12 +226,20 @@ bool PathLights::sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out
             out->pdf = 0;
             return !out->value.is_black();
         }
-        case SlotKind::Triangles: {
-            const auto it = std::upper_bound(tri_cdf_.begin(), tri_cdf_.end(), u.u);
-            const size_t i = std::min<size_t>(it - tri_cdf_.begin(), tris_.size() - 1);
-            const double lo = i > 0 ? tri_cdf_[i - 1] : 0.0;
-            const double width = tri_cdf_[i] - lo;
+        case SlotKind::Emitters: {
+            const auto it = std::upper_bound(emitter_cdf_.begin(), emitter_cdf_.end(), u.u);
+            const size_t i = std::min<size_t>(it - emitter_cdf_.begin(), emitter_cdf_.size() - 1);
+            const double lo = i > 0 ? emitter_cdf_[i - 1] : 0.0;
+            const double width = emitter_cdf_[i] - lo;
             const double ur = width > 0 ? std::clamp((u.u - lo) / width, 0.0, 1.0) : 0.5;
+            if (i >= tris_.size()) {
+                const Shape& e = shapes_[i - tris_.size()];
+                if (!sample_shape(e, p, {ur, u.v}, out)) return false;
+                out->pdf *= select_prob() * e.weight / emitter_total_;
+                if (!(out->pdf > 0) || !std::isfinite(out->pdf)) return false;
+                out->value = e.le / out->pdf;
+                return true;
+            }
             const Tri& t = tris_[i];
             const double su = std::sqrt(ur);
             const double b1 = 1 - su, b2 = u.v * su;
@@ -155,18 +250,21 @@ bool PathLights::sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out
             out->wi = d / dist;
             out->dist = dist;
             const double cos_l = std::fabs(dot(t.n, out->wi));
-            out->pdf = triangle_pdf(t.le, dist, cos_l);
+            if (!(cos_l > 0)) return false;
+            out->pdf = select_prob() * average(t.le) / emitter_total_ * dist * dist / cos_l;
             if (!(out->pdf > 0) || !std::isfinite(out->pdf)) return false;
             out->value = t.le / out->pdf;
             return true;
         }
         case SlotKind::Environment: {
-            const double z = 1 - 2 * u.u;
-            const double r = std::sqrt(std::max(0.0, 1 - z * z));
-            const double phi = 2 * kPi * u.v;
-            out->wi = Vec3(r * std::cos(phi), r * std::sin(phi), z);
+            double pdf = 1 / (4 * kPi);
+            if (env_) {
+                if (!env_->sample(u, &out->wi, &pdf)) return false;
+            } else {
+                out->wi = uniform_sphere(u);
+            }
             out->dist = kInfinity;
-            out->pdf = environment_pdf();
+            out->pdf = select_prob() * pdf;
             out->value = Color(1.0 / out->pdf);
             out->environment = true;
             return true;
@@ -175,10 +273,109 @@ bool PathLights::sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out
     return false;
 }
 
-double PathLights::triangle_pdf(const Color& le, double dist, double cos_light) const {
-    if (!(tri_total_ > 0) || !(cos_light > 0)) return 0;
-    const double pdf_area = average(le) / tri_total_;
-    return select_prob() * pdf_area * dist * dist / cos_light;
+double PathLights::environment_pdf(const Vec3& dir) const {
+    if (!has_env_) return 0;
+    return select_prob() * (env_ ? env_->pdf(dir) : 1 / (4 * kPi));
+}
+
+bool PathLights::sample_shape(const Shape& e, const Vec3& p, Sample2 u,
+                              PathLightSample* out) const {
+    Vec3 q;
+    if (e.sphere && e.cone) {
+        const Vec3 to_c = e.center - p;
+        const double dc2 = length_squared(to_c);
+        const double r2 = e.radius * e.radius;
+        if (outside_sphere(dc2, r2)) {
+            // Uniform in the cone of directions the sphere subtends (pbrt-v4 Sphere::Sample):
+            // 1 - cos(theta_max) computed as sin^2 / (1 + cos) keeps tiny cones exact.
+            const double dc = std::sqrt(dc2);
+            const double sin2_max = r2 / dc2;
+            const double cos_max = std::sqrt(std::max(0.0, 1 - sin2_max));
+            const double one_minus_cos_max = sin2_max / (1 + cos_max);
+            const double one_minus_cos = u.u * one_minus_cos_max;
+            const double cos_t = 1 - one_minus_cos;
+            const double sin2_t = one_minus_cos * (2 - one_minus_cos);
+            const double sin_t = std::sqrt(std::max(0.0, sin2_t));
+            const double phi = 2 * kPi * u.v;
+            const Vec3 w = to_c / dc;
+            Vec3 a, b;
+            tangents(w, &a, &b);
+            out->wi = normalize(w * cos_t + (a * std::cos(phi) + b * std::sin(phi)) * sin_t);
+            // The near intersection with the sphere along wi.
+            const double dist = dc * cos_t - std::sqrt(std::max(0.0, r2 - dc2 * sin2_t));
+            if (!(dist > 0)) return false;
+            out->dist = dist;
+            out->pdf = 1 / (2 * kPi * one_minus_cos_max);
+            return std::isfinite(out->pdf);
+        }
+        const Vec3 n = uniform_sphere(u);
+        q = e.center + n * e.radius;
+    } else if (e.sphere) {
+        q = e.to_world.point(e.center + uniform_sphere(u) * e.radius);
+    } else {
+        const double rho = std::sqrt(e.inner2 + u.u * (1 - e.inner2));
+        const double phi = 2 * kPi * u.v;
+        q = e.center + e.a1 * (rho * std::cos(phi)) + e.a2 * (rho * std::sin(phi));
+    }
+    const Vec3 d = q - p;
+    const double dist = length(d);
+    if (!(dist > 0)) return false;
+    out->wi = d / dist;
+    out->dist = dist;
+    out->pdf = shape_pdf(e, p, q);
+    return out->pdf > 0 && std::isfinite(out->pdf);
+}
+
+double PathLights::shape_pdf(const Shape& e, const Vec3& p, const Vec3& q) const {
+    const Vec3 d = q - p;
+    const double dist2 = length_squared(d);
+    if (!(dist2 > 0)) return 0;
+    const Vec3 wi = d / std::sqrt(dist2);
+    if (e.sphere && e.cone) {
+        const double dc2 = length_squared(e.center - p);
+        const double r2 = e.radius * e.radius;
+        if (outside_sphere(dc2, r2)) {
+            // Cone sampling reaches only the near side: a ray that enters the sphere there.
+            if (dot(q - e.center, wi) >= 0) return 0;
+            const double sin2_max = r2 / dc2;
+            const double cos_max = std::sqrt(std::max(0.0, 1 - sin2_max));
+            return (1 + cos_max) / (2 * kPi * sin2_max);
+        }
+        const double cos_l = std::fabs(dot(normalize(q - e.center), wi));
+        return cos_l > 0 ? dist2 / (cos_l * e.area) : 0;
+    }
+    if (e.sphere) {
+        // Uniform on the object-space sphere; the world area element is scaled by
+        // |M a x M b| for an orthonormal tangent pair (a, b) at the object-space point.
+        const Vec3 qo = e.to_world.inverse_point(q);
+        const Vec3 no = normalize(qo - e.center);
+        Vec3 a, b;
+        tangents(no, &a, &b);
+        const Vec3 nw = cross(e.to_world.vector(a), e.to_world.vector(b));
+        const double scale = length(nw);
+        if (!(scale > 0)) return 0;
+        const double cos_l = std::fabs(dot(nw, wi)) / scale;
+        const double pdf_area = 1 / (4 * kPi * e.radius * e.radius * scale);
+        return cos_l > 0 ? pdf_area * dist2 / cos_l : 0;
+    }
+    const double cos_l = std::fabs(dot(e.n, wi));
+    return cos_l > 0 ? dist2 / (cos_l * e.area) : 0;
+}
+
+double PathLights::emitter_pdf(int object, const Vec3& from, const Vec3& q, const Vec3& ng,
+                               const Color& le) const {
+    if (!emitter_object(object) || !(emitter_total_ > 0)) return 0;
+    const int id = object_emitter_[object];
+    if (id >= 0) {
+        const Shape& e = shapes_[id];
+        return select_prob() * e.weight / emitter_total_ * shape_pdf(e, from, q);
+    }
+    const Vec3 d = q - from;
+    const double dist2 = length_squared(d);
+    if (!(dist2 > 0)) return 0;
+    const double cos_l = std::fabs(dot(ng, d)) / std::sqrt(dist2);
+    if (!(cos_l > 0)) return 0;
+    return select_prob() * average(le) / emitter_total_ * dist2 / cos_l;
 }
 
 }  // namespace glint::render

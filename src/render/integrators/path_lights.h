@@ -5,14 +5,26 @@
 //   it emits the same in every direction and is invisible to camera and BSDF rays; with
 //   `circular`, the ellipse inscribed in that rectangle). A POV-Ray light of color C delivers the irradiance pi * C * cos * fade, so a white Lambert surface
 //   shows C * cos as POV-Ray's diffuse 1.0 shows it (docs/pbr-mapping.md).
-// - Emissive triangles (meshes and triangles whose material emits), sampled by area times
-//   emitted power; BSDF rays that hit them are weighted by MIS (power heuristic).
-// - The environment (background color, with the sky_sphere laid over it as POV-Ray 3.7 does),
-//   sampled uniformly over the sphere; the integrator evaluates its radiance.
+// - Emitting shapes (top-level objects whose material emits a constant radiance): triangles
+//   and meshes, spheres and discs, chosen in one slot by area times emitted radiance.
+//   Triangles and discs (any affine transform) are sampled uniformly by area. A sphere under a
+//   similarity transform, seen from outside, is sampled by the cone of directions it subtends
+//   (uniform in solid angle, pbrt-v4's Sphere::Sample); from inside, or an ellipsoid (a
+//   non-uniformly scaled sphere), uniformly by object-space area, with the world area density
+//   divided by the transform's area scale at the point. BSDF rays that hit an emitter are
+//   weighted by MIS (power heuristic) with emitter_pdf(), the exact pdf of the same choice.
+//   Spheres or discs that are clipped, inverse or inside CSG are not light-sampled: BSDF rays
+//   that hit them count in full.
+// - The environment (background color, with the sky_sphere laid over it as POV-Ray 3.7 does):
+//   uniform over the sphere when it is the same everywhere, else by the luminance table of
+//   environment.h (an HDR sky); the integrator evaluates its radiance.
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <vector>
 
+#include "render/integrators/environment.h"
 #include "render/ray.h"
 #include "render/sampling/sampler.h"
 #include "scene/scene.h"
@@ -30,9 +42,14 @@ struct PathLightSample {
 class PathLights {
 public:
     // `emission[m]`: the emitted radiance of material m where it is constant (black otherwise).
-    PathLights(const scene::Scene& scene, const std::vector<Color>& emission);
+    // `environment`: the integrator's environment radiance along a unit world direction; with
+    // `textures`, the sky_sphere's images size its sampling table. Without `environment` a
+    // non-uniform environment is sampled uniformly.
+    PathLights(const scene::Scene& scene, const std::vector<Color>& emission,
+               const EnvironmentDistribution::Radiance& environment = {},
+               const TextureCache* textures = nullptr);
 
-    // Light slots: each POV-Ray light, all emissive triangles together, the environment.
+    // Light slots: each POV-Ray light, all emitting shapes together, the environment.
     int count() const { return static_cast<int>(slots_.size()); }
     // The probability a slot is chosen for one shading point (1 when all are sampled).
     double select_prob() const { return sample_all() ? 1.0 : 1.0 / std::max(1, count()); }
@@ -40,20 +57,25 @@ public:
     bool sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out) const;
 
     bool has_environment() const { return has_env_; }
-    double environment_pdf() const { return has_env_ ? select_prob() / (4 * kPi) : 0.0; }
+    // Solid-angle pdf with which light sampling would have chosen the unit direction `dir`
+    // towards the environment (slot selection included).
+    double environment_pdf(const Vec3& dir) const;
     // Whether BSDF rays hitting this object could have been light-sampled.
     bool emitter_object(int object) const {
-        return object >= 0 && object < static_cast<int>(emitter_object_.size()) &&
-               emitter_object_[object];
+        return object >= 0 && object < static_cast<int>(object_emitter_.size()) &&
+               object_emitter_[object] != kNotSampled;
     }
-    // Solid-angle pdf with which light sampling would have chosen a point with emission `le`
-    // seen at distance `dist` under cosine `cos_light` on an emitter object.
-    double triangle_pdf(const Color& le, double dist, double cos_light) const;
+    // Solid-angle pdf (slot selection included) with which light sampling from `from` would
+    // have chosen the point `q` with geometric normal `ng` and emission `le` on `object`.
+    double emitter_pdf(int object, const Vec3& from, const Vec3& q, const Vec3& ng,
+                       const Color& le) const;
+    // Number of spheres and discs sampled as emitters (for tests and -v).
+    int shape_emitters() const { return static_cast<int>(shapes_.size()); }
 
     static constexpr int kSampleAllMax = 8;
 
 private:
-    enum class SlotKind { Pov, Triangles, Environment };
+    enum class SlotKind { Pov, Emitters, Environment };
     struct Slot {
         SlotKind kind;
         int light = -1;
@@ -63,15 +85,39 @@ private:
         double area;
         Color le;
     };
+    // A sphere or a disc in world space.
+    struct Shape {
+        bool sphere = true;
+        Color le;
+        double weight = 0;  // world area times average emission
+        // Sphere: `cone` when the transform is a similarity (world centre and radius), else
+        // object-space centre and radius under `to_world`.
+        bool cone = false;
+        Vec3 center;
+        double radius = 0;
+        Transform to_world;
+        // Disc: centre + rho (cos phi a1 + sin phi a2) for rho^2 in [inner2, 1], unit normal n.
+        Vec3 a1, a2, n;
+        double inner2 = 0, area = 0;
+    };
+    static constexpr int kNotSampled = -1;
+    static constexpr int kTriangles = -2;
+
     Color pov_factor(const scene::Light& l, const Vec3& from_light, double dist) const;
+    bool sample_shape(const Shape& e, const Vec3& p, Sample2 u, PathLightSample* out) const;
+    // Solid-angle pdf of sample_shape() choosing the point q from p, selection not included.
+    double shape_pdf(const Shape& e, const Vec3& p, const Vec3& q) const;
 
     const scene::Scene& scene_;
     std::vector<Slot> slots_;
     std::vector<Tri> tris_;
-    std::vector<double> tri_cdf_;  // normalized cumulative area * average emission
-    double tri_total_ = 0;
-    std::vector<char> emitter_object_;
+    std::vector<Shape> shapes_;
+    // One CDF over all emitters: triangles first, then shapes_ (area * average emission).
+    std::vector<double> emitter_cdf_;
+    double emitter_total_ = 0;
+    std::vector<int> object_emitter_;  // per object: kNotSampled, kTriangles or a shapes_ index
     bool has_env_ = false;
+    std::optional<EnvironmentDistribution> env_;  // absent: uniform sphere sampling
 };
 
 }  // namespace glint::render
