@@ -8,6 +8,9 @@ namespace {
 constexpr double kInvPi = 1.0 / kPi;
 // Below this GGX alpha the specular lobes are treated as perfectly smooth.
 constexpr double kDeltaAlpha = 1e-3;
+// An interface whose relative IOR is this close to 1 bends light by less than ~1e-6 rad at any
+// roughness: its transmission is treated as a straight pass-through.
+constexpr double kIndexMatched = 1e-6;
 
 double average(const Color& c) { return (c.r + c.g + c.b) * (1.0 / 3.0); }
 double sqr(double v) { return v * v; }
@@ -170,6 +173,7 @@ Bsdf Bsdf::principled(const PrincipledParams& p) {
     b.w_trans_ = t;
     b.trans_tint_ = p.base;
     b.eta_ = p.ior > 0 ? p.ior : 1.45;
+    b.trans_delta_ = b.spec_delta_ || std::fabs(b.eta_ - 1) < kIndexMatched;
     if (b.w_diffuse_ <= 0) b.w_diffuse_ = 0;
     return b;
 }
@@ -205,13 +209,12 @@ Color Bsdf::eval(const Vec3& wo, const Vec3& wi) const {
     }
     if (w_phong_ > 0 && same_side)
         f += phong_ks_ * ((phong_n_ + 2) / (2 * kPi) * phong_pow(phong_cos(o, i), phong_n_));
-    if (spec_delta_) return f;
-    if (w_spec_ > 0 && same_side) {
+    if (w_spec_ > 0 && same_side && !spec_delta_) {
         const Vec3 wm = normalize(o + i);
         f += spec_fresnel(dot(o, wm)) *
              (w_spec_ * ggx_.d(wm) * ggx_.g(o, i) / (4 * o.z * i.z));
     }
-    if (w_trans_ > 0) {
+    if (w_trans_ > 0 && !trans_delta_) {
         double pdf;
         f += trans_tint_ * (w_trans_ * dielectric_eval(ggx_, eta_, wo, wi, &pdf));
     }
@@ -230,16 +233,14 @@ double Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
     if (pd > 0 && same_side) pdf += pd * i.z * kInvPi;
     if (pp > 0 && same_side)
         pdf += pp * (phong_n_ + 1) / (2 * kPi) * phong_pow(phong_cos(o, i), phong_n_);
-    if (!spec_delta_) {
-        if (ps > 0 && same_side) {
-            const Vec3 wm = normalize(o + i);
-            pdf += ps * ggx_.pdf_visible(o, wm) / (4 * dot(o, wm));
-        }
-        if (pt > 0) {
-            double p;
-            dielectric_eval(ggx_, eta_, wo, wi, &p);
-            pdf += pt * p;
-        }
+    if (ps > 0 && same_side && !spec_delta_) {
+        const Vec3 wm = normalize(o + i);
+        pdf += ps * ggx_.pdf_visible(o, wm) / (4 * dot(o, wm));
+    }
+    if (pt > 0 && !trans_delta_) {
+        double p;
+        dielectric_eval(ggx_, eta_, wo, wi, &p);
+        pdf += pt * p;
     }
     return pdf / sum;
 }
@@ -283,9 +284,12 @@ bool Bsdf::sample(const Vec3& wo, double u_lobe, double u1, double u2, BsdfSampl
     } else {
         // Reflect or refract by the Fresnel term, reusing the rest of u_lobe.
         const double uc = std::clamp((u - pd - ps) / pt, 0.0, 1.0);
-        const Vec3 wm = spec_delta_ ? Vec3(0, 0, 1) : ggx_.sample_visible(wo, u1, u2);
-        const double F = fresnel_dielectric(dot(wo, wm), eta_);
-        if (uc < F) {
+        const Vec3 wm = trans_delta_ ? Vec3(0, 0, 1) : ggx_.sample_visible(wo, u1, u2);
+        const bool matched = std::fabs(eta_ - 1) < kIndexMatched;
+        const double F = matched ? 0.0 : fresnel_dielectric(dot(wo, wm), eta_);
+        if (matched) {
+            wi = -wo;  // exactly straight on, so an IOR 1 object leaves no trace
+        } else if (uc < F) {
             wi = reflect(wo, wm);
             if (wi.z * wo.z <= 0) return false;
         } else {
@@ -293,7 +297,7 @@ bool Bsdf::sample(const Vec3& wo, double u_lobe, double u1, double u2, BsdfSampl
             if (!refract(wo, wm, eta_, &etap, &wi)) return false;
             if (wi.z * wo.z >= 0) return false;
         }
-        if (spec_delta_) {
+        if (trans_delta_) {
             const double p = pt / sum;
             out->wi = wi;
             out->weight = trans_tint_ * (w_trans_ / p);

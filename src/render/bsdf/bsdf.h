@@ -8,7 +8,8 @@
 // lobe with Schlick Fresnel (F0 = 0.08 * specular for dielectrics, the base color for metals)
 // sampled by visible normals (Heitz 2018), and a rough dielectric (Walter et al. 2007) for
 // transmission, all mixed by metallic and transmission as Blender's Principled BSDF mixes them.
-// Smooth surfaces (roughness below ~0.03, alpha below 1e-3) become delta lobes.
+// Smooth surfaces (roughness below ~0.03, alpha below 1e-3) become delta lobes; so does an
+// index-matched (IOR 1) transmission of any roughness: light passes straight through.
 #pragma once
 
 #include "core/math.h"
@@ -77,7 +78,7 @@ public:
     // True when every lobe is a delta (then light sampling is pointless).
     bool all_delta() const {
         return w_diffuse_ == 0 && w_phong_ == 0 && (w_spec_ == 0 || spec_delta_) &&
-               (w_trans_ == 0 || spec_delta_);
+               (w_trans_ == 0 || trans_delta_);
     }
 
 private:
@@ -96,6 +97,10 @@ private:
     double w_phong_ = 0;
     Ggx ggx_;
     bool spec_delta_ = false;
+    // The dielectric lobe is a delta when smooth, and also when index-matched (eta = 1): then
+    // no microfacet bends or reflects light, whatever the roughness, and the rough model's
+    // half vector (wi + wo) would vanish.
+    bool trans_delta_ = false;
     double eta_ = 1.5;
 };
 
