@@ -1,0 +1,318 @@
+// VALIDATION.md case 13: chi-square goodness-of-fit tests of each BSDF's sample() against its
+// pdf() (Lambert; modified Phong n = 1 .. 1e5; GGX alpha = 1e-3 .. 1 as Principled metal,
+// dielectric reflection over a diffuse base, and rough dielectric transmission; the smooth
+// dielectric's discrete reflect/refract choice against Fresnel), with the Sidak correction
+// over every test of the file at a family-wise significance of 0.01. Each configuration also
+// checks energy (mean f |cos| / pdf <= 1.01) and that sample()'s weight and pdf are
+// eval |cos| / pdf and pdf(). Fixed seeds: the outcome is the same on every run.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "chi2.h"
+#include "render/bsdf/bsdf.h"
+
+namespace glint::render {
+namespace {
+
+constexpr int kSamples = 1 << 17;
+constexpr double kFamilyAlpha = 0.01;
+
+enum class Axis { Normal, Mirror, Refract };
+
+struct Config {
+    std::string name;
+    Bsdf bsdf;
+    double theta_o;  // degrees from the normal; > 90: from inside
+    Axis axis;
+    double width;  // angular width of the lobe (radians); >= 0.5: cos-uniform bins
+    double eta = 1.5;
+};
+
+Vec3 dir_from(double theta_deg, double phi = 0.3) {
+    const double t = theta_deg * kPi / 180;
+    return {std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t)};
+}
+
+// The smooth refraction of wo through the plane z = 0 (eta: inside over outside index), or
+// the mirror direction under total internal reflection.
+Vec3 refracted(const Vec3& wo, double eta) {
+    const double e = wo.z > 0 ? eta : 1.0 / eta;
+    const double c = std::fabs(wo.z);
+    const double s2 = (1 - c * c) / (e * e);
+    if (s2 >= 1) return {-wo.x, -wo.y, wo.z};
+    const Vec3 n(0, 0, wo.z > 0 ? 1.0 : -1.0);
+    return normalize(-wo / e + n * (c / e - std::sqrt(1 - s2)));
+}
+
+PrincipledParams principled(Color base, double metallic, double alpha, double transmission,
+                            double ior = 1.5) {
+    PrincipledParams p;
+    p.base = base;
+    p.metallic = metallic;
+    // Just above sqrt(alpha) so that alpha = 1e-3 stays a (very sharp) GGX lobe.
+    p.roughness = std::min(1.0, std::sqrt(alpha) * (1 + 1e-9));
+    p.specular = 0.5;
+    p.transmission = transmission;
+    p.ior = ior;
+    return p;
+}
+
+std::string num(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+std::vector<Config> configs() {
+    std::vector<Config> out;
+    for (double th : {30.0, 70.0})
+        out.push_back({"lambert", Bsdf::lambert(Color(1, 1, 1)), th, Axis::Normal, 1.0});
+    for (double n : {1.0, 10.0, 100.0, 1e3, 1e4, 1e5})
+        for (double th : {30.0, 70.0}) {
+            const Color kd = n == 1.0 ? Color(0.5, 0.5, 0.5) : Color(0, 0, 0);
+            const Color ks = n == 1.0 ? Color(0.5, 0.5, 0.5) : Color(1, 1, 1);
+            out.push_back({"phong n " + num(n), Bsdf::phong(kd, ks, n), th, Axis::Mirror,
+                           std::min(1.0, 1.0 / std::sqrt(n + 1))});
+        }
+    for (double a : {1e-3, 1e-2, 0.1, 0.3, 1.0})
+        for (double th : {30.0, 70.0}) {
+            out.push_back({"ggx metal alpha " + num(a),
+                           Bsdf::principled(principled(Color(1, 1, 1), 1, a, 0)), th,
+                           Axis::Mirror, std::min(1.0, 2 * a)});
+            out.push_back({"ggx dielectric reflection alpha " + num(a),
+                           Bsdf::principled(principled(Color(1, 1, 1), 0, a, 0)), th,
+                           Axis::Mirror, std::min(1.0, 2 * a)});
+        }
+    // Rough glass, from outside and from inside (150: refracts; 125: beyond the critical
+    // angle of 41.8 degrees, total internal reflection of the mean direction).
+    for (double a : {1e-3, 1e-2, 0.1, 0.3, 1.0})
+        for (double th : {30.0, 70.0, 150.0, 125.0})
+            out.push_back({"ggx glass alpha " + num(a),
+                           Bsdf::principled(principled(Color(1, 1, 1), 0, a, 1)), th,
+                           Axis::Refract, std::min(1.0, a), 1.5});
+    for (double th : {20.0, 60.0, 160.0})
+        out.push_back({"ggx glass ior 2.4 alpha 0.05",
+                       Bsdf::principled(principled(Color(1, 1, 1), 0, 0.05, 1, 2.4)), th,
+                       Axis::Refract, 0.05, 2.4});
+    return out;
+}
+
+struct SmoothCase {
+    double ior, theta_o;
+};
+std::vector<SmoothCase> smooth_cases() {
+    std::vector<SmoothCase> out;
+    for (double ior : {1.0001, 1.33, 1.5, 2.4, 100.0})
+        for (double th : {0.0, 60.0, 85.0, 150.0, 110.0}) out.push_back({ior, th});
+    return out;
+}
+
+// One significance level for every test in this file.
+double per_test_alpha() {
+    static const int tests = static_cast<int>(configs().size() + smooth_cases().size());
+    return chi2::sidak(kFamilyAlpha, tests);
+}
+
+struct Outcome {
+    chi2::Result chi2;
+    double mean_weight = 0;
+    double max_weight_err = 0, max_pdf_err = 0;
+    long delta_samples = 0;
+    double failed = 0, expected_failed = 0;
+};
+
+// Samples kSamples directions with sample(), bins them, and compares with `density`
+// integrated over the bins. Axis::Refract (a dielectric with two sharp lobes) bins the side
+// of wo around the mirror direction and the other side around the refracted one, so that
+// each lobe's peak sits at the pole of a fine grid and is integrated accurately.
+Outcome run_chi2(const Config& c, uint64_t seed,
+                 const std::function<double(const Vec3&, const Vec3&)>& density) {
+    const Vec3 wo = dir_from(c.theta_o);
+    const Vec3 mirror(-wo.x, -wo.y, wo.z);
+    const bool broad = c.width >= 0.5;
+    const int n_theta = broad ? 10 : 24, n_phi = broad ? 20 : 16;
+    struct Part {
+        chi2::SphereGrid grid;
+        int side;  // 0: whole sphere, +1: wo's side only, -1: the other side only
+    };
+    std::vector<Part> parts;
+    if (c.axis == Axis::Refract) {
+        Vec3 t = refracted(wo, c.eta);
+        if (t.z * wo.z > 0) t = Vec3(0, 0, wo.z > 0 ? -1.0 : 1.0);  // total internal reflection
+        parts.push_back({chi2::SphereGrid(Frame::from_normal(mirror), n_theta, n_phi, c.width), 1});
+        parts.push_back({chi2::SphereGrid(Frame::from_normal(t), n_theta, n_phi, c.width), -1});
+    } else {
+        const Vec3 axis = c.axis == Axis::Mirror ? mirror : Vec3(0, 0, 1);
+        parts.push_back({chi2::SphereGrid(Frame::from_normal(axis), n_theta, n_phi, c.width), 0});
+    }
+    auto side_of = [&](const Vec3& wi) { return wi.z * wo.z > 0 ? 1 : -1; };
+    auto bin_of = [&](const Vec3& wi) {
+        int offset = 0;
+        for (const Part& p : parts) {
+            if (p.side == 0 || p.side == side_of(wi)) return offset + p.grid.bin_of(wi);
+            offset += p.grid.bins();
+        }
+        return offset;  // not reached: the parts cover the sphere
+    };
+    int bins = 0;
+    for (const Part& p : parts) bins += p.grid.bins();
+    Outcome out;
+    std::vector<double> observed(static_cast<size_t>(bins) + 1, 0.0);
+    chi2::Rng rng(seed);
+    double weight_sum = 0;
+    for (int i = 0; i < kSamples; ++i) {
+        const double ul = rng.next(), u1 = rng.next(), u2 = rng.next();
+        BsdfSample bs;
+        if (!c.bsdf.sample(wo, ul, u1, u2, &bs)) {
+            observed.back() += 1;
+            continue;
+        }
+        if (bs.delta) {
+            ++out.delta_samples;
+            continue;
+        }
+        observed[static_cast<size_t>(bin_of(bs.wi))] += 1;
+        const Color w = bs.weight;
+        weight_sum += (w.r + w.g + w.b) / 3;
+        const double p = c.bsdf.pdf(wo, bs.wi);
+        const Color f = c.bsdf.eval(wo, bs.wi) * (std::fabs(bs.wi.z) / p);
+        out.max_pdf_err = std::max(out.max_pdf_err, std::fabs(bs.pdf - p) / p);
+        out.max_weight_err =
+            std::max(out.max_weight_err, std::fabs(f.g - w.g) / std::max(std::fabs(f.g), 1e-300));
+    }
+    out.mean_weight = weight_sum / kSamples;
+    std::vector<double> expected;
+    double total = 0;
+    for (const Part& p : parts) {
+        for (double e : p.grid.integrate(
+                 [&](const Vec3& wi) {
+                     return p.side == 0 || p.side == side_of(wi) ? density(wo, wi) : 0.0;
+                 },
+                 1e-9)) {
+            total += e;
+            expected.push_back(e * kSamples);
+        }
+    }
+    // Samples that found no direction: the pdf's mass missing from the sphere.
+    out.failed = observed.back();
+    out.expected_failed = std::max(0.0, 1 - total) * kSamples;
+    expected.push_back(out.expected_failed);
+    out.chi2 = chi2::chi2_test(observed, expected, kSamples);
+    return out;
+}
+
+class BsdfChi2 : public ::testing::TestWithParam<size_t> {};
+
+TEST_P(BsdfChi2, SamplingMatchesPdf) {
+    static const std::vector<Config> all = configs();
+    const Config& c = all[GetParam()];
+    ASSERT_FALSE(c.bsdf.all_delta()) << c.name;
+    const Outcome o = run_chi2(c, 1000 + GetParam(), [&](const Vec3& wo, const Vec3& wi) {
+        return c.bsdf.pdf(wo, wi);
+    });
+    std::printf("chi2 %-44s theta_o %5.1f: chi2 %8.2f dof %3d p %.4f, failed %.0f (expected "
+                "%.1f), mean f cos/pdf %.6f\n",
+                c.name.c_str(), c.theta_o, o.chi2.chi2, o.chi2.dof, o.chi2.pvalue, o.failed,
+                o.expected_failed, o.mean_weight);
+    SCOPED_TRACE(c.name + " theta_o " + num(c.theta_o));
+    EXPECT_EQ(o.delta_samples, 0);
+    EXPECT_GE(o.chi2.pvalue, per_test_alpha()) << "chi2 " << o.chi2.chi2 << " dof " << o.chi2.dof;
+    EXPECT_GT(o.chi2.dof, 5);
+    EXPECT_LE(o.mean_weight, 1.01);
+    EXPECT_LT(o.max_pdf_err, 1e-9);
+    EXPECT_LT(o.max_weight_err, 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(Case13, BsdfChi2, ::testing::Range<size_t>(0, configs().size()));
+
+TEST(BsdfChi2Smooth, ReflectRefractChoiceFollowsFresnel) {
+    int index = 0;
+    for (const SmoothCase& sc : smooth_cases()) {
+        const Bsdf b = Bsdf::principled(principled(Color(1, 1, 1), 0, 0, 1, sc.ior));
+        ASSERT_TRUE(b.all_delta());
+        const Vec3 wo = dir_from(sc.theta_o);
+        const Vec3 mirror(-wo.x, -wo.y, wo.z), refr = refracted(wo, sc.ior);
+        const double F = fresnel_dielectric(wo.z, sc.ior);
+        chi2::Rng rng(77 + static_cast<uint64_t>(index++));
+        std::vector<double> observed(3, 0.0);  // reflected, refracted, other
+        double max_weight_err = 0;
+        for (int i = 0; i < kSamples; ++i) {
+            const double ul = rng.next(), u1 = rng.next(), u2 = rng.next();
+            BsdfSample bs;
+            if (!b.sample(wo, ul, u1, u2, &bs)) {
+                observed[2] += 1;
+                continue;
+            }
+            EXPECT_TRUE(bs.delta);
+            const bool is_reflect = length(bs.wi - mirror) < 1e-9 && bs.wi.z * wo.z > 0;
+            const bool is_refract = length(bs.wi - refr) < 1e-9 && bs.wi.z * wo.z < 0;
+            observed[is_reflect ? 0 : is_refract ? 1 : 2] += 1;
+            max_weight_err = std::max(max_weight_err, std::fabs(bs.weight.g - 1.0));
+            if (is_reflect) {
+                EXPECT_NEAR(bs.pdf, F, 1e-12);
+            } else if (is_refract) {
+                EXPECT_NEAR(bs.pdf, 1 - F, 1e-12);
+            }
+        }
+        const std::vector<double> expected = {F * kSamples, (1 - F) * kSamples, 0.0};
+        const chi2::Result r = chi2::chi2_test(observed, expected, kSamples);
+        // With both outcomes likely the statistic has one degree of freedom; with one of them
+        // below the pooling threshold all samples must take the likely one.
+        std::printf("smooth dielectric ior %g theta_o %5.1f: F %.6f, reflected %.0f refracted "
+                    "%.0f other %.0f, chi2 %.3f dof %d p %.4f\n",
+                    sc.ior, sc.theta_o, F, observed[0], observed[1], observed[2], r.chi2, r.dof,
+                    r.pvalue);
+        SCOPED_TRACE("ior " + num(sc.ior) + " theta_o " + num(sc.theta_o));
+        EXPECT_EQ(observed[2], 0.0);
+        EXPECT_GE(r.pvalue, per_test_alpha());
+        EXPECT_LT(max_weight_err, 1e-12);
+    }
+}
+
+TEST(BsdfChi2Method, PvaluesAndIntegrationAreRight) {
+    // Tabulated chi-square quantiles: P(X > 3.841 | 1) = 0.05, P(X > 18.307 | 10) = 0.05,
+    // P(X > 135.807 | 100) = 0.01.
+    EXPECT_NEAR(chi2::chi2_pvalue(3.841459, 1), 0.05, 1e-6);
+    EXPECT_NEAR(chi2::chi2_pvalue(18.307038, 10), 0.05, 1e-6);
+    EXPECT_NEAR(chi2::chi2_pvalue(135.806723, 100), 0.01, 1e-6);
+    EXPECT_NEAR(chi2::sidak(0.01, 1), 0.01, 1e-15);
+    // The bin integrals of a density that integrates to 1 (Lambert; Phong n = 1e5 20 degrees
+    // from the normal, which loses nothing below the horizon) add up to 1 on both grids.
+    // (A sharp lobe must sit at the grid's pole, as run_chi2 arranges.)
+    for (double width : {1.0, 1e-3}) {
+        const Vec3 wo = dir_from(20);
+        const chi2::SphereGrid g(Frame::from_normal(Vec3(-wo.x, -wo.y, wo.z)), 24, 16, width);
+        const Bsdf b = width < 0.5 ? Bsdf::phong(Color(0, 0, 0), Color(1, 1, 1), 1e5)
+                                   : Bsdf::lambert(Color(1, 1, 1));
+        double sum = 0;
+        for (double v : g.integrate([&](const Vec3& wi) { return b.pdf(wo, wi); }, 1e-9))
+            sum += v;
+        EXPECT_NEAR(sum, 1.0, 1e-6) << width;
+    }
+}
+
+TEST(BsdfChi2Method, RejectsASlightlyWrongPdf) {
+    // Negative control: Phong n = 100 sampled but judged against the pdf of n = 104 (a lobe
+    // 2% narrower), and Lambert against a cos^1.05 density.
+    const Config phong{"phong 100 vs 104", Bsdf::phong(Color(0, 0, 0), Color(1, 1, 1), 100), 30,
+                       Axis::Mirror, 0.1};
+    const Bsdf wrong = Bsdf::phong(Color(0, 0, 0), Color(1, 1, 1), 104);
+    const Outcome a = run_chi2(phong, 5, [&](const Vec3& wo, const Vec3& wi) {
+        return wrong.pdf(wo, wi);
+    });
+    std::printf("negative control phong 100 vs 104: p %.3g\n", a.chi2.pvalue);
+    EXPECT_LT(a.chi2.pvalue, 1e-6);
+    const Config lam{"lambert vs cos^1.05", Bsdf::lambert(Color(1, 1, 1)), 30, Axis::Normal, 1};
+    const Outcome b = run_chi2(lam, 6, [](const Vec3&, const Vec3& wi) {
+        return wi.z > 0 ? (2.05 / (2 * kPi)) * std::pow(wi.z, 1.05) : 0.0;
+    });
+    std::printf("negative control lambert vs cos^1.05: p %.3g\n", b.chi2.pvalue);
+    EXPECT_LT(b.chi2.pvalue, 1e-3);
+}
+
+}  // namespace
+}  // namespace glint::render
