@@ -59,7 +59,7 @@ private:
 struct EnvironmentGrid {
     int width = 128;
     int height = 64;
-    int subsamples = 2;  // k: k x k radiance look-ups per cell, the largest one kept
+    int subsamples = 2;  // k: k x k radiance look-ups per cell, the largest kept
 };
 
 class EnvironmentDistribution {
