@@ -1,6 +1,7 @@
 // The Monte Carlo path tracer (--integrator path): unidirectional path tracing with
 // next-event estimation and multiple importance sampling (power heuristic, Veach 1997) for
-// emissive triangles and the environment, Russian roulette after a few bounces, a maximum
+// emissive triangles, spheres and discs and the environment (an HDR sky importance-sampled,
+// path_lights.h), Russian roulette after a few bounces, a maximum
 // depth, and stochastic alpha. Materials come from the IR's Pbr half, or from the POV-Ray
 // finish through docs/pbr-mapping.md. Prepared once per render, read-only while rendering,
 // allocation-free per sample; random numbers come from the deterministic PixelSampler.
