@@ -191,6 +191,44 @@ TEST(PathLights, DiscLightMatchesAnalyticIrradiance) {
     EXPECT_NEAR(st.mean, expected, 0.01 * expected);
 }
 
+// The same disc inside a union with transforms at both levels (obj_file's OBJ parts sit in a
+// union): found through the tree and light-sampled; a union that also holds an emitting box
+// is left to BSDF sampling as a whole.
+TEST(PathLights, EmittersInsideUnionsAreSampled) {
+    const double le = 4, r = 0.5, h = 1;
+    const double expected = 0.5 * le * r * r / (r * r + h * h);
+    scene::Scene s = lit_plane();
+    aim(&s, Vec3(0, 0.5, -3), Vec3(0, 0, 0));
+    s.materials.push_back(emitter(le));
+    scene::Object disc;
+    disc.shape = scene::Disc{Vec3(0, 0, 0), Vec3(0, -1, 0), r, 0};
+    disc.transform = Transform::translate(Vec3(0, 0.25, 0));
+    disc.material = -1;  // inherited from the union
+    scene::Object u;
+    u.shape = scene::Csg{scene::CsgOp::Union, {disc}};
+    u.transform = Transform::translate(Vec3(0, h - 0.25, 0));
+    u.material = 1;
+    s.objects.push_back(u);
+    {
+        PathLights lights(s, {Color(), Color(le, le, le)});
+        EXPECT_TRUE(lights.emitter_object(1));
+        EXPECT_EQ(lights.shape_emitters(), 1);
+    }
+    Diagnostics diag;
+    const RenderResult res = render(s, path_options(8, 8, 256), diag);
+    const Stats st = image_stats(res.image);
+    std::printf("disc light in a union: mean %.6f, expected %.6f, stderr %.2g\n", st.mean,
+                expected, st.stderr_);
+    EXPECT_NEAR(st.mean, expected, 4 * st.stderr_ + 2e-4 * expected);
+
+    scene::Object box;
+    box.shape = scene::Box{Vec3(5, 5, 5), Vec3(6, 6, 6)};
+    std::get<scene::Csg>(s.objects[1].shape).children.push_back(box);
+    PathLights mixed(s, {Color(), Color(le, le, le)});
+    EXPECT_FALSE(mixed.emitter_object(1));
+    EXPECT_EQ(mixed.shape_emitters(), 0);
+}
+
 // Light sampling and emitter_pdf agree: for a point sampled on a sphere or disc, the pdf the
 // BSDF side would compute for the same point equals the sample's pdf.
 TEST(PathLights, EmitterPdfMatchesSamplePdf) {

@@ -59,88 +59,22 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
     for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i)
         slots_.push_back({SlotKind::Pov, i});
     object_emitter_.assign(scene.objects.size(), kNotSampled);
-    auto emits = [&](int material) -> const Color* {
-        if (material < 0 || material >= static_cast<int>(emission.size())) return nullptr;
-        return average(emission[material]) > 0 ? &emission[material] : nullptr;
-    };
-    auto add = [&](int object, const Vec3& a, const Vec3& b, const Vec3& c, int material) {
-        const Color* le = emits(material);
-        if (!le) return;
-        Tri t;
-        t.p0 = a;
-        t.e1 = b - a;
-        t.e2 = c - a;
-        const Vec3 n = cross(t.e1, t.e2);
-        t.area = 0.5 * length(n);
-        if (!(t.area > 0) || !std::isfinite(t.area)) return;
-        t.n = n / (2 * t.area);
-        t.le = *le;
-        tris_.push_back(t);
-        object_emitter_[object] = kTriangles;
-    };
     for (int oi = 0; oi < static_cast<int>(scene.objects.size()); ++oi) {
         const scene::Object& o = scene.objects[oi];
-        const Transform& x = o.transform;
-        if (const auto* tri = std::get_if<scene::Triangle>(&o.shape)) {
-            add(oi, x.point(tri->p[0]), x.point(tri->p[1]), x.point(tri->p[2]), o.material);
-        } else if (const auto* st = std::get_if<scene::SmoothTriangle>(&o.shape)) {
-            add(oi, x.point(st->p[0]), x.point(st->p[1]), x.point(st->p[2]), o.material);
-        } else if (const auto* mr = std::get_if<scene::MeshRef>(&o.shape)) {
-            if (mr->mesh < 0 || mr->mesh >= static_cast<int>(scene.meshes.size())) continue;
-            const scene::Mesh& m = scene.meshes[mr->mesh];
-            for (const scene::MeshFace& f : m.faces) {
-                const int mat = f.material >= 0 ? f.material : o.material;
-                if (!emits(mat)) continue;
-                bool ok = true;
-                for (int k = 0; k < 3; ++k)
-                    ok = ok && f.v[k] >= 0 && f.v[k] < static_cast<int>(m.positions.size());
-                if (!ok) continue;
-                add(oi, x.point(m.positions[f.v[0]]), x.point(m.positions[f.v[1]]),
-                    x.point(m.positions[f.v[2]]), mat);
-            }
-        } else if (const Color* le = emits(o.material);
-                   le && !o.inverse && o.clipped_by.empty()) {
-            // Spheres and discs: the whole surface, as the geometry intersects it.
-            Shape e;
-            e.le = *le;
-            if (const auto* sp = std::get_if<scene::Sphere>(&o.shape)) {
-                if (!(sp->radius > 0)) continue;
-                double scale = 1;
-                e.sphere = true;
-                if (similarity(x, &scale)) {
-                    e.cone = true;
-                    e.center = x.point(sp->center);
-                    e.radius = sp->radius * scale;
-                    e.area = 4 * kPi * e.radius * e.radius;
-                } else {
-                    e.center = sp->center;
-                    e.radius = sp->radius;
-                    e.to_world = x;
-                    // For choosing among emitters only: 4 pi r^2 |det|^(2/3).
-                    const double det = dot(x.vector(Vec3(1, 0, 0)),
-                                           cross(x.vector(Vec3(0, 1, 0)), x.vector(Vec3(0, 0, 1))));
-                    e.area = 4 * kPi * e.radius * e.radius * std::pow(std::fabs(det), 2.0 / 3.0);
-                }
-            } else if (const auto* d = std::get_if<scene::Disc>(&o.shape)) {
-                if (!(d->radius > d->hole_radius) || !(length_squared(d->normal) > 0)) continue;
-                Vec3 s, t;
-                tangents(normalize(d->normal), &s, &t);
-                e.sphere = false;
-                e.center = x.point(d->center);
-                e.a1 = x.vector(s * d->radius);
-                e.a2 = x.vector(t * d->radius);
-                const Vec3 n = cross(e.a1, e.a2);
-                const double hole = std::max(0.0, d->hole_radius) / d->radius;
-                e.inner2 = hole * hole;
-                e.area = kPi * length(n) * (1 - e.inner2);
-                e.n = normalize(n);
-            } else {
-                continue;
-            }
-            if (!(e.area > 0) || !std::isfinite(e.area)) continue;
-            e.weight = e.area * average(e.le);
+        Gathered g;
+        gather(o, o.transform, o.material, emission, &g);
+        // BSDF rays that hit the object are weighted by the pdf of the one emitter kind it
+        // holds, so an object is light-sampled only when all its emitters are handled and
+        // that pdf is known from the object alone: triangles (any number: their pdf needs only
+        // the hit's emission) or a single sphere or disc.
+        if (!g.ok || (g.tris.empty() && g.shapes.empty())) continue;
+        if (!g.shapes.empty() && (g.shapes.size() > 1 || !g.tris.empty())) continue;
+        if (!g.tris.empty()) {
+            object_emitter_[oi] = kTriangles;
+            tris_.insert(tris_.end(), g.tris.begin(), g.tris.end());
+        } else {
             object_emitter_[oi] = static_cast<int>(shapes_.size());
-            shapes_.push_back(e);
+            shapes_.push_back(g.shapes[0]);
         }
     }
     if (!tris_.empty() || !shapes_.empty()) {
@@ -164,6 +98,102 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
         slots_.push_back({SlotKind::Environment, -1});
         if (environment && !environment_uniform(scene))
             env_.emplace(environment, environment_grid(scene, textures));
+    }
+}
+
+void PathLights::gather(const scene::Object& o, const Transform& x, int material,
+                        const std::vector<Color>& emission, Gathered* g) const {
+    auto emits = [&](int m) -> const Color* {
+        if (m < 0 || m >= static_cast<int>(emission.size())) return nullptr;
+        return average(emission[m]) > 0 ? &emission[m] : nullptr;
+    };
+    if (o.material >= 0) material = o.material;
+    auto add = [&](const Vec3& a, const Vec3& b, const Vec3& c, int m) {
+        const Color* le = emits(m);
+        if (!le) return;
+        Tri t;
+        t.p0 = a;
+        t.e1 = b - a;
+        t.e2 = c - a;
+        const Vec3 n = cross(t.e1, t.e2);
+        t.area = 0.5 * length(n);
+        if (!(t.area > 0) || !std::isfinite(t.area)) return;
+        t.n = n / (2 * t.area);
+        t.le = *le;
+        g->tris.push_back(t);
+    };
+    if (const auto* tri = std::get_if<scene::Triangle>(&o.shape)) {
+        add(x.point(tri->p[0]), x.point(tri->p[1]), x.point(tri->p[2]), material);
+    } else if (const auto* st = std::get_if<scene::SmoothTriangle>(&o.shape)) {
+        add(x.point(st->p[0]), x.point(st->p[1]), x.point(st->p[2]), material);
+    } else if (const auto* mr = std::get_if<scene::MeshRef>(&o.shape)) {
+        if (mr->mesh < 0 || mr->mesh >= static_cast<int>(scene_.meshes.size())) return;
+        const scene::Mesh& m = scene_.meshes[mr->mesh];
+        for (const scene::MeshFace& f : m.faces) {
+            const int mat = f.material >= 0 ? f.material : material;
+            if (!emits(mat)) continue;
+            bool ok = true;
+            for (int k = 0; k < 3; ++k)
+                ok = ok && f.v[k] >= 0 && f.v[k] < static_cast<int>(m.positions.size());
+            if (!ok) continue;
+            add(x.point(m.positions[f.v[0]]), x.point(m.positions[f.v[1]]),
+                x.point(m.positions[f.v[2]]), mat);
+        }
+    } else if (const auto* csg = std::get_if<scene::Csg>(&o.shape)) {
+        // A union keeps every surface of its children (obj_file's OBJ parts, looks_like);
+        // merge, intersection and difference cut them, so their emitters are not sampled.
+        const size_t before = g->tris.size() + g->shapes.size();
+        const bool whole = csg->op == scene::CsgOp::Union && !o.inverse && o.clipped_by.empty();
+        for (const scene::Object& c : csg->children)
+            gather(c, c.transform.then(x), material, emission, g);
+        if (!whole && g->tris.size() + g->shapes.size() > before) g->ok = false;
+    } else if (const Color* le = emits(material)) {
+        if (o.inverse || !o.clipped_by.empty()) {
+            g->ok = false;
+            return;
+        }
+        // Spheres and discs: the whole surface, as the geometry intersects it.
+        Shape e;
+        e.le = *le;
+        if (const auto* sp = std::get_if<scene::Sphere>(&o.shape)) {
+            if (!(sp->radius > 0)) return;
+            double scale = 1;
+            e.sphere = true;
+            if (similarity(x, &scale)) {
+                e.cone = true;
+                e.center = x.point(sp->center);
+                e.radius = sp->radius * scale;
+                e.area = 4 * kPi * e.radius * e.radius;
+            } else {
+                e.center = sp->center;
+                e.radius = sp->radius;
+                e.to_world = x;
+                // For choosing among emitters only: 4 pi r^2 |det|^(2/3).
+                const double det = dot(x.vector(Vec3(1, 0, 0)),
+                                       cross(x.vector(Vec3(0, 1, 0)), x.vector(Vec3(0, 0, 1))));
+                e.area = 4 * kPi * e.radius * e.radius * std::pow(std::fabs(det), 2.0 / 3.0);
+            }
+        } else if (const auto* d = std::get_if<scene::Disc>(&o.shape)) {
+            if (!(d->radius > d->hole_radius) || !(length_squared(d->normal) > 0)) return;
+            Vec3 s, t;
+            tangents(normalize(d->normal), &s, &t);
+            e.sphere = false;
+            e.center = x.point(d->center);
+            e.a1 = x.vector(s * d->radius);
+            e.a2 = x.vector(t * d->radius);
+            const Vec3 n = cross(e.a1, e.a2);
+            const double hole = std::max(0.0, d->hole_radius) / d->radius;
+            e.inner2 = hole * hole;
+            e.area = kPi * length(n) * (1 - e.inner2);
+            e.n = normalize(n);
+        } else {
+            // Other emitting shapes (boxes, cylinders, ...): found by BSDF sampling only.
+            g->ok = false;
+            return;
+        }
+        if (!(e.area > 0) || !std::isfinite(e.area)) return;
+        e.weight = e.area * average(e.le);
+        g->shapes.push_back(e);
     }
 }
 

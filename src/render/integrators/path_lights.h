@@ -13,8 +13,10 @@
 //   non-uniformly scaled sphere), uniformly by object-space area, with the world area density
 //   divided by the transform's area scale at the point. BSDF rays that hit an emitter are
 //   weighted by MIS (power heuristic) with emitter_pdf(), the exact pdf of the same choice.
-//   Spheres or discs that are clipped, inverse or inside CSG are not light-sampled: BSDF rays
-//   that hit them count in full.
+//   Emitters inside unions (obj_file's OBJ parts) are found through the tree. An object is
+//   light-sampled only when all its emitters are: triangles, or one sphere or disc; emitters
+//   that are clipped, inverse, inside merge/intersection/difference, or other shapes leave
+//   their whole object to BSDF sampling (BSDF rays that hit it count in full).
 // - The environment (background color, with the sky_sphere laid over it as POV-Ray 3.7 does):
 //   uniform over the sphere when it is the same everywhere, else by the luminance table of
 //   environment.h (an HDR sky); the integrator evaluates its radiance.
@@ -100,6 +102,14 @@ private:
         Vec3 a1, a2, n;
         double inner2 = 0, area = 0;
     };
+    // The emitters of one top-level object, through nested unions; ok: all of them handled.
+    struct Gathered {
+        std::vector<Tri> tris;
+        std::vector<Shape> shapes;
+        bool ok = true;
+    };
+    void gather(const scene::Object& o, const Transform& to_world, int material,
+                const std::vector<Color>& emission, Gathered* g) const;
     static constexpr int kNotSampled = -1;
     static constexpr int kTriangles = -2;
 
