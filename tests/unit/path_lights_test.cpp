@@ -303,19 +303,34 @@ TEST(PathLights, EnvironmentMatchesBlender) {
         {90, {-0.150384, 0.852869, -0.5}, 62, 21},     {90, {-0.936117, -0.340719, 0.087156}, 44, 15},
         {90, {0.25, -0.433013, 0.866025}, 26, 5},      {90, {0.176514, 0.189288, -0.965926}, 7, 29},
     };
-    for (const Probe& pr : probes) {
-        scene::Scene s;
-        // Blender's OBJ export (forward -Z, up Y): glint = (x, z, -y).
-        const Vec3 g(pr.b.x, pr.b.z, -pr.b.y);
-        aim(&s, Vec3(0, 0, 0), g, 1e-6);
-        set_sky_image(&s, path, 180 - pr.alpha);
-        Diagnostics diag;
-        const RenderResult r = render(s, path_options(1, 1, 1), diag);
-        const float* c = r.image.pixel(0, 0);
-        EXPECT_EQ(c[0], pr.x) << "alpha " << pr.alpha << " dir " << pr.b.x << " " << pr.b.y;
-        EXPECT_EQ(c[1], pr.y) << "alpha " << pr.alpha << " dir " << pr.b.x << " " << pr.b.y;
-        EXPECT_EQ(c[2], 1e4f);
-    }
+    for (const Probe& pr : probes)
+        for (const bool obj_file : {true, false}) {
+            scene::Scene s;
+            Vec3 g;
+            if (obj_file) {
+                // A POV scene placing the export with obj_file, which mirrors z into POV-Ray's
+                // left-handed axes: a Blender direction is (x, z, y); the sky is mirrored in x.
+                g = Vec3(pr.b.x, pr.b.z, pr.b.y);
+                set_sky_image(&s, path);
+                s.sky_sphere->transform = Transform::scale(Vec3(-1, 1, 1))
+                                              .then(Transform::rotate_xyz_degrees(
+                                                  Vec3(0, pr.alpha, 0)));
+            } else {
+                // The OBJ file's own coordinates (forward -Z, up Y): (x, z, -y).
+                g = Vec3(pr.b.x, pr.b.z, -pr.b.y);
+                set_sky_image(&s, path, 180 - pr.alpha);
+            }
+            aim(&s, Vec3(0, 0, 0), g, 1e-6);
+            Diagnostics diag;
+            const RenderResult r = render(s, path_options(1, 1, 1), diag);
+            const float* c = r.image.pixel(0, 0);
+            const std::string what = std::string(obj_file ? "obj_file" : "OBJ") + " alpha " +
+                                     std::to_string(pr.alpha) + " dir " + std::to_string(pr.b.x) +
+                                     " " + std::to_string(pr.b.y);
+            EXPECT_EQ(c[0], pr.x) << what;
+            EXPECT_EQ(c[1], pr.y) << what;
+            EXPECT_EQ(c[2], 1e4f);
+        }
     std::filesystem::remove(path);
 }
 

@@ -20,11 +20,15 @@
 //   u = 0.5 - atan2(b.y, b.x)/2pi, v = 0.5 + asin(b.z)/pi: the image centre looks along +X,
 //   +Y is at u = 0.25, v = 1 at the top row. A Mapping node rotating the vector by alpha about
 //   Z adds alpha to atan2(b.y, b.x).
-// - Blender's OBJ exporter with forward -Z, up Y writes g = (b.x, b.z, -b.y), so in the glint
-//   scene u_blender = 0.5 + atan2(g.z, g.x)/2pi: POV-Ray's u shifted by half a turn. A script
-//   writes `sky_sphere { pigment { image_map { exr "sky.exr" map_type 1 } } rotate <0, 180, 0> }`
-//   (with a Mapping node Z rotation of alpha degrees: rotate <0, 180 - alpha, 0>), and
-//   `emission S` for the Background node's strength S.
+// - Blender's OBJ exporter (forward -Z, up Y) writes g = (b.x, b.z, -b.y), and glint's obj_file
+//   mirrors z into POV-Ray's left-handed axes, so in a POV scene that places the export with
+//   obj_file a Blender direction is g = (b.x, b.z, b.y) and u_blender = 0.5 - atan2(g.z, g.x)/2pi:
+//   POV-Ray's u mirrored. A script writes
+//     sky_sphere { pigment { image_map { exr "sky.exr" map_type 1 interpolate 2 } }
+//                  scale <-1, 1, 1> rotate <0, alpha, 0> emission S }
+//   for a Mapping node Z rotation of alpha degrees (leave it out for none) and a Background
+//   strength S (interpolate 2 is Blender's Linear). In the OBJ file's own coordinates
+//   (x, z, -y), without obj_file's mirror, the same sky is `rotate <0, 180 - alpha, 0>`.
 #pragma once
 
 #include <functional>
