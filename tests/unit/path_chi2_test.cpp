@@ -98,6 +98,14 @@ std::vector<Config> configs() {
         out.push_back({"ggx glass ior 2.4 alpha 0.05",
                        Bsdf::principled(principled(Color(1, 1, 1), 0, 0.05, 1, 2.4)), th,
                        Axis::Refract, 0.05, 2.4});
+    // Every lobe at once, in colour: diffuse, GGX reflection, metal and rough transmission
+    // mixed by Principled's weights (lobe choice then depends on wo's Fresnel).
+    for (double th : {30.0, 70.0, 150.0}) {
+        PrincipledParams p = principled(Color(0.9, 0.5, 0.2), 0.3, 0.05, 0.4);
+        p.specular = 0.8;
+        out.push_back({"principled mix alpha 0.05", Bsdf::principled(p), th, Axis::Refract,
+                       0.05, 1.5});
+    }
     return out;
 }
 
