@@ -221,6 +221,24 @@ TEST(PathLights, EmittersInsideUnionsAreSampled) {
                 expected, st.stderr_);
     EXPECT_NEAR(st.mean, expected, 4 * st.stderr_ + 2e-4 * expected);
 
+    // A second, smaller disc below it in the same union hides the middle of the first with the
+    // same radiance, so the irradiance stays pi L r^2 / (r^2 + h^2); hits on the union are
+    // matched to the disc they lie on.
+    scene::Object low = disc;
+    low.shape = scene::Disc{Vec3(0, 0, 0), Vec3(0, 1, 0), 0.2, 0};
+    low.transform = Transform::translate(Vec3(0, -0.25, 0));
+    std::get<scene::Csg>(s.objects[1].shape).children.push_back(low);
+    {
+        PathLights lights(s, {Color(), Color(le, le, le)});
+        EXPECT_TRUE(lights.emitter_object(1));
+        EXPECT_EQ(lights.shape_emitters(), 2);
+        const RenderResult two = render(s, path_options(8, 8, 256), diag);
+        const Stats st2 = image_stats(two.image);
+        std::printf("two discs in a union: mean %.6f, expected %.6f, stderr %.2g\n", st2.mean,
+                    expected, st2.stderr_);
+        EXPECT_NEAR(st2.mean, expected, 4 * st2.stderr_ + 2e-4 * expected);
+    }
+
     scene::Object box;
     box.shape = scene::Box{Vec3(5, 5, 5), Vec3(6, 6, 6)};
     std::get<scene::Csg>(s.objects[1].shape).children.push_back(box);
@@ -229,48 +247,63 @@ TEST(PathLights, EmittersInsideUnionsAreSampled) {
     EXPECT_EQ(mixed.shape_emitters(), 0);
 }
 
-// Light sampling and emitter_pdf agree: for a point sampled on a sphere or disc, the pdf the
-// BSDF side would compute for the same point equals the sample's pdf.
+// Light sampling and emitter_pdf agree: for a point sampled on a sphere, an ellipsoid, a disc
+// with a hole or a triangle, the pdf the BSDF side computes for the same point equals the
+// sample's pdf, both with each emitter its own object and with all of them in one union
+// (where emitter_pdf must tell from the point which one was hit).
 TEST(PathLights, EmitterPdfMatchesSamplePdf) {
-    scene::Scene s;
-    s.materials.push_back(emitter(1));
-    scene::Object a;
-    a.shape = scene::Sphere{Vec3(0, 3, 0), 0.7};
-    a.material = 0;
-    s.objects.push_back(a);
-    scene::Object b;
-    b.shape = scene::Sphere{Vec3(0, 0, 0), 1};
-    b.transform = Transform::scale(Vec3(0.3, 0.8, 0.5)).then(Transform::translate(Vec3(2, 1, 0)));
-    b.material = 0;
-    s.objects.push_back(b);
-    scene::Object c;
-    c.shape = scene::Disc{Vec3(0, 0, 0), Vec3(0, 0, 1), 1, 0.25};
-    c.transform = Transform::scale(Vec3(2, 1, 1)).then(Transform::translate(Vec3(-2, 1, 1)));
-    c.material = 0;
-    s.objects.push_back(c);
-    PathLights lights(s, {Color(1, 1, 1)});
-    ASSERT_EQ(lights.count(), 1);
-    ASSERT_EQ(lights.shape_emitters(), 3);
-    std::mt19937_64 rng(7);
-    std::uniform_real_distribution<double> U(0, 1);
-    const Vec3 p(0.1, -0.5, 0.2);
-    int checked = 0;
-    for (int i = 0; i < 3000; ++i) {
-        PathLightSample ls;
-        if (!lights.sample(0, p, {U(rng), U(rng)}, &ls)) continue;
-        const Vec3 q = p + ls.wi * ls.dist;
-        // Which object: the nearest by construction of the scene.
-        int obj = std::fabs(length(q - Vec3(0, 3, 0)) - 0.7) < 1e-9 ? 0 : -1;
-        if (obj < 0) {
-            const Vec3 qo = s.objects[1].transform.inverse_point(q);
-            obj = std::fabs(length(qo) - 1) < 1e-9 ? 1 : 2;
+    std::vector<scene::Object> parts(4);
+    parts[0].shape = scene::Sphere{Vec3(0, 3, 0), 0.7};
+    parts[1].shape = scene::Sphere{Vec3(0, 0, 0), 1};
+    parts[1].transform =
+        Transform::scale(Vec3(0.3, 0.8, 0.5)).then(Transform::translate(Vec3(2, 1, 0)));
+    parts[2].shape = scene::Disc{Vec3(0, 0, 0), Vec3(0, 0, 1), 1, 0.25};
+    parts[2].transform =
+        Transform::scale(Vec3(2, 1, 1)).then(Transform::translate(Vec3(-2, 1, 1)));
+    const Vec3 t0(-1, -2, 3), t1(1, -2, 3), t2(0, -1, 4);
+    parts[3].shape = scene::Triangle{{t0, t1, t2}};
+    const Vec3 tri_n = normalize(cross(t1 - t0, t2 - t0));
+    for (const bool in_union : {false, true}) {
+        scene::Scene s;
+        s.materials.push_back(emitter(1));
+        if (in_union) {
+            scene::Object u;
+            u.shape = scene::Csg{scene::CsgOp::Union, parts};
+            u.material = 0;
+            s.objects.push_back(u);
+        } else {
+            for (scene::Object o : parts) {
+                o.material = 0;
+                s.objects.push_back(o);
+            }
         }
-        const Vec3 ng = obj == 2 ? Vec3(0, 0, 1) : Vec3(0, 1, 0);  // unused for shapes
-        const double pdf = lights.emitter_pdf(obj, p, q, ng, Color(1, 1, 1));
-        EXPECT_NEAR(pdf / ls.pdf, 1.0, 1e-9) << "object " << obj;
-        ++checked;
+        PathLights lights(s, {Color(1, 1, 1)});
+        ASSERT_EQ(lights.count(), 1);
+        ASSERT_EQ(lights.shape_emitters(), 3);
+        std::mt19937_64 rng(7);
+        std::uniform_real_distribution<double> U(0, 1);
+        const Vec3 p(0.1, -0.5, 0.2);
+        int checked[4] = {0, 0, 0, 0};
+        for (int i = 0; i < 4000; ++i) {
+            PathLightSample ls;
+            if (!lights.sample(0, p, {U(rng), U(rng)}, &ls)) continue;
+            const Vec3 q = p + ls.wi * ls.dist;
+            // Which part: the one whose surface the point is on.
+            int part = 3;
+            if (std::fabs(length(q - Vec3(0, 3, 0)) - 0.7) < 1e-9) {
+                part = 0;
+            } else if (std::fabs(length(parts[1].transform.inverse_point(q)) - 1) < 1e-9) {
+                part = 1;
+            } else if (std::fabs(parts[2].transform.inverse_point(q).z) < 1e-9) {
+                part = 2;
+            }
+            const int object = in_union ? 0 : part;
+            const double pdf = lights.emitter_pdf(object, p, q, tri_n, Color(1, 1, 1));
+            EXPECT_NEAR(pdf / ls.pdf, 1.0, 1e-9) << "part " << part << " union " << in_union;
+            ++checked[part];
+        }
+        for (int k = 0; k < 4; ++k) EXPECT_GT(checked[k], 100) << "part " << k;
     }
-    EXPECT_GT(checked, 2000);
 }
 
 // ---------------------------------------------------------------- environment

@@ -63,19 +63,14 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
         const scene::Object& o = scene.objects[oi];
         Gathered g;
         gather(o, o.transform, o.material, emission, &g);
-        // BSDF rays that hit the object are weighted by the pdf of the one emitter kind it
-        // holds, so an object is light-sampled only when all its emitters are handled and
-        // that pdf is known from the object alone: triangles (any number: their pdf needs only
-        // the hit's emission) or a single sphere or disc.
+        // BSDF rays that hit the object are weighted by the pdf of the emitter they hit, so an
+        // object is light-sampled only when all its emitters are handled.
         if (!g.ok || (g.tris.empty() && g.shapes.empty())) continue;
-        if (!g.shapes.empty() && (g.shapes.size() > 1 || !g.tris.empty())) continue;
-        if (!g.tris.empty()) {
-            object_emitter_[oi] = kTriangles;
-            tris_.insert(tris_.end(), g.tris.begin(), g.tris.end());
-        } else {
-            object_emitter_[oi] = static_cast<int>(shapes_.size());
-            shapes_.push_back(g.shapes[0]);
-        }
+        object_emitter_[oi] = static_cast<int>(groups_.size());
+        groups_.push_back({!g.tris.empty(), static_cast<int>(shapes_.size()),
+                           static_cast<int>(g.shapes.size())});
+        tris_.insert(tris_.end(), g.tris.begin(), g.tris.end());
+        shapes_.insert(shapes_.end(), g.shapes.begin(), g.shapes.end());
     }
     if (!tris_.empty() || !shapes_.empty()) {
         double sum = 0;
@@ -392,12 +387,46 @@ double PathLights::shape_pdf(const Shape& e, const Vec3& p, const Vec3& q) const
     return cos_l > 0 ? dist2 / (cos_l * e.area) : 0;
 }
 
+double PathLights::off_surface(const Shape& e, const Vec3& q) {
+    if (e.sphere) {
+        const Vec3 p = e.cone ? q : e.to_world.inverse_point(q);
+        return std::fabs(length(p - e.center) - e.radius) / e.radius;
+    }
+    // Disc: distance from the plane, and from the ring in the plane's own coordinates.
+    const Vec3 d = q - e.center;
+    const double size = std::sqrt(e.area);
+    const double h = std::fabs(dot(d, e.n)) / size;
+    const double g11 = dot(e.a1, e.a1), g12 = dot(e.a1, e.a2), g22 = dot(e.a2, e.a2);
+    const double det = g11 * g22 - g12 * g12;
+    if (!(det > 0)) return kInfinity;
+    const double b1 = dot(d, e.a1), b2 = dot(d, e.a2);
+    const double x = (g22 * b1 - g12 * b2) / det, y = (g11 * b2 - g12 * b1) / det;
+    const double rho2 = x * x + y * y;
+    const double ring = std::max(0.0, std::max(e.inner2 - rho2, rho2 - 1));
+    return h + ring;
+}
+
 double PathLights::emitter_pdf(int object, const Vec3& from, const Vec3& q, const Vec3& ng,
                                const Color& le) const {
     if (!emitter_object(object) || !(emitter_total_ > 0)) return 0;
-    const int id = object_emitter_[object];
-    if (id >= 0) {
-        const Shape& e = shapes_[id];
+    const Group& grp = groups_[object_emitter_[object]];
+    // Which emitter of the object was hit: the sphere or disc the point lies on, else (when
+    // the object has emitting triangles) a triangle.
+    int hit_shape = -1;
+    if (grp.shape_count == 1 && !grp.tris) {
+        hit_shape = grp.first_shape;
+    } else {
+        double best = grp.tris ? 1e-6 : kInfinity;
+        for (int k = grp.first_shape; k < grp.first_shape + grp.shape_count; ++k) {
+            const double off = off_surface(shapes_[k], q);
+            if (off < best) {
+                best = off;
+                hit_shape = k;
+            }
+        }
+    }
+    if (hit_shape >= 0) {
+        const Shape& e = shapes_[hit_shape];
         return select_prob() * e.weight / emitter_total_ * shape_pdf(e, from, q);
     }
     const Vec3 d = q - from;

@@ -13,10 +13,10 @@
 //   non-uniformly scaled sphere), uniformly by object-space area, with the world area density
 //   divided by the transform's area scale at the point. BSDF rays that hit an emitter are
 //   weighted by MIS (power heuristic) with emitter_pdf(), the exact pdf of the same choice.
-//   Emitters inside unions (obj_file's OBJ parts) are found through the tree. An object is
-//   light-sampled only when all its emitters are: triangles, or one sphere or disc; emitters
-//   that are clipped, inverse, inside merge/intersection/difference, or other shapes leave
-//   their whole object to BSDF sampling (BSDF rays that hit it count in full).
+//   Emitters inside unions (obj_file's OBJ parts) are found through the tree; a BSDF hit on an
+//   object with several is matched to the sphere or disc it lies on, else to its triangles.
+//   Emitters that are clipped, inverse, inside merge/intersection/difference, or other shapes
+//   leave their whole object to BSDF sampling (BSDF rays that hit it count in full).
 // - The environment (background color, with the sky_sphere laid over it as POV-Ray 3.7 does):
 //   uniform over the sphere when it is the same everywhere, else by the luminance table of
 //   environment.h (an HDR sky); the integrator evaluates its radiance.
@@ -110,8 +110,15 @@ private:
     };
     void gather(const scene::Object& o, const Transform& to_world, int material,
                 const std::vector<Color>& emission, Gathered* g) const;
+    // The emitters of one top-level object: its triangles are somewhere in tris_, its shapes
+    // are shapes_[first_shape, first_shape + shape_count).
+    struct Group {
+        bool tris = false;
+        int first_shape = 0, shape_count = 0;
+    };
+    // How far q is from the shape's surface, relative to its size (0 on it).
+    static double off_surface(const Shape& e, const Vec3& q);
     static constexpr int kNotSampled = -1;
-    static constexpr int kTriangles = -2;
 
     Color pov_factor(const scene::Light& l, const Vec3& from_light, double dist) const;
     bool sample_shape(const Shape& e, const Vec3& p, Sample2 u, PathLightSample* out) const;
@@ -125,7 +132,8 @@ private:
     // One CDF over all emitters: triangles first, then shapes_ (area * average emission).
     std::vector<double> emitter_cdf_;
     double emitter_total_ = 0;
-    std::vector<int> object_emitter_;  // per object: kNotSampled, kTriangles or a shapes_ index
+    std::vector<Group> groups_;
+    std::vector<int> object_emitter_;  // per object: kNotSampled or a groups_ index
     bool has_env_ = false;
     std::optional<EnvironmentDistribution> env_;  // absent: uniform sphere sampling
 };
