@@ -36,6 +36,9 @@ bool similarity(const Transform& x, double* scale) {
     return s2 > 0 && std::isfinite(s2);
 }
 
+// Spheres and discs in one object beyond which the object is left to BSDF sampling.
+constexpr size_t kMaxShapesPerObject = 64;
+
 // Cone sampling needs the point clearly outside the sphere: a point on it (the sphere's own
 // shading points) sees the inside of the sphere, which area sampling covers.
 bool outside_sphere(double dist2_to_centre, double radius2) {
@@ -65,7 +68,10 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
         gather(o, o.transform, o.material, emission, &g);
         // BSDF rays that hit the object are weighted by the pdf of the emitter they hit, so an
         // object is light-sampled only when all its emitters are handled.
+        // (A hit is matched to its shape by trying each: past kMaxShapesPerObject that costs
+        // more than the noise it saves.)
         if (!g.ok || (g.tris.empty() && g.shapes.empty())) continue;
+        if (g.shapes.size() > kMaxShapesPerObject) continue;
         object_emitter_[oi] = static_cast<int>(groups_.size());
         groups_.push_back({!g.tris.empty(), static_cast<int>(shapes_.size()),
                            static_cast<int>(g.shapes.size())});
