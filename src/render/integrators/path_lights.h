@@ -5,7 +5,7 @@
 //   it emits the same in every direction and is invisible to camera and BSDF rays; with
 //   `circular`, the ellipse inscribed in that rectangle). A POV-Ray light of color C delivers the irradiance pi * C * cos * fade, so a white Lambert surface
 //   shows C * cos as POV-Ray's diffuse 1.0 shows it (docs/pbr-mapping.md).
-// - Emitting shapes (top-level objects whose material emits a constant radiance): triangles
+// - Emitting shapes (objects and union parts whose material emits a constant radiance): triangles
 //   and meshes, spheres and discs, chosen in one slot by area times emitted radiance.
 //   Triangles and discs (any affine transform) are sampled uniformly by area. A sphere under a
 //   similarity transform, seen from outside, is sampled by the cone of directions it subtends
