@@ -324,6 +324,10 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
         scene::Material m = material_from_mtl(v);
         m.loc = mtl_loc;
         scene::Pbr& p = m.pbr;
+        // Blender writes these only for a Principled BSDF (its Diffuse BSDF materials get Pr and
+        // Pm alone): the path tracer then uses Principled's Burley diffuse (MTL.md).
+        for (const char* k : {"ps", "pc", "pcr", "aniso", "anisor"})
+            p.principled = p.principled || given(k);
         auto ref = [&](const std::string& name, const tinyobj::texture_option_t& opt) {
             return map_ref(name, opt, base, mt.name, mtl_loc, diag);
         };

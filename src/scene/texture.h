@@ -289,6 +289,10 @@ struct Pbr {
     PbrMap alpha_map;          // map_d
     PbrMap bump_map;           // map_Bump / bump (-bm)
     bool derived = true;
+    // The material came from Blender's Principled BSDF: its MTL carried statements only the
+    // Principled export writes (Ps, Pc, Pcr, aniso, anisor). The path tracer then uses
+    // Principled's Burley diffuse; other materials keep a Lambert diffuse (docs/pbr-mapping.md).
+    bool principled = false;
 };
 
 struct Material {

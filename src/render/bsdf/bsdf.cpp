@@ -52,32 +52,37 @@ Vec3 cosine_hemisphere(double u1, double u2) {
     return {x, y, std::sqrt(std::max(0.0, 1.0 - x * x - y * y))};
 }
 
-// The rough (or smooth) dielectric of Walter et al. 2007, without the tint: f and the pdf of
-// its own sampling (reflection chosen with probability F).
-double dielectric_eval(const Ggx& ggx, double eta, const Vec3& wo, const Vec3& wi, double* pdf) {
+// The IOR Cycles derives from Principled's `specular` for its reflection lobe: the dielectric
+// whose F0 is 0.08 specular. Kept below the F0 of 1, where it would be infinite.
+double specular_ior(double specular) {
+    const double r = std::sqrt(std::clamp(0.08 * specular, 0.0, 0.999999));
+    return 2.0 / (1.0 - r) - 1.0;
+}
+
+// The GGX microfacet refraction of a glass lobe without its Fresnel factor (Walter et al. 2007,
+// in the form Cycles evaluates: radiance is not scaled by 1 / eta^2), for o.z > 0 > i.z in the
+// frame flipped to wo's side; etap: the index on i's side over o's. Returns f and the pdf of
+// refracting a visible normal sampled from o.
+double refraction_eval(const Ggx& ggx, double etap, const Vec3& o, const Vec3& i, double* pdf) {
     *pdf = 0;
-    const double cos_o = wo.z, cos_i = wi.z;
-    if (cos_o == 0 || cos_i == 0) return 0;
-    const bool reflection = cos_o * cos_i > 0;
-    double etap = 1;
-    if (!reflection) etap = cos_o > 0 ? eta : 1.0 / eta;
-    Vec3 wm = wi * etap + wo;
-    if (length_squared(wm) == 0) return 0;
+    Vec3 wm = i * etap + o;
+    if (!(length_squared(wm) > 0)) return 0;
     wm = normalize(wm);
     if (wm.z < 0) wm = -wm;
     // Microfacets seen from behind by either direction contribute nothing.
-    if (dot(wm, wi) * cos_i < 0 || dot(wm, wo) * cos_o < 0) return 0;
-    const double F = fresnel_dielectric(dot(wo, wm), eta);
-    const double pv = ggx.pdf_visible(wo, wm);
-    if (reflection) {
-        *pdf = pv / (4 * std::fabs(dot(wo, wm))) * F;
-        return ggx.d(wm) * ggx.g(wo, wi) * F / std::fabs(4 * cos_i * cos_o);
-    }
-    const double denom = sqr(dot(wi, wm) + dot(wo, wm) / etap);
-    if (denom == 0) return 0;
-    *pdf = pv * std::fabs(dot(wi, wm)) / denom * (1 - F);
-    return ggx.d(wm) * (1 - F) * ggx.g(wo, wi) *
-           std::fabs(dot(wi, wm) * dot(wo, wm) / (cos_i * cos_o * denom));
+    const double om = dot(o, wm), im = dot(i, wm);
+    if (om <= 0 || im >= 0) return 0;
+    const double denom = sqr(im + om / etap);
+    if (!(denom > 0)) return 0;
+    *pdf = ggx.pdf_visible(o, wm) * std::fabs(im) / denom;
+    return ggx.d(wm) * ggx.g(o, i) * std::fabs(im * om / (i.z * o.z * denom));
+}
+
+// GGX reflection without Fresnel: f and the pdf of reflecting a visible normal sampled from o.
+double reflection_eval(const Ggx& ggx, const Vec3& o, const Vec3& i, double* pdf) {
+    const Vec3 wm = normalize(o + i);
+    *pdf = ggx.pdf_visible(o, wm) / (4 * dot(o, wm));
+    return ggx.d(wm) * ggx.g(o, i) / (4 * o.z * i.z);
 }
 
 // Cosine of the angle between wi and the mirror direction of wo about z, and the lobe value.
@@ -157,43 +162,75 @@ Bsdf Bsdf::phong(const Color& kd, const Color& ks, double exponent) {
 Bsdf Bsdf::principled(const PrincipledParams& p) {
     Bsdf b;
     const double m = std::clamp(p.metallic, 0.0, 1.0);
-    const double t = std::clamp(p.transmission, 0.0, 1.0) * (1 - m);
+    const double tr = std::clamp(p.transmission, 0.0, 1.0);
+    const double t = tr * (1 - m);
     const double r = std::clamp(p.roughness, 0.0, 1.0);
+    b.roughness_ = r;
     b.ggx_.alpha = std::max(r * r, 1e-4);
     b.spec_delta_ = r * r < kDeltaAlpha;
-    b.w_diffuse_ = (1 - m) * (1 - std::clamp(p.transmission, 0.0, 1.0));
+    b.w_diffuse_ = (1 - m) * (1 - tr);
     b.diffuse_color_ = p.base * b.w_diffuse_;
-    b.diffuse_fresnel_f0_ = std::clamp(0.08 * p.specular, 0.0, 1.0);
-    const Color f0d(b.diffuse_fresnel_f0_);
-    b.spec_color_ = f0d * (1 - m) + p.base * m;
-    // specular 0 on a dielectric: no reflection lobe at all (and no Fresnel on the diffuse),
-    // so POV-Ray's plain diffuse surfaces are pure Lambert.
-    b.w_spec_ = b.spec_color_.max() > 0 ? 1 - t : 0.0;
-    b.diffuse_fresnel_ = b.w_spec_ > 0;
+    b.burley_ = p.diffuse_model == DiffuseModel::Burley;
+    if (!(average(b.diffuse_color_) > 0)) b.w_diffuse_ = 0;
+    // Cycles: cspec0 = 0.08 specular (1 - metallic) + base metallic, clamped to [0, 1], and the
+    // interpolation's IOR from `specular` (specular_tint 0: the IR carries none).
+    const double spec = std::max(0.0, p.specular);
+    const Color cs = Color(0.08 * spec) * (1 - m) + p.base * m;
+    b.spec_color_ = Color(std::clamp(cs.r, 0.0, 1.0), std::clamp(cs.g, 0.0, 1.0),
+                          std::clamp(cs.b, 0.0, 1.0));
+    b.spec_ior_ = specular_ior(spec);
+    b.spec_f0_ = fresnel_dielectric(1.0, b.spec_ior_);
+    // No reflection lobe without specular and metallic, as in Cycles (POV-Ray's plain diffuse
+    // surfaces are pure Lambert).
+    b.w_spec_ = (spec > 1e-5 || m > 1e-5) ? 1 - t : 0.0;
     b.w_trans_ = t;
     b.trans_tint_ = p.base;
     b.eta_ = p.ior > 0 ? p.ior : 1.45;
     b.trans_delta_ = b.spec_delta_ || std::fabs(b.eta_ - 1) < kIndexMatched;
-    if (b.w_diffuse_ <= 0) b.w_diffuse_ = 0;
     return b;
 }
 
 Color Bsdf::spec_fresnel(double cos_h) const {
-    const double w = schlick_weight(cos_h);
-    return spec_color_ + (Color(1) - spec_color_) * w;
+    if (spec_f0_ >= 1) return Color(1);
+    const double fh = std::clamp(
+        (fresnel_dielectric(std::fabs(cos_h), spec_ior_) - spec_f0_) / (1 - spec_f0_), 0.0, 1.0);
+    return spec_color_ * (1 - fh) + Color(fh);
 }
 
-void Bsdf::lobe_probs(const Vec3& wo, double* pd, double* ps, double* pt, double* pp) const {
+double Bsdf::glass_fresnel(const Vec3& wo) const {
+    if (std::fabs(eta_ - 1) < kIndexMatched) return 0;
+    return fresnel_dielectric(wo.z, eta_);
+}
+
+// Cycles keeps a rough refraction lobe of at least 1e-4 under total internal reflection at
+// the shading normal (a microfacet may still refract); a smooth one cannot.
+double Bsdf::refraction_share(double F) const {
+    return trans_delta_ ? 1 - F : std::max(1e-4, 1 - F);
+}
+
+double Bsdf::diffuse_shape(const Vec3& o, const Vec3& i) const {
+    if (!burley_) return 1;
+    // Burley 2015: the Lambert part (1 - FV / 2)(1 - FL / 2) and the retro-reflection
+    // RR (FL + FV + FL FV (RR - 1)), RR = roughness 2 cos^2(theta_d) = roughness (1 + wo . wi).
+    const double fv = schlick_weight(o.z), fl = schlick_weight(i.z);
+    const double rr = roughness_ * (1 + dot(o, i));
+    return (1 - 0.5 * fv) * (1 - 0.5 * fl) + rr * (fl + fv + fl * fv * (rr - 1));
+}
+
+Bsdf::LobeProbs Bsdf::lobe_probs(const Vec3& wo) const {
+    // Cycles' sample weights: each lobe's weight, the reflection's by its Fresnel at n . wo.
+    LobeProbs l;
     const double c = std::fabs(wo.z);
-    const double fd = diffuse_fresnel_
-                          ? diffuse_fresnel_f0_ + (1 - diffuse_fresnel_f0_) * schlick_weight(c)
-                          : 0.0;
-    *pd = w_diffuse_ > 0 ? average(diffuse_color_) * (1 - fd) : 0;
-    *ps = w_spec_ > 0 ? w_spec_ * average(spec_fresnel(c)) : 0;
-    *pt = w_trans_ > 0 ? w_trans_ * std::max(average(trans_tint_), 1e-3) : 0;
-    *pp = w_phong_ > 0 ? average(phong_ks_) : 0;
-    // A lobe that contributes must keep a chance of being sampled.
-    if (w_diffuse_ > 0 && *pd <= 0 && average(diffuse_color_) > 0) *pd = 1e-3;
+    if (w_diffuse_ > 0) l.d = average(diffuse_color_);
+    if (w_spec_ > 0) l.s = w_spec_ * std::max(average(spec_fresnel(c)), 1e-3);
+    if (w_trans_ > 0) {
+        const double F = glass_fresnel(wo);
+        l.gr = w_trans_ * F;
+        l.gt = average(trans_tint_) > 0 ? w_trans_ * average(trans_tint_) * refraction_share(F)
+                                        : 0.0;
+    }
+    if (w_phong_ > 0) l.p = average(phong_ks_);
+    return l;
 }
 
 Color Bsdf::eval(const Vec3& wo, const Vec3& wi) const {
@@ -201,111 +238,100 @@ Color Bsdf::eval(const Vec3& wo, const Vec3& wi) const {
     const double s = wo.z < 0 ? -1.0 : 1.0;
     const Vec3 o(wo.x, wo.y, wo.z * s), i(wi.x, wi.y, wi.z * s);
     const bool same_side = o.z > 0 && i.z > 0;
-    if (w_diffuse_ > 0 && same_side) {
-        const double fd =
-            diffuse_fresnel_ ? diffuse_fresnel_f0_ + (1 - diffuse_fresnel_f0_) * schlick_weight(o.z)
-                             : 0.0;
-        f += diffuse_color_ * (kInvPi * (1 - fd));
-    }
+    if (w_diffuse_ > 0 && same_side) f += diffuse_color_ * (kInvPi * diffuse_shape(o, i));
     if (w_phong_ > 0 && same_side)
         f += phong_ks_ * ((phong_n_ + 2) / (2 * kPi) * phong_pow(phong_cos(o, i), phong_n_));
     if (w_spec_ > 0 && same_side && !spec_delta_) {
-        const Vec3 wm = normalize(o + i);
-        f += spec_fresnel(dot(o, wm)) *
-             (w_spec_ * ggx_.d(wm) * ggx_.g(o, i) / (4 * o.z * i.z));
-    }
-    if (w_trans_ > 0 && !trans_delta_) {
         double pdf;
-        f += trans_tint_ * (w_trans_ * dielectric_eval(ggx_, eta_, wo, wi, &pdf));
+        const double g = reflection_eval(ggx_, o, i, &pdf);
+        f += spec_fresnel(dot(i, normalize(o + i))) * (w_spec_ * g);
+    }
+    if (w_trans_ > 0 && !trans_delta_ && o.z > 0 && i.z != 0) {
+        const double F = glass_fresnel(wo);
+        double pdf;
+        if (i.z > 0) {
+            f += Color(w_trans_ * F * reflection_eval(ggx_, o, i, &pdf));
+        } else {
+            const double etap = wo.z > 0 ? eta_ : 1.0 / eta_;
+            f += trans_tint_ *
+                 (w_trans_ * refraction_share(F) * refraction_eval(ggx_, etap, o, i, &pdf));
+        }
     }
     return f;
 }
 
 double Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
-    double pd, ps, pt, pp;
-    lobe_probs(wo, &pd, &ps, &pt, &pp);
-    const double sum = pd + ps + pt + pp;
+    const LobeProbs l = lobe_probs(wo);
+    const double sum = l.sum();
     if (!(sum > 0)) return 0;
     const double s = wo.z < 0 ? -1.0 : 1.0;
     const Vec3 o(wo.x, wo.y, wo.z * s), i(wi.x, wi.y, wi.z * s);
     const bool same_side = o.z > 0 && i.z > 0;
     double pdf = 0;
-    if (pd > 0 && same_side) pdf += pd * i.z * kInvPi;
-    if (pp > 0 && same_side)
-        pdf += pp * (phong_n_ + 1) / (2 * kPi) * phong_pow(phong_cos(o, i), phong_n_);
-    if (ps > 0 && same_side && !spec_delta_) {
-        const Vec3 wm = normalize(o + i);
-        pdf += ps * ggx_.pdf_visible(o, wm) / (4 * dot(o, wm));
+    if (l.d > 0 && same_side) pdf += l.d * i.z * kInvPi;
+    if (l.p > 0 && same_side)
+        pdf += l.p * (phong_n_ + 1) / (2 * kPi) * phong_pow(phong_cos(o, i), phong_n_);
+    double p;
+    if (same_side && ((l.s > 0 && !spec_delta_) || (l.gr > 0 && !trans_delta_))) {
+        reflection_eval(ggx_, o, i, &p);
+        if (!spec_delta_) pdf += l.s * p;
+        if (!trans_delta_) pdf += l.gr * p;
     }
-    if (pt > 0 && !trans_delta_) {
-        double p;
-        dielectric_eval(ggx_, eta_, wo, wi, &p);
-        pdf += pt * p;
+    if (l.gt > 0 && !trans_delta_ && o.z > 0 && i.z < 0) {
+        refraction_eval(ggx_, wo.z > 0 ? eta_ : 1.0 / eta_, o, i, &p);
+        pdf += l.gt * p;
     }
     return pdf / sum;
 }
 
 bool Bsdf::sample(const Vec3& wo, double u_lobe, double u1, double u2, BsdfSample* out) const {
     if (wo.z == 0) return false;
-    double pd, ps, pt, pp;
-    lobe_probs(wo, &pd, &ps, &pt, &pp);
-    const double sum = pd + ps + pt + pp;
+    const LobeProbs l = lobe_probs(wo);
+    const double sum = l.sum();
     if (!(sum > 0)) return false;
     const double s = wo.z < 0 ? -1.0 : 1.0;
     const Vec3 o(wo.x, wo.y, wo.z * s);
-    double u = u_lobe * sum;
-    Vec3 wi;
-    if (u < pd) {
-        const Vec3 i = cosine_hemisphere(u1, u2);
-        wi = Vec3(i.x, i.y, i.z * s);
-    } else if (u >= pd + ps + pt) {
+    const double u = u_lobe * sum;
+    auto delta = [&](const Vec3& wi_local, const Color& weight, double p) {
+        out->wi = Vec3(wi_local.x, wi_local.y, wi_local.z * s);
+        out->weight = weight / p;
+        out->pdf = p;
+        out->delta = true;
+        return true;
+    };
+    Vec3 i;
+    if (u < l.d) {
+        i = cosine_hemisphere(u1, u2);
+    } else if (u < l.d + l.s) {
+        if (spec_delta_) return delta(Vec3(-o.x, -o.y, o.z), spec_fresnel(o.z) * w_spec_, l.s / sum);
+        i = reflect(o, ggx_.sample_visible(o, u1, u2));
+        if (i.z <= 0) return false;
+    } else if (u < l.d + l.s + l.gr) {
+        if (trans_delta_)
+            return delta(Vec3(-o.x, -o.y, o.z), Color(w_trans_ * glass_fresnel(wo)), l.gr / sum);
+        i = reflect(o, ggx_.sample_visible(o, u1, u2));
+        if (i.z <= 0) return false;
+    } else if (u < l.d + l.s + l.gr + l.gt) {
+        const double etap = wo.z > 0 ? eta_ : 1.0 / eta_;
+        const double share = refraction_share(glass_fresnel(wo));
+        if (std::fabs(eta_ - 1) < kIndexMatched)  // straight on: an IOR 1 object leaves no trace
+            return delta(-o, trans_tint_ * (w_trans_ * share), l.gt / sum);
+        const Vec3 wm = trans_delta_ ? Vec3(0, 0, 1) : ggx_.sample_visible(o, u1, u2);
+        double unused;
+        if (dot(o, wm) <= 0) return false;
+        if (!refract(o, wm, etap, &unused, &i) || i.z >= 0) return false;
+        if (trans_delta_) return delta(i, trans_tint_ * (w_trans_ * share), l.gt / sum);
+    } else {
         // Phong lobe: cos^n around the mirror direction.
         const Vec3 r(-o.x, -o.y, o.z);
         const double cos_a = std::pow(u1, 1.0 / (phong_n_ + 1));
         const double sin_a = std::sqrt(std::max(0.0, 1 - cos_a * cos_a));
         const double phi = 2 * kPi * u2;
         const Frame fr = Frame::from_normal(r);
-        const Vec3 i = fr.to_world(Vec3(sin_a * std::cos(phi), sin_a * std::sin(phi), cos_a));
+        i = fr.to_world(Vec3(sin_a * std::cos(phi), sin_a * std::sin(phi), cos_a));
         if (i.z <= 0) return false;
-        wi = Vec3(i.x, i.y, i.z * s);
-    } else if (u < pd + ps) {
-        if (spec_delta_) {
-            const double p = ps / sum;
-            out->wi = Vec3(-wo.x, -wo.y, wo.z);
-            out->weight = spec_fresnel(o.z) * (w_spec_ / p);
-            out->pdf = p;
-            out->delta = true;
-            return true;
-        }
-        const Vec3 wm = ggx_.sample_visible(o, u1, u2);
-        const Vec3 i = reflect(o, wm);
-        if (i.z <= 0) return false;
-        wi = Vec3(i.x, i.y, i.z * s);
-    } else {
-        // Reflect or refract by the Fresnel term, reusing the rest of u_lobe.
-        const double uc = std::clamp((u - pd - ps) / pt, 0.0, 1.0);
-        const Vec3 wm = trans_delta_ ? Vec3(0, 0, 1) : ggx_.sample_visible(wo, u1, u2);
-        const bool matched = std::fabs(eta_ - 1) < kIndexMatched;
-        const double F = matched ? 0.0 : fresnel_dielectric(dot(wo, wm), eta_);
-        if (matched) {
-            wi = -wo;  // exactly straight on, so an IOR 1 object leaves no trace
-        } else if (uc < F) {
-            wi = reflect(wo, wm);
-            if (wi.z * wo.z <= 0) return false;
-        } else {
-            double etap;
-            if (!refract(wo, wm, eta_, &etap, &wi)) return false;
-            if (wi.z * wo.z >= 0) return false;
-        }
-        if (trans_delta_) {
-            const double p = pt / sum;
-            out->wi = wi;
-            out->weight = trans_tint_ * (w_trans_ / p);
-            out->pdf = p * (uc < F ? F : 1 - F);
-            out->delta = true;
-            return true;
-        }
     }
+    const Vec3 wi(i.x, i.y, i.z * s);
     const double pdf = this->pdf(wo, wi);
     if (!(pdf > 0)) return false;
     out->wi = wi;

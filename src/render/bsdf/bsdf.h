@@ -4,12 +4,21 @@
 // uses; sample() returns the throughput weight f * |cos wi| / pdf directly, which stays exact
 // for delta lobes. Plain values, no allocation: one is built per hit on the stack.
 //
-// Models: Lambert; the modified Phong BRDF (Lafortune & Willems 1994); a Principled-lite BSDF (scene::Pbr): a Lambert base, a GGX reflection
-// lobe with Schlick Fresnel (F0 = 0.08 * specular for dielectrics, the base color for metals)
-// sampled by visible normals (Heitz 2018), and a rough dielectric (Walter et al. 2007) for
-// transmission, all mixed by metallic and transmission as Blender's Principled BSDF mixes them.
-// Smooth surfaces (roughness below ~0.03, alpha below 1e-3) become delta lobes; so does an
-// index-matched (IOR 1) transmission of any roughness: light passes straight through.
+// Models: Lambert; the modified Phong BRDF (Lafortune & Willems 1994); and Blender 3.4's
+// Principled BSDF as Cycles 3.4 builds it with the GGX distribution (not multiscatter), the
+// lobes added without Fresnel layering (docs/pbr-mapping.md):
+//   diffuse      base (1 - metallic)(1 - transmission) times Burley's diffuse with its
+//                retro-reflection (Principled materials) or Lambert (POV-Ray, other MTL)
+//   reflection   weight 1 - (1 - metallic) transmission; GGX D, separable Smith G1(o) G1(i),
+//                Fresnel cspec0 + (1 - cspec0) FH with cspec0 = 0.08 specular (1 - metallic)
+//                + base metallic and FH the dielectric Fresnel of the IOR that `specular`
+//                implies (2 / (1 - sqrt(0.08 specular)) - 1), normalized to 0 at normal incidence
+//   glass        weight (1 - metallic) transmission, split at the shading normal by the
+//                dielectric Fresnel F(n . wo): F untinted GGX reflection, base (1 - F) GGX
+//                refraction (Walter et al. 2007), both without a per-microfacet Fresnel
+// GGX lobes are sampled by visible normals (Heitz 2018). Smooth surfaces (roughness below
+// ~0.03, alpha below 1e-3) become delta lobes; so does an index-matched (IOR 1) transmission
+// of any roughness: light passes straight through.
 #pragma once
 
 #include "core/math.h"
@@ -29,12 +38,17 @@ struct Frame {
     Vec3 to_world(const Vec3& v) const { return s * v.x + t * v.y + n * v.z; }
 };
 
+// The diffuse lobe of the Principled model: Blender's Principled BSDF uses Burley's (Disney)
+// diffuse with retro-reflection; POV-Ray's diffuse and Blender's Diffuse BSDF are Lambert.
+enum class DiffuseModel { Lambert, Burley };
+
 struct PrincipledParams {
     Color base{0.8, 0.8, 0.8};
+    DiffuseModel diffuse_model = DiffuseModel::Burley;
     double metallic = 0;
     double roughness = 0.5;
-    double specular = 0.5;  // dielectric F0 = 0.08 * specular
-    double ior = 1.45;
+    double specular = 0.5;  // dielectric F0 = 0.08 * specular (reflection lobe only)
+    double ior = 1.45;  // of the transmission (glass) lobe
     double transmission = 0;
 };
 
@@ -55,7 +69,8 @@ struct Ggx {
     double d(const Vec3& wm) const;
     double lambda(const Vec3& w) const;
     double g1(const Vec3& w) const { return 1.0 / (1.0 + lambda(w)); }
-    double g(const Vec3& wo, const Vec3& wi) const { return 1.0 / (1.0 + lambda(wo) + lambda(wi)); }
+    // Separable Smith masking-shadowing, as Cycles 3.4 uses (not the height-correlated form).
+    double g(const Vec3& wo, const Vec3& wi) const { return g1(wo) * g1(wi); }
     // Density of visible normals seen from w (integrates to 1 over wm).
     double pdf_visible(const Vec3& w, const Vec3& wm) const;
     // Visible-normal sample (Heitz 2018) for w on either side; returns wm with wm.z > 0.
@@ -82,16 +97,28 @@ public:
     }
 
 private:
-    // Lobe selection probabilities for wo (up to normalization).
-    void lobe_probs(const Vec3& wo, double* pd, double* ps, double* pt, double* pp) const;
+    // Lobe selection probabilities for wo (up to normalization): diffuse, reflection, glass
+    // reflection, glass refraction, Phong.
+    struct LobeProbs {
+        double d = 0, s = 0, gr = 0, gt = 0, p = 0;
+        double sum() const { return d + s + gr + gt + p; }
+    };
+    LobeProbs lobe_probs(const Vec3& wo) const;
+    // Cycles' interpolated Fresnel of the reflection lobe at cos(wi, wm).
     Color spec_fresnel(double cos_h) const;
+    // The glass lobe's split at the shading normal: F(n . wo) (wo as given, either side).
+    double glass_fresnel(const Vec3& wo) const;
+    double refraction_share(double F) const;
+    double diffuse_shape(const Vec3& o, const Vec3& i) const;  // f * pi / albedo, same side
 
-    Color diffuse_color_;  // albedo of the Lambert lobe (already weighted)
-    Color spec_color_;     // F0 of the reflection lobe
-    Color trans_tint_;     // tint of the dielectric lobe
+    Color diffuse_color_;  // albedo of the diffuse lobe (already weighted)
+    bool burley_ = false;  // Burley's diffuse instead of Lambert
+    double roughness_ = 0;  // Principled roughness (Burley's retro-reflection)
+    Color spec_color_;     // cspec0 of the reflection lobe
+    double spec_ior_ = 1.5;  // IOR implied by `specular`
+    double spec_f0_ = 0.04;  // its Fresnel at normal incidence
+    Color trans_tint_;     // tint of the refraction lobe (the base color)
     double w_diffuse_ = 0, w_spec_ = 0, w_trans_ = 0;
-    double diffuse_fresnel_f0_ = 0;  // the dielectric F0 the diffuse lobe gives way to
-    bool diffuse_fresnel_ = false;   // whether the diffuse lobe gives way to the reflection
     Color phong_ks_;  // modified Phong glossy lobe (w_phong_ = 1 when present)
     double phong_n_ = 0;
     double w_phong_ = 0;

@@ -19,6 +19,7 @@ SurfacePbr pov_to_pbr(const scene::Finish& finish, const scene::Interior& interi
                       const scene::ColorFT& pigment) {
     SurfacePbr s;
     PrincipledParams& p = s.bsdf;
+    p.diffuse_model = DiffuseModel::Lambert;  // POV-Ray's diffuse is Lambert
     p.base = Color(std::clamp(pigment.rgb.r, 0.0, 1.0), std::clamp(pigment.rgb.g, 0.0, 1.0),
                    std::clamp(pigment.rgb.b, 0.0, 1.0));
     const double refl = std::clamp(finish.reflection.max.max(), 0.0, 1.0);
@@ -65,6 +66,9 @@ SurfacePbr pbr_surface(const scene::Pbr& pbr, const Color& base) {
     SurfacePbr s;
     PrincipledParams& p = s.bsdf;
     p.base = base;
+    // Blender's Principled BSDF has Burley's diffuse; other MTL materials (Blender's Diffuse
+    // BSDF, other exporters) a Lambert one.
+    p.diffuse_model = pbr.principled ? DiffuseModel::Burley : DiffuseModel::Lambert;
     p.metallic = pbr.metallic;
     p.roughness = pbr.roughness;
     p.specular = pbr.specular;

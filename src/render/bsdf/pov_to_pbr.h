@@ -16,7 +16,8 @@ struct SurfacePbr {
     double alpha = 1;   // coverage; 1 - alpha of the rays pass straight through
 };
 
-// POV-Ray finish + interior + the pigment color at the hit -> Principled-lite.
+// POV-Ray finish + interior + the pigment color at the hit -> the Principled BSDF with a Lambert
+// diffuse (docs/pbr-mapping.md).
 SurfacePbr pov_to_pbr(const scene::Finish& finish, const scene::Interior& interior,
                       const scene::ColorFT& pigment);
 
