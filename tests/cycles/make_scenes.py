@@ -33,10 +33,10 @@ import os
 import sys
 
 import bpy
+from mathutils import Vector
 
 W, H = 128, 96
 MAX_DEPTH = 8  # glint --max-depth; Cycles gets MAX_DEPTH - 1 bounces
-SCENES = ("cornell", "spheres", "hdr")
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
@@ -154,7 +154,6 @@ def add_camera(location, look_at, lens_mm=35.0):
     ob = bpy.data.objects.new("Camera", cam)
     bpy.context.scene.collection.objects.link(ob)
     ob.location = location
-    from mathutils import Vector
     d = Vector(look_at) - Vector(location)
     ob.rotation_euler = d.to_track_quat("-Z", "Y").to_euler()
     bpy.context.scene.camera = ob
@@ -424,8 +423,8 @@ def camera_pov():
     hfov = math.degrees(2.0 * math.atan(1.0 / proj[0][0]))
     m = cam.matrix_world
     loc = m.translation
-    forward = (m.to_3x3() @ __import__("mathutils").Vector((0, 0, -1))).normalized()
-    up = (m.to_3x3() @ __import__("mathutils").Vector((0, 1, 0))).normalized()
+    forward = (m.to_3x3() @ Vector((0, 0, -1))).normalized()
+    up = (m.to_3x3() @ Vector((0, 1, 0))).normalized()
     look = loc + forward
     return ("camera {\n  perspective\n  location %s\n  sky %s\n  right x*%d/%d\n  up y\n"
             "  angle %.6f\n  look_at %s\n}\n" % (fmt(to_pov(loc)), fmt(to_pov(up)), W, H, hfov,

@@ -26,7 +26,8 @@ def main(argv):
     ap.add_argument("--scene", required=True, choices=sorted(make_scenes.BUILDERS))
     ap.add_argument("--spp", type=int, required=True)
     ap.add_argument("--out", required=True)
-    ap.add_argument("--seed", type=int, default=1)
+    # Not one of the references' seeds (1..16), so the peer's error against them is honest.
+    ap.add_argument("--seed", type=int, default=101)
     ap.add_argument("--threads", type=int, default=0)
     args = ap.parse_args(argv)
     make_scenes.build(args.scene)
