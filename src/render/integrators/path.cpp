@@ -8,8 +8,9 @@
 namespace glint::render {
 namespace {
 
-// Sampler pairs used per path vertex: (lobe, roulette), BSDF direction, (alpha, light pick),
-// then one per light slot.
+// Sampler pairs used per bounce: (lobe, roulette), BSDF direction, (unused, light pick), then
+// one per light slot. Alpha coins come from pairs after all the bounces' ones, one per test, so
+// a see-through surface does not shift the random numbers of the bounces after it.
 constexpr uint32_t kPairsPerVertex = 3 + PathLights::kSampleAllMax;
 // Stochastic-alpha pass-throughs allowed on top of max_depth bounces.
 constexpr int kMaxAlphaSkips = 64;
@@ -56,7 +57,8 @@ PathIntegrator::PathIntegrator(const scene::Scene& scene, const Geometry& geomet
                 // light-sampled and shadow rays need not look for holes.
                 const SurfacePbr c = pbr_surface(p, p.base_color);
                 if (!maps.emission && !maps.alpha) emission_[i] = c.emission;
-                has_alpha_[i] = maps.alpha || c.alpha < 1;
+                has_alpha_[i] =
+                    maps.alpha || c.alpha < 1 || (c.bsdf.ior == 1.0 && c.bsdf.transmission > 0);
             } else {
                 constant_[i] = pbr_surface(p, p.base_color);
             }
@@ -66,8 +68,9 @@ PathIntegrator::PathIntegrator(const scene::Scene& scene, const Geometry& geomet
                 constant_[i] = pov_to_pbr(t.finish, m.interior, t.pigment.color);
         }
         if (constant_[i]) {
-            emission_[i] = constant_[i]->emission;
-            has_alpha_[i] = constant_[i]->alpha < 1;
+            const SurfacePbr& c = *constant_[i];
+            emission_[i] = c.emission;
+            has_alpha_[i] = c.alpha < 1 || (c.bsdf.ior == 1.0 && c.bsdf.transmission > 0);
         }
         any_alpha_ = any_alpha_ || has_alpha_[i];
     }
@@ -113,8 +116,8 @@ Color PathIntegrator::environment(const Vec3& dir) const {
     return col + scene_.background.rgb * fil;
 }
 
-double PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dist,
-                                     uint64_t* rays) const {
+Color PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dist,
+                                    uint64_t* rays) const {
     // Stop short of the light sample so an emitter does not shadow itself.
     const double tmax = std::isinf(dist) ? kInfinity : dist * (1 - 1e-5);
     Ray r;
@@ -122,17 +125,24 @@ double PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double di
     r.dir = dir;
     r.tmax = tmax;
     ++*rays;
-    if (!any_alpha_) return geometry_.occluded(r) ? 0.0 : 1.0;
-    double t = 1;
+    if (!any_alpha_) return geometry_.occluded(r) ? Color() : Color(1, 1, 1);
+    Color t(1, 1, 1);
     double travelled = 0;
     for (int i = 0; i < kMaxAlphaSkips; ++i) {
         Hit h;
         if (i > 0) ++*rays;
         if (!geometry_.intersect(r, &h)) return t;
         if (!(h.flags & kNoShadow)) {
-            if (h.material < 0 || !has_alpha_[h.material]) return 0;
-            t *= 1 - surface(h).alpha;
-            if (!(t > 0)) return 0;
+            if (h.material < 0 || !has_alpha_[h.material]) return Color();
+            // What passes: the uncovered fraction, and through an index-matched (IOR 1)
+            // transmissive surface the transmitted part, tinted; refraction at any other IOR
+            // bends the light, which only BSDF sampling can follow.
+            const SurfacePbr s = surface(h);
+            Color pass(1 - s.alpha);
+            if (s.bsdf.ior == 1.0 && s.bsdf.transmission > 0)
+                pass += s.bsdf.base * (s.alpha * s.bsdf.transmission * (1 - s.bsdf.metallic));
+            t *= pass;
+            if (t.is_black()) return Color();
         }
         const Vec3 o = offset_ray_origin(h.p, h.p_error, h.ng, dir);
         travelled += length(o - r.origin);
@@ -140,7 +150,7 @@ double PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double di
         r.tmax = std::isinf(tmax) ? kInfinity : tmax - travelled;
         if (!(r.tmax > 0)) return t;
     }
-    return 0;
+    return Color();
 }
 
 Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
@@ -158,8 +168,12 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
     const PathLights& lights = *lights_;
     const int max_vertices = settings_.max_depth + 1 + kMaxAlphaSkips;
     if (first) *first = FirstHit{};
+    const uint32_t alpha_base = 1 + static_cast<uint32_t>(max_vertices + 1) * kPairsPerVertex;
+    uint32_t alpha_tests = 0;
+    uint32_t scatterings = 0;  // BSDF samples so far (bounces and pass-throughs)
+    int skips = 0;             // alpha holes and pass-throughs: they do not count as bounces
     for (int v = 0; v < max_vertices; ++v) {
-        const uint32_t base = 1 + static_cast<uint32_t>(v) * kPairsPerVertex;
+        const uint32_t base = 1 + scatterings * kPairsPerVertex;
         Hit hit;
         ++rays;
         if (!geometry_.intersect(r, &hit)) {
@@ -172,7 +186,8 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         }
         const SurfacePbr s = surface(hit);
         const Sample2 ua = sampler.get2(base + 2);
-        if (s.alpha < 1 && ua.u >= s.alpha) {
+        if (s.alpha < 1 && sampler.get2(alpha_base + alpha_tests++).u >= s.alpha) {
+            if (++skips > kMaxAlphaSkips) break;
             const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
             seg_dist += length(o - r.origin);
             r.origin = o;
@@ -205,16 +220,14 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             auto light = [&](int slot, Sample2 u) {
                 PathLightSample ls;
                 if (!lights.sample(slot, hit.p, u, &ls)) return;
-                // An opaque surface is lit only from the side the eye is on, whatever an
-                // interpolated shading normal says (no light leaks through smooth meshes).
-                if (s.bsdf.transmission <= 0 && dot(ls.wi, hit.ng) * dot(r.dir, hit.ng) >= 0)
-                    return;
+                // Which side a light is on is the shading normal's call, as in Cycles: the
+                // BSDF, evaluated in the shading frame, says whether it reflects or transmits.
                 const Vec3 wi = frame.to_local(ls.wi);
                 const Color f = bsdf.eval(wo, wi);
                 if (f.is_black()) return;
-                const double tr = transmittance(hit, ls.wi, ls.dist, &rays);
-                if (!(tr > 0)) return;
-                Color c = f * ls.value * (std::fabs(wi.z) * tr);
+                const Color tr = transmittance(hit, ls.wi, ls.dist, &rays);
+                if (tr.is_black()) return;
+                Color c = f * ls.value * tr * std::fabs(wi.z);
                 if (ls.environment) c *= environment(ls.wi);
                 if (ls.pdf > 0) c *= power_heuristic(ls.pdf, bsdf.pdf(wo, wi));
                 L += beta * c;
@@ -233,7 +246,20 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         const Sample2 ud = sampler.get2(base + 1);
         BsdfSample bs;
         if (!bsdf.sample(wo, ul.u, ud.u, ud.v, &bs)) break;
+        ++scatterings;
         beta *= bs.weight;
+        if (bs.delta && s.bsdf.ior == 1.0 && bs.wi.x == -wo.x && bs.wi.y == -wo.y &&
+            bs.wi.z == -wo.z) {
+            // Straight through an index-matched surface: like an alpha hole, not a bounce.
+            // Shadow rays pass it too (transmittance), so what lies beyond keeps the MIS
+            // weights of the last real bounce instead of being counted twice.
+            if (++skips > kMaxAlphaSkips || beta.is_black() || !finite(beta)) break;
+            const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
+            seg_dist += length(o - r.origin);
+            r.origin = o;
+            r.tmax = kInfinity;
+            continue;
+        }
         specular = bs.delta;
         prev_pdf = bs.pdf;
         ++depth;
@@ -244,6 +270,11 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         }
         if (beta.is_black() || !finite(beta)) break;
         const Vec3 wi = normalize(frame.to_world(bs.wi));
+        // A reflection the shading normal allows but that points into the surface (or a
+        // refraction that stays outside) ends the path, as in Cycles: following it would
+        // leak light through the geometry.
+        const bool reflected = bs.wi.z * wo.z > 0;
+        if ((dot(wi, hit.ng) * dot(r.dir, hit.ng) < 0) != reflected) break;
         r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, wi);
         r.dir = wi;
         r.tmax = kInfinity;

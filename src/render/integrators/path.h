@@ -49,8 +49,9 @@ private:
     // Radiance from the environment along a direction: the background with the sky_sphere's
     // layers over it (POV-Ray 3.7's sky).
     Color environment(const Vec3& dir) const;
-    // Fraction of light passing from `origin` along `dir` for `dist` (alpha-aware shadows).
-    double transmittance(const Hit& from, const Vec3& dir, double dist, uint64_t* rays) const;
+    // Light passing from `from` along `dir` for `dist`: through alpha holes and index-matched
+    // (IOR 1) transmissive surfaces, tinted; any other surface blocks it.
+    Color transmittance(const Hit& from, const Vec3& dir, double dist, uint64_t* rays) const;
 
     const scene::Scene& scene_;
     const Geometry& geometry_;
@@ -58,7 +59,7 @@ private:
     PathSettings settings_;
     std::vector<std::optional<SurfacePbr>> constant_;  // per material, where the hit can't change it
     std::vector<Color> emission_;                      // per material, where constant
-    std::vector<char> has_alpha_;                      // per material: alpha may be < 1
+    std::vector<char> has_alpha_;  // per material: shadow rays may pass (alpha < 1, or IOR 1)
     // OBJ/MTL image maps per material (empty where none), in a cache of their own that is
     // opened only when some material has one.
     std::unique_ptr<TextureCache> pbr_textures_;
