@@ -88,6 +88,23 @@ Estimate by_uniform(const Bsdf& b, const Vec3& wo, int n, uint32_t seed) {
     return {m, std::sqrt(std::max(0.0, s2 / n - m * m) / n)};
 }
 
+TEST(PathSampler, Sobol1TablesEqualTheDirectionNumbers) {
+    // The byte tables must reproduce the 32 direction numbers' XOR for any index.
+    auto reference = [](uint32_t i) {
+        uint32_t r = 0;
+        for (uint32_t v = 1U << 31; i != 0; i >>= 1, v ^= v >> 1)
+            if (i & 1U) r ^= v;
+        return r;
+    };
+    uint32_t x = 12345;
+    for (int k = 0; k < 100000; ++k) {
+        x = hash_u32(x + static_cast<uint32_t>(k));
+        ASSERT_EQ(sobol1(x), reference(x)) << x;
+        ASSERT_EQ(sobol1(static_cast<uint32_t>(k)), reference(static_cast<uint32_t>(k))) << k;
+    }
+    EXPECT_EQ(sobol1(0xffffffffU), reference(0xffffffffU));
+}
+
 TEST(PathSampler, DeterministicAndInUnitInterval) {
     PixelSampler a(3, 4, 5, 6), b(3, 4, 5, 6), c(3, 4, 6, 6);
     for (uint32_t d = 0; d < 40; ++d) {

@@ -50,11 +50,28 @@ inline uint32_t owen_scramble(uint32_t x, uint32_t seed) {
 
 // Sobol dimension 0 (van der Corput) and 1, as 32-bit fixed-point fractions.
 inline uint32_t sobol0(uint32_t i) { return reverse_bits32(i); }
+// Dimension 1 is linear over GF(2) in the bits of i, so it is the XOR of four table lookups,
+// one per byte of i (the tables hold the images of every byte value at each byte position):
+// a constant number of operations instead of a loop over 32 direction numbers.
+struct Sobol1Tables {
+    uint32_t t[4][256];
+    constexpr Sobol1Tables() : t() {
+        uint32_t dir[32] = {};
+        uint32_t v = 1U << 31;
+        for (int k = 0; k < 32; ++k, v ^= v >> 1) dir[k] = v;
+        for (int b = 0; b < 4; ++b)
+            for (uint32_t x = 0; x < 256; ++x) {
+                uint32_t r = 0;
+                for (int k = 0; k < 8; ++k)
+                    if (x & (1U << k)) r ^= dir[b * 8 + k];
+                t[b][x] = r;
+            }
+    }
+};
+inline constexpr Sobol1Tables kSobol1{};
 inline uint32_t sobol1(uint32_t i) {
-    uint32_t r = 0;
-    for (uint32_t v = 1U << 31; i != 0; i >>= 1, v ^= v >> 1)
-        if (i & 1U) r ^= v;
-    return r;
+    return kSobol1.t[0][i & 0xffU] ^ kSobol1.t[1][(i >> 8) & 0xffU] ^
+           kSobol1.t[2][(i >> 16) & 0xffU] ^ kSobol1.t[3][i >> 24];
 }
 
 // Largest double below 1, so samples stay in [0, 1).
