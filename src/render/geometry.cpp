@@ -1,9 +1,11 @@
-// build_geometry(): every top-level object becomes an ObjectNode; objects with finite bounds go
-// into a SAH BVH, unbounded ones (planes, inverse objects) are tested one by one.
+// build_geometry(): every top-level object (plain unions: each of their parts) becomes an
+// ObjectNode; objects with finite bounds go into a SAH BVH, unbounded ones (planes, inverse
+// objects) are tested one by one.
 #include "render/geometry.h"
 
 #include <climits>
 #include <cmath>
+#include <variant>
 #include <vector>
 
 #include "render/accel/bvh.h"
@@ -93,17 +95,57 @@ private:
     Bounds3 bounds_;
 };
 
+// A plain union (no inverse, clipping or bounding) is only a group: its parts can join the
+// scene's BVH directly, each with the union's transform, material and flags folded in, so a
+// ray pays no nested traversal or transform for it (an OBJ placed by obj_file is such a
+// union). Results are unchanged: the nearest part is found either way, ties still go to the
+// earlier part, and hits keep the union's scene object index.
+bool is_plain_union(const scene::Object& o) {
+    const auto* csg = std::get_if<scene::Csg>(&o.shape);
+    return csg && csg->op == scene::CsgOp::Union && !o.inverse && o.clipped_by.empty() &&
+           o.bounded_by.empty();
+}
+
+void flatten(const scene::Object& o, std::vector<scene::Object>* out) {
+    if (!is_plain_union(o)) {
+        out->push_back(o);
+        return;
+    }
+    for (const scene::Object& child : std::get<scene::Csg>(o.shape).children) {
+        scene::Object part = child;
+        part.transform = child.transform.then(o.transform);
+        for (auto* extra : {&part.bounded_by, &part.clipped_by})
+            for (scene::Object& e : *extra) e.transform = e.transform.then(o.transform);
+        if (part.material < 0) part.material = o.material;
+        part.no_shadow = part.no_shadow || o.no_shadow;
+        part.no_image = part.no_image || o.no_image;
+        part.no_reflection = part.no_reflection || o.no_reflection;
+        part.double_illuminate = part.double_illuminate || o.double_illuminate;
+        flatten(part, out);
+    }
+}
+
 }  // namespace
 
 std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene, const scene::Features&,
                                          Diagnostics& diag) {
     std::vector<std::unique_ptr<ObjectNode>> nodes;
     std::vector<int> ids;
-    for (size_t i = 0; i < scene.objects.size(); ++i) {
-        auto node = ObjectNode::build(scene.objects[i], scene, diag);
-        if (!node || node->bounds().empty()) continue;
+    auto add = [&](const scene::Object& o, int id) {
+        auto node = ObjectNode::build(o, scene, diag);
+        if (!node || node->bounds().empty()) return;
         nodes.push_back(std::move(node));
-        ids.push_back(static_cast<int>(i));
+        ids.push_back(id);
+    };
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const scene::Object& o = scene.objects[i];
+        if (!is_plain_union(o)) {
+            add(o, static_cast<int>(i));
+            continue;
+        }
+        std::vector<scene::Object> parts;
+        flatten(o, &parts);
+        for (const scene::Object& part : parts) add(part, static_cast<int>(i));
     }
     return std::make_unique<SceneGeometry>(std::move(nodes), std::move(ids));
 }
