@@ -13,6 +13,7 @@
 #include <cctype>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <cstdio>
@@ -155,7 +156,8 @@ CLI::App* add_report_command(CLI::App& app, ReportArgs& args) {
         "seconds, relmse, rmse, ssim), DIR/report.png (log-log relMSE against seconds) and "
         "DIR/report.txt. glint's seconds are the wall time of the in-process render (scene "
         "preparation and path tracing) plus the scene's parse time, measured once; a peer's "
-        "seconds are its whole process. With --peer, two ratios are read off the curves "
+        "seconds are its whole process, or, when its command has {time}, the seconds it "
+        "writes to that file (its own render time, start-up left out). With --peer, two ratios are read off the curves "
         "(log-log interpolation between steps): equal-error = the peer's time to reach "
         "glint's final relMSE / glint's final time; equal-time = the peer's relMSE at glint's "
         "final time / glint's final relMSE (above 1: glint is ahead)");
@@ -176,8 +178,9 @@ CLI::App* add_report_command(CLI::App& app, ReportArgs& args) {
         ->check(CLI::Range(0, 4096));
     cmd->add_option("--peer", args.peer,
                     "A peer renderer's shell command, run once per --peer-steps value with "
-                    "{spp} replaced by the value and {out} by the EXR it must write (in DIR); "
-                    "its output goes to DIR/<peer-name>-<spp>.log");
+                    "{spp} replaced by the value, {out} by the EXR it must write (in DIR) and "
+                    "{time} (optional) by a file it writes its render seconds to; its output "
+                    "goes to DIR/<peer-name>-<spp>.log");
     cmd->add_option("--peer-steps", args.peer_steps,
                     "Values for the peer's {spp}, a comma list (default: --spp-steps)");
     cmd->add_option("--peer-name", args.peer_name, "The peer's name in the CSV and the legend")
@@ -259,12 +262,17 @@ int run_report(const ReportArgs& args) {
         if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
         const fs::path out = dir / (peer_file + "-" + std::to_string(spp) + ".exr");
         const fs::path log = dir / (peer_file + "-" + std::to_string(spp) + ".log");
+        const fs::path time_file = dir / (peer_file + "-" + std::to_string(spp) + ".seconds");
         fs::remove(out, ec);
+        fs::remove(time_file, ec);
+        const bool own_time = args.peer.find("{time}") != std::string::npos;
         const std::string command = replace_all(
-            replace_all(args.peer, "{spp}", std::to_string(spp)), "{out}", shell_quote(out.string()));
+            replace_all(replace_all(args.peer, "{spp}", std::to_string(spp)), "{out}",
+                        shell_quote(out.string())),
+            "{time}", shell_quote(time_file.string()));
         Clock::time_point t = Clock::now();
         const int status = run_shell(command, log.string());
-        const double seconds = seconds_since(t);
+        double seconds = seconds_since(t);
         if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
         if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
             const std::string how = WIFEXITED(status)
@@ -278,6 +286,18 @@ int run_report(const ReportArgs& args) {
             throw Error(ErrorKind::Render, {},
                         "peer command did not write " + out.string() + ": " + command +
                             " (its output: " + log.string() + ")");
+        if (own_time) {
+            // The peer measured its own render (start-up and scene loading left out, as for
+            // glint's in-process timing) and wrote the seconds to {time}.
+            std::ifstream in(time_file);
+            double own = 0;
+            if (!(in >> own) || !(own > 0) || !std::isfinite(own))
+                throw Error(ErrorKind::Render, {},
+                            "peer command did not write its render seconds to " +
+                                time_file.string() + ": " + command + " (its output: " +
+                                log.string() + ")");
+            seconds = own;
+        }
         const io::LinearImage image = io::read_linear(out.string());
         if (image.width != reference.width || image.height != reference.height)
             throw Error(ErrorKind::Render, {},

@@ -328,6 +328,27 @@ TEST_F(ReportCli, WritesCsvPlotAndSummaryWithAPeer) {
     EXPECT_TRUE(fs::exists(dir_ / "rep" / "glint-4.exr"));
 }
 
+TEST_F(ReportCli, PeerReportsItsOwnRenderSecondsThroughTimeFile) {
+    // With {time} the peer's seconds are what it writes there, not its whole process (which
+    // includes a 0.2 s sleep here); a peer that does not write the file is a clear error.
+    make_reference();
+    RunResult r = run("report '" + path("scene.pov") + "' --reference '" + path("ref.exr") +
+                      "' --spp-steps 1 --threads 1 --out '" + path("rep") + "' --peer \"cp '" +
+                      path("ref.exr") + "' {out}; sleep 0.2; echo {spp}.25 > {time}\"" +
+                      " --peer-steps 1,3 --peer-name copy");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto rows = read_csv(slurp(dir_ / "rep" / "report.csv"));
+    ASSERT_EQ(rows.size(), 4u);
+    EXPECT_EQ(std::stod(rows[2][2]), 1.25);
+    EXPECT_EQ(std::stod(rows[3][2]), 3.25);
+
+    RunResult bad = run("report '" + path("scene.pov") + "' --reference '" + path("ref.exr") +
+                        "' --spp-steps 1 --threads 1 --out '" + path("rep2") + "' --peer \"cp '" +
+                        path("ref.exr") + "' {out}; true {time}\"");
+    EXPECT_EQ(bad.exit_code, 4) << bad.err;
+    EXPECT_NE(bad.err.find("did not write its render seconds"), std::string::npos) << bad.err;
+}
+
 TEST_F(ReportCli, FailingPeerCommandIsAClearError) {
     make_reference();
     RunResult r = run("report '" + path("scene.pov") + "' --reference '" + path("ref.exr") +
