@@ -351,7 +351,11 @@ int run_report(const ReportArgs& args) {
            " s, once) + wall time of the in-process render (preparation and path tracing); "
            "writing files is not counted.\n";
     if (!args.peer.empty())
-        txt += args.peer_name + " seconds: wall time of the whole command: " + args.peer + "\n";
+        txt += args.peer_name +
+               (args.peer.find("{time}") != std::string::npos
+                    ? " seconds: the render seconds the command wrote to {time}: "
+                    : " seconds: wall time of the whole command: ") +
+               args.peer + "\n";
     txt += "relmse = mean((x-r)^2/(r^2+0.01)), rmse on linear RGB, ssim of the sRGB 8-bit "
            "lumas.\n\n" + csv;
     if (!peer_results.empty()) {

@@ -264,7 +264,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         prev_pdf = bs.pdf;
         ++depth;
         if (depth >= settings_.rr_start) {
-            const double p = std::min(0.95, beta.max());
+            const double p = std::min(1.0, std::sqrt(beta.max()));
             if (!(ul.v < p)) break;
             beta *= 1.0 / p;
         }
