@@ -384,12 +384,37 @@ TEST(PathPbrMapping, PovFinishesMapAsDocumented) {
     EXPECT_EQ(s.bsdf.base, Color(0.2, 0.4, 0.6));
     EXPECT_EQ(s.bsdf.specular, 0);
     EXPECT_EQ(s.alpha, 1);
-    // Phong highlight: GGX roughness from phong_size, specular 0.5 .. 1.
-    f.phong = 1;
+    // Phong highlight: the modified Phong lobe with ks = phong, n = phong_size, and the
+    // diffuse albedo held at 1 - ks; no GGX lobe.
+    f.phong = 0.4;
     f.phong_size = 40;
+    s = pov_to_pbr(f, in, scene::ColorFT(Color(1, 0.5, 0.2)));
+    EXPECT_EQ(s.bsdf.phong_ks, Color(0.4, 0.4, 0.4));
+    EXPECT_EQ(s.bsdf.phong_exponent, 40);
+    EXPECT_EQ(s.bsdf.specular, 0);
+    EXPECT_NEAR(s.bsdf.base.r, 0.6, 1e-15);
+    EXPECT_EQ(s.bsdf.base.g, 0.5);
+    {
+        // The BSDF it builds is exactly Bsdf::phong(kd, ks, n).
+        const Bsdf a = Bsdf::principled(s.bsdf);
+        const Bsdf b = Bsdf::phong(s.bsdf.base, s.bsdf.phong_ks, 40);
+        const Vec3 wo = normalize(Vec3(0.3, -0.2, 0.9));
+        for (const Vec3& wi : {normalize(Vec3(-0.3, 0.2, 0.9)), normalize(Vec3(0.5, 0.1, 0.4)),
+                               normalize(Vec3(-0.25, 0.2, 0.95))}) {
+            const Color fa = a.eval(wo, wi), fb = b.eval(wo, wi);
+            EXPECT_NEAR(fa.r, fb.r, 1e-12);
+            EXPECT_NEAR(fa.g, fb.g, 1e-12);
+            EXPECT_NEAR(a.pdf(wo, wi), b.pdf(wo, wi), 1e-12);
+        }
+    }
+    // Blinn `specular` with `roughness`: GGX of the same width, specular 0.5 .. 1.
+    f.phong = 0;
+    f.specular = 1;
+    f.roughness = 1.0 / 40;
     s = pov_to_pbr(f, in, scene::ColorFT(Color(1, 1, 1)));
     EXPECT_NEAR(s.bsdf.roughness, std::sqrt(std::sqrt(2.0 / 42.0)), 1e-12);
     EXPECT_EQ(s.bsdf.specular, 1.0);
+    EXPECT_EQ(s.bsdf.phong_ks, Color(0, 0, 0));
     // Metallic reflection: a metal.
     f.reflection.max = Color(0.8, 0.8, 0.8);
     f.reflection.metallic = 1;

@@ -187,6 +187,11 @@ Bsdf Bsdf::principled(const PrincipledParams& p) {
     b.trans_tint_ = p.base;
     b.eta_ = p.ior > 0 ? p.ior : 1.45;
     b.trans_delta_ = b.spec_delta_ || std::fabs(b.eta_ - 1) < kIndexMatched;
+    if (average(p.phong_ks) > 0) {
+        b.phong_ks_ = p.phong_ks;
+        b.phong_n_ = std::max(0.0, p.phong_exponent);
+        b.w_phong_ = 1;
+    }
     return b;
 }
 

@@ -50,6 +50,10 @@ struct PrincipledParams {
     double specular = 0.5;  // dielectric F0 = 0.08 * specular (reflection lobe only)
     double ior = 1.45;  // of the transmission (glass) lobe
     double transmission = 0;
+    // A modified Phong lobe (Lafortune & Willems 1994) added to the others: POV-Ray's `phong`
+    // highlight, which is the same cos^n of the angle to the mirror direction. Off when black.
+    Color phong_ks{0, 0, 0};
+    double phong_exponent = 0;
 };
 
 struct BsdfSample {

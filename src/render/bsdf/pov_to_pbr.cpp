@@ -36,11 +36,29 @@ SurfacePbr pov_to_pbr(const scene::Finish& finish, const scene::Interior& interi
             p.specular = refl / 0.08;  // F0 = reflection
         }
     } else if (highlight > 0) {
-        const double n = finish.phong > 0 ? finish.phong_size
-                                           : (finish.roughness > 0 ? 1.0 / finish.roughness : 1e4);
-        p.roughness = roughness_from_exponent(n);
-        p.specular = 0.5 * (1 + highlight);  // F0 from 0.04 to 0.08
-        p.metallic = tinted ? std::clamp(finish.metallic, 0.0, 1.0) : 0.0;
+        if (finish.specular > 0) {
+            // POV-Ray's `specular` is a Blinn-Phong highlight: a GGX lobe of the same width.
+            const double n = finish.roughness > 0 ? 1.0 / finish.roughness : 1e4;
+            p.roughness = roughness_from_exponent(n);
+            p.specular = 0.5 * (1 + std::clamp(finish.specular, 0.0, 1.0));  // F0 0.04 .. 0.08
+            p.metallic = tinted ? std::clamp(finish.metallic, 0.0, 1.0) : 0.0;
+        } else {
+            p.roughness = 1;
+            p.specular = 0;
+            p.metallic = 0;
+        }
+        if (finish.phong > 0) {
+            // POV-Ray's `phong` is cos^n of the angle to the mirror direction: the modified
+            // Phong lobe itself, its weight the phong amount (tinted by the pigment as far as
+            // `metallic` says), and the diffuse albedo kept at or below 1 - ks per channel so
+            // the surface reflects no more than it receives.
+            const double amount = std::clamp(finish.phong, 0.0, 1.0);
+            const double m = tinted ? std::clamp(finish.metallic, 0.0, 1.0) : 0.0;
+            p.phong_ks = (Color(1.0) * (1 - m) + p.base * m) * amount;
+            p.phong_exponent = std::max(0.0, finish.phong_size);
+            p.base = Color(std::min(p.base.r, 1 - p.phong_ks.r), std::min(p.base.g, 1 - p.phong_ks.g),
+                           std::min(p.base.b, 1 - p.phong_ks.b));
+        }
     } else {
         p.roughness = 1;
         p.specular = 0;  // POV-Ray's plain diffuse surface has no highlight at all
