@@ -38,6 +38,7 @@ bool similarity(const Transform& x, double* scale) {
 
 // Spheres and discs in one object beyond which the object is left to BSDF sampling.
 constexpr size_t kMaxShapesPerObject = 64;
+constexpr size_t kMaxLocatableTris = 64;
 
 // Cone sampling needs the point clearly outside the sphere: a point on it (the sphere's own
 // shading points) sees the inside of the sphere, which area sampling covers.
@@ -53,7 +54,75 @@ Vec3 uniform_sphere(Sample2 u) {
     return Vec3(r * std::cos(phi), r * std::sin(phi), z);
 }
 
+// Angle between unit vectors, accurate near 0 and pi (where acos of the dot product is not).
+double unit_angle(const Vec3& u, const Vec3& v) {
+    if (dot(u, v) < 0) return kPi - 2 * std::asin(std::min(1.0, length(u + v) / 2));
+    return 2 * std::asin(std::min(1.0, length(v - u) / 2));
+}
+
+// Solid angle of the spherical triangle of unit directions a, b, c (Van Oosterom & Strackee
+// 1983: tan(A / 2) = |a . (b x c)| / (1 + a.b + b.c + c.a)).
+double spherical_triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
+    const double num = std::fabs(dot(a, cross(b, c)));
+    const double den = 1 + dot(a, b) + dot(b, c) + dot(c, a);
+    return 2 * std::atan2(num, den);
+}
+
+// A direction uniformly distributed (in solid angle) over the spherical triangle of unit
+// directions a, b, c: Arvo, "Stratified Sampling of Spherical Triangles" (SIGGRAPH 1995).
+// u.u picks the sub-triangle (a, b, c') with area u.u times the whole; u.v the point along
+// the arc from b to c'.
+bool sample_spherical_triangle(const Vec3& a, const Vec3& b, const Vec3& c, Sample2 u, Vec3* w) {
+    Vec3 n_ab = cross(a, b), n_bc = cross(b, c), n_ca = cross(c, a);
+    if (!(length_squared(n_ab) > 0) || !(length_squared(n_bc) > 0) ||
+        !(length_squared(n_ca) > 0))
+        return false;
+    n_ab = normalize(n_ab);
+    n_bc = normalize(n_bc);
+    n_ca = normalize(n_ca);
+    const double alpha = unit_angle(n_ab, -n_ca);
+    const double beta = unit_angle(n_bc, -n_ab);
+    const double gamma = unit_angle(n_ca, -n_bc);
+    const double area = alpha + beta + gamma - kPi;
+    if (!(area > 0)) return false;
+    const double sub = u.u * area;
+    const double s = std::sin(sub - alpha), t = std::cos(sub - alpha);
+    const double cos_a = std::cos(alpha), sin_a = std::sin(alpha);
+    const double k1 = t - cos_a;
+    const double k2 = s + sin_a * dot(a, b);
+    const double den = (k2 * s + k1 * t) * sin_a;
+    if (!(std::fabs(den) > 0)) return false;
+    const double q = std::clamp(((k2 * t - k1 * s) * cos_a - k2) / den, -1.0, 1.0);
+    const Vec3 c_perp = c - a * dot(c, a);
+    if (!(length_squared(c_perp) > 0)) return false;
+    const Vec3 c2 = a * q + normalize(c_perp) * std::sqrt(std::max(0.0, 1 - q * q));
+    const double z = 1 - u.v * (1 - dot(c2, b));
+    const Vec3 perp = c2 - b * dot(c2, b);
+    if (!(length_squared(perp) > 0)) {
+        *w = b;
+        return true;
+    }
+    *w = normalize(b * z + normalize(perp) * std::sqrt(std::max(0.0, 1 - z * z)));
+    return is_finite(*w);
+}
+
 }  // namespace
+
+double PathLights::tri_solid_angle(const Tri& t, const Vec3& p) {
+    if (!t.locatable) return 0;
+    // Cycles 3.4's rule (light.h): the solid angle pays where the triangle's longest edge is
+    // longer than its plane is far; elsewhere sampling by area is about as good and cheaper.
+    const double h = dot(p - t.p0, t.n);
+    const double longest = std::max(
+        {length_squared(t.e1), length_squared(t.e2), length_squared(t.e2 - t.e1)});
+    if (!(longest > h * h)) return 0;
+    const Vec3 a = t.p0 - p, b = a + t.e1, c = a + t.e2;
+    const double la = length(a), lb = length(b), lc = length(c);
+    if (!(la > 0) || !(lb > 0) || !(lc > 0)) return 0;
+    const double area = spherical_triangle_area(a / la, b / lb, c / lc);
+    // Tiny or degenerate spherical triangles: area sampling (the same rule in pdf and sample).
+    return area > 1e-6 && std::isfinite(area) ? area : 0.0;
+}
 
 PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emission,
                        const EnvironmentDistribution::Radiance& environment,
@@ -74,7 +143,12 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
         if (g.shapes.size() > kMaxShapesPerObject) continue;
         object_emitter_[oi] = static_cast<int>(groups_.size());
         groups_.push_back({!g.tris.empty(), static_cast<int>(shapes_.size()),
-                           static_cast<int>(g.shapes.size())});
+                           static_cast<int>(g.shapes.size()), static_cast<int>(tris_.size()),
+                           static_cast<int>(g.tris.size())});
+        // A BSDF hit is matched to its triangle by trying each of the object's: only objects
+        // with few emitting triangles get solid-angle sampling (area sampling needs no match).
+        if (g.tris.size() <= kMaxLocatableTris)
+            for (Tri& t : g.tris) t.locatable = true;
         tris_.insert(tris_.end(), g.tris.begin(), g.tris.end());
         shapes_.insert(shapes_.end(), g.shapes.begin(), g.shapes.end());
     }
@@ -272,6 +346,22 @@ bool PathLights::sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out
                 return true;
             }
             const Tri& t = tris_[i];
+            const double select = select_prob() * t.area * average(t.le) / emitter_total_;
+            if (const double omega = tri_solid_angle(t, p); omega > 0) {
+                const Vec3 a = normalize(t.p0 - p), b = normalize(t.p0 + t.e1 - p),
+                           c = normalize(t.p0 + t.e2 - p);
+                Vec3 w;
+                if (!sample_spherical_triangle(a, b, c, {ur, u.v}, &w)) return false;
+                const double along = dot(w, t.n);
+                const double dist = dot(t.p0 - p, t.n) / along;
+                if (!(dist > 0) || !std::isfinite(dist)) return false;
+                out->wi = w;
+                out->dist = dist;
+                out->pdf = select / omega;
+                if (!(out->pdf > 0) || !std::isfinite(out->pdf)) return false;
+                out->value = t.le / out->pdf;
+                return true;
+            }
             const double su = std::sqrt(ur);
             const double b1 = 1 - su, b2 = u.v * su;
             const Vec3 q = t.p0 + t.e1 * b1 + t.e2 * b2;
@@ -434,6 +524,33 @@ double PathLights::emitter_pdf(int object, const Vec3& from, const Vec3& q, cons
     if (hit_shape >= 0) {
         const Shape& e = shapes_[hit_shape];
         return select_prob() * e.weight / emitter_total_ * shape_pdf(e, from, q);
+    }
+    if (grp.tri_count > 0 && grp.tri_count <= static_cast<int>(kMaxLocatableTris)) {
+        // The triangle the point lies on (nearest its plane among those containing it), and
+        // its pdf as sample() would have used it.
+        int hit_tri = -1;
+        double best = kInfinity;
+        for (int k = grp.first_tri; k < grp.first_tri + grp.tri_count; ++k) {
+            const Tri& t = tris_[k];
+            const Vec3 d = q - t.p0;
+            const double g11 = dot(t.e1, t.e1), g12 = dot(t.e1, t.e2), g22 = dot(t.e2, t.e2);
+            const double det = g11 * g22 - g12 * g12;
+            if (!(det > 0)) continue;
+            const double b1 = dot(d, t.e1), b2 = dot(d, t.e2);
+            const double x = (g22 * b1 - g12 * b2) / det, y = (g11 * b2 - g12 * b1) / det;
+            constexpr double kEdge = 1e-7;
+            if (x < -kEdge || y < -kEdge || x + y > 1 + kEdge) continue;
+            const double off = std::fabs(dot(d, t.n));
+            if (off < best) {
+                best = off;
+                hit_tri = k;
+            }
+        }
+        if (hit_tri >= 0) {
+            const Tri& t = tris_[hit_tri];
+            if (const double omega = tri_solid_angle(t, from); omega > 0)
+                return select_prob() * t.area * average(t.le) / emitter_total_ / omega;
+        }
     }
     const Vec3 d = q - from;
     const double dist2 = length_squared(d);

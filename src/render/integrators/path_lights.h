@@ -7,7 +7,11 @@
 //   shows C * cos as POV-Ray's diffuse 1.0 shows it (docs/pbr-mapping.md).
 // - Emitting shapes (objects and union parts whose material emits a constant radiance): triangles
 //   and meshes, spheres and discs, chosen in one slot by area times emitted radiance.
-//   Triangles and discs (any affine transform) are sampled uniformly by area. A sphere under a
+//   Discs (any affine transform) are sampled uniformly by area; triangles too, except where
+//   Cycles 3.4 samples them by solid angle (seen from a point closer to the triangle's plane
+//   than its longest edge, the triangle belonging to an object with at most 64 emitting
+//   triangles so a BSDF hit can be matched to it): uniformly over the spherical triangle
+//   (Arvo 1995), which removes the 1/r^2 noise near large emitters. A sphere under a
 //   similarity transform, seen from outside, is sampled by the cone of directions it subtends
 //   (uniform in solid angle, pbrt-v4's Sphere::Sample); from inside, or an ellipsoid (a
 //   non-uniformly scaled sphere), uniformly by object-space area, with the world area density
@@ -86,6 +90,7 @@ private:
         Vec3 p0, e1, e2, n;  // n: unit geometric normal
         double area;
         Color le;
+        bool locatable = false;  // a BSDF hit can be matched to it: solid-angle sampling allowed
     };
     // A sphere or a disc in world space.
     struct Shape {
@@ -115,7 +120,11 @@ private:
     struct Group {
         bool tris = false;
         int first_shape = 0, shape_count = 0;
+        int first_tri = 0, tri_count = 0;  // its triangles: tris_[first_tri, + tri_count)
     };
+    // Solid angle of `t` seen from p when sample() samples it by solid angle (Arvo 1995, where
+    // Cycles 3.4 does: its longest edge longer than its plane's distance), 0 for area sampling.
+    static double tri_solid_angle(const Tri& t, const Vec3& p);
     // How far q is from the shape's surface, relative to its size (0 on it).
     static double off_surface(const Shape& e, const Vec3& q);
     static constexpr int kNotSampled = -1;
