@@ -5,6 +5,7 @@
 
 #include <climits>
 #include <cmath>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -31,19 +32,22 @@ public:
     bool intersect(const Ray& ray, Hit* hit) const override {
         // A non-finite ray (a bug upstream) hits nothing rather than spreading NaN.
         if (!valid(ray)) return false;
-        LocalHit best;
+        // Two hits, the best so far and the candidate, swapped rather than copied (a node
+        // writes the whole hit when it reports one, ObjectNode::intersect).
+        LocalHit hits[2];
+        LocalHit* best = &hits[0];
+        LocalHit* cand = &hits[1];
         int best_i = INT_MAX;
         // Equal t: the lower object index wins, so the result does not depend on the order in
         // which the BVH visits objects.
         auto visit = [&](int i, double& tmax) {
-            LocalHit h;
             bool found = best_i != INT_MAX;
-            double limit = found ? next_up(best.t) : tmax;
-            if (nodes_[i]->intersect(ray, limit, false, &h) &&
-                (!found || h.t < best.t || i < best_i)) {
-                best = h;
+            double limit = found ? next_up(best->t) : tmax;
+            if (nodes_[i]->intersect(ray, limit, false, cand) &&
+                (!found || cand->t < best->t || i < best_i)) {
+                std::swap(best, cand);
                 best_i = i;
-                tmax = h.t;
+                tmax = best->t;
             }
             return false;
         };
@@ -51,7 +55,7 @@ public:
         bvh_.traverse(ray, tmax, visit);
         for (int i : unbounded_) visit(i, tmax);
         if (best_i == INT_MAX) return false;
-        to_hit(best, ids_[best_i], hit);
+        to_hit(*best, ids_[best_i], hit);
         return true;
     }
 

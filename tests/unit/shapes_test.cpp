@@ -571,5 +571,169 @@ TEST(Mesh, InsideVectorParity) {
     EXPECT_FALSE(with->inside({0.5, 0.5, -0.5}));
 }
 
+// A closed, irregular UV sphere with per-vertex normals and uvs (for the baking tests).
+scene::Mesh smooth_uv_sphere(int n) {
+    scene::Mesh m;
+    auto vertex = [&](int i, int j) {
+        double th = kPi * i / n, ph = 2 * kPi * j / (2 * n) + 0.013 * i;
+        double r = 1 + 0.05 * std::sin(3 * ph + i) + 0.02 * std::cos(5 * th);
+        Vec3 p(r * std::sin(th) * std::cos(ph), r * std::cos(th), r * std::sin(th) * std::sin(ph));
+        m.positions.push_back(p + Vec3(0.3, -0.2, 0.1));
+        m.normals.push_back(normalize(p + Vec3(0.02 * std::sin(7.0 * j), 0, 0)));
+        m.uvs.push_back({static_cast<double>(j) / (2 * n), static_cast<double>(i) / n});
+    };
+    // Rings i = 0..n with 2n + 1 vertices each (the seam duplicated for the uvs).
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= 2 * n; ++j) vertex(i, j);
+    auto id = [&](int i, int j) { return i * (2 * n + 1) + j; };
+    auto add = [&](int a, int b, int c, int material) {
+        scene::MeshFace f;
+        f.v = f.n = f.uv = {a, b, c};
+        f.material = material;
+        m.faces.push_back(f);
+    };
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < 2 * n; ++j) {
+            if (i > 0) add(id(i, j), id(i, j + 1), id(i + 1, j + 1), j % 3);
+            if (i < n - 1) add(id(i, j), id(i + 1, j + 1), id(i + 1, j), -1);
+        }
+    m.has_inside_vector = true;
+    m.inside_vector = {0.31, 0.77, -0.2};
+    return m;
+}
+
+void expect_same_bits(const LocalHit& a, const LocalHit& b) {
+    EXPECT_EQ(a.t, b.t);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(a.p[k], b.p[k]);
+        EXPECT_EQ(a.p_error[k], b.p_error[k]);
+        EXPECT_EQ(a.ng[k], b.ng[k]);
+        EXPECT_EQ(a.n[k], b.n[k]);
+        EXPECT_EQ(a.dpdu[k], b.dpdu[k]);
+        EXPECT_EQ(a.dpdv[k], b.dpdv[k]);
+    }
+    EXPECT_EQ(a.has_uv, b.has_uv);
+    EXPECT_EQ(a.uv.x, b.uv.x);
+    EXPECT_EQ(a.uv.y, b.uv.y);
+    EXPECT_EQ(a.material, b.material);
+}
+
+// A mesh with obj_file's z-mirror (or any other mirror) baked into its vertices answers every
+// query bit for bit as the object-space mesh behind the transform does: same t, point, error
+// bound, normals (pointing the same way despite the flipped winding), uvs and tangents.
+TEST(Mesh, BakedMirrorMatchesTransformedMesh) {
+    const scene::Mesh m = smooth_uv_sphere(12);
+    Diagnostics diag;
+    auto plain = render::make_mesh(m, diag);
+    ASSERT_TRUE(plain);
+    std::mt19937_64 rng(2024);
+    std::uniform_real_distribution<double> u(-1.5, 1.5);
+    std::uniform_int_distribution<size_t> pick(0, m.faces.size() - 1);
+    for (Vec3 s : {Vec3(1, 1, -1), Vec3(-1, 1, 1), Vec3(1, -1, -1), Vec3(-1, -1, -1)}) {
+        const Transform xf = Transform::scale(s);
+        ASSERT_TRUE(render::bake_exact(xf));
+        auto baked = render::make_mesh(m, diag, &xf);
+        ASSERT_TRUE(baked);
+        // The baked bounds are the mirrored object-space bounds.
+        Bounds3 want = xf.bounds(plain->bounds()), got = baked->bounds();
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_LE(want.lo[k], got.lo[k]);
+            EXPECT_GE(want.hi[k], got.hi[k]);
+        }
+        int hits = 0, occluded = 0, inside = 0;
+        for (int i = 0; i < 6000; ++i) {
+            // Rays from inside and outside, aimed at vertices, edges and faces, some stopped
+            // short (occlusion) and some along an axis.
+            const scene::MeshFace& f = m.faces[pick(rng)];
+            const Vec3 a = m.positions[f.v[0]], b = m.positions[f.v[1]];
+            Vec3 target = i % 3 == 0 ? a : (i % 3 == 1 ? a + (b - a) * 0.5 : a + (b - a) * 0.37);
+            Vec3 o(u(rng), u(rng), u(rng));
+            if (i % 2) o = o * 3;
+            Vec3 d = target - o;
+            if (i % 50 == 0) d = Vec3(0, 0, i % 100 == 0 ? 1 : -1);
+            const double tmax = i % 5 == 0 ? 0.7 : kInfinity;
+            // World-space ray and the object-space one ObjectNode would build.
+            const Vec3 wo = xf.point(o), wd = xf.vector(d);
+            const Ray local{xf.inverse_point(wo), xf.inverse_vector(wd), kInfinity};
+            const Ray world{wo, wd, kInfinity};
+            LocalHit h0, h1;
+            const bool f0 = plain->intersect(local, tmax, &h0);
+            const bool f1 = baked->intersect(world, tmax, &h1);
+            ASSERT_EQ(f0, f1) << i;
+            if (f0) {
+                ++hits;
+                render::transform_hit(xf, &h0);
+                expect_same_bits(h0, h1);
+            }
+            const bool o0 = plain->occludes(local, tmax), o1 = baked->occludes(world, tmax);
+            EXPECT_EQ(o0, o1) << i;
+            occluded += o1;
+            render::HitList all0, all1;
+            plain->intersect_all(local, tmax, &all0);
+            baked->intersect_all(world, tmax, &all1);
+            ASSERT_EQ(all0.size(), all1.size()) << i;
+            // In the same order too: the baked BVH is the object-space one mirrored.
+            for (size_t k = 0; k < all0.size(); ++k) {
+                render::transform_hit(xf, &all0[k]);
+                expect_same_bits(all0[k], all1[k]);
+            }
+            const bool in0 = plain->inside(o), in1 = baked->inside(wo);
+            EXPECT_EQ(in0, in1) << i;
+            inside += in1;
+        }
+        // The test means something: plenty of hits, misses, occlusions and inside points.
+        EXPECT_GT(hits, 3000);
+        EXPECT_GT(occluded, 2000);
+        EXPECT_GT(inside, 300);
+        EXPECT_LT(inside, 5500);
+    }
+    // Only pure mirrors bake: not a translation, a scale, a rotation or the identity.
+    EXPECT_FALSE(render::bake_exact(Transform()));
+    EXPECT_FALSE(render::bake_exact(Transform::scale(Vec3(1, 1, -1)).then(
+        Transform::translate(Vec3(0, 0, 1)))));
+    EXPECT_FALSE(render::bake_exact(Transform::scale(Vec3(2, 1, -1))));
+    EXPECT_FALSE(render::bake_exact(Transform::rotate_axis(Vec3(0, 1, 0), 90)));
+}
+
+// An obj_file-style part (a mirrored mesh object) goes through ObjectNode baked, with the same
+// hits as the node's own transform would give (material, inverse and flags still applied).
+TEST(Mesh, BakedMeshNodeMatchesTransformedNode) {
+    scene::Scene sc;
+    sc.meshes.push_back(smooth_uv_sphere(8));
+    scene::Object o;
+    o.shape = scene::MeshRef{0};
+    o.transform = Transform::scale(Vec3(1, 1, -1));
+    o.material = 5;
+    o.inverse = true;
+    Diagnostics diag;
+    auto node = render::ObjectNode::build(o, sc, diag);
+    ASSERT_TRUE(node);
+    scene::Object plain_o = o;
+    plain_o.transform = Transform();
+    plain_o.inverse = false;
+    auto plain = render::ObjectNode::build(plain_o, sc, diag);
+    ASSERT_TRUE(plain);
+    std::mt19937_64 rng(77);
+    std::uniform_real_distribution<double> u(-2, 2);
+    int hits = 0;
+    for (int i = 0; i < 2000; ++i) {
+        Vec3 o0(u(rng), u(rng), u(rng)), d(u(rng), u(rng), u(rng));
+        const Transform& xf = o.transform;
+        LocalHit h0, h1;
+        bool f0 = plain->intersect(Ray{o0, d, kInfinity}, kInfinity, false, &h0);
+        bool f1 = node->intersect(Ray{xf.point(o0), xf.vector(d), kInfinity}, kInfinity, false,
+                                  &h1);
+        ASSERT_EQ(f0, f1);
+        if (!f0) continue;
+        ++hits;
+        render::transform_hit(xf, &h0);
+        h0.ng = -h0.ng;  // inverse
+        h0.n = -h0.n;
+        expect_same_bits(h0, h1);
+        EXPECT_EQ(node->inside(xf.point(o0)), !plain->inside(o0));
+    }
+    EXPECT_GT(hits, 200);
+}
+
 }  // namespace
 }  // namespace glint

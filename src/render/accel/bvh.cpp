@@ -56,6 +56,18 @@ Bounds3 Bvh::bounds() const {
     return b;
 }
 
+void Bvh::mirror(const bool flip[3]) {
+    for (int a = 0; a < 3; ++a) {
+        if (!flip[a]) continue;
+        flip_[a] = !flip_[a];
+        for (Node& n : nodes_) {
+            const float lo = n.box[0][a], hi = n.box[1][a];
+            n.box[0][a] = -hi;
+            n.box[1][a] = -lo;
+        }
+    }
+}
+
 int Bvh::build(std::vector<int>& ids, int begin, int end, const std::vector<Bounds3>& bounds,
                const std::vector<Vec3>& centroids, int max_leaf, int depth) {
     depth_ = std::max(depth_, depth);

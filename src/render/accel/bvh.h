@@ -38,6 +38,11 @@ public:
         for (size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<int>(i);
     }
     Bounds3 bounds() const;
+    // Mirrors the tree through the planes x = 0, y = 0, z = 0 where flip[] says (exact for the
+    // float boxes), for primitives mirrored the same way. Traversal then visits the nodes in the
+    // order, and with the box results, that the unmirrored tree gives the mirrored ray, so
+    // callers see the same sequence of primitives (mesh_prim.cpp's baked mirrors).
+    void mirror(const bool flip[3]);
 
     // Visits the primitives whose boxes the ray enters within [0, tmax], nearer boxes first.
     // visit(prim, tmax) may lower tmax; returning true stops the traversal (any-hit queries).
@@ -45,7 +50,7 @@ public:
     template <class Visit>
     bool traverse(const Ray& ray, double& tmax, Visit&& visit) const {
         if (nodes_.empty()) return false;
-        RayBoxData rb(ray);
+        RayBoxData rb(ray, flip_);
         int stack[128];
         int sp = 0;
         int cur = 0;
@@ -57,7 +62,7 @@ public:
                         if (visit(order_[n.index + i], tmax)) return true;
                 } else {
                     int first = cur + 1, second = n.index;
-                    if (rb.neg[n.axis]) std::swap(first, second);
+                    if (rb.first_far[n.axis]) std::swap(first, second);
                     stack[sp++] = second;
                     cur = first;
                     continue;
@@ -71,7 +76,7 @@ public:
 
 private:
     struct RayBoxData {
-        explicit RayBoxData(const Ray& ray) {
+        RayBoxData(const Ray& ray, const bool flip[3]) {
             for (int a = 0; a < 3; ++a) {
                 o[a] = ray.origin[a];
                 inv[a] = 1 / ray.dir[a];
@@ -79,6 +84,7 @@ private:
                 neg[a] = inv[a] < 0;
                 near[a] = neg[a] * 3 + a;
                 far[a] = (1 - neg[a]) * 3 + a;
+                first_far[a] = neg[a] != static_cast<int>(flip[a]);
             }
         }
         double o[3];
@@ -86,6 +92,9 @@ private:
         double inv_far[3];  // widened by 2 gamma(3) (pbrt-v4, 6.1.2): rounding never culls
         int neg[3];
         int near[3], far[3];  // offsets of the near and far planes in Node::box
+        // Whether to visit the second child first: the direction is negative along the
+        // split axis (mirrored axes: as seen by the unmirrored tree).
+        int first_far[3];
     };
 
     // Slab test, near and far planes picked by the direction's sign. A zero direction component
@@ -113,6 +122,7 @@ private:
     std::vector<Node> nodes_;
     std::vector<int> order_;
     int depth_ = 0;
+    bool flip_[3] = {false, false, false};
 };
 
 }  // namespace glint::render

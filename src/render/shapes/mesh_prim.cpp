@@ -7,6 +7,7 @@
 #include <string>
 
 #include "render/accel/bvh.h"
+#include "render/shapes/object_node.h"
 #include "render/shapes/triangle.h"
 
 namespace glint::render {
@@ -14,33 +15,45 @@ namespace {
 
 class MeshPrim final : public Primitive {
 public:
-    MeshPrim(const scene::Mesh& mesh, std::vector<int> faces)
+    MeshPrim(const scene::Mesh& mesh, std::vector<int> faces, const Transform* baked)
         : mesh_(mesh), faces_(std::move(faces)) {
+        if (baked) {
+            baked_ = true;
+            xf_ = *baked;
+        }
         std::vector<Bounds3> boxes(faces_.size());
         for (size_t i = 0; i < faces_.size(); ++i)
             for (int k = 0; k < 3; ++k) boxes[i].extend(vertex(faces_[i], k));
+        // Baked: the object-space tree, mirrored, so rays meet the faces in the same order.
         bvh_ = Bvh(boxes, 4);
+        if (baked_) {
+            const auto& m = xf_.matrix().m;
+            const bool flip[3] = {m[0][0] < 0, m[1][1] < 0, m[2][2] < 0};
+            bvh_.mirror(flip);
+        }
         // Faces and their vertices in leaf order: a leaf's triangles sit side by side.
         std::vector<int> sorted(bvh_.order().size());
         tris_.resize(sorted.size());
         for (size_t i = 0; i < sorted.size(); ++i) {
             sorted[i] = faces_[bvh_.order()[i]];
-            for (int k = 0; k < 3; ++k) tris_[i].p[k] = vertex(sorted[i], k);
+            for (int k = 0; k < 3; ++k) tris_[i].p[k] = tested_vertex(sorted[i], k);
         }
         faces_ = std::move(sorted);
         bvh_.use_leaf_order();
+        single_leaf_ = bvh_.nodes().size() == 1;
         if (mesh.has_inside_vector && length_squared(mesh.inside_vector) > 0)
-            inside_dir_ = mesh.inside_vector;
+            inside_dir_ = baked_ ? xf_.vector(mesh.inside_vector) : mesh.inside_vector;
     }
 
     Bounds3 bounds() const override { return bvh_.bounds(); }
+    bool writes_whole_hit() const override { return true; }
 
     bool intersect(const Ray& ray, double tmax, LocalHit* hit) const override {
         RayShear shear(ray);
         TriangleHit best;
         int best_face = -1;
         double t = tmax;
-        bvh_.traverse(ray, t, [&](int i, double& tm) {
+        candidates(ray, t, [&](int i, double& tm) {
             TriangleHit th;
             int f = faces_[i];
             // Equal t: the lower face index wins, whatever the traversal order.
@@ -62,7 +75,7 @@ public:
     bool occludes(const Ray& ray, double tmax) const override {
         RayShear shear(ray);
         double t = tmax;
-        return bvh_.traverse(ray, t, [&](int i, double&) {
+        return candidates(ray, t, [&](int i, double&) {
             TriangleHit th;
             const Tri& tri = tris_[i];
             return intersect_triangle(shear, tri.p[0], tri.p[1], tri.p[2], tmax, &th);
@@ -72,7 +85,7 @@ public:
     void intersect_all(const Ray& ray, double tmax, HitList* hits) const override {
         RayShear shear(ray);
         double t = tmax;
-        bvh_.traverse(ray, t, [&](int i, double&) {
+        candidates(ray, t, [&](int i, double&) {
             TriangleHit th;
             int f = faces_[i];
             const Tri& tri = tris_[i];
@@ -101,11 +114,28 @@ public:
     }
 
 private:
+    // The triangles a ray may hit, as Bvh::traverse passes them. A mesh that is one BVH leaf
+    // (a wall, a quad: many OBJ groups) skips the box test: its owner's bounds have already
+    // been tested, and the triangle test alone decides, so the results are the same.
+    template <class Visit>
+    bool candidates(const Ray& ray, double& tmax, Visit&& visit) const {
+        if (!single_leaf_) return bvh_.traverse(ray, tmax, visit);
+        for (int i = 0; i < static_cast<int>(tris_.size()); ++i)
+            if (visit(i, tmax)) return true;
+        return false;
+    }
+
     const Vec3& vertex(int face, int k) const {
         return mesh_.positions[mesh_.faces[face].v[k]];
     }
+    // The vertex as rays meet it: in the baked transform's parent space when baked.
+    Vec3 tested_vertex(int face, int k) const {
+        return baked_ ? xf_.point(vertex(face, k)) : vertex(face, k);
+    }
 
+    // Writes all of *h (writes_whole_hit).
     void fill(int f, const TriangleHit& th, LocalHit* h) const {
+        *h = LocalHit();
         const scene::MeshFace& face = mesh_.faces[f];
         const Vec3 &p0 = vertex(f, 0), &p1 = vertex(f, 1), &p2 = vertex(f, 2);
         h->t = th.t;
@@ -138,6 +168,9 @@ private:
             }
         }
         h->material = face.material;
+        // Baked: the hit was computed in object space terms (bake_exact transforms give the
+        // same t and barycentrics there), so carry it out exactly as ObjectNode would.
+        if (baked_) transform_hit(xf_, h);
     }
 
     // A copy: the geometry must not depend on the scene outliving it.
@@ -148,12 +181,28 @@ private:
     std::vector<int> faces_;  // usable faces of mesh_, in BVH leaf order
     std::vector<Tri> tris_;   // their vertices
     Bvh bvh_;
-    std::optional<Vec3> inside_dir_;
+    std::optional<Vec3> inside_dir_;  // in the tested space
+    bool baked_ = false;
+    bool single_leaf_ = false;  // the whole mesh is one BVH leaf
+    Transform xf_;  // the baked transform
 };
 
 }  // namespace
 
-std::unique_ptr<Primitive> make_mesh(const scene::Mesh& mesh, Diagnostics& diag) {
+bool bake_exact(const Transform& xf) {
+    if (xf.is_identity()) return false;
+    const auto& m = xf.matrix().m;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            double v = m[i][j];
+            bool ok = i == j ? (v == 1 || (v == -1 && i < 3)) : v == 0;
+            if (!ok) return false;
+        }
+    return xf.inverse_matrix() == xf.matrix();
+}
+
+std::unique_ptr<Primitive> make_mesh(const scene::Mesh& mesh, Diagnostics& diag,
+                                     const Transform* baked) {
     std::vector<int> usable;
     int degenerate = 0, bad_index = 0;
     int np = static_cast<int>(mesh.positions.size());
@@ -187,7 +236,7 @@ std::unique_ptr<Primitive> make_mesh(const scene::Mesh& mesh, Diagnostics& diag)
         diag.warning(mesh.loc,
                      std::to_string(bad_index) + " mesh triangle(s) with invalid indices skipped");
     if (usable.empty()) return nullptr;
-    return std::make_unique<MeshPrim>(mesh, std::move(usable));
+    return std::make_unique<MeshPrim>(mesh, std::move(usable), baked);
 }
 
 }  // namespace glint::render

@@ -5,12 +5,23 @@
 #include <memory>
 
 #include "core/log.h"
+#include "core/transform.h"
 #include "render/shapes/primitive.h"
 #include "scene/mesh.h"
 
 namespace glint::render {
 
 // nullptr (with warnings) when no face is usable; degenerate faces are skipped with a warning.
-std::unique_ptr<Primitive> make_mesh(const scene::Mesh& mesh, Diagnostics& diag);
+// With `baked`, the primitive lives in the parent space of that transform: rays are tested
+// against the transformed vertices (no per-ray transform) and hits come out as
+// transform_hit(baked) of the object-space hit. Only for transforms that bake_exact() accepts.
+std::unique_ptr<Primitive> make_mesh(const scene::Mesh& mesh, Diagnostics& diag,
+                                     const Transform* baked = nullptr);
+
+// Whether a mesh behind `xf` can be baked with results identical bit for bit to transforming
+// each ray: xf must be a pure mirror (a diagonal of +-1, no translation; obj_file's z-mirror is
+// one). Then taking a ray into object space only flips signs, and the watertight triangle test
+// computes the same t and barycentrics from either side.
+bool bake_exact(const Transform& xf);
 
 }  // namespace glint::render

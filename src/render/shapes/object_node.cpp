@@ -57,6 +57,8 @@ const Bounds3 kEverywhere{Vec3(-kInfinity), Vec3(kInfinity)};
 struct Builder {
     const scene::Scene& scene;
     Diagnostics& diag;
+    // Set when the primitive took obj.transform into itself (the node then has none).
+    bool baked = false;
 
     std::unique_ptr<Primitive> primitive(const scene::Object& obj, Transform* frame) {
         const char* why = nullptr;
@@ -103,7 +105,9 @@ struct Builder {
                 } else if constexpr (std::is_same_v<T, scene::MeshRef>) {
                     if (s.mesh < 0 || s.mesh >= static_cast<int>(scene.meshes.size()))
                         throw Error(ErrorKind::Scene, obj.loc, "mesh reference out of range");
-                    p = make_mesh(scene.meshes[s.mesh], diag);
+                    // obj_file's mirror is baked into the mesh: rays skip the transform.
+                    baked = bake_exact(obj.transform);
+                    p = make_mesh(scene.meshes[s.mesh], diag, baked ? &obj.transform : nullptr);
                     if (!p) why = "mesh without usable triangles";
                 } else if constexpr (std::is_same_v<T, scene::Quadric>) {
                     p = make_quadric(s, &why);
@@ -143,6 +147,7 @@ std::unique_ptr<ObjectNode> ObjectNode::build(const scene::Object& obj,
     node->material_ = obj.material;
     node->flags_ = object_flags(obj);
     Transform frame;
+    bool baked = false;
     if (const auto* csg = std::get_if<scene::Csg>(&obj.shape)) {
         node->is_csg_ = true;
         node->op_ = csg->op;
@@ -160,11 +165,13 @@ std::unique_ptr<ObjectNode> ObjectNode::build(const scene::Object& obj,
         }
         if (node->children_.empty()) return nullptr;
     } else {
-        Builder b{scene, diag};
+        Builder b{scene, diag, false};
         node->prim_ = b.primitive(obj, &frame);
         if (!node->prim_) return nullptr;
+        baked = b.baked;
+        node->whole_hit_ = node->prim_->writes_whole_hit();
     }
-    node->xf_ = frame.then(obj.transform);
+    node->xf_ = baked ? frame : frame.then(obj.transform);
     node->identity_ = node->xf_.is_identity();
     for (const auto& b : obj.bounded_by)
         if (auto n = build(b, scene, diag)) node->bounded_by_.push_back(std::move(n));
@@ -360,6 +367,8 @@ bool ObjectNode::csg_keeps(size_t i, const Vec3& p) const {
 
 bool ObjectNode::intersect_local(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const {
     if (prim_) {
+        // Meshes write the whole hit, and nothing on a miss: no fresh one needed.
+        if (whole_hit_) return prim_->intersect(ray, tmax, hit);
         // A fresh hit: primitives fill only the geometric fields, so material and flags
         // left in *hit by an earlier (farther) sibling must not leak into this one.
         LocalHit h;

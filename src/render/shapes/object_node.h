@@ -23,7 +23,7 @@ public:
                                              Diagnostics& diag);
 
     // Closest hit with 0 < t < tmax. With `shadow`, surfaces of no_shadow objects are ignored
-    // (they still shape CSG results).
+    // (they still shape CSG results). A hit writes all of *hit; a miss leaves it alone.
     bool intersect(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
     // Whether any shadow-casting surface lies at 0 < t < tmax.
     bool occludes(const Ray& ray, double tmax) const;
@@ -54,6 +54,7 @@ private:
     Transform xf_;
     bool identity_ = true;
     std::unique_ptr<Primitive> prim_;  // leaf, or:
+    bool whole_hit_ = false;           // prim_->writes_whole_hit()
     bool is_csg_ = false;
     scene::CsgOp op_ = scene::CsgOp::Union;
     std::vector<std::unique_ptr<ObjectNode>> children_;

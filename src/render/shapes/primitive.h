@@ -91,6 +91,9 @@ public:
         LocalHit h;
         return intersect(ray, tmax, &h);
     }
+    // Whether intersect() leaves *hit alone on a miss and, on a hit, writes all of it (every
+    // field as a fresh LocalHit would have it): then callers need no fresh LocalHit per query.
+    virtual bool writes_whole_hit() const { return false; }
     // Deferred uv (see LocalHit::uv_source).
     virtual Vec2 uv_at(const Vec3&) const { return {}; }
     // POV-Ray's inside test (CSG); shapes without an inside (triangles, discs) return false.

@@ -8,57 +8,6 @@
 
 namespace glint::render {
 
-RayShear::RayShear(const Ray& ray) : origin(ray.origin) {
-    Vec3 ad = abs(ray.dir);
-    kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
-    kx = (kz + 1) % 3;
-    ky = (kx + 1) % 3;
-    // Keep the winding: swapping x and y when looking down -kz.
-    if (ray.dir[kz] < 0) std::swap(kx, ky);
-    sz = 1.0 / ray.dir[kz];
-    sx = ray.dir[kx] * sz;
-    sy = ray.dir[ky] * sz;
-}
-
-bool intersect_triangle(const RayShear& s, const Vec3& p0, const Vec3& p1, const Vec3& p2,
-                        double tmax, TriangleHit* hit) {
-    if (!std::isfinite(s.sz)) return false;  // zero direction
-    Vec3 a = p0 - s.origin, b = p1 - s.origin, c = p2 - s.origin;
-    double ax = a[s.kx] - s.sx * a[s.kz], ay = a[s.ky] - s.sy * a[s.kz];
-    double bx = b[s.kx] - s.sx * b[s.kz], by = b[s.ky] - s.sy * b[s.kz];
-    double cx = c[s.kx] - s.sx * c[s.kz], cy = c[s.ky] - s.sy * c[s.kz];
-    // Edge functions (2D cross products in the sheared frame).
-    double u = cx * by - cy * bx;
-    double v = ax * cy - ay * cx;
-    double w = bx * ay - by * ax;
-    if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return false;
-    double det = u + v + w;
-    if (det == 0 || !std::isfinite(det)) return false;
-    double az = s.sz * a[s.kz], bz = s.sz * b[s.kz], cz = s.sz * c[s.kz];
-    double t_scaled = u * az + v * bz + w * cz;
-    if (det < 0 ? (t_scaled >= 0 || t_scaled < tmax * det) : (t_scaled <= 0 || t_scaled > tmax * det))
-        return false;
-    double inv = 1.0 / det;
-    double t = t_scaled * inv;
-    if (!(t < tmax)) return false;
-    // Conservative bound on t's rounding error (pbrt-v4, 6.8.4 "Conservative ray-triangle t").
-    double max_z = std::max({std::fabs(az), std::fabs(bz), std::fabs(cz)});
-    double max_x = std::max({std::fabs(ax), std::fabs(bx), std::fabs(cx)});
-    double max_y = std::max({std::fabs(ay), std::fabs(by), std::fabs(cy)});
-    double dz = gamma(3) * max_z;
-    double dx = gamma(5) * (max_x + max_z);
-    double dy = gamma(5) * (max_y + max_z);
-    double de = 2 * (gamma(2) * max_x * max_y + dy * max_x + dx * max_y);
-    double max_e = std::max({std::fabs(u), std::fabs(v), std::fabs(w)});
-    double dt = 3 * (gamma(3) * max_e * max_z + de * max_z + dz * max_e) * std::fabs(inv);
-    if (t <= dt) return false;
-    hit->t = t;
-    hit->b[0] = u * inv;
-    hit->b[1] = v * inv;
-    hit->b[2] = w * inv;
-    return true;
-}
-
 namespace {
 
 class TrianglePrim final : public Primitive {
