@@ -19,19 +19,10 @@
 
 #include "core/log.h"
 #include "render/render.h"
+#include "unit/path_test_util.h"
 
 namespace glint::render {
 namespace {
-
-scene::Material diffuse(Color c) {
-    scene::Material m;
-    m.pbr.derived = false;
-    m.pbr.base_color = c;
-    m.pbr.specular = 0;
-    m.pbr.metallic = 0;
-    m.pbr.roughness = 1;
-    return m;
-}
 
 scene::Scene convergence_scene() {
     scene::Scene s;
@@ -39,8 +30,8 @@ scene::Scene convergence_scene() {
     s.camera.direction = normalize(Vec3(0, -0.2, 1));
     s.camera.up = Vec3(0, 1, 0.2) * (1 / std::sqrt(1.04));
     s.background = scene::ColorFT(Color(0.15, 0.2, 0.25));
-    s.materials.push_back(diffuse(Color(0.8, 0.6, 0.4)));
-    s.materials.push_back(diffuse(Color(0.75, 0.75, 0.75)));
+    s.materials.push_back(path_test::lambert(Color(0.8, 0.6, 0.4)));
+    s.materials.push_back(path_test::lambert(Color(0.75, 0.75, 0.75)));
     scene::Object ball;
     ball.shape = scene::Sphere{Vec3(-0.3, 0, 0), 1};
     ball.material = 0;

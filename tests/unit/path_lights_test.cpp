@@ -22,36 +22,16 @@
 #include "render/render.h"
 #include "render/textures/image_texture.h"
 #include "render/textures/pigment.h"
+#include "unit/path_test_util.h"
 
 namespace glint::render {
 namespace {
 
-scene::Material lambert(Color c) {
-    scene::Material m;
-    m.pbr.derived = false;
-    m.pbr.base_color = c;
-    m.pbr.specular = 0;
-    m.pbr.metallic = 0;
-    m.pbr.roughness = 1;
-    return m;
-}
+using path_test::emitter;
+using path_test::lambert;
 
-scene::Material emitter(double le) {
-    scene::Material m = lambert(Color(0, 0, 0));
-    m.pbr.emission = Color(le, le, le);
-    m.pbr.emission_strength = 1;
-    return m;
-}
-
-RenderOptions path_options(int w, int h, int spp, int depth = 8) {
-    RenderOptions o;
-    o.width = w;
-    o.height = h;
-    o.integrator = IntegratorKind::Path;
-    o.spp = spp;
-    o.max_depth = depth;
-    o.threads = 2;
-    return o;
+RenderOptions path_options(int w, int h, int spp) {
+    return path_test::path_options(w, h, spp, 8);
 }
 
 // A camera at `from` looking at `at` with a field of view of about 1e-3 radians.

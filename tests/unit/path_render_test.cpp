@@ -14,18 +14,16 @@
 #include "render/camera.h"
 #include "render/integrators/path_lights.h"
 #include "render/render.h"
+#include "unit/path_test_util.h"
 
 namespace glint::render {
 namespace {
 
-scene::Material lambert(Color c) {
-    scene::Material m;
-    m.pbr.derived = false;
-    m.pbr.base_color = c;
-    m.pbr.specular = 0;
-    m.pbr.metallic = 0;
-    m.pbr.roughness = 1;
-    return m;
+using path_test::lambert;
+
+// Deep enough that the furnaces lose nothing to the depth limit.
+RenderOptions path_options(int w, int h, int spp) {
+    return path_test::path_options(w, h, spp, 64);
 }
 
 scene::Scene sphere_in_environment(const scene::Material& m) {
@@ -38,17 +36,6 @@ scene::Scene sphere_in_environment(const scene::Material& m) {
     s.objects.push_back(o);
     s.background = scene::ColorFT(Color(1, 1, 1));
     return s;
-}
-
-RenderOptions path_options(int w, int h, int spp) {
-    RenderOptions o;
-    o.width = w;
-    o.height = h;
-    o.integrator = IntegratorKind::Path;
-    o.spp = spp;
-    o.max_depth = 64;
-    o.threads = 2;
-    return o;
 }
 
 struct Stats {

@@ -22,6 +22,7 @@
 #include "render/camera.h"
 #include "render/integrators/driver.h"
 #include "render/render.h"
+#include "unit/path_test_util.h"
 
 namespace fs = std::filesystem;
 
@@ -39,17 +40,6 @@ scene::Material black_with_alpha(double alpha) {
     return m;
 }
 
-RenderOptions path_options(int w, int h, int spp) {
-    RenderOptions o;
-    o.width = w;
-    o.height = h;
-    o.integrator = IntegratorKind::Path;
-    o.spp = spp;
-    o.max_depth = 8;
-    o.threads = 2;
-    return o;
-}
-
 TEST(PathVariance, BernoulliPixelsGiveTheAnalyticVariance) {
     // A black plane with alpha 0.3 in front of a white background: each sample is 1 (passed
     // through, probability 0.7) or 0. For 0/1 samples the sample variance is n/(n-1) m(1-m)
@@ -62,7 +52,7 @@ TEST(PathVariance, BernoulliPixelsGiveTheAnalyticVariance) {
     o.material = 0;
     s.objects.push_back(o);
     s.background = scene::ColorFT(Color(1, 1, 1));
-    RenderOptions opt = path_options(8, 6, 20);
+    RenderOptions opt = path_test::path_options(8, 6, 20, 8);
     opt.max_depth = 0;  // no bounce off the plane: samples are exactly 0 or 1
     opt.variance = true;
     Diagnostics diag;
@@ -101,7 +91,7 @@ TEST(PathVariance, MatchesBruteForceAndIsThreadIndependent) {
     const int w = 5, h = 4, spp = 13;
     Camera camera(cam, w, h);
     PathFilm one, two;
-    RenderOptions opt = path_options(w, h, spp);
+    RenderOptions opt = path_test::path_options(w, h, spp, 8);
     opt.variance = true;
     opt.threads = 1;
     ASSERT_EQ(run_path_tiles(camera, opt, fn, &one), spp);
@@ -139,7 +129,7 @@ TEST(PathAov, DepthNormalAlbedoOfAKnownSphere) {
     o.material = 0;
     s.objects.push_back(o);
     s.background = scene::ColorFT(Color(0.5, 0.5, 0.5));
-    RenderOptions opt = path_options(41, 31, 4);
+    RenderOptions opt = path_test::path_options(41, 31, 4, 8);
     opt.aovs = true;
     Diagnostics diag;
     const RenderResult r = render(s, opt, diag);
