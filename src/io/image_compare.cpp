@@ -99,71 +99,78 @@ double compute_ssim(const Rgb8Image& a, const Rgb8Image& b) {
     return sum / double(mu_a.size());
 }
 
-Rgb8Image read_rgb8(const std::string& path) {
-    auto fail = [&](const std::string& why) {
-        return Error(ErrorKind::MissingFile, {}, "cannot read image " + path + ": " + why);
-    };
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
-    if (!in) {
+namespace {
+
+// An image file opened for reading, with the checks both readers make.
+struct OpenedImage {
+    std::unique_ptr<OIIO::ImageInput> in;
+    int width = 0, height = 0, channels = 0;
+    size_t pixels = 0;
+    bool is_float = false;  // stored as float, half or double (EXR, HDR): linear values
+};
+
+Error read_error(const std::string& path, const std::string& why) {
+    return Error(ErrorKind::MissingFile, {}, "cannot read image " + path + ": " + why);
+}
+
+OpenedImage open_image(const std::string& path) {
+    OpenedImage img;
+    img.in = OIIO::ImageInput::open(path);
+    if (!img.in) {
         std::string why = OIIO::geterror();
-        throw fail(why.empty() ? "cannot open the file" : why);
+        throw read_error(path, why.empty() ? "cannot open the file" : why);
     }
-    const OIIO::ImageSpec& spec = in->spec();
-    const int channels = spec.nchannels;
-    if (spec.width <= 0 || spec.height <= 0 || channels <= 0) throw fail("empty image");
-    if (channels == 2) throw fail("gray+alpha images are not supported");
-    Rgb8Image out;
-    out.width = spec.width;
-    out.height = spec.height;
-    const size_t pixels = static_cast<size_t>(spec.width) * spec.height;
-    const bool is_float = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
-                          spec.format.basetype == OIIO::TypeDesc::HALF ||
-                          spec.format.basetype == OIIO::TypeDesc::DOUBLE;
-    if (is_float) {
-        std::vector<float> data(pixels * channels);
-        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
-            throw fail(in->geterror());
+    const OIIO::ImageSpec& spec = img.in->spec();
+    img.width = spec.width;
+    img.height = spec.height;
+    img.channels = spec.nchannels;
+    if (img.width <= 0 || img.height <= 0 || img.channels <= 0)
+        throw read_error(path, "empty image");
+    if (img.channels == 2) throw read_error(path, "gray+alpha images are not supported");
+    img.pixels = static_cast<size_t>(img.width) * img.height;
+    img.is_float = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
+                   spec.format.basetype == OIIO::TypeDesc::HALF ||
+                   spec.format.basetype == OIIO::TypeDesc::DOUBLE;
+    return img;
+}
+
+// All channels of the image, converted to T by OpenImageIO.
+template <typename T>
+std::vector<T> read_all(const std::string& path, OpenedImage& img, OIIO::TypeDesc type) {
+    std::vector<T> data(img.pixels * img.channels);
+    if (!img.in->read_image(0, 0, 0, img.channels, type, data.data()))
+        throw read_error(path, img.in->geterror());
+    img.in->close();
+    return data;
+}
+
+}  // namespace
+
+Rgb8Image read_rgb8(const std::string& path) {
+    OpenedImage img = open_image(path);
+    if (img.is_float) {
         LinearImage linear;
-        linear.width = spec.width;
-        linear.height = spec.height;
-        linear.rgb = to_rgb(data, pixels, channels);
-        out = encode_srgb8(linear);
-    } else {
-        std::vector<unsigned char> data(pixels * channels);
-        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, data.data()))
-            throw fail(in->geterror());
-        out.rgb = to_rgb(data, pixels, channels);
+        linear.width = img.width;
+        linear.height = img.height;
+        linear.rgb = to_rgb(read_all<float>(path, img, OIIO::TypeDesc::FLOAT), img.pixels,
+                            img.channels);
+        return encode_srgb8(linear);
     }
-    in->close();
+    Rgb8Image out;
+    out.width = img.width;
+    out.height = img.height;
+    out.rgb = to_rgb(read_all<unsigned char>(path, img, OIIO::TypeDesc::UINT8), img.pixels,
+                     img.channels);
     return out;
 }
 
 LinearImage read_linear(const std::string& path) {
-    auto fail = [&](const std::string& why) {
-        return Error(ErrorKind::MissingFile, {}, "cannot read image " + path + ": " + why);
-    };
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
-    if (!in) {
-        std::string why = OIIO::geterror();
-        throw fail(why.empty() ? "cannot open the file" : why);
-    }
-    const OIIO::ImageSpec& spec = in->spec();
-    const int channels = spec.nchannels;
-    if (spec.width <= 0 || spec.height <= 0 || channels <= 0) throw fail("empty image");
-    if (channels == 2) throw fail("gray+alpha images are not supported");
-    const size_t pixels = static_cast<size_t>(spec.width) * spec.height;
-    const bool is_float = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
-                          spec.format.basetype == OIIO::TypeDesc::HALF ||
-                          spec.format.basetype == OIIO::TypeDesc::DOUBLE;
-    std::vector<float> data(pixels * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
-        throw fail(in->geterror());
-    in->close();
+    OpenedImage img = open_image(path);
     LinearImage out;
-    out.width = spec.width;
-    out.height = spec.height;
-    out.rgb = to_rgb(data, pixels, channels);
-    if (!is_float) {
+    out.width = img.width;
+    out.height = img.height;
+    out.rgb = to_rgb(read_all<float>(path, img, OIIO::TypeDesc::FLOAT), img.pixels, img.channels);
+    if (!img.is_float) {
         // IEC 61966-2-1 sRGB decoding of the code values OpenImageIO scaled to [0, 1].
         for (float& v : out.rgb)
             v = v <= 0.04045f ? v / 12.92f
