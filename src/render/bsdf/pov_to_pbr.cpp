@@ -56,7 +56,8 @@ SurfacePbr pov_to_pbr(const scene::Finish& finish, const scene::Interior& interi
             const double m = tinted ? std::clamp(finish.metallic, 0.0, 1.0) : 0.0;
             p.phong_ks = (Color(1.0) * (1 - m) + p.base * m) * amount;
             p.phong_exponent = std::max(0.0, finish.phong_size);
-            p.base = Color(std::min(p.base.r, 1 - p.phong_ks.r), std::min(p.base.g, 1 - p.phong_ks.g),
+            p.base = Color(std::min(p.base.r, 1 - p.phong_ks.r),
+                           std::min(p.base.g, 1 - p.phong_ks.g),
                            std::min(p.base.b, 1 - p.phong_ks.b));
         }
     } else {

@@ -22,7 +22,9 @@ double power_heuristic(double a, double b) {
     return a2 / (a2 + b2);
 }
 
-bool finite(const Color& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
+bool finite(const Color& c) {
+    return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
+}
 
 }  // namespace
 

@@ -3,7 +3,8 @@
 //   smooth cubic between radius and falloff), parallel lights, and area lights (a rectangle
 //   axis1 x axis2 around the location, sampled uniformly; like POV-Ray's grid of point lights
 //   it emits the same in every direction and is invisible to camera and BSDF rays; with
-//   `circular`, the ellipse inscribed in that rectangle). A POV-Ray light of color C delivers the irradiance pi * C * cos * fade, so a white Lambert surface
+//   `circular`, the ellipse inscribed in that rectangle). A POV-Ray light of color C delivers
+//   the irradiance pi * C * cos * fade, so a white Lambert surface
 //   shows C * cos as POV-Ray's diffuse 1.0 shows it (docs/pbr-mapping.md).
 // - Emitting shapes (objects and union parts whose material emits a constant radiance): triangles
 //   and meshes, spheres and discs, chosen in one slot by area times emitted radiance.
