@@ -3,6 +3,7 @@
 // GRAMMAR.md beside this file lists the supported subset.
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <optional>
 #include <string>
@@ -36,6 +37,9 @@ struct ParseOptions {
     int max_include_depth = 64;
     int max_macro_depth = 256;
     long long max_tokens = 2'000'000'000;
+    // Set (by SIGINT/SIGTERM in the CLI): parsing stops with ErrorKind::Cancelled within a few
+    // thousand tokens, so a long #while loop or include chain can be interrupted too.
+    const std::atomic<bool>* cancel = nullptr;
     // Hooks the application installs for what lives above the importer (formats/ must not
     // depend on render/); a null hook makes the feature that needs it "not supported".
     // Pattern and pigment functions called at parse time (scene::FunctionEnv::pattern).

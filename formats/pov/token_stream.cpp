@@ -132,6 +132,9 @@ const Token& Parser::next() {
         const Token& t = raw();
         if (++token_count_ > options.max_tokens)
             fail("the scene exceeds the token limit (" + std::to_string(options.max_tokens) + ")");
+        if ((token_count_ & 0xfff) == 0 && options.cancel &&
+            options.cancel->load(std::memory_order_relaxed))
+            throw Error(ErrorKind::Cancelled, {}, "interrupted while parsing");
         if (t.kind == TokKind::Directive) {
             handle_directive(t, cur_file_);
             continue;

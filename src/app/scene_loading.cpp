@@ -103,6 +103,7 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose) {
     options.image_height = request.height;
     options.object_query = render::answer_object_query;  // trace(), min_extent(), max_extent()
     options.pattern_hook = render::parse_time_pattern;   // pattern functions called while parsing
+    options.cancel = &cancel_flag();                      // SIGINT/SIGTERM stop the parse too
     ParseDiagnosticPrinter printer(verbose);
     Diagnostics diag([&printer](const Diagnostic& d) { printer.print(d); });
     scene::Scene scene = pov::parse_file(request.path, options, diag);

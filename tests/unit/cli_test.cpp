@@ -261,6 +261,44 @@ TEST_F(CliTest, InterruptExits130WithoutOutput) {
     EXPECT_EQ(count_files(), 1);  // only s.pov: no image, no temporary
 }
 
+TEST_F(CliTest, TermDuringParsingExits130WithoutOutput) {
+    // A scene whose parse would take practically forever (nested loops, each under the
+    // per-loop limit): SIGTERM must stop the parser within a second.
+    write_text("s.pov",
+               "#version 3.7;\n#declare I = 0;\n#while (I < 1000000)\n  #declare J = 0;\n"
+               "  #while (J < 1000000) #declare J = J + 1; #end\n  #declare I = I + 1;\n#end\n"
+               "sphere { 0, 1 }\n");
+    std::string out = path("o.png");
+    std::string scene = path("s.pov");
+    pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        std::freopen("/dev/null", "w", stderr);
+        execl(GLINT_BINARY, GLINT_BINARY, "render", scene.c_str(), "-o", out.c_str(),
+              "--progress", "none", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1000));
+    kill(pid, SIGTERM);
+    const auto sent = std::chrono::steady_clock::now();
+    int status = 0;
+    pid_t done = 0;
+    while ((done = waitpid(pid, &status, WNOHANG)) == 0 &&
+           std::chrono::steady_clock::now() < sent + std::chrono::seconds(20))
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const double waited =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+    if (done == 0) {
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        FAIL() << "glint did not stop within 20 s of SIGTERM while parsing";
+    }
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    EXPECT_LT(waited, 1.0);
+    EXPECT_EQ(count_files(), 1);  // only s.pov
+}
+
 TEST_F(CliTest, IncludeFlagTakesOneFolderEach) {
     fs::create_directories(dir_ / "inc");
     write_text("inc/size.inc", "#declare R = 0.5;\n");
