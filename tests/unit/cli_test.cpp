@@ -228,36 +228,57 @@ TEST_F(CliTest, VerbosePrintsFeaturesAndTimings) {
     EXPECT_EQ(img.height, 24);
 }
 
+namespace {
+
+// Runs glint with `args` (stderr to /dev/null), sends `sig` after `delay`, and waits up to
+// 20 s for it to end (then kills it). `seconds`: from the signal to the exit.
+struct Signalled {
+    bool ended = false;
+    int status = 0;
+    double seconds = 0;
+};
+Signalled run_and_signal(std::vector<std::string> args, std::chrono::milliseconds delay,
+                         int sig) {
+    args.insert(args.begin(), GLINT_BINARY);
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    Signalled r;
+    pid_t pid = fork();
+    if (pid < 0) return r;
+    if (pid == 0) {
+        std::freopen("/dev/null", "w", stderr);
+        execv(GLINT_BINARY, argv.data());
+        _exit(127);
+    }
+    std::this_thread::sleep_for(delay);
+    kill(pid, sig);
+    const auto sent = std::chrono::steady_clock::now();
+    pid_t done = 0;
+    while ((done = waitpid(pid, &r.status, WNOHANG)) == 0 &&
+           std::chrono::steady_clock::now() < sent + std::chrono::seconds(20))
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+    r.ended = done == pid;
+    if (!r.ended) {
+        kill(pid, SIGKILL);
+        waitpid(pid, &r.status, 0);
+    }
+    return r;
+}
+
+}  // namespace
+
 TEST_F(CliTest, InterruptExits130WithoutOutput) {
     // A render far too large to finish in the time before the signal.
     write_text("s.pov", kSmallScene);
-    std::string out = path("o.png");
-    std::string scene = path("s.pov");
-    pid_t pid = fork();
-    ASSERT_GE(pid, 0);
-    if (pid == 0) {
-        std::freopen("/dev/null", "w", stderr);
-        execl(GLINT_BINARY, GLINT_BINARY, "render", scene.c_str(), "-o", out.c_str(), "--width",
-              "4000", "--height", "4000", "--aa", "grid:8", "--threads", "1", "--progress",
-              "none", static_cast<char*>(nullptr));
-        _exit(127);
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
-    kill(pid, SIGINT);
-    int status = 0;
-    // The renderer must notice within a few seconds; give up (and fail) after 20.
-    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-    pid_t done = 0;
-    while ((done = waitpid(pid, &status, WNOHANG)) == 0 &&
-           std::chrono::steady_clock::now() < deadline)
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    if (done == 0) {
-        kill(pid, SIGKILL);
-        waitpid(pid, &status, 0);
-        FAIL() << "glint did not stop within 20 s of SIGINT";
-    }
-    ASSERT_TRUE(WIFEXITED(status));
-    EXPECT_EQ(WEXITSTATUS(status), 130);
+    const Signalled r = run_and_signal(
+        {"render", path("s.pov"), "-o", path("o.png"), "--width", "4000", "--height", "4000",
+         "--aa", "grid:8", "--threads", "1", "--progress", "none"},
+        std::chrono::milliseconds(1500), SIGINT);
+    ASSERT_TRUE(r.ended) << "glint did not stop within 20 s of SIGINT";
+    ASSERT_TRUE(WIFEXITED(r.status));
+    EXPECT_EQ(WEXITSTATUS(r.status), 130);
     EXPECT_EQ(count_files(), 1);  // only s.pov: no image, no temporary
 }
 
@@ -268,34 +289,13 @@ TEST_F(CliTest, TermDuringParsingExits130WithoutOutput) {
                "#version 3.7;\n#declare I = 0;\n#while (I < 1000000)\n  #declare J = 0;\n"
                "  #while (J < 1000000) #declare J = J + 1; #end\n  #declare I = I + 1;\n#end\n"
                "sphere { 0, 1 }\n");
-    std::string out = path("o.png");
-    std::string scene = path("s.pov");
-    pid_t pid = fork();
-    ASSERT_GE(pid, 0);
-    if (pid == 0) {
-        std::freopen("/dev/null", "w", stderr);
-        execl(GLINT_BINARY, GLINT_BINARY, "render", scene.c_str(), "-o", out.c_str(),
-              "--progress", "none", static_cast<char*>(nullptr));
-        _exit(127);
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(1000));
-    kill(pid, SIGTERM);
-    const auto sent = std::chrono::steady_clock::now();
-    int status = 0;
-    pid_t done = 0;
-    while ((done = waitpid(pid, &status, WNOHANG)) == 0 &&
-           std::chrono::steady_clock::now() < sent + std::chrono::seconds(20))
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    const double waited =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
-    if (done == 0) {
-        kill(pid, SIGKILL);
-        waitpid(pid, &status, 0);
-        FAIL() << "glint did not stop within 20 s of SIGTERM while parsing";
-    }
-    ASSERT_TRUE(WIFEXITED(status));
-    EXPECT_EQ(WEXITSTATUS(status), 130);
-    EXPECT_LT(waited, 1.0);
+    const Signalled r =
+        run_and_signal({"render", path("s.pov"), "-o", path("o.png"), "--progress", "none"},
+                       std::chrono::milliseconds(1000), SIGTERM);
+    ASSERT_TRUE(r.ended) << "glint did not stop within 20 s of SIGTERM while parsing";
+    ASSERT_TRUE(WIFEXITED(r.status));
+    EXPECT_EQ(WEXITSTATUS(r.status), 130);
+    EXPECT_LT(r.seconds, 1.0);
     EXPECT_EQ(count_files(), 1);  // only s.pov
 }
 
