@@ -1,0 +1,189 @@
+"""The "GLINT" render engine: export the frame, run the glint CLI, load its EXR.
+
+Blender calls render(depsgraph) once per frame (F12, `blender -b f.blend -E GLINT -f 1`, and each
+frame of `-a`). In the UI render() runs on a job thread, where operators such as the OBJ exporter
+fail their context poll, so the export is queued to a bpy.app.timers function on the main thread
+and waited for; headless, render() is on the main thread and exports directly.
+
+Outcomes: success loads glint's linear float EXR into the render result (Blender applies its view
+transform afterwards); a failure reports glint's own error lines with self.report({'ERROR'}) so
+`blender -b` exits non-zero without writing an image; a cancel (Esc, or SIGINT to `blender -b`)
+stops glint (SIGTERM, then SIGKILL after a second) and ends quietly. The per-render temp folder is
+removed in every case unless the keep_temp preference is on.
+"""
+
+import os
+import tempfile
+import threading
+import time
+import traceback
+
+import bpy
+
+from . import exporter, preferences, runner
+
+EXPORT_TIMEOUT_S = 600.0
+
+
+class GlintRenderEngine(bpy.types.RenderEngine):
+    bl_idname = "GLINT"
+    bl_label = "glint"
+    bl_use_preview = False
+    bl_use_shading_nodes_custom = False
+    bl_use_postprocess = True
+    bl_use_eevee_viewport = True
+
+    # ------------------------------------------------------------------ reporting
+
+    def _warn_once(self, msg):
+        if msg not in self._warned:
+            self._warned.add(msg)
+            self.report({'WARNING'}, "glint: " + msg)
+
+    def _error(self, msg):
+        self.report({'ERROR'}, "glint: " + msg)
+
+    # ------------------------------------------------------------------ render
+
+    def render(self, depsgraph):
+        self._warned = set()
+        prefs = preferences.get()
+        keep = bool(prefs and prefs.keep_temp)
+        out_dir = tempfile.mkdtemp(prefix="glint_render_")
+        try:
+            self._render(depsgraph, prefs, out_dir)
+        except exporter.ExportError as e:
+            self._error(str(e))
+        except Exception as e:  # never let an exception escape into Blender's render job
+            traceback.print_exc()
+            self._error("%s: %s" % (type(e).__name__, e))
+        finally:
+            if keep:
+                print("glint: render folder kept: %s" % out_dir)
+            else:
+                exporter.remove_dir(out_dir)
+
+    def _render(self, depsgraph, prefs, out_dir):
+        configured = prefs.binary if prefs else ""
+        binary = preferences.find_binary(configured)
+        if binary is None:
+            where = ("'%s' (add-on preferences)" % configured if configured else
+                     "'%s' ($GLINT_BINARY)" % os.environ["GLINT_BINARY"]
+                     if os.environ.get("GLINT_BINARY") else "'glint' on PATH")
+            self._error("the glint executable was not found: %s is not an executable file"
+                        % where)
+            return
+
+        self.update_stats("", "glint: exporting the scene")
+        warnings = []
+        export = self._export_on_main_thread(depsgraph, out_dir, warnings.append)
+        for w in warnings:
+            self._warn_once(w)
+        if export is None:  # cancelled while waiting for the export
+            return
+        if self.test_break():
+            return
+
+        frame = depsgraph.scene_eval.frame_current
+        self.update_stats("", "glint: rendering frame %d" % frame)
+        started = time.monotonic()
+        shown = [-1.0]
+
+        def progress(p):
+            self.update_progress(p)
+            # The status line (printed per update by `blender -b`) at most twice a second.
+            now = time.monotonic()
+            if now - shown[0] >= 0.5 or p >= 1.0:
+                shown[0] = now
+                self.update_stats("", "glint: frame %d, %d%%, %.1f s" %
+                                  (frame, int(p * 100), now - started))
+
+        try:
+            result = runner.run([binary] + export.argv, cwd=out_dir, on_progress=progress,
+                                test_break=self.test_break)
+        except OSError as e:
+            self._error("cannot run %s: %s" % (binary, e))
+            return
+        with open(os.path.join(out_dir, "glint.log"), "w", encoding="utf-8") as f:
+            f.write("\n".join(result.stderr_lines + result.stdout_lines) + "\n")
+
+        if result.cancelled:
+            self.update_stats("", "glint: cancelled")
+            return
+        if not result.ok:
+            lines = result.error_lines() or ["(glint printed nothing)"]
+            self._error("render failed (exit code %d):\n%s" % (result.returncode,
+                                                              "\n".join(lines)))
+            return
+        for line in result.stderr_lines:
+            if "warning" in line:
+                self._warn_once(line.strip())
+        if not os.path.isfile(export.output_path):
+            self._error("glint exited with 0 but wrote no image (%s)" % export.output_path)
+            return
+        self._load(depsgraph, export)
+
+    def _load(self, depsgraph, export):
+        """glint's EXR (RGB, linear; alpha is 1) into the render result. The result must be
+        ended whatever happens, or Blender crashes."""
+        r = depsgraph.scene_eval.render
+        x = y = 0
+        if r.use_border:
+            # Blender's result is the region only; glint rendered the whole frame.
+            x = int(r.border_min_x * export.width)
+            y = int(r.border_min_y * export.height)
+        result = self.begin_result(0, 0, export.width, export.height)
+        try:
+            result.layers[0].load_from_file(export.output_path, x=x, y=y)
+        except Exception as e:
+            self.end_result(result, cancel=True)
+            self._error("cannot load glint's image %s: %s" % (export.output_path, e))
+            return
+        self.end_result(result)
+
+    # ------------------------------------------------------------------ export
+
+    def _export_on_main_thread(self, depsgraph, out_dir, warn):
+        if threading.current_thread() is threading.main_thread():
+            return exporter.export_frame(depsgraph, out_dir, warn)
+
+        state = {"abandoned": False, "started": False, "result": None, "error": None}
+        done = threading.Event()
+        lock = threading.Lock()
+
+        def job():
+            with lock:
+                if state["abandoned"]:
+                    return None
+                state["started"] = True
+            try:
+                state["result"] = exporter.export_frame(depsgraph, out_dir, warn)
+            except BaseException as e:  # handed to the render thread
+                state["error"] = e
+            finally:
+                done.set()
+            return None
+
+        bpy.app.timers.register(job, first_interval=0.0, persistent=True)
+        deadline = time.monotonic() + EXPORT_TIMEOUT_S
+        while not done.wait(0.05):
+            with lock:
+                if not state["started"] and (self.test_break() or
+                                             time.monotonic() > deadline):
+                    state["abandoned"] = True
+                    if self.test_break():
+                        return None
+                    raise exporter.ExportError("the export did not start within %d s (is "
+                                               "Blender's main thread busy?)"
+                                               % EXPORT_TIMEOUT_S)
+        if state["error"] is not None:
+            raise state["error"]
+        return state["result"]
+
+
+def register():
+    bpy.utils.register_class(GlintRenderEngine)
+
+
+def unregister():
+    bpy.utils.unregister_class(GlintRenderEngine)
