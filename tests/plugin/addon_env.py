@@ -92,6 +92,10 @@ def build_scene(width=64, height=48, samples=8, light='AREA', animated_camera=Fa
             aim((x, -5, 2.5))
             cam_ob.keyframe_insert("location", frame=frame)
             cam_ob.keyframe_insert("rotation_euler", frame=frame)
+        sphere = bpy.data.objects["Sphere"]
+        for frame, z in ((1, 0.5), (2, 1.0), (3, 1.5)):  # the OBJ must follow the frame too
+            sphere.location.z = z
+            sphere.keyframe_insert("location", frame=frame)
         scene.frame_start, scene.frame_end = 1, 3
     if light is not None:
         ld = bpy.data.lights.new("Light", light)

@@ -434,6 +434,7 @@ def export_frame(depsgraph, out_dir, warn):
     scene = depsgraph.scene_eval
     width, height = render_size(scene)
     render_warnings(scene, warn)
+    camera = camera_block(depsgraph, width, height, warn)  # first: a camera error stops early
 
     obj_path = os.path.join(out_dir, SCENE_NAME + ".obj")
     export_obj(depsgraph, obj_path)
@@ -445,7 +446,7 @@ def export_frame(depsgraph, out_dir, warn):
              "exporter.py).\n",
              "#version 3.7;\n",
              "global_settings { assumed_gamma 1.0 }\n",
-             camera_block(depsgraph, width, height, warn),
+             camera,
              world_text(scene, out_dir, warn),
              lights_text(depsgraph, warn),
              'obj_file { "%s.obj" }\n' % SCENE_NAME]
