@@ -132,7 +132,9 @@ class GlintRenderEngine(bpy.types.RenderEngine):
             # Blender's result is the region only; glint rendered the whole frame.
             x = int(r.border_min_x * export.width)
             y = int(r.border_min_y * export.height)
-        result = self.begin_result(0, 0, export.width, export.height)
+        # Blender calls render() once per view layer (each its own depsgraph): fill that one.
+        result = self.begin_result(0, 0, export.width, export.height,
+                                   layer=depsgraph.view_layer.name)
         try:
             result.layers[0].load_from_file(export.output_path, x=x, y=y)
         except Exception as e:

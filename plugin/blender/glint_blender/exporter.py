@@ -312,6 +312,9 @@ def light_block(name, light, matrix, warn):
     if cyc is not None and getattr(cyc, "is_portal", False):
         warn("light '%s': portals are not supported: left out" % name)
         return ""
+    if light.energy < 0:
+        warn("light '%s': negative power is not supported: left out" % name)
+        return ""
     rot = matrix.to_3x3()
     loc = matrix.translation
     direction = (rot @ Vector((0.0, 0.0, -1.0))).normalized()
@@ -334,6 +337,9 @@ def light_block(name, light, matrix, warn):
         sx = light.size
         sy = light.size if light.shape in {'SQUARE', 'DISK'} else light.size_y
         shape = "rectangle" if light.shape in {'SQUARE', 'RECTANGLE'} else "ellipse"
+        if not (sx * ax.length > 0 and sy * ay.length > 0):
+            warn("light '%s': an area light of zero size emits nothing: left out" % name)
+            return ""
         lines.append("  shape %s" % shape)
         lines.append("  size <%.9g, %.9g>" % (sx * ax.length, sy * ay.length))
         lines.append("  axis_x %s  axis_y %s" % (fmt(to_pov(ax.normalized())),
@@ -420,8 +426,8 @@ def render_warnings(scene, warn):
     if r.film_transparent:
         warn("Film > Transparent is not supported by glint: the world is rendered behind the "
              "objects (alpha 1)")
-    if r.use_border:
-        warn("render region (border) is not supported by glint: the full frame is rendered")
+    # A render region needs no warning: glint renders the whole frame and the engine loads the
+    # region's pixels from it (same pixels, full-frame time).
 
 
 # ----------------------------------------------------------------------------- entry point
