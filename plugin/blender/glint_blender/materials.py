@@ -715,7 +715,11 @@ def rewrite_mtl(mtl_path, depsgraph, out_dir, warn):
     images = ImageWriter(out_dir, os.path.dirname(os.path.abspath(mtl_path)))
     out = list(header) or ["# Blender MTL File"]
     out.append("# material blocks rewritten by glint_blender (plugin/blender/MATERIALS.md)")
+    written = set()
     for name, lines in blocks:
+        if name in written:
+            continue  # a second material exported under the same name (warned once below)
+        written.add(name)
         out.append("")
         m = materials.get(name)
         if m is None:
