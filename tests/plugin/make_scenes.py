@@ -1,0 +1,343 @@
+"""Builds the glint add-on's test scenes in Blender 3.4 and (optionally) their Cycles references.
+
+    blender -b --factory-startup --python tests/plugin/make_scenes.py -- \
+        --out BUILD/tests/plugin/scenes [--scenes cornell,...] \
+        [--references --spp 256 --seeds 16 --ref tests/plugin/ref]
+
+For each scene NAME (cornell, principled, textured, lamps, anim) this saves --out/NAME.blend
+(plus the generated assets it uses: texture.png, sky.exr, referenced relatively). Everything is
+built from code, so the files are the same from run to run; the CTests build them at test time
+into the build tree (the plugin.scenes fixture), and only the references are committed.
+
+Scenes use Blender's own lights and Principled materials (the things the add-on converts),
+unlike tests/cycles, whose scenes are limited to what an OBJ/MTL carries. Geometry helpers,
+Cycles settings (setup_render: max_depth 8 -> 7 Cycles bounces, box filter, no clamping...),
+the HDR sky and the image I/O come from tests/cycles/make_scenes.py.
+
+With --references every scene (every frame of anim) is rendered by Cycles --seeds times at
+--spp with seeds 1..K and --ref gets NAME_mean.exr and NAME_stderr.exr (anim: anim_fN_...),
+half float, as tests/cycles does. --time-file appends "NAME seconds" per seed image.
+"""
+
+import argparse
+import importlib.util
+import math
+import os
+import sys
+import time
+
+import bpy
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+_spec = importlib.util.spec_from_file_location(
+    "cycles_make_scenes", os.path.join(HERE, "..", "cycles", "make_scenes.py"))
+cy = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(cy)
+
+SAMPLES = 256      # scene.glint.samples and the spp of one Cycles seed image
+MAX_DEPTH = cy.MAX_DEPTH  # 8: glint --max-depth; Cycles gets 7 bounces
+ANIM_FRAMES = (1, 2, 3)
+
+
+# ----------------------------------------------------------------------------- helpers
+
+def add_light(name, kind, location, rotation=(0, 0, 0), color=(1, 1, 1), energy=10.0, **kw):
+    """A Blender light object; kw sets light data attributes (size, spot_size, angle...)."""
+    data = bpy.data.lights.new(name, kind)
+    data.color = color
+    data.energy = energy
+    for k, v in kw.items():
+        setattr(data, k, v)
+    ob = bpy.data.objects.new(name, data)
+    bpy.context.scene.collection.objects.link(ob)
+    ob.location = location
+    ob.rotation_euler = rotation
+    return ob
+
+
+def aim(ob, target):
+    """Turn ob so that its -Z axis points at target (lights shine along -Z)."""
+    from mathutils import Vector
+    d = Vector(target) - ob.location
+    ob.rotation_euler = d.to_track_quat("-Z", "Y").to_euler()
+
+
+def add_sphere(name, location, radius, material, segments=32, rings=16):
+    bpy.ops.mesh.primitive_uv_sphere_add(segments=segments, ring_count=rings, radius=radius,
+                                         location=location)
+    ob = bpy.context.active_object
+    ob.name = name
+    bpy.ops.object.shade_smooth()
+    ob.data.materials.append(material)
+    return ob
+
+
+def floor(material, half=5.0):
+    h = half
+    return cy.add_mesh("floor", [(-h, -h, 0), (h, -h, 0), (h, h, 0), (-h, h, 0)],
+                       [(0, 1, 2, 3)], material)
+
+
+def glint_settings(scene):
+    """scene.glint per the add-on contract. Without the add-on registered the values are stored
+    as the ID properties its PointerProperty will read (the enum as its index)."""
+    values = {"samples": SAMPLES, "max_depth": MAX_DEPTH, "seed": 0, "threads": 0,
+              "time_limit": 0.0}
+    if hasattr(scene, "glint"):
+        scene.glint.integrator = "PATH"
+        for k, v in values.items():
+            setattr(scene.glint, k, v)
+    else:
+        scene["glint"] = dict(values, integrator=0)
+
+
+# ----------------------------------------------------------------------------- scenes
+
+def build_cornell(out_dir):
+    """tests/cycles' Cornell box, lit by an AREA light (not an emissive mesh): a 0.5 x 0.4
+    rectangle under the ceiling shining down, 11 W (about the radiance of tests/cycles'
+    emissive quad: L = P / (pi A))."""
+    white = cy.diffuse_material("white", (0.73, 0.73, 0.73))
+    red = cy.diffuse_material("red", (0.63, 0.065, 0.05))
+    green = cy.diffuse_material("green", (0.14, 0.45, 0.091))
+    s = 1.0
+    cy.add_mesh("floor", [(-s, -s, 0), (s, -s, 0), (s, s, 0), (-s, s, 0)], [(0, 1, 2, 3)], white)
+    cy.add_mesh("ceiling", [(-s, -s, 2), (s, -s, 2), (s, s, 2), (-s, s, 2)], [(0, 3, 2, 1)],
+                white)
+    cy.add_mesh("back", [(-s, s, 0), (s, s, 0), (s, s, 2), (-s, s, 2)], [(0, 1, 2, 3)], white)
+    cy.add_mesh("left", [(-s, -s, 0), (-s, s, 0), (-s, s, 2), (-s, -s, 2)], [(0, 1, 2, 3)], red)
+    cy.add_mesh("right", [(s, -s, 0), (s, -s, 2), (s, s, 2), (s, s, 0)], [(0, 1, 2, 3)], green)
+    cy.add_box("tall_box", (-0.33, 0.3, 0.6), (0.6, 0.6, 1.2), 17, white)
+    cy.add_box("short_box", (0.35, -0.3, 0.3), (0.6, 0.6, 0.6), -17, white)
+    add_light("area", "AREA", (0, 0, 1.98), color=(1.0, 0.85, 0.6), energy=11.0,
+              shape="RECTANGLE", size=0.5, size_y=0.4)
+    cy.add_camera((0, -3.9, 1.0), (0, 0, 1.0), lens_mm=35.0)
+    cy.set_world_color((0, 0, 0))
+
+
+def build_principled(out_dir):
+    """Six Principled spheres on a Lambert floor: rough metal, smooth metal, a dielectric
+    (plastic), glass IOR 1.45, an emitter and one with Alpha 0.5; a tilted square area light and
+    a world color."""
+    floor(cy.diffuse_material("floor", (0.5, 0.5, 0.5)))
+    mats = [
+        cy.principled_material("metal_rough", base=(0.95, 0.64, 0.54), metallic=1.0,
+                               roughness=0.5),
+        cy.principled_material("metal_smooth", base=(0.9, 0.9, 0.92), metallic=1.0,
+                               roughness=0.05),
+        cy.principled_material("plastic", base=(0.1, 0.2, 0.6), roughness=0.3),
+        cy.principled_material("glass", base=(1, 1, 1), roughness=0.0, transmission=1.0,
+                               ior=1.45),
+        cy.principled_material("emitter", base=(0.1, 0.1, 0.1), roughness=0.5,
+                               emission=(1.0, 0.5, 0.2), strength=3.0),
+        cy.principled_material("half_alpha", base=(0.2, 0.7, 0.2), roughness=0.4),
+    ]
+    mats[-1].node_tree.nodes["Principled BSDF"].inputs["Alpha"].default_value = 0.5
+    mats[-1].blend_method = "BLEND"
+    radius = 0.42
+    for k, m in enumerate(mats):
+        x = (k - (len(mats) - 1) / 2) * 0.95
+        add_sphere("sphere_" + m.name, (x, 0, radius), radius, m)
+    light = add_light("area", "AREA", (-1.0, -2.0, 3.0), energy=60.0, shape="SQUARE", size=1.5)
+    aim(light, (0, 0, 0))
+    cy.add_camera((0, -5.6, 1.7), (0, 0, 0.45), lens_mm=35.0)
+    cy.set_world_color((0.25, 0.3, 0.4))
+
+
+TEX_W, TEX_H = 64, 64
+
+
+def make_texture(path):
+    """A smooth 64x64 RGB texture (no sharp edges, so the texel filter matters little) that is
+    different along u and v and not symmetric, so a flipped or swapped mapping shows: red grows
+    with u, green with v, blue is a low-frequency wave. Saved as an 8-bit sRGB PNG."""
+    import numpy as np
+    u = (np.arange(TEX_W) + 0.5) / TEX_W
+    v = (np.arange(TEX_H) + 0.5) / TEX_H
+    uu, vv = np.meshgrid(u, v)  # row 0 is v near 0 (bpy's bottom-up order)
+    r = 0.15 + 0.75 * uu
+    g = 0.15 + 0.6 * vv ** 1.5
+    b = 0.35 + 0.3 * np.sin(2 * np.pi * (uu + 0.3 * vv)) * np.cos(np.pi * vv)
+    rgba = np.ones((TEX_H, TEX_W, 4), dtype=np.float32)
+    rgba[..., 0], rgba[..., 1], rgba[..., 2] = r, g, b
+    img = bpy.data.images.new("texture", TEX_W, TEX_H, alpha=False)
+    img.colorspace_settings.name = "sRGB"
+    # bpy pixels of a byte image are display (sRGB-encoded) values: store the intended
+    # sRGB-encoded values directly, so the PNG holds round(255 * value).
+    img.pixels.foreach_set(rgba.ravel())
+    img.filepath_raw = path
+    img.file_format = "PNG"
+    img.save()
+    bpy.data.images.remove(img)
+
+
+def textured_material(name, image):
+    m = cy.principled_material(name, base=(0.8, 0.8, 0.8), roughness=0.6, specular=0.3)
+    nt = m.node_tree
+    tex = nt.nodes.new("ShaderNodeTexImage")
+    tex.image = image
+    tex.interpolation = "Linear"
+    tex.extension = "REPEAT"
+    nt.links.new(tex.outputs["Color"], nt.nodes["Principled BSDF"].inputs["Base Color"])
+    return m
+
+
+def build_textured(out_dir):
+    """A UV-mapped floor (the texture repeated twice) and a UV sphere (the texture once round)
+    with the image texture, under tests/cycles' 256x128 HDR sky."""
+    tex_path = os.path.join(out_dir, "texture.png")
+    make_texture(tex_path)
+    image = bpy.data.images.load(tex_path)
+    image.filepath = "//texture.png"
+    image.colorspace_settings.name = "sRGB"
+    mat = textured_material("textured", image)
+    h = 2.5
+    me_floor = cy.add_mesh("floor", [(-h, -h, 0), (h, -h, 0), (h, h, 0), (-h, h, 0)],
+                           [(0, 1, 2, 3)], mat)
+    uv = me_floor.data.uv_layers.new(name="UVMap")
+    for loop, (s, t) in zip(uv.data, ((0, 0), (2, 0), (2, 2), (0, 2))):
+        loop.uv = (s, t)
+    add_sphere("ball", (0.1, 0.2, 0.8), 0.8, mat, segments=48, rings=24)
+    cy.add_camera((0.4, -4.0, 1.8), (0, 0.2, 0.6), lens_mm=35.0)
+    sky = os.path.join(out_dir, "sky.exr")
+    cy.make_sky(sky)
+    world = bpy.data.worlds.new("World")
+    world.use_nodes = True
+    nt = world.node_tree
+    env = nt.nodes.new("ShaderNodeTexEnvironment")
+    env.image = bpy.data.images.load(sky)
+    env.image.filepath = "//sky.exr"
+    env.interpolation = "Linear"
+    env.projection = "EQUIRECTANGULAR"
+    nt.links.new(env.outputs["Color"], nt.nodes["Background"].inputs["Color"])
+    nt.nodes["Background"].inputs["Strength"].default_value = 1.0
+    bpy.context.scene.world = world
+
+
+def build_lamps(out_dir):
+    """A spot (45 degree cone, blend 0.3, radius 0.1), a sun (angle 2 degrees) and a point light
+    (radius 0.15) on a Lambert floor, a box, a Lambert sphere and a glossy sphere; dim world."""
+    floor(cy.diffuse_material("floor", (0.6, 0.6, 0.6)))
+    cy.add_box("box", (-0.9, 0.4, 0.4), (0.8, 0.8, 0.8), 25, cy.diffuse_material(
+        "box", (0.7, 0.3, 0.2)))
+    add_sphere("ball", (0.3, -0.2, 0.5), 0.5, cy.diffuse_material("ball", (0.3, 0.5, 0.7)))
+    add_sphere("gloss", (1.3, 0.6, 0.4), 0.4, cy.principled_material(
+        "gloss", base=(0.8, 0.8, 0.8), metallic=1.0, roughness=0.3))
+    spot = add_light("spot", "SPOT", (-1.5, -1.5, 3.0), color=(1.0, 0.9, 0.7), energy=300.0,
+                     spot_size=math.radians(45.0), spot_blend=0.3, shadow_soft_size=0.1)
+    aim(spot, (-0.3, 0.1, 0.0))
+    sun = add_light("sun", "SUN", (0, 0, 5), color=(0.7, 0.8, 1.0), energy=1.5,
+                    angle=math.radians(2.0))
+    aim(sun, (0.4, 0.6, 0.0))
+    sun.location = (0, 0, 5)
+    add_light("point", "POINT", (1.6, -1.0, 1.5), color=(1.0, 0.6, 0.4), energy=120.0,
+              shadow_soft_size=0.15)
+    cy.add_camera((0.8, -5.0, 2.4), (0, 0, 0.4), lens_mm=35.0)
+    cy.set_world_color((0.03, 0.03, 0.04))
+
+
+def build_anim(out_dir):
+    """A simple scene (floor, box, sphere, sun, world color) and a camera keyframed over frames
+    1-3 (linear interpolation), moving sideways and up; each frame is its own reference."""
+    floor(cy.diffuse_material("floor", (0.6, 0.6, 0.6)))
+    cy.add_box("box", (-0.6, 0.3, 0.5), (1.0, 1.0, 1.0), 30, cy.diffuse_material(
+        "box", (0.2, 0.4, 0.7)))
+    add_sphere("ball", (0.8, -0.2, 0.5), 0.5, cy.principled_material(
+        "ball", base=(0.8, 0.3, 0.2), roughness=0.4))
+    sun = add_light("sun", "SUN", (0, 0, 5), energy=3.0, angle=math.radians(3.0))
+    aim(sun, (-0.5, 0.8, 0.0))
+    sun.location = (0, 0, 5)
+    cam = cy.add_camera((-1.5, -5.0, 1.5), (0, 0, 0.5), lens_mm=35.0)
+    scene = bpy.context.scene
+    scene.frame_start, scene.frame_end = ANIM_FRAMES[0], ANIM_FRAMES[-1]
+    from mathutils import Vector
+    for frame, loc in zip(ANIM_FRAMES, ((-1.5, -5.0, 1.5), (0.0, -4.6, 2.0), (1.6, -4.2, 2.6))):
+        cam.location = loc
+        d = Vector((0, 0, 0.5)) - Vector(loc)
+        cam.rotation_euler = d.to_track_quat("-Z", "Y").to_euler()
+        cam.keyframe_insert("location", frame=frame)
+        cam.keyframe_insert("rotation_euler", frame=frame)
+    for fc in cam.animation_data.action.fcurves:
+        for kp in fc.keyframe_points:
+            kp.interpolation = "LINEAR"
+    cy.set_world_color((0.3, 0.35, 0.45))
+
+
+BUILDERS = {"cornell": build_cornell, "principled": build_principled,
+            "textured": build_textured, "lamps": build_lamps, "anim": build_anim}
+
+
+def build(name, out_dir):
+    cy.reset()
+    BUILDERS[name](out_dir)
+    scene = bpy.context.scene
+    cy.setup_render(scene, spp=SAMPLES, seed=1)
+    if name != "anim":
+        scene.frame_start = scene.frame_end = 1
+    scene.frame_set(scene.frame_start)
+    glint_settings(scene)
+    path = os.path.join(out_dir, name + ".blend")
+    bpy.ops.wm.save_as_mainfile(filepath=path, compress=False, relative_remap=True)
+    return path
+
+
+def frames(name):
+    return ANIM_FRAMES if name == "anim" else (1,)
+
+
+def ref_name(name, frame):
+    return "%s_f%d" % (name, frame) if name == "anim" else name
+
+
+def render_references(name, ref_dir, spp, seeds, tmp_dir, threads, time_file):
+    import numpy as np
+    scene = bpy.context.scene
+    for frame in frames(name):
+        scene.frame_set(frame)
+        rn = ref_name(name, frame)
+        images = []
+        for k in range(1, seeds + 1):
+            path = os.path.join(tmp_dir, "%s_seed%02d.exr" % (rn, k))
+            t0 = time.time()
+            cy.render_to(path, spp, k, threads=threads)
+            dt = time.time() - t0
+            if time_file:
+                with open(time_file, "a") as f:
+                    f.write("%s %d %.3f\n" % (rn, k, dt))
+            images.append(cy.load_pixels(path))
+        stack = np.stack(images)
+        mean = stack.mean(axis=0)
+        se = np.sqrt(stack.var(axis=0, ddof=1) / seeds)
+        os.makedirs(ref_dir, exist_ok=True)
+        cy.save_pixels(os.path.join(ref_dir, rn + "_mean.exr"), mean)
+        cy.save_pixels(os.path.join(ref_dir, rn + "_stderr.exr"), se)
+        print("reference %s: %d x %d spp, mean %.4f, median stderr %.5f" %
+              (rn, seeds, spp, mean.mean(), float(np.median(se))), flush=True)
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(prog="make_scenes.py")
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--scenes", default=",".join(BUILDERS))
+    ap.add_argument("--references", action="store_true")
+    ap.add_argument("--spp", type=int, default=SAMPLES)
+    ap.add_argument("--seeds", type=int, default=16)
+    ap.add_argument("--ref", default=os.path.join(HERE, "ref"))
+    ap.add_argument("--tmp", default="/tmp/glint_plugin_refs")
+    ap.add_argument("--threads", type=int, default=0)
+    ap.add_argument("--time-file", default="")
+    args = ap.parse_args(argv)
+    out = os.path.abspath(args.out)
+    os.makedirs(out, exist_ok=True)
+    os.makedirs(args.tmp, exist_ok=True)
+    for name in args.scenes.split(","):
+        path = build(name, out)
+        print("scene %s saved to %s" % (name, path), flush=True)
+        if args.references:
+            bpy.ops.wm.open_mainfile(filepath=path)
+            render_references(name, args.ref, args.spp, args.seeds, args.tmp, args.threads,
+                              args.time_file)
+
+
+if __name__ == "__main__":
+    main(sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else [])
