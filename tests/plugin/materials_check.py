@@ -186,6 +186,50 @@ def case_principled_bump():
     return m
 
 
+def case_principled_rough_glass():
+    return principled("rough_glass", base=(0.9, 0.95, 1.0), roughness=0.3, transmission=1.0,
+                      ior=1.5)
+
+
+def case_principled_alpha_map():
+    import numpy as np
+    m = principled("alpha_map", base=(0.8, 0.3, 0.1), roughness=0.5)
+    img = np_image("holes", 256, 128, lambda uu, vv: np.stack(
+        [uu, vv, 0 * uu, (np.sin(uu * 2 * math.pi * 6) > 0).astype(float)], -1), alpha=True)
+    link_image(m, img, p_node(m).inputs["Alpha"], output="Alpha")
+    return m
+
+
+def case_glass_beckmann_rough():
+    m, n = node_material("glass_beckmann", "ShaderNodeBsdfGlass")
+    n.inputs["Roughness"].default_value = 0.3
+    n.inputs["IOR"].default_value = 1.5
+    n.distribution = "BECKMANN"
+    return m
+
+
+def case_mix_diffuse_glossy():
+    m, d = node_material("diffuse_glossy", "ShaderNodeBsdfDiffuse")
+    nt = m.node_tree
+    d.inputs["Color"].default_value = (0.7, 0.3, 0.2, 1)
+    g = nt.nodes.new("ShaderNodeBsdfGlossy")
+    g.inputs["Roughness"].default_value = 0.2
+    mix = nt.nodes.new("ShaderNodeMixShader")
+    mix.inputs["Fac"].default_value = 0.2
+    out = next(n for n in nt.nodes if n.type == "OUTPUT_MATERIAL")
+    nt.links.new(d.outputs[0], mix.inputs[1])
+    nt.links.new(g.outputs[0], mix.inputs[2])
+    nt.links.new(mix.outputs[0], out.inputs["Surface"])
+    return m
+
+
+def case_principled_sheen_clearcoat():
+    m = principled("sheen_clearcoat", base=(0.2, 0.4, 0.7), roughness=0.5)
+    p_node(m).inputs["Sheen"].default_value = 1.0
+    p_node(m).inputs["Clearcoat"].default_value = 1.0
+    return m
+
+
 def case_diffuse():
     m, n = node_material("diffuse", "ShaderNodeBsdfDiffuse")
     n.inputs["Color"].default_value = (0.7, 0.3, 0.2, 1)
@@ -330,6 +374,8 @@ def run_case(case, args):
 # terminator term) and keeps bent normals' reflections above the surface; glint does neither
 # yet (formats/obj/MTL.md), so the sphere's core differs by ~5 % and its rim shows dark seams.
 TOLERANCE = {"glossy": 0.03, "principled_normal_map": 0.08, "principled_bump": 0.08}
+# Conversions that warn (approximations): measured and printed, never failed.
+APPROXIMATE = {"glass_beckmann_rough", "mix_diffuse_glossy", "principled_sheen_clearcoat"}
 
 
 def main(argv):
@@ -356,7 +402,7 @@ def main(argv):
             print("    " + "; ".join(block))
         sys.stdout.flush()
         off = max(abs(ratio - 1).max(), abs(core - 1))
-        if off > TOLERANCE.get(case, args.tolerance):
+        if off > TOLERANCE.get(case, args.tolerance) and case not in APPROXIMATE:
             failed.append(case)
     if failed:
         print("FAILED (off by more than %g): %s" % (args.tolerance, ", ".join(failed)))
