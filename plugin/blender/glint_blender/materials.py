@@ -692,8 +692,10 @@ def scene_materials(depsgraph):
     collisions = set()
     for inst in depsgraph.object_instances:
         ob = inst.object
-        for slot in getattr(ob, "material_slots", []):
-            m = slot.material
+        mats = [slot.material for slot in getattr(ob, "material_slots", [])]
+        # Materials a geometry node tree set live on the evaluated data.
+        mats += list(getattr(getattr(ob, "data", None), "materials", None) or [])
+        for m in mats:
             if m is None:
                 continue
             key = mtl_name(m.name)
