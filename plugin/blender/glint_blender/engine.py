@@ -13,6 +13,7 @@ removed in every case unless the keep_temp preference is on.
 """
 
 import os
+import signal
 import tempfile
 import threading
 import time
@@ -112,8 +113,13 @@ class GlintRenderEngine(bpy.types.RenderEngine):
             return
         if not result.ok:
             lines = result.error_lines() or ["(glint printed nothing)"]
-            self._error("render failed (exit code %d):\n%s" % (result.returncode,
-                                                              "\n".join(lines)))
+            how = "exit code %d" % result.returncode
+            if result.returncode < 0:
+                try:
+                    how = "killed by %s" % signal.Signals(-result.returncode).name
+                except ValueError:
+                    how = "killed by signal %d" % -result.returncode
+            self._error("render failed (%s):\n%s" % (how, "\n".join(lines)))
             return
         for line in result.stderr_lines:
             if "warning" in line:
