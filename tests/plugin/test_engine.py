@@ -10,6 +10,8 @@
    ExportError; depth of field, motion blur and transparent film each give one warning.
 3. Animation: `blender -b f.blend -E GLINT -a` over a 3-frame camera move writes three frames
    that differ from each other and each equal the CLI re-render of its own export.
+4. make_zip.sh's zip installs through Blender's add-on installer and renders the default scene.
+5. Disabling the add-on closes the stock panels to GLINT again and removes scene.glint.
 """
 
 import argparse
@@ -168,6 +170,72 @@ def test_animation(glint, work):
     print("animation: 3 frames, each equal to its export's CLI re-render, all different")
 
 
+INSTALL_SCRIPT = """
+import sys, addon_utils, bpy
+zip_path, glint, out = sys.argv[sys.argv.index("--") + 1:]
+bpy.ops.preferences.addon_install(filepath=zip_path)
+addon_utils.modules_refresh()
+assert addon_utils.enable("glint_blender", default_set=True, handle_error=None) is not None
+bpy.context.preferences.addons["glint_blender"].preferences.binary = glint
+scene = bpy.context.scene  # the factory startup scene: cube, camera, (light: removed here,
+bpy.data.objects.remove(bpy.data.objects["Light"])  # lights have tests of their own)
+scene.world.color = (0.5, 0.5, 0.5)
+scene.render.engine = "GLINT"
+scene.render.resolution_x, scene.render.resolution_y = 32, 24
+scene.glint.samples = 2
+scene.render.image_settings.file_format = "OPEN_EXR"
+scene.render.filepath = out
+bpy.ops.render.render(write_still=True)
+"""
+
+
+def test_zip_install(glint, work):
+    """make_zip.sh's zip installs with Blender's own add-on installer and renders the default
+    scene's cube under a grey world."""
+    root = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+    zip_path = os.path.join(work, "glint_blender.zip")
+    subprocess.run([os.path.join(root, "plugin", "blender", "make_zip.sh"), zip_path],
+                   check=True, stdout=subprocess.DEVNULL)
+    script = os.path.join(work, "install.py")
+    with open(script, "w") as f:
+        f.write(INSTALL_SCRIPT)
+    user = os.path.join(work, "user_scripts")
+    os.makedirs(user)
+    out = os.path.join(work, "installed.exr")
+    r = run([blender_binary(), "-b", "--factory-startup", "--python-exit-code", "1", "--python",
+             script, "--", zip_path, glint, out], dict(os.environ, BLENDER_USER_SCRIPTS=user))
+    if r.returncode != 0 or not os.path.isfile(out):
+        fail("installing the zip and rendering the default scene failed:\n" + r.stdout)
+    if not os.path.isfile(os.path.join(user, "addons", "glint_blender", "engine.py")):
+        fail("the zip did not install as addons/glint_blender")
+    img = load(out)
+    if img.shape[:2] != (24, 32) or img[:, :, :3].max() <= 0:
+        fail("the default scene rendered wrong: shape %s max %g"
+             % (img.shape, img[:, :, :3].max()))
+    print("zip install: installed, enabled, rendered the default scene (32 x 24)")
+
+
+def test_unregister():
+    """Disabling the add-on removes GLINT from every stock panel and scene.glint."""
+    import addon_utils
+    opened = [p.__name__ for p in bpy.types.Panel.__subclasses__()
+              if "GLINT" in getattr(p, "COMPAT_ENGINES", ())]
+    for name in ("EEVEE_MATERIAL_PT_surface", "EEVEE_WORLD_PT_surface", "RENDER_PT_format",
+                 "RENDER_PT_color_management", "DATA_PT_lens"):
+        if name not in opened:
+            fail("stock panel %s is not open to GLINT" % name)
+    addon_utils.disable("glint_blender", default_set=True)
+    left = [p.__name__ for p in bpy.types.Panel.__subclasses__()
+            if "GLINT" in getattr(p, "COMPAT_ENGINES", ())
+            and not p.__name__.startswith("GLINT_")]
+    left += [p.__name__ for p in bpy.types.Panel.__subclasses__()
+             if p.__name__.startswith("GLINT_") and getattr(p, "is_registered", False)]
+    if left or hasattr(bpy.types.Scene, "glint"):
+        fail("after unregister: panels still open to GLINT %s / scene.glint %s"
+             % (left, hasattr(bpy.types.Scene, "glint")))
+    print("unregister: %d stock panels were open to GLINT, none after" % len(opened))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--glint", required=True)
@@ -178,6 +246,8 @@ def main():
     test_render(glint, work)
     test_export(work)
     test_animation(glint, work)
+    test_zip_install(glint, work)
+    test_unregister()
     shutil.rmtree(work, ignore_errors=True)
     print("PASS test_engine")
 
