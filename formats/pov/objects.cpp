@@ -30,6 +30,15 @@ const std::unordered_set<std::string>& unsupported_objects() {
 void transform_light(scene::Light& l, const Transform& t) {
     l.location = t.point(l.location);
     l.point_at = t.point(l.point_at);
+    if (l.blender) {  // blender_light inside a transformed CSG: its frame moves along
+        scene::BlenderLight& b = *l.blender;
+        b.direction = normalize(t.vector(b.direction));
+        const Vec3 ax = t.vector(b.axis_x * b.size_x), ay = t.vector(b.axis_y * b.size_y);
+        b.size_x = length(ax);
+        b.size_y = length(ay);
+        b.axis_x = ax / b.size_x;
+        b.axis_y = ay / b.size_y;
+    }
     if (l.area) {
         l.area->axis1 = t.vector(l.area->axis1);
         l.area->axis2 = t.vector(l.area->axis2);
@@ -43,6 +52,9 @@ void transform_child_textures(PovObject& o, const Transform& t) {
 }
 
 }  // namespace
+
+// blender_light.cpp: after the keyword `blender_light` (at kloc).
+scene::Light parse_blender_light(Parser& p, const FileLoc& kloc);
 
 bool Parser::is_object_keyword(const Token& t) const {
     return t.kind == TokKind::Word && !lookup(t.text) &&
@@ -213,6 +225,12 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
     if (unsupported_objects().count(w)) {
         FileLoc at = loc();
         out = skip_unsupported_object(*this, w, at);
+        return true;
+    }
+    if (w == "blender_light") {  // glint's extension for the Blender add-on
+        out = PovObject{};
+        out.is_light = true;
+        out.lights.push_back(parse_blender_light(*this, loc()));
         return true;
     }
     if (!object_keywords().count(w) && !is_solid_keyword(w)) return false;

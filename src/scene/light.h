@@ -22,6 +22,26 @@ struct AreaLight {
     bool orient = false;
 };
 
+// A Blender 3.4 light (glint's `blender_light { ... }` block, which the Blender add-on
+// writes): the path tracer renders it as Cycles 3.4 does, in Cycles' units (docs/pbr-mapping.md
+// "Blender lights"). Its Light holds the location and the color; defaults are Blender's.
+enum class BlenderLightType { Point, Spot, Sun, Area };
+
+struct BlenderLight {
+    BlenderLightType type = BlenderLightType::Point;
+    Vec3 direction{0, -1, 0};  // unit: where it shines (spot, sun, area), Blender's object -Z
+    double power = 10;         // W (point, spot, area); sun: W/m^2. Emits color * power.
+    double radius = 0.25;      // point, spot: the emitting disc's radius (0: a point)
+    double spot_size = 45;     // spot: full cone angle, degrees
+    double spot_blend = 0.15;  // spot: 0..1
+    double angle = 0.526;      // sun: angular diameter, degrees (0: parallel rays)
+    bool ellipse = false;      // area: ellipse (else rectangle)
+    double size_x = 0.25, size_y = 0.25;  // area: full extents along axis_x, axis_y
+    Vec3 axis_x{1, 0, 0}, axis_y{0, 0, 1};  // area: unit local X and Y
+    double spread = 180;       // area: degrees
+    bool visible_camera = false;  // camera rays see it (Blender's default for lights: off)
+};
+
 struct Light {
     LightKind kind = LightKind::Point;
     Vec3 location{0, 0, 0};
@@ -36,6 +56,7 @@ struct Light {
     double fade_distance = 0;  // 0 = no fading
     double fade_power = 0;
     std::optional<AreaLight> area;
+    std::optional<BlenderLight> blender;  // blender_light: only location and color used too
     FileLoc loc;
 };
 

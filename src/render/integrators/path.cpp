@@ -178,7 +178,13 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         const uint32_t base = 1 + scatterings * kPairsPerVertex;
         Hit hit;
         ++rays;
-        if (!geometry_.intersect(r, &hit)) {
+        const bool found = geometry_.intersect(r, &hit);
+        // Blender lights on the way (Cycles' lamps: rays pass through them).
+        if (lights.has_visible_blender())
+            L += beta * lights.blender_emission(prev_p, r.dir, seg_dist,
+                                                found ? seg_dist + hit.t : kInfinity,
+                                                specular ? -1.0 : prev_pdf, scatterings == 0);
+        if (!found) {
             if (lights.has_environment()) {
                 const double w =
                     specular ? 1.0 : power_heuristic(prev_pdf, lights.environment_pdf(r.dir));

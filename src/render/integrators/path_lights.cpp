@@ -128,8 +128,16 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
                        const EnvironmentDistribution::Radiance& environment,
                        const TextureCache* textures)
     : scene_(scene) {
-    for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i)
-        slots_.push_back({SlotKind::Pov, i});
+    for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
+        const scene::Light& l = scene.lights[i];
+        if (l.blender) {
+            slots_.push_back({SlotKind::Blender, static_cast<int>(blender_.size())});
+            blender_.emplace_back(l);
+            visible_blender_ = visible_blender_ || blender_.back().visible();
+        } else {
+            slots_.push_back({SlotKind::Pov, i});
+        }
+    }
     object_emitter_.assign(scene.objects.size(), kNotSampled);
     for (int oi = 0; oi < static_cast<int>(scene.objects.size()); ++oi) {
         const scene::Object& o = scene.objects[oi];
@@ -331,6 +339,15 @@ bool PathLights::sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out
             out->pdf = 0;
             return !out->value.is_black();
         }
+        case SlotKind::Blender: {
+            CyclesLight::Sample cs;
+            if (!blender_[s.light].sample(p, u, &cs)) return false;
+            out->wi = cs.wi;
+            out->dist = cs.dist;
+            out->value = cs.value / select_prob();
+            out->pdf = cs.pdf * select_prob();
+            return !out->value.is_black();
+        }
         case SlotKind::Emitters: {
             const auto it = std::upper_bound(emitter_cdf_.begin(), emitter_cdf_.end(), u.u);
             const size_t i = std::min<size_t>(it - emitter_cdf_.begin(), emitter_cdf_.size() - 1);
@@ -392,6 +409,26 @@ bool PathLights::sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out
         }
     }
     return false;
+}
+
+Color PathLights::blender_emission(const Vec3& from, const Vec3& dir, double tmin, double tmax,
+                                   double bsdf_pdf, bool camera_ray) const {
+    Color sum;
+    if (!visible_blender_) return sum;
+    for (const CyclesLight& c : blender_) {
+        if (camera_ray ? !c.visible_camera() : !c.visible()) continue;
+        double t, pdf;
+        Color le;
+        if (!c.intersect(from, dir, tmin, tmax, &t, &le, &pdf)) continue;
+        if (bsdf_pdf >= 0) {
+            // Power heuristic against light sampling's pdf of the same direction.
+            const double a = bsdf_pdf * bsdf_pdf, b = pdf * select_prob() * pdf * select_prob();
+            if (!(a + b > 0)) continue;
+            le *= std::isinf(a) ? 1.0 : a / (a + b);
+        }
+        sum += le;
+    }
+    return sum;
 }
 
 double PathLights::environment_pdf(const Vec3& dir) const {

@@ -6,6 +6,9 @@
 //   `circular`, the ellipse inscribed in that rectangle). A POV-Ray light of color C delivers
 //   the irradiance pi * C * cos * fade, so a white Lambert surface
 //   shows C * cos as POV-Ray's diffuse 1.0 shows it (docs/pbr-mapping.md).
+// - Blender lights (blender_light): as Cycles 3.4 samples and shows them (blender_lights.h);
+//   camera and BSDF rays that pass through their discs, rectangles, ellipses and sun discs
+//   collect the emission with MIS weights (blender_emission).
 // - Emitting shapes (objects and union parts whose material emits a constant radiance): triangles
 //   and meshes, spheres and discs, chosen in one slot by area times emitted radiance.
 //   Discs (any affine transform) are sampled uniformly by area; triangles too, except where
@@ -31,6 +34,7 @@
 #include <optional>
 #include <vector>
 
+#include "render/integrators/blender_lights.h"
 #include "render/integrators/environment.h"
 #include "render/ray.h"
 #include "render/sampling/sampler.h"
@@ -56,7 +60,8 @@ public:
                const EnvironmentDistribution::Radiance& environment = {},
                const TextureCache* textures = nullptr);
 
-    // Light slots: each POV-Ray light, all emitting shapes together, the environment.
+    // Light slots: each POV-Ray or Blender light, all emitting shapes together, the
+    // environment.
     int count() const { return static_cast<int>(slots_.size()); }
     // The probability a slot is chosen for one shading point (1 when all are sampled).
     double select_prob() const { return sample_all() ? 1.0 : 1.0 / std::max(1, count()); }
@@ -64,6 +69,15 @@ public:
     bool sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out) const;
 
     bool has_environment() const { return has_env_; }
+    // Whether camera or BSDF rays can meet Blender lights (blender_emission may not be black).
+    bool has_visible_blender() const { return visible_blender_; }
+    // The emission of the Blender lights that the ray from `from` along the unit `dir` meets
+    // at distances in (tmin, tmax] (kInfinity: the ray left the scene, where suns show), each
+    // weighted by MIS against `bsdf_pdf`, the solid-angle pdf of the BSDF sample that chose
+    // `dir` at `from` (negative for camera rays and delta bounces: weight 1). Camera rays
+    // see only the lights with visible_camera.
+    Color blender_emission(const Vec3& from, const Vec3& dir, double tmin, double tmax,
+                           double bsdf_pdf, bool camera_ray) const;
     // Solid-angle pdf with which light sampling would have chosen the unit direction `dir`
     // towards the environment (slot selection included).
     double environment_pdf(const Vec3& dir) const;
@@ -82,10 +96,10 @@ public:
     static constexpr int kSampleAllMax = 8;
 
 private:
-    enum class SlotKind { Pov, Emitters, Environment };
+    enum class SlotKind { Pov, Blender, Emitters, Environment };
     struct Slot {
         SlotKind kind;
-        int light = -1;
+        int light = -1;  // Pov: index into the scene's lights; Blender: into blender_
     };
     struct Tri {
         Vec3 p0, e1, e2, n;  // n: unit geometric normal
@@ -137,6 +151,8 @@ private:
 
     const scene::Scene& scene_;
     std::vector<Slot> slots_;
+    std::vector<CyclesLight> blender_;
+    bool visible_blender_ = false;
     std::vector<Tri> tris_;
     std::vector<Shape> shapes_;
     // One CDF over all emitters: triangles first, then shapes_ (area * average emission).

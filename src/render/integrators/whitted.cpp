@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/float.h"
+#include "render/integrators/blender_lights.h"
 #include "render/lights/area_light.h"
 #include "render/textures/normal.h"
 
@@ -98,7 +99,7 @@ Whitted::Whitted(const scene::Scene& scene, const scene::Features& features,
       pigments_(textures, PatternContext{scene.global.noise_generator, scene.global.number_of_waves,
                                            &scene.functions}),
       atmosphere_(scene),
-      lights_(prepare_lights(scene.lights)),
+      lights_(prepare_lights(whitted_lights(scene.lights))),
       max_level_(scene.global.max_trace_level),
       adc_bailout_(scene.global.adc_bailout),
       legacy_(scene.version < 3.7) {
@@ -348,6 +349,10 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
             for (const PreparedLight& light : lights_) {
                 LightSample ls;
                 if (!light.sample(hit.p, &ls)) continue;
+                // Blender lights: Cycles' falloff, from the centre (blender_lights.h).
+                if (light.light().blender &&
+                    !whitted_blender_color(light.light(), hit.p, &ls.color))
+                    continue;
                 // Light on the far side of the surface from the viewer.
                 if (!double_illuminate && dot(lay_n, ls.dir) < kPovEpsilon) continue;
                 Color lc = ls.color;
