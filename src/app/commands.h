@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/scene_loading.h"
+#include "io/image_output.h"
 
 namespace CLI {
 class App;
@@ -31,6 +32,9 @@ struct RenderArgs {
     // <out-stem>.<name>.exr (render_command.cpp: aov_output_path).
     std::string aov;
     bool variance = false;
+    // --view/--look/--exposure/--gamma/--ocio-config: Blender's color management for 8-bit
+    // output (convert_command.cpp: add_view_options).
+    io::ViewSettings view;
     // POV-Ray switches and .ini files (pov_options.h), in command-line order. glint's own
     // flags, where given, win over them; `given` records which were.
     std::vector<std::string> pov_args;
@@ -67,7 +71,22 @@ struct ReportArgs {
     bool given_width = false, given_height = false;
 };
 
+// `glint convert IN.exr -o OUT.png [--view ...]` (convert_command.cpp).
+struct ConvertArgs {
+    std::string input;
+    std::string output;
+    io::ViewSettings view;
+    bool verbose = false;
+};
+
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args);
+CLI::App* add_convert_command(CLI::App& app, ConvertArgs& args);
+// Blender's Color Management flags, shared by render and convert.
+void add_view_options(CLI::App& cmd, io::ViewSettings& view);
+// Usage error for --look/--exposure/--gamma/--ocio-config set without --view; with --view the
+// settings checked against the config (config_path resolved).
+io::ViewSettings checked_view_settings(const io::ViewSettings& view);
+int run_convert(const ConvertArgs& args);
 CLI::App* add_ir_command(CLI::App& app, IrArgs& args);
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args);
 CLI::App* add_report_command(CLI::App& app, ReportArgs& args);

@@ -1,6 +1,6 @@
 // glint: the command-line front end. It only parses flags and dispatches; each subcommand
 // lives in its own file (render_command.cpp, ir_command.cpp, compare_command.cpp,
-// report_command.cpp).
+// report_command.cpp, convert_command.cpp).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
@@ -20,10 +20,12 @@ int main(int argc, char** argv) {
     IrArgs ir_args;
     CompareArgs compare_args;
     ReportArgs report_args;
+    ConvertArgs convert_args;
     CLI::App* render = add_render_command(app, render_args);
     CLI::App* ir = add_ir_command(app, ir_args);
     CLI::App* compare = add_compare_command(app, compare_args);
     CLI::App* report = add_report_command(app, report_args);
+    CLI::App* convert = add_convert_command(app, convert_args);
 
     // POV-Ray's switches and .ini files (`glint render +W640 scene.ini`) are not CLI11 flags:
     // they are taken out first and read in order by run_render.
@@ -50,6 +52,7 @@ int main(int argc, char** argv) {
         if (ir->parsed()) return run_ir(ir_args);
         if (compare->parsed()) return run_compare(compare_args);
         if (report->parsed()) return run_report(report_args);
+        if (convert->parsed()) return run_convert(convert_args);
     } catch (const glint::Error& e) {
         return report_error(e);
     } catch (const std::bad_alloc&) {

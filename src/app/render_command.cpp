@@ -14,6 +14,7 @@
 #include "app/commands.h"
 #include "app/pov_options.h"
 #include "app/scene_loading.h"
+#include "io/color_encoding.h"
 #include "io/image_output.h"
 #include "io/progress.h"
 #include "io/scene_encoding.h"
@@ -164,6 +165,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                   "Path tracer: also write OUT-stem.variance.exr, per pixel and channel the "
                   "variance of the pixel's mean (sample variance / n; 0 with fewer than 2 "
                   "samples)");
+    add_view_options(*cmd, args.view);
     cmd->add_flag("-v,--verbose", args.verbose, "Print features used and skipped, and timings");
     cmd->add_option("--progress", args.progress,
                     "Progress on stderr: bar, lines (`progress 0.42`), none "
@@ -347,6 +349,11 @@ int render_frame(const RenderArgs& args) {
     options.aovs = !aovs.empty();
     options.variance = args.variance;
     check_output_path(args.output);
+    // A bad view, look or missing config fails before the render, not after it.
+    const io::ViewSettings view = checked_view_settings(args.view);
+    if (view.active() && io::is_float_format(args.output))
+        warn("--view " + view.view + " does not apply to " + args.output +
+             ": float images are written linear (convert them with glint convert --view)");
 
     scene::Scene scene = load_scene(args.scene, args.verbose);
     double parse_seconds = seconds_since(start);
@@ -371,6 +378,7 @@ int render_frame(const RenderArgs& args) {
     if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
 
     io::OutputEncoding encoding = io::output_encoding_for(scene);
+    encoding.view = view;
     Clock::time_point write_start = Clock::now();
     io::write_image(result.image, args.output, encoding);
     for (const std::string& name : aovs) {
@@ -390,7 +398,9 @@ int render_frame(const RenderArgs& args) {
     if (args.verbose) {
         print_features(result.features);
         std::fprintf(stderr, "image: %dx%d, aa %s, 8/16-bit encoding %s\n", result.image.width,
-                     result.image.height, args.aa.c_str(), encoding_name(encoding).c_str());
+                     result.image.height, args.aa.c_str(),
+                     encoding.view.active() ? io::describe_view(encoding.view).c_str()
+                                            : encoding_name(encoding).c_str());
         if (options.integrator == render::IntegratorKind::Path)
             std::fprintf(stderr,
                          "path: %d spp, max depth %d, seed %u, %llu non-finite paths dropped, "

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "io/image_output.h"
@@ -34,5 +35,37 @@ std::vector<float> linear_rgba(const render::Image& image, const OutputEncoding&
 
 // The encoded value of one film value; convenient for tests and single colors.
 float encode_value(float value, const OutputEncoding& encoding);
+
+// --- Blender's view transforms (ViewSettings, --view) ---
+//
+// Blender 3.4 saves a float image as PNG/JPEG like this (imbuf color management): exposure
+// (a scale of 2^EV in scene linear), the look, the display's view transform (Standard: the
+// sRGB curve, Filmic: its log shaper and LUTs, all from config.ocio), gamma (an exponent of
+// 1/G), built as one OpenColorIO GroupTransform and run by the processor's default CPU
+// processor; pixels with alpha strictly between 0 and 1 are divided by alpha before the
+// transform and multiplied after it (Blender's premultiplied float buffers), then divided
+// again for the file's straight alpha; finally unit_float_to_uchar_clamp, which for every
+// non-NaN value equals `quantize` above (clip, * 255, + 0.5, truncate). glint builds the same
+// transforms with the same OpenColorIO (Debian's 2.1, which Debian's Blender links), so the
+// floats, and the 8-bit codes, are the same.
+
+// The config.ocio to use: `given` when not empty, else $OCIO, else Blender's own
+// (/usr/share/blender/datafiles/colormanagement/config.ocio, then the versioned
+// /usr/share/blender/<version>/datafiles/colormanagement/config.ocio, newest first, then the
+// same under /usr/local/share/blender). Throws Error(MissingFile) naming every place searched.
+std::string find_ocio_config(const std::string& given);
+
+// Checks the view, display and look against the config (Error(Usage) listing the valid names)
+// and returns the settings with config_path resolved.
+ViewSettings resolve_view(const ViewSettings& view);
+
+// `rgba`: width*height*4 linear values, premultiplied alpha (as OpenEXR stores them and as
+// Blender holds a render). Returns the display values, straight alpha, unclamped (quantize
+// clips them). Loads the config once per call; throws Error(Output) when OpenColorIO fails.
+std::vector<float> view_rgba(const std::vector<float>& rgba, int width, int height,
+                             const ViewSettings& view);
+
+// One line for -v: "view Filmic, look None, exposure 0, gamma 1 (display sRGB, CONFIG)".
+std::string describe_view(const ViewSettings& view);
 
 }  // namespace glint::io

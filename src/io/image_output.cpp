@@ -99,6 +99,8 @@ void write_atomically(const std::string& path, const char* oiio_name, const OIIO
 
 std::string output_format_for(const std::string& path) { return format_info(path).oiio_name; }
 
+bool is_float_format(const std::string& path) { return format_info(path).is_float; }
+
 void write_image(const render::Image& image, const std::string& path,
                  const OutputEncoding& encoding) {
     const FormatInfo& format = format_info(path);
@@ -126,6 +128,30 @@ void write_image(const render::Image& image, const std::string& path,
         for (size_t i = 0; i < pixels; ++i)
             for (int c = 0; c < channels; ++c) float_data[i * channels + c] = linear[i * 4 + c];
         data = float_data.data();
+    } else if (encoding.view.active()) {
+        // Blender's display image of the linear values the float formats get; alpha 1 when
+        // the file has none, as Blender reads an RGB EXR.
+        if (encoding.view.view == "Standard") spec.attribute("oiio:ColorSpace", "sRGB");
+        // view_rgba returns straight alpha, which PNG stores: OpenImageIO must not divide again.
+        spec.attribute("oiio:UnassociatedAlpha", 1);
+        if (format.max_value == 255) spec.attribute("CompressionQuality", 95);
+        std::vector<float> linear = linear_rgba(image, encoding);
+        if (channels == 3)
+            for (size_t i = 0; i < pixels; ++i) linear[i * 4 + 3] = 1.0f;
+        const std::vector<float> shown =
+            view_rgba(linear, image.width, image.height, encoding.view);
+        u8_data.resize(format.max_value == 255 ? pixels * channels : 0);
+        u16_data.resize(format.max_value == 255 ? 0 : pixels * channels);
+        for (size_t i = 0; i < pixels; ++i)
+            for (int c = 0; c < channels; ++c) {
+                const unsigned code = quantize(shown[i * 4 + c], format.max_value);
+                if (format.max_value == 255)
+                    u8_data[i * channels + c] = static_cast<uint8_t>(code);
+                else
+                    u16_data[i * channels + c] = static_cast<uint16_t>(code);
+            }
+        data = format.max_value == 255 ? static_cast<const void*>(u8_data.data())
+                                       : static_cast<const void*>(u16_data.data());
     } else {
         if (encoding.transfer == OutputEncoding::Transfer::Srgb)
             spec.attribute("oiio:ColorSpace", "sRGB");
@@ -170,6 +196,44 @@ void write_float_exr(const render::Image& image, const std::string& path, int ch
     for (size_t i = 0; i < pixels; ++i)
         for (int c = 0; c < channels; ++c) data[i * channels + c] = image.rgba[i * 4 + c];
     write_atomically(path, "openexr", spec, OIIO::TypeDesc::FLOAT, data.data());
+}
+
+render::Image read_float_image(const std::string& path, bool* has_alpha) {
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+    if (!in) {
+        std::string why = OIIO::geterror();
+        throw Error(ErrorKind::MissingFile, {},
+                    "cannot read " + path + (why.empty() ? std::string() : ": " + why));
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    const OIIO::TypeDesc::BASETYPE base =
+        static_cast<OIIO::TypeDesc::BASETYPE>(spec.format.basetype);
+    if (base != OIIO::TypeDesc::FLOAT && base != OIIO::TypeDesc::HALF &&
+        base != OIIO::TypeDesc::DOUBLE)
+        throw Error(ErrorKind::Usage, {},
+                    path +
+                        " is not a float image: give a linear .exr or .hdr (an 8/16-bit "
+                        "file is already display-encoded)");
+    const int nc = spec.nchannels;
+    if (spec.width <= 0 || spec.height <= 0 || nc <= 0)
+        throw Error(ErrorKind::MissingFile, {}, "cannot read " + path + ": the image is empty");
+    const size_t pixels = static_cast<size_t>(spec.width) * spec.height;
+    std::vector<float> data(pixels * nc);
+    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, data.data()))
+        throw Error(ErrorKind::MissingFile, {}, "cannot read " + path + ": " + in->geterror());
+    const int alpha = spec.alpha_channel >= 0 ? spec.alpha_channel : (nc == 4 ? 3 : -1);
+    if (has_alpha) *has_alpha = alpha >= 0;
+    render::Image image;
+    image.width = spec.width;
+    image.height = spec.height;
+    image.rgba.resize(pixels * 4);
+    for (size_t i = 0; i < pixels; ++i) {
+        const float* p = &data[i * nc];
+        float* q = &image.rgba[i * 4];
+        for (int c = 0; c < 3; ++c) q[c] = nc >= 3 ? p[c] : p[0];
+        q[3] = alpha >= 0 ? p[alpha] : 1.0f;
+    }
+    return image;
 }
 
 }  // namespace glint::io

@@ -19,18 +19,38 @@ namespace glint::io {
 // light, and need no color transform at all when the working space is linear. This is POV-Ray
 // 3.7's TranscodingGammaCurve (source/base/image/colourspace.cpp), including its shortcut: a
 // working space equal to the transfer is the identity.
+//
+// ViewSettings (glint's --view, --look, --exposure, --gamma): Blender's Color Management panel.
+// With a view the 8/16-bit file gets what Blender 3.4 saves for the linear image (the float
+// formats' values) through its OpenColorIO config, instead of POV-Ray's encoding.
+struct ViewSettings {
+    std::string view;       // a view of `display` ("Standard", "Filmic"); empty: no view
+    std::string look;       // empty or "None": no look
+    float exposure = 0.0f;  // EV; Blender keeps these two as floats
+    float gamma = 1.0f;
+    std::string display = "sRGB";
+    std::string config_path;  // config.ocio; empty: find_ocio_config (color_encoding.h)
+
+    bool active() const { return !view.empty(); }
+};
+
 struct OutputEncoding {
     enum class Transfer { Linear, Srgb, Gamma } transfer = Transfer::Srgb;
     double gamma = 2.2;          // Transfer::Gamma: file value = v^(1/gamma)
     double working_gamma = 1.0;  // film value v is linear after v^working_gamma
     bool working_srgb = false;   // film values are sRGB-encoded (overrides working_gamma)
     bool alpha = false;          // write an alpha channel (POV-Ray +UA)
+    ViewSettings view;           // when active, replaces the transfer for 8/16-bit files
 };
 
 // The OpenImageIO format name for the path's extension (case-insensitive): png, openexr,
 // tiff, hdr, jpeg. Throws Error(Output) "unsupported output format" for anything else, so the
 // CLI can refuse a bad name before it renders.
 std::string output_format_for(const std::string& path);
+
+// Whether the path's format stores linear float values (exr, hdr). Throws like
+// output_format_for.
+bool is_float_format(const std::string& path);
 
 // Throws glint::Error(ErrorKind::Output) naming the path and the reason. Writes
 // `<path>.tmp-<pid>` beside the target and renames it; on failure the temporary is removed.
@@ -42,5 +62,10 @@ void write_image(const render::Image& image, const std::string& path,
 // they are (no encoding): the path tracer's AOVs and variance. One channel is named Z
 // (OpenEXR's depth channel), three R, G, B. Atomic like write_image; throws Error(Output).
 void write_float_exr(const render::Image& image, const std::string& path, int channels = 3);
+
+// Reads a float image (OpenEXR, Radiance HDR) as linear RGBA: one channel becomes gray, a
+// missing alpha 1; `has_alpha` tells whether the file had one. Throws Error(MissingFile) when
+// it cannot be read and Error(Usage) for an integer (display-encoded) file.
+render::Image read_float_image(const std::string& path, bool* has_alpha = nullptr);
 
 }  // namespace glint::io
