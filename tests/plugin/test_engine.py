@@ -7,7 +7,8 @@
    the render size (resolution x percentage), is not empty, and equals bit for bit what glint
    writes when the kept folder's command.txt is run again from the shell.
 2. export_frame: an orthographic camera is written as one; a panoramic camera is an
-   ExportError; depth of field, motion blur and transparent film each give one warning.
+   ExportError; depth of field, motion blur and transparent film each give one warning; a
+   scene without meshes leaves out the obj_file.
 3. Animation: `blender -b f.blend -E GLINT -a` over a 3-frame camera move writes three frames
    that differ from each other and each equal the CLI re-render of its own export.
 4. make_zip.sh's zip installs through Blender's add-on installer and renders the default scene.
@@ -132,7 +133,13 @@ def test_export(work):
         n = sum(key in w for w in warnings)
         if n != 1:
             fail("expected one warning about %r, got %d: %s" % (key, n, warnings))
-    print("export: orthographic camera, panoramic error, %d warnings: %s"
+    for name in ("Plane", "Cube", "Sphere"):  # no meshes: world only (glint rejects an
+        bpy.data.objects.remove(bpy.data.objects[name])  # obj_file without faces)
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    ex = exporter.export_frame(depsgraph, os.path.join(work, "empty"), warnings.append)
+    if "obj_file" in open(ex.scene_path).read():
+        fail("a scene without meshes still references its (empty) OBJ")
+    print("export: orthographic camera, panoramic error, %d warnings: %s, empty scene"
           % (len(warnings), warnings))
 
 

@@ -391,6 +391,13 @@ def export_obj(depsgraph, path):
         raise ExportError("Blender's OBJ exporter failed (%s)" % ", ".join(result))
 
 
+def _has_faces(obj_path):
+    """Whether the OBJ has a face (glint rejects an obj_file without one; Blender renders an
+    empty scene as the world alone)."""
+    with open(obj_path, "rb") as f:
+        return any(line.startswith(b"f ") for line in f)
+
+
 def _rewrite_materials(mtl_path, depsgraph, out_dir, warn):
     """materials.rewrite_mtl (Principled & co. in glint's MTL dialect) when it is there."""
     try:
@@ -455,7 +462,8 @@ def export_frame(depsgraph, out_dir, warn):
              camera,
              world_text(scene, out_dir, warn),
              lights_text(depsgraph, warn),
-             'obj_file { "%s.obj" }\n' % SCENE_NAME]
+             'obj_file { "%s.obj" }\n' % SCENE_NAME if _has_faces(obj_path) else
+             "// no meshes to render: the world and lights only\n"]
     scene_path = os.path.join(out_dir, SCENE_NAME + ".pov")
     with open(scene_path, "w", encoding="utf-8") as f:
         f.write("".join(parts))
