@@ -6,8 +6,9 @@
 Blender writes a linear float EXR of test values (a fine gray ramp across the 8-bit rounding
 steps, a logarithmic ramp from 2^-24 to 2^12, negative, tiny and denormal values, saturated
 and random colors, and pixels with partial and zero alpha), reloads it, and saves it as an
-RGBA PNG through the scene's color management (dither 0) for each case below; glint converts
-the same EXR with the same view, look, exposure and gamma. Every 8-bit value (R, G, B, A)
+RGBA PNG through the scene's color management (dither 0) for each case below, either with
+Image.save_render or as a render result (the EXR through the compositor, F12 with
+write_still); glint converts the same EXR with the same view, look, exposure and gamma. Every 8-bit value (R, G, B, A)
 must be identical. One line per case reports the count of differing values and the largest
 |difference|; the exit code is non-zero when any case differs or a step fails.
 """
@@ -22,13 +23,15 @@ import numpy as np
 
 W, H = 256, 192
 
-# (name, view, look, exposure, gamma)
+# (name, view, look, exposure, gamma, how Blender saves: "save" or "render")
 CASES = [
-    ("standard", "Standard", "None", 0.0, 1.0),
-    ("filmic", "Filmic", "None", 0.0, 1.0),
-    ("filmic_look", "Filmic", "Medium High Contrast", 0.0, 1.0),
-    ("filmic_exposure_gamma", "Filmic", "None", 1.3, 0.8),
-    ("standard_exposure_gamma", "Standard", "None", -0.7, 1.6),
+    ("standard", "Standard", "None", 0.0, 1.0, "save"),
+    ("filmic", "Filmic", "None", 0.0, 1.0, "save"),
+    ("filmic_look", "Filmic", "Medium High Contrast", 0.0, 1.0, "save"),
+    ("filmic_exposure_gamma", "Filmic", "None", 1.3, 0.8, "save"),
+    ("standard_exposure_gamma", "Standard", "None", -0.7, 1.6, "save"),
+    ("render_standard", "Standard", "None", 0.0, 1.0, "render"),
+    ("render_filmic", "Filmic", "None", 0.0, 1.0, "render"),
 ]
 
 
@@ -87,7 +90,29 @@ def write_exr(path):
     bpy.data.images.remove(img)
 
 
-def blender_png(exr, png, view, look, exposure, gamma):
+def setup_compositor(exr):
+    """The EXR as the render result: an empty scene whose compositor shows the image."""
+    scene = bpy.context.scene
+    for obj in list(bpy.data.objects):
+        bpy.data.objects.remove(obj)
+    scene.render.engine = "CYCLES"
+    scene.cycles.samples = 1
+    scene.render.resolution_x, scene.render.resolution_y = W, H
+    scene.render.resolution_percentage = 100
+    scene.render.film_transparent = True
+    scene.use_nodes = True
+    nodes = scene.node_tree.nodes
+    for n in list(nodes):
+        nodes.remove(n)
+    src = nodes.new("CompositorNodeImage")
+    src.image = bpy.data.images.load(exr, check_existing=False)
+    out = nodes.new("CompositorNodeComposite")
+    out.use_alpha = True
+    scene.node_tree.links.new(src.outputs["Image"], out.inputs["Image"])
+    scene.node_tree.links.new(src.outputs["Alpha"], out.inputs["Alpha"])
+
+
+def blender_png(exr, png, view, look, exposure, gamma, how):
     scene = bpy.context.scene
     scene.display_settings.display_device = "sRGB"
     vs = scene.view_settings
@@ -103,6 +128,10 @@ def blender_png(exr, png, view, look, exposure, gamma):
     s.color_mode = "RGBA"
     s.color_depth = "8"
     s.compression = 15
+    if how == "render":
+        scene.render.filepath = png
+        bpy.ops.render.render(write_still=True)
+        return
     img = bpy.data.images.load(exr, check_existing=False)
     img.save_render(png, scene=scene)
     bpy.data.images.remove(img)
@@ -128,11 +157,12 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     exr = os.path.join(args.out, "color_check.exr")
     write_exr(exr)
+    setup_compositor(exr)
     failed = False
-    for name, view, look, exposure, gamma in CASES:
+    for name, view, look, exposure, gamma, how in CASES:
         ref = os.path.join(args.out, name + "_blender.png")
         out = os.path.join(args.out, name + "_glint.png")
-        blender_png(exr, ref, view, look, exposure, gamma)
+        blender_png(exr, ref, view, look, exposure, gamma, how)
         cmd = [args.glint, "convert", exr, "-o", out, "--view", view, "--exposure",
                repr(exposure), "--gamma", repr(gamma)]
         if look != "None":
@@ -152,7 +182,7 @@ def main():
         diff = np.abs(a - b)
         count = int(np.count_nonzero(diff))
         rgb = int(np.count_nonzero(diff[..., 0:3]))
-        print(f"{name}: view={view} look={look} exposure={exposure} gamma={gamma}: "
+        print(f"{name}: {how}, view={view} look={look} exposure={exposure} gamma={gamma}: "
               f"{count} of {diff.size} 8-bit values differ ({rgb} RGB), "
               f"max |diff| {int(diff.max())}")
         if count:
