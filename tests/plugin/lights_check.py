@@ -4,7 +4,8 @@
         --glint build/glint --out DIR [--spp 128] [--cases point0,sun5] [--whitted]
 
 For each case a Blender scene holds a Lambert plane (albedo 0.8, 8 x 8 m), a camera that sees
-the plane and the light, and one light; the world is black. Cycles renders it with the
+the plane and the light, and one light; the world is black (glossy_*: a Principled plane of
+roughness 0.15, where BSDF rays that hit the light carry the highlight). Cycles renders it with the
 settings of tests/cycles/make_scenes.py (setup_render); glint renders the same scene, exported
 the same way (OBJ + camera of make_scenes.py) with the light written by hand as the
 `blender_light` block the add-on writes. One line per case gives the ratio glint / Cycles of
@@ -41,7 +42,7 @@ CASES = {
                        radius=0.0, spot_size=70, spot_blend=0.0),
     "sun0": dict(type="SUN", aim_dir=(0.4, 0.3, -1), power=2.0, angle=0.0),
     "sun5": dict(type="SUN", aim_dir=(0.4, 0.3, -1), power=2.0, angle=5.0),
-    "sun_visible": dict(type="SUN", aim_dir=(0.1, 0.995, -0.12), power=2.0, angle=10.0,
+    "sun_visible": dict(type="SUN", aim_dir=(-0.05, -0.985, 0.174), power=2.0, angle=10.0,
                         camera=True),
     "area_square": dict(type="AREA", loc=(0, 0.8, 1.2), aim=(0.2, 0.3, 0), power=150,
                         shape="SQUARE", size=1.0),
@@ -53,6 +54,13 @@ CASES = {
                          shape="ELLIPSE", size=1.2, size_y=0.6, roll=-20),
     "area_spread": dict(type="AREA", loc=(0, 0.5, 0.8), aim=(0.4, 0.6, 0), power=150,
                         shape="RECTANGLE", size=1.5, size_y=1.0, spread=60),
+    # A glossy plane: BSDF rays that hit the lights carry much of the highlight (MIS).
+    "glossy_point03": dict(type="POINT", loc=(0.3, 1.5, 1.0), power=100, radius=0.3,
+                           glossy=True),
+    "glossy_area": dict(type="AREA", loc=(0, 1.5, 1.0), aim=(0, 0.5, 0), power=150,
+                        shape="RECTANGLE", size=1.0, size_y=0.4, glossy=True),
+    "glossy_sun5": dict(type="SUN", aim_dir=(0, -0.95, -0.35), power=2.0, angle=5.0,
+                        glossy=True),
 }
 
 
@@ -62,7 +70,10 @@ def pov(v):
 
 def build(case):
     ms.reset()
-    white = ms.diffuse_material("white", (0.8, 0.8, 0.8))
+    if case.get("glossy"):
+        white = ms.principled_material("white", base=(0.8, 0.8, 0.8), roughness=0.15)
+    else:
+        white = ms.diffuse_material("white", (0.8, 0.8, 0.8))
     ms.add_quad("plane", (0, 0, 0), 8, 8, white, z_normal_down=False)
     ms.add_camera((0, -4.0, 2.6), (0, 0.6, 0.4), lens_mm=30.0)
     ms.set_world_color((0, 0, 0))
