@@ -380,7 +380,7 @@ ViewSettings resolve_view(const ViewSettings& view) {
 }
 
 std::vector<float> view_rgba(const std::vector<float>& rgba, int width, int height,
-                             const ViewSettings& view) {
+                             const ViewSettings& view, bool straight) {
     const std::string path = find_ocio_config(view.config_path);
     ViewSettings v = view;
     v.config_path = path;
@@ -418,7 +418,7 @@ std::vector<float> view_rgba(const std::vector<float>& rgba, int width, int heig
         }
     }
     // The byte conversion (IMB_buffer_byte_from_float) turns premultiplied into straight alpha.
-    unpremultiply();
+    if (straight) unpremultiply();
     return px;
 }
 

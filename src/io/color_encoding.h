@@ -45,9 +45,10 @@ float encode_value(float value, const OutputEncoding& encoding);
 // processor; pixels with alpha strictly between 0 and 1 are divided by alpha before the
 // transform and multiplied after it (Blender's premultiplied float buffers), then divided
 // again for the file's straight alpha; finally unit_float_to_uchar_clamp, which for every
-// non-NaN value equals `quantize` above (clip, * 255, + 0.5, truncate). glint builds the same
-// transforms with the same OpenColorIO (Debian's 2.1, which Debian's Blender links), so the
-// floats, and the 8-bit codes, are the same.
+// non-NaN value equals `quantize` above (clip, * 255, + 0.5, truncate). A 16-bit TIFF keeps
+// the premultiplied display values (TIFF's associated alpha) and unit_float_to_ushort_clamp.
+// glint builds the same transforms with the same OpenColorIO (Debian's 2.1, which Debian's
+// Blender links), so the floats, and the 8/16-bit codes, are the same.
 
 // The config.ocio to use: `given` when not empty, else $OCIO, else Blender's own
 // (/usr/share/blender/datafiles/colormanagement/config.ocio, then the versioned
@@ -60,10 +61,19 @@ std::string find_ocio_config(const std::string& given);
 ViewSettings resolve_view(const ViewSettings& view);
 
 // `rgba`: width*height*4 linear values, premultiplied alpha (as OpenEXR stores them and as
-// Blender holds a render). Returns the display values, straight alpha, unclamped (quantize
-// clips them). Loads the config once per call; throws Error(Output) when OpenColorIO fails.
+// Blender holds a render). Returns the display values, unclamped (quantize clips them), with
+// straight alpha (8-bit files) or premultiplied (`straight` false: Blender's 16-bit TIFF).
+// Loads the config once per call; throws Error(Output) when OpenColorIO fails.
 std::vector<float> view_rgba(const std::vector<float>& rgba, int width, int height,
-                             const ViewSettings& view);
+                             const ViewSettings& view, bool straight = true);
+
+// Blender's unit_float_to_ushort_clamp: 65535 from 1 - 0.5/65535 up, 0 from 0 down (and NaN),
+// else truncate(v * 65535 + 0.5).
+inline unsigned quantize_blender16(float v) {
+    if (v >= 1.0f - 0.5f / 65535.0f) return 65535;
+    if (!(v > 0.0f)) return 0;
+    return static_cast<unsigned>(v * 65535.0f + 0.5f);
+}
 
 // One line for -v: "view Filmic, look None, exposure 0, gamma 1 (display sRGB, CONFIG)".
 std::string describe_view(const ViewSettings& view);

@@ -132,26 +132,28 @@ void write_image(const render::Image& image, const std::string& path,
         // Blender's display image of the linear values the float formats get; alpha 1 when
         // the file has none, as Blender reads an RGB EXR.
         if (encoding.view.view == "Standard") spec.attribute("oiio:ColorSpace", "sRGB");
-        // view_rgba returns straight alpha, which PNG stores: OpenImageIO must not divide again.
-        spec.attribute("oiio:UnassociatedAlpha", 1);
-        if (format.max_value == 255) spec.attribute("CompressionQuality", 95);
+        // Blender writes 8-bit files with straight alpha (PNG's; OpenImageIO must not divide
+        // again) and 16-bit TIFF premultiplied (TIFF's associated alpha), each as it stores it.
+        const bool eight_bit = format.max_value == 255;
+        if (eight_bit) spec.attribute("oiio:UnassociatedAlpha", 1);
+        if (eight_bit) spec.attribute("CompressionQuality", 95);
         std::vector<float> linear = linear_rgba(image, encoding);
         if (channels == 3)
             for (size_t i = 0; i < pixels; ++i) linear[i * 4 + 3] = 1.0f;
         const std::vector<float> shown =
-            view_rgba(linear, image.width, image.height, encoding.view);
-        u8_data.resize(format.max_value == 255 ? pixels * channels : 0);
-        u16_data.resize(format.max_value == 255 ? 0 : pixels * channels);
+            view_rgba(linear, image.width, image.height, encoding.view, eight_bit);
+        u8_data.resize(eight_bit ? pixels * channels : 0);
+        u16_data.resize(eight_bit ? 0 : pixels * channels);
         for (size_t i = 0; i < pixels; ++i)
             for (int c = 0; c < channels; ++c) {
-                const unsigned code = quantize(shown[i * 4 + c], format.max_value);
-                if (format.max_value == 255)
-                    u8_data[i * channels + c] = static_cast<uint8_t>(code);
+                const float v = shown[i * 4 + c];
+                if (eight_bit)
+                    u8_data[i * channels + c] = static_cast<uint8_t>(quantize(v, 255));
                 else
-                    u16_data[i * channels + c] = static_cast<uint16_t>(code);
+                    u16_data[i * channels + c] = static_cast<uint16_t>(quantize_blender16(v));
             }
-        data = format.max_value == 255 ? static_cast<const void*>(u8_data.data())
-                                       : static_cast<const void*>(u16_data.data());
+        data = eight_bit ? static_cast<const void*>(u8_data.data())
+                         : static_cast<const void*>(u16_data.data());
     } else {
         if (encoding.transfer == OutputEncoding::Transfer::Srgb)
             spec.attribute("oiio:ColorSpace", "sRGB");

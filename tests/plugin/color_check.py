@@ -1,4 +1,4 @@
-"""Checks that `glint convert --view ...` gives Blender 3.4's own 8-bit pixels.
+"""Checks that `glint convert --view ...` gives Blender 3.4's own 8-bit (and 16-bit) values.
 
     blender -b --factory-startup --python tests/plugin/color_check.py -- \
         --glint build/glint --out DIR
@@ -8,13 +8,15 @@ steps, a logarithmic ramp from 2^-24 to 2^12, negative, tiny and denormal values
 and random colors, and pixels with partial and zero alpha), reloads it, and saves it as an
 RGBA PNG through the scene's color management (dither 0) for each case below, either with
 Image.save_render or as a render result (the EXR through the compositor, F12 with
-write_still); glint converts the same EXR with the same view, look, exposure and gamma. Every 8-bit value (R, G, B, A)
-must be identical. One line per case reports the count of differing values and the largest
-|difference|; the exit code is non-zero when any case differs or a step fails.
+write_still), and as a 16-bit TIFF; glint converts the same EXR with the same view, look,
+exposure and gamma. Every value (R, G, B, A) must be identical. One line per case reports the
+count of differing values and the largest |difference|; the exit code is non-zero when any
+case differs or a step fails.
 """
 
 import argparse
 import os
+import shutil
 import subprocess
 import sys
 
@@ -23,7 +25,8 @@ import numpy as np
 
 W, H = 256, 192
 
-# (name, view, look, exposure, gamma, how Blender saves: "save" or "render")
+# (name, view, look, exposure, gamma, how Blender saves: "save" or "render"; "save16": a 16-bit
+# TIFF, compared through oiiotool when it is installed)
 CASES = [
     ("standard", "Standard", "None", 0.0, 1.0, "save"),
     ("filmic", "Filmic", "None", 0.0, 1.0, "save"),
@@ -32,6 +35,8 @@ CASES = [
     ("standard_exposure_gamma", "Standard", "None", -0.7, 1.6, "save"),
     ("render_standard", "Standard", "None", 0.0, 1.0, "render"),
     ("render_filmic", "Filmic", "None", 0.0, 1.0, "render"),
+    ("tiff16_standard", "Standard", "None", 0.0, 1.0, "save16"),
+    ("tiff16_filmic", "Filmic", "None", 0.0, 1.0, "save16"),
 ]
 
 
@@ -124,10 +129,15 @@ def blender_png(exr, png, view, look, exposure, gamma, how):
     scene.sequencer_colorspace_settings.name = "sRGB"
     scene.render.dither_intensity = 0.0
     s = scene.render.image_settings
-    s.file_format = "PNG"
+    if how == "save16":
+        s.file_format = "TIFF"
+        s.color_depth = "16"
+        s.tiff_codec = "DEFLATE"
+    else:
+        s.file_format = "PNG"
+        s.color_depth = "8"
+        s.compression = 15
     s.color_mode = "RGBA"
-    s.color_depth = "8"
-    s.compression = 15
     if how == "render":
         scene.render.filepath = png
         bpy.ops.render.render(write_still=True)
@@ -135,6 +145,15 @@ def blender_png(exr, png, view, look, exposure, gamma, how):
     img = bpy.data.images.load(exr, check_existing=False)
     img.save_render(png, scene=scene)
     bpy.data.images.remove(img)
+
+
+def read_tiff16(path):
+    """H x W x 4 raw 16-bit codes, top row first (Blender would linearize them on loading)."""
+    r = subprocess.run(["oiiotool", "--dumpdata", path], capture_output=True, text=True,
+                       check=True)
+    rows = [line.split(":", 1)[1].split("(")[0].split()
+            for line in r.stdout.splitlines() if line.strip().startswith("Pixel (")]
+    return np.array(rows, np.int64).reshape(H, W, 4)
 
 
 def read_png(path):
@@ -159,9 +178,14 @@ def main():
     write_exr(exr)
     setup_compositor(exr)
     failed = False
+    oiiotool = shutil.which("oiiotool")
     for name, view, look, exposure, gamma, how in CASES:
-        ref = os.path.join(args.out, name + "_blender.png")
-        out = os.path.join(args.out, name + "_glint.png")
+        ext = ".tif" if how == "save16" else ".png"
+        if how == "save16" and not oiiotool:
+            print(f"{name}: skipped (no oiiotool to read 16-bit values)")
+            continue
+        ref = os.path.join(args.out, name + "_blender" + ext)
+        out = os.path.join(args.out, name + "_glint" + ext)
         blender_png(exr, ref, view, look, exposure, gamma, how)
         cmd = [args.glint, "convert", exr, "-o", out, "--view", view, "--exposure",
                repr(exposure), "--gamma", repr(gamma)]
@@ -174,16 +198,18 @@ def main():
             print(f"{name}: glint failed ({r.returncode}): {r.stderr.strip()}")
             failed = True
             continue
-        a, b = read_png(out), read_png(ref)
+        read = read_tiff16 if how == "save16" else read_png
+        a, b = read(out), read(ref)
         if a.shape != b.shape:
             print(f"{name}: sizes differ: glint {a.shape}, blender {b.shape}")
             failed = True
             continue
-        diff = np.abs(a - b)
+        diff = np.abs(a.astype(np.int64) - b)
         count = int(np.count_nonzero(diff))
         rgb = int(np.count_nonzero(diff[..., 0:3]))
+        bits = 16 if how == "save16" else 8
         print(f"{name}: {how}, view={view} look={look} exposure={exposure} gamma={gamma}: "
-              f"{count} of {diff.size} 8-bit values differ ({rgb} RGB), "
+              f"{count} of {diff.size} {bits}-bit values differ ({rgb} RGB), "
               f"max |diff| {int(diff.max())}")
         if count:
             ys, xs = np.nonzero(diff.max(axis=2))

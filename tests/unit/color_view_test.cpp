@@ -3,6 +3,7 @@
 // "Blender" were read from PNGs that Blender 3.4.1 saved (tests/plugin/color_check.py checks
 // every value of a larger image when Blender is installed). Tests that need Blender's config
 // are skipped without it.
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <stdlib.h>
 #include <sys/wait.h>
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -274,6 +276,43 @@ TEST(WriteImage, ViewGivesRgbPngWithoutAlphaAndRgbaWithIt) {
     glint::render::Image back = glint::io::read_float_image((dir / "lin.exr").string(), &alpha);
     EXPECT_TRUE(alpha);
     EXPECT_EQ(back.rgba, img.rgba);  // float output ignores the view
+    fs::remove_all(dir);
+}
+
+// 8-bit PNG keeps straight alpha, 16-bit TIFF premultiplied (associated) alpha: each as
+// Blender writes it.
+TEST(WriteImage, PngStraightTiffPremultiplied) {
+    REQUIRE_BLENDER_CONFIG();
+    fs::path dir = temp_dir("alpha");
+    glint::render::Image img;
+    img.width = 1;
+    img.height = 1;
+    img.rgba = {0.05f, 0.1f, 0.2f, 0.25f};  // premultiplied: straight (0.2, 0.4, 0.8)
+    glint::io::OutputEncoding enc;
+    enc.view = view("Filmic");
+    enc.alpha = true;
+    glint::io::write_image(img, (dir / "a.png").string(), enc);
+    glint::io::write_image(img, (dir / "a.tif").string(), enc);
+    auto raw = [](const fs::path& path, OIIO::TypeDesc type, void* data) {
+        // The values as stored: OpenImageIO would premultiply a PNG's straight alpha.
+        OIIO::ImageSpec config;
+        config.attribute("oiio:UnassociatedAlpha", 1);
+        std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path.string(), &config);
+        ASSERT_TRUE(in);
+        ASSERT_EQ(in->spec().nchannels, 4);
+        ASSERT_TRUE(in->read_image(0, 0, 0, 4, type, data));
+    };
+    uint8_t png[4];
+    uint16_t tif[4];
+    raw(dir / "a.png", OIIO::TypeDesc::UINT8, png);
+    raw(dir / "a.tif", OIIO::TypeDesc::UINT16, tif);
+    const std::vector<float> straight = shown(view("Filmic"), {0.2f, 0.4f, 0.8f, 1.0f});
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(png[c], code(straight[c])) << c;
+        EXPECT_NEAR(tif[c] / 65535.0f, straight[c] * 0.25f, 1e-4f) << c;
+    }
+    EXPECT_EQ(png[3], 64);  // 0.25 * 255 + 0.5
+    EXPECT_EQ(tif[3], 16384);
     fs::remove_all(dir);
 }
 
