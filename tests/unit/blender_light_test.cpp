@@ -14,6 +14,7 @@
 
 #include "core/log.h"
 #include "render/integrators/blender_lights.h"
+#include "render/lights/light.h"
 #include "render/render.h"
 #include "unit/path_test_util.h"
 #include "unit/pov_test_util.h"
@@ -309,6 +310,21 @@ TEST(BlenderLight, WhittedColorIsIrradianceOverPi) {
     ASSERT_TRUE(render::whitted_blender_color(w, Vec3(0, 0, 0), &c));
     EXPECT_NEAR(c.r, 0.25 * 100 / (kPi * 4), 1e-12);  // intensity P/4 towards the normal
     EXPECT_FALSE(render::whitted_blender_color(w, Vec3(0, 3, 0), &c));  // behind it
+    // The sun: a parallel light whose grid's edge shines from angle / 2 off its direction.
+    scene::Light sun = make_light(BlenderLightType::Sun, Vec3(0, 0, 0), 2);
+    sun.blender->direction = Vec3(0, -1, 0);
+    sun.blender->angle = 10;
+    const scene::Light ws = render::whitted_light(sun);
+    ASSERT_TRUE(ws.parallel);
+    ASSERT_TRUE(ws.area);
+    const render::PreparedLight pl(ws);
+    Vec3 dir;
+    double depth;
+    pl.white_ray(Vec3(0.5, 0, 0.2), Vec3(0, 0, 0), &dir, &depth);
+    EXPECT_NEAR(dir.y, 1.0, 1e-12);
+    EXPECT_GT(depth, 1e6);  // shadow rays reach past any scene
+    pl.white_ray(Vec3(0.5, 0, 0.2), ws.area->axis1 * 0.5, &dir, &depth);
+    EXPECT_NEAR(std::acos(dir.y) * 180 / kPi, 5.0, 1e-6);
 }
 
 // ---------------------------------------------------------------- rendered

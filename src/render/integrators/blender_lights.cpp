@@ -382,13 +382,13 @@ scene::Light whitted_light(const scene::Light& light) {
         case BlenderLightType::Sun: {
             l.parallel = true;
             l.location = -dir * kSunDistance;
-            l.point_at = l.location + dir;
+            l.point_at = Vec3(0, 0, 0);
             if (b.angle > 0) {
                 // Parallel area lights shine from each sample towards point_at: the grid spans
                 // the sun's cone at that distance.
                 Vec3 a, c;
                 frame(dir, &a, &c);
-                const double extent = 2 * std::tan(b.angle * kDeg / 2) * (kSunDistance + 1);
+                const double extent = 2 * std::tan(b.angle * kDeg / 2) * kSunDistance;
                 grid.axis1 = a * extent;
                 grid.axis2 = c * extent;
                 grid.circular = true;
