@@ -49,13 +49,26 @@ def run(cmd, env=None, cwd=None, log=None):
     return p.returncode, p.stdout, dt
 
 
+def blender_env(extra=None):
+    """The environment for Blender: without a pyenv (or virtualenv) interpreter first on PATH,
+    which Blender's embedded Python would otherwise take its standard library from (and then
+    lack numpy)."""
+    env = dict(os.environ, **(extra or {}))
+    env["PATH"] = os.pathsep.join(p for p in env.get("PATH", "").split(os.pathsep)
+                                  if "/.pyenv/" not in p and p != os.environ.get("VIRTUAL_ENV"))
+    for k in ("PYTHONHOME", "PYTHONPATH", "VIRTUAL_ENV"):
+        env.pop(k, None)
+    return env
+
+
 def tail(text, n=25):
     return "\n".join(text.rstrip().splitlines()[-n:])
 
 
 def blender_compare(args, *rest):
     rc, out, _ = run([args.blender, "-b", "--factory-startup", "--python-exit-code", "1",
-                      "--python", os.path.join(HERE, "compare_exr.py"), "--", *rest])
+                      "--python", os.path.join(HERE, "compare_exr.py"), "--", *rest],
+                      env=blender_env())
     for line in out.splitlines():
         if line.startswith("compare_exr:"):
             print(line)
@@ -83,8 +96,11 @@ def cli_argv(export_dir, glint, out_exr, threads):
         raise Failure("%s/command.txt has no -o OUT" % export_dir)
     argv[argv.index("-o") + 1] = out_exr
     argv.append("--variance")
-    if threads:
-        argv += ["--threads", str(threads)]
+    if threads:  # the image is the same whatever the count; this only fixes the timing
+        if "--threads" in argv:
+            argv[argv.index("--threads") + 1] = str(threads)
+        else:
+            argv += ["--threads", str(threads)]
     return argv
 
 
@@ -107,6 +123,8 @@ def main():
     ap.add_argument("--work", required=True)
     ap.add_argument("--threads", type=int, default=0)
     args = ap.parse_args()
+    args.glint, args.ztest = os.path.abspath(args.glint), os.path.abspath(args.ztest)
+    args.ref, args.scenes = os.path.abspath(args.ref), os.path.abspath(args.scenes)
     name = args.name
     anim = name == "anim"
     frames = ANIM_FRAMES if anim else (1,)
@@ -120,9 +138,9 @@ def main():
     os.makedirs(tmp)
     os.symlink(os.path.join(ROOT, "plugin", "blender", "glint_blender"),
                os.path.join(addons, "glint_blender"))
-    env = dict(os.environ, BLENDER_USER_SCRIPTS=os.path.join(work, "scripts"), TMPDIR=tmp,
+    env = blender_env(dict(BLENDER_USER_SCRIPTS=os.path.join(work, "scripts"), TMPDIR=tmp,
                TMP=tmp, TEMP=tmp, GLINT_TEST_BINARY=os.path.abspath(args.glint),
-               GLINT_TEST_THREADS=str(args.threads))
+               GLINT_TEST_THREADS=str(args.threads)))
     failures = []
 
     # 1. Render through the add-on.
