@@ -2,8 +2,10 @@
 
 Blender calls render(depsgraph) once per frame (F12, `blender -b f.blend -E GLINT -f 1`, and each
 frame of `-a`). In the UI render() runs on a job thread, where operators such as the OBJ exporter
-fail their context poll, so the export is queued to a bpy.app.timers function on the main thread
-and waited for; headless, render() is on the main thread and exports directly.
+fail their context poll, so the export is put on a queue that a bpy.app.timers function, registered
+on the main thread when the add-on is (registering a timer from another thread is not thread-safe
+in Blender), runs there; the render thread waits for it and keeps checking for cancel. Headless,
+render() is on the main thread and exports directly.
 
 Outcomes: success loads glint's linear float EXR into the render result (Blender applies its view
 transform afterwards); a failure reports glint's own error lines with self.report({'ERROR'}) so
@@ -13,6 +15,7 @@ removed in every case unless the keep_temp preference is on.
 """
 
 import os
+import queue
 import signal
 import tempfile
 import threading
@@ -24,6 +27,24 @@ import bpy
 from . import exporter, preferences, runner
 
 EXPORT_TIMEOUT_S = 600.0
+PUMP_INTERVAL_S = 0.05
+
+# Work for the main thread, put there by render threads (queue.Queue does its own locking).
+_main_thread_jobs = queue.Queue()
+
+
+def _pump():
+    """The persistent timer on the main thread: runs what render threads queued. Never raises
+    (Blender would drop the timer)."""
+    while True:
+        try:
+            job = _main_thread_jobs.get_nowait()
+        except queue.Empty:
+            return PUMP_INTERVAL_S
+        try:
+            job()
+        except Exception:
+            traceback.print_exc()
 
 
 class GlintRenderEngine(bpy.types.RenderEngine):
@@ -172,7 +193,7 @@ class GlintRenderEngine(bpy.types.RenderEngine):
                 done.set()
             return None
 
-        bpy.app.timers.register(job, first_interval=0.0, persistent=True)
+        _main_thread_jobs.put(job)  # no bpy.app.timers call here: not thread-safe
         deadline = time.monotonic() + EXPORT_TIMEOUT_S
         while not done.wait(0.05):
             with lock:
@@ -191,7 +212,11 @@ class GlintRenderEngine(bpy.types.RenderEngine):
 
 def register():
     bpy.utils.register_class(GlintRenderEngine)
+    if not bpy.app.timers.is_registered(_pump):
+        bpy.app.timers.register(_pump, first_interval=0.0, persistent=True)
 
 
 def unregister():
+    if bpy.app.timers.is_registered(_pump):
+        bpy.app.timers.unregister(_pump)
     bpy.utils.unregister_class(GlintRenderEngine)
