@@ -133,6 +133,22 @@ def test_export(work):
         n = sum(key in w for w in warnings)
         if n != 1:
             fail("expected one warning about %r, got %d: %s" % (key, n, warnings))
+    # A light's Camera ray visibility is written (Blender's default: off); settings glint
+    # does not have warn once.
+    bpy.ops.object.light_add(type='POINT', location=(0, 0, 3))
+    lamp = bpy.context.active_object
+    lamp.name = "lamp"
+    lamp.visible_camera = True
+    lamp.data.cycles.cast_shadow = False
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    warnings = []
+    ex = exporter.export_frame(depsgraph, os.path.join(work, "lamp"), warnings.append)
+    block = open(ex.scene_path).read().split("blender_light", 1)[-1]
+    if "visible_camera on" not in block:
+        fail("a light visible to the camera was not written so:\n" + block)
+    if sum("Cast Shadow" in w for w in warnings) != 1:
+        fail("expected one warning about Cast Shadow off: %s" % warnings)
+    bpy.data.objects.remove(lamp)
     for name in ("Plane", "Cube", "Sphere"):  # no meshes: world only (glint rejects an
         bpy.data.objects.remove(bpy.data.objects[name])  # obj_file without faces)
     depsgraph = bpy.context.evaluated_depsgraph_get()

@@ -299,8 +299,10 @@ def world_text(scene, out_dir, warn):
 
 # ----------------------------------------------------------------------------- lights
 
-def light_block(name, light, matrix, warn):
-    """One blender_light block (the shared contract; glint's parser reads it)."""
+def light_block(name, light, matrix, warn, ob=None):
+    """One blender_light block (the shared contract; glint's parser reads it). `ob`, the light's
+    object, carries its ray visibility: Camera ticked makes the light visible to the camera
+    (Blender 3.4's default is off); the settings glint does not have are warned."""
     kind = light.type.lower()
     if kind not in {"point", "spot", "sun", "area"}:
         warn("light '%s': type %s is not supported: left out" % (name, light.type))
@@ -308,13 +310,28 @@ def light_block(name, light, matrix, warn):
     if light.use_nodes and light.node_tree is not None and len(light.node_tree.nodes) > 2:
         warn("light '%s': light node trees are not supported: the light's color and power "
              "are used" % name)
-    cyc = getattr(light, "cycles", None)
+    # Cycles' own light settings live in an add-on property group that the evaluated copy does
+    # not carry over (it reads the defaults): take them from the original datablock.
+    cyc = getattr(ob.data if ob is not None and ob.data is not None else light, "cycles", None)
     if cyc is not None and getattr(cyc, "is_portal", False):
         warn("light '%s': portals are not supported: left out" % name)
         return ""
     if light.energy < 0:
         warn("light '%s': negative power is not supported: left out" % name)
         return ""
+    unsupported = []
+    if cyc is not None and not getattr(cyc, "cast_shadow", True):
+        unsupported.append("Cast Shadow off")
+    if cyc is not None and not getattr(cyc, "use_multiple_importance_sampling", True):
+        unsupported.append("Multiple Importance off")
+    if ob is not None:
+        for attr, label in (("visible_diffuse", "Diffuse"), ("visible_glossy", "Glossy"),
+                            ("visible_transmission", "Transmission"),
+                            ("visible_volume_scatter", "Volume Scatter")):
+            if not getattr(ob, attr, True):
+                unsupported.append("ray visibility %s off" % label)
+    if unsupported:
+        warn("light '%s': %s not supported: rendered as if on" % (name, ", ".join(unsupported)))
     rot = matrix.to_3x3()
     loc = matrix.translation
     direction = (rot @ Vector((0.0, 0.0, -1.0))).normalized()
@@ -345,6 +362,8 @@ def light_block(name, light, matrix, warn):
         lines.append("  axis_x %s  axis_y %s" % (fmt(to_pov(ax.normalized())),
                                                  fmt(to_pov(ay.normalized()))))
         lines.append("  spread %.9g" % math.degrees(light.spread))
+    if ob is not None and getattr(ob, "visible_camera", False):
+        lines.append("  visible_camera on")
     lines.append("}")
     return "\n".join(lines) + "\n"
 
@@ -356,7 +375,8 @@ def lights_text(depsgraph, warn):
         if ob.type != 'LIGHT':
             continue
         name = ob.original.name if ob.original else ob.name
-        blocks.append(light_block(name, ob.data, inst.matrix_world.copy(), warn))
+        blocks.append(light_block(name, ob.data, inst.matrix_world.copy(), warn,
+                                  ob.original if ob.original else ob))
     return "".join(blocks)
 
 
