@@ -335,6 +335,24 @@ public:
                         (a.jitter ? " jitter" : "") + (a.circular ? " circular" : "") +
                         (a.orient ? " orient" : ""));
         }
+        if (l.blender) {
+            const BlenderLight& b = *l.blender;
+            static const char* kTypes[] = {"point", "spot", "sun", "area"};
+            std::string t = std::string("blender_light ") + kTypes[static_cast<int>(b.type)] +
+                            " power " + num(b.power);
+            if (b.type != BlenderLightType::Point) t += " direction " + vec(b.direction);
+            if (b.type == BlenderLightType::Point || b.type == BlenderLightType::Spot)
+                t += " radius " + num(b.radius);
+            if (b.type == BlenderLightType::Spot)
+                t += " spot_size " + num(b.spot_size) + " spot_blend " + num(b.spot_blend);
+            if (b.type == BlenderLightType::Sun) t += " angle " + num(b.angle);
+            if (b.type == BlenderLightType::Area)
+                t += std::string(b.ellipse ? " ellipse" : " rectangle") + " size " + num(b.size_x) +
+                     " " + num(b.size_y) + " axis_x " + vec(b.axis_x) + " axis_y " + vec(b.axis_y) +
+                     " spread " + num(b.spread);
+            if (b.visible_camera) t += " visible_camera";
+            line(1, t);
+        }
     }
 };
 

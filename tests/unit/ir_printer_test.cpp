@@ -38,6 +38,22 @@ Scene small_scene() {
     return s;
 }
 
+TEST(IrPrinter, BlenderLightPrintsItsOwnFields) {
+    Scene s = small_scene();
+    BlenderLight b;
+    b.type = BlenderLightType::Spot;
+    b.power = 250;
+    b.radius = 0.1;
+    b.spot_size = 60;
+    b.spot_blend = 0.5;
+    b.visible_camera = true;
+    s.lights[0].blender = b;
+    std::string text = print_ir(s);
+    EXPECT_TRUE(has_line(text, "  blender_light spot power 250 direction <0, -1, 0> radius 0.1 "
+                               "spot_size 60 spot_blend 0.5 visible_camera"))
+        << text;
+}
+
 TEST(IrPrinter, ReadableLines) {
     std::string text = print_ir(small_scene());
     EXPECT_TRUE(has_line(text, "version 3.6")) << text;
