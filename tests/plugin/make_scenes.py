@@ -328,7 +328,8 @@ def main(argv):
     ap.add_argument("--time-file", default="")
     ap.add_argument("--timing", action="store_true",
                     help="only time one Cycles render (seed 101) per scene and frame at --spp "
-                         "and --threads, appended to --time-file; no references written")
+                         "and --threads, appended to --time-file, the image saved as "
+                         "--tmp/NAME.exr; no references written")
     args = ap.parse_args(argv)
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
@@ -341,8 +342,8 @@ def main(argv):
             for frame in frames(name):
                 bpy.context.scene.frame_set(frame)
                 t0, c0 = time.time(), time.process_time()
-                cy.render_to(os.path.join(args.tmp, "timing.exr"), args.spp, 101,
-                             threads=args.threads)
+                cy.render_to(os.path.join(args.tmp, ref_name(name, frame) + ".exr"), args.spp,
+                             101, threads=args.threads)
                 # wall seconds, then CPU seconds of all threads (steadier on a busy machine)
                 line = "%s %.3f %.3f" % (ref_name(name, frame), time.time() - t0,
                                          time.process_time() - c0)
