@@ -21,6 +21,7 @@ Cycles seconds per seed image of the references from ref/cycles_times.txt if pre
 
 import argparse
 import os
+import re
 import shlex
 import shutil
 import subprocess
@@ -75,14 +76,27 @@ def blender_compare(args, *rest):
     return rc
 
 
+def export_frame(folder):
+    """The frame an export folder holds, from scene.pov's first line ("..., frame N."), or
+    None."""
+    try:
+        with open(os.path.join(folder, "scene.pov")) as f:
+            m = re.search(r"\bframe (-?\d+)", f.readline())
+        return int(m.group(1)) if m else None
+    except OSError:
+        return None
+
+
 def find_exports(tmp):
-    """The kept per-render folders: every folder under tmp holding command.txt, oldest first."""
+    """The kept per-render folders (every folder under tmp holding command.txt), in frame order
+    (scene.pov's header), else oldest first."""
     found = []
     for root, _dirs, files in os.walk(tmp):
         if "command.txt" in files:
             path = os.path.join(root, "command.txt")
-            found.append((os.path.getmtime(path), root))
-    return [r for _t, r in sorted(found)]
+            frame = export_frame(root)
+            found.append((frame if frame is not None else 0, os.path.getmtime(path), root))
+    return [r for _f, _t, r in sorted(found)]
 
 
 def cli_argv(export_dir, glint, out_exr, threads):
