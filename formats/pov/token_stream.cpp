@@ -509,17 +509,21 @@ void Parser::handle_include(const FileLoc& dloc) {
     // A folder with the include's name is remembered so the error can say so: "cannot find"
     // would send the user looking for a file that is, in a sense, right there.
     bool saw_folder = false;
+    // error_code overloads: a name the system refuses (too long, ...) is "cannot find", not a
+    // std::filesystem_error escaping the parser.
+    std::error_code ec;
     if (fs::path(name).is_absolute()) {
-        if (fs::is_regular_file(name)) found = name;
-        saw_folder = fs::is_directory(name);
+        if (fs::is_regular_file(name, ec)) found = name;
+        saw_folder = fs::is_directory(name, ec);
     } else {
         for (const auto& [dir, sys] : dirs) {
             fs::path p = fs::path(dir) / name;
-            saw_folder = saw_folder || fs::is_directory(p);
-            if (fs::is_regular_file(p)) {
+            saw_folder = saw_folder || fs::is_directory(p, ec);
+            if (fs::is_regular_file(p, ec)) {
                 found = p.lexically_normal().string();
                 // A folder the user lists that is the scene's own folder is not "system".
-                system = sys && fs::weakly_canonical(dir) != fs::weakly_canonical(scene_dir_);
+                system = sys &&
+                         fs::weakly_canonical(dir, ec) != fs::weakly_canonical(scene_dir_, ec);
                 break;
             }
         }

@@ -1,0 +1,45 @@
+// Shared set-up for the libFuzzer targets: a private, empty folder that holds the input (so that
+// relative #include and mtllib names resolve there, never in the repository), and the parser's
+// resource limits set low so that a runaway #while or a macro recursion is a quick error.
+#pragma once
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "formats/pov/parser.h"
+
+namespace glint::fuzz {
+
+// Creates (once) an empty folder under TMPDIR. The working folder stays as it is: libFuzzer
+// reads its corpus paths relative to it.
+inline const std::string& work_dir() {
+    static const std::string dir = [] {
+        const char* t = std::getenv("TMPDIR");
+        std::string tmpl = std::string(t && *t ? t : "/tmp") + "/glint-fuzz-XXXXXX";
+        if (!mkdtemp(tmpl.data())) std::abort();
+        return tmpl;
+    }();
+    return dir;
+}
+
+inline void write_file(const std::string& path, const uint8_t* data, size_t size) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+}
+
+inline pov::ParseOptions fuzz_options() {
+    pov::ParseOptions o;
+    o.max_loop_iterations = 10'000;
+    o.max_include_depth = 8;
+    o.max_macro_depth = 64;
+    o.max_tokens = 200'000;  // well under a second with the sanitizers
+    o.image_width = 64;
+    o.image_height = 48;
+    return o;
+}
+
+}  // namespace glint::fuzz
