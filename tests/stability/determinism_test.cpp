@@ -36,8 +36,11 @@ void expect_same_at_one_and_two_threads(render::AaMode aa, const char* label) {
     for (int threads : runs) {
         const render::Image again = render_scene(scene, 320, 240, threads, aa);
         const long n = differing_values(first, again);
-        std::printf("demo.pov %s, %d thread(s) vs 1 thread: differing float values = %ld of %zu "
-                    "(bound 0)\n", label, threads, n, first.rgba.size());
+        std::printf(
+            "case 18 whitted demo.pov %s, %d thread(s) vs 1 thread: differing float values = %ld "
+            "of %zu "
+            "(bound 0)\n",
+            label, threads, n, first.rgba.size());
         EXPECT_EQ(n, 0) << label << ", " << threads << " threads";
     }
 }
@@ -48,6 +51,21 @@ TEST(StabilityDeterminism, SameFilmAtOneAndTwoThreads) {
 
 TEST(StabilityDeterminism, SameFilmAtOneAndTwoThreadsWithAdaptiveAa) {
     expect_same_at_one_and_two_threads(render::AaMode::Adaptive, "adaptive AA 0.3");
+}
+
+TEST(StabilityDeterminism, PathTracerSameFilmAtOneAndTwoThreads) {
+    const scene::Scene scene = demo_scene();
+    const render::Image first = render_path_tracer(scene, 160, 120, 4, 8, 11, 1).image;
+    ASSERT_EQ(first.rgba.size(), size_t{160 * 120 * 4});
+    for (int threads : {2, 1, 2}) {
+        const render::Image again = render_path_tracer(scene, 160, 120, 4, 8, 11, threads).image;
+        const long n = differing_values(first, again);
+        std::printf(
+            "case 18 path demo.pov 4 spp, %d thread(s) vs 1 thread: differing float "
+            "values = %ld of %zu (bound 0)\n",
+            threads, n, first.rgba.size());
+        EXPECT_EQ(n, 0) << threads << " threads";
+    }
 }
 
 }  // namespace

@@ -16,10 +16,10 @@ constexpr int kHeight = 240;
 constexpr double kMaxVanishDiff = 1e-5;
 
 TEST(StabilityIor, Ior1SphereVanishes) {
-    const render::Image without = render_file("ior_sphere.pov", "#declare Show_Sphere = 0;",
-                                              kWidth, kHeight);
-    const render::Image with = render_file("ior_sphere.pov", "#declare Ior = 1.0;", kWidth,
-                                           kHeight);
+    const render::Image without =
+        render_file("ior_sphere.pov", "#declare Show_Sphere = 0;", kWidth, kHeight);
+    const render::Image with =
+        render_file("ior_sphere.pov", "#declare Ior = 1.0;", kWidth, kHeight);
     ASSERT_EQ(with.rgba.size(), without.rgba.size());
     double max_diff = 0;
     int at_x = 0, at_y = 0;
@@ -36,16 +36,19 @@ TEST(StabilityIor, Ior1SphereVanishes) {
             }
         }
     }
-    std::printf("ior 1.0 sphere vs no sphere: max linear difference = %.3g at %d,%d "
-                "(bound <= %.0e)\n", max_diff, at_x, at_y, kMaxVanishDiff);
+    std::printf(
+        "case 15 whitted: ior 1.0 sphere vs no sphere: max linear difference = %.3g at %d,%d "
+        "(bound <= %.0e)\n",
+        max_diff, at_x, at_y, kMaxVanishDiff);
     EXPECT_LE(max_diff, kMaxVanishDiff);
 
     // Not vacuous: the same sphere with ior 1.5 does show.
-    const render::Image glass = render_file("ior_sphere.pov", "#declare Ior = 1.5;", kWidth,
-                                            kHeight);
+    const render::Image glass =
+        render_file("ior_sphere.pov", "#declare Ior = 1.5;", kWidth, kHeight);
     const double unchanged = fraction_within(glass, without, 0);
-    std::printf("ior 1.5 sphere vs no sphere: unchanged pixels = %.4f (bound < 0.99)\n",
-                unchanged);
+    std::printf(
+        "case 15 whitted: ior 1.5 sphere vs no sphere: unchanged pixels = %.4f (bound < 0.99)\n",
+        unchanged);
     EXPECT_LT(unchanged, 0.99);
 }
 
@@ -56,7 +59,9 @@ TEST(StabilityIor, ExtremeIorsAndTotalInternalReflectionStayFinite) {
         const render::Image image = render_file("ior_sphere.pov", prelude, kWidth, kHeight);
         ASSERT_EQ(image.width, kWidth);
         const long bad = count_nonfinite(image);
-        std::printf("ior %s (sphere + TIR cube): non-finite values = %ld (bound 0)\n", ior, bad);
+        std::printf(
+            "case 15 whitted: ior %s (sphere + TIR cube): non-finite values = %ld (bound 0)\n", ior,
+            bad);
         EXPECT_EQ(bad, 0) << "ior " << ior;
     }
 }
@@ -148,16 +153,19 @@ TEST(StabilityIorPath, Ior1SphereVanishesBeforeEmitters) {
     for (int kind : {1, 2}) {
         const render::RenderResult with = render_path(emitters_scene(kind, 1.0), w, h, 4, 8, 3);
         const double d = max_abs_diff(with.image, without.image);
-        std::printf("path: ior 1.0 %s sphere vs no sphere (emitters only): max linear difference "
-                    "= %.3g (bound <= %.0e)\n", kind == 1 ? "POV-Ray clear" : "rough Principled",
-                    d, kMaxVanishDiff);
+        std::printf(
+            "case 15 path: ior 1.0 %s sphere vs no sphere (emitters only): max linear difference "
+            "= %.3g (bound <= %.0e)\n",
+            kind == 1 ? "POV-Ray clear" : "rough Principled", d, kMaxVanishDiff);
         EXPECT_LE(d, kMaxVanishDiff) << kind;
         EXPECT_EQ(with.nonfinite_paths, 0u);
         // Not vacuous: ior 1.5 bends the stripes.
         const render::Image glass = render_path(emitters_scene(kind, 1.5), w, h, 4, 8, 3).image;
         const double dg = max_abs_diff(glass, without.image);
-        std::printf("path: ior 1.5 sphere vs no sphere: max linear difference = %.3g (bound > "
-                    "0.1)\n", dg);
+        std::printf(
+            "case 15 path: ior 1.5 sphere vs no sphere: max linear difference = %.3g (bound > "
+            "0.1)\n",
+            dg);
         EXPECT_GT(dg, 0.1) << kind;
     }
 }
@@ -206,10 +214,11 @@ TEST(StabilityIorPath, Ior1SphereInThePointLitSceneVanishesShadowIncluded) {
         }
     const double mean = s1 / (3.0 * lit);
     const double se = std::sqrt(std::max(0.0, s2 / (3.0 * lit) - mean * mean) / (3.0 * lit));
-    std::printf("path: ior 1.0 sphere vs no sphere in ior_sphere.pov: outside its shadow (%d px) "
-                "mean difference %.3g, stderr %.2g; in its shadow (%d px) mean %.4f vs %.4f "
-                "without the sphere\n",
-                lit, mean, se, shadowed, shadow_b / (3.0 * shadowed), shadow_a / (3.0 * shadowed));
+    std::printf(
+        "case 15 path: ior 1.0 sphere vs no sphere in ior_sphere.pov: outside its shadow (%d px) "
+        "mean difference %.3g, stderr %.2g; in its shadow (%d px) mean %.4f vs %.4f "
+        "without the sphere\n",
+        lit, mean, se, shadowed, shadow_b / (3.0 * shadowed), shadow_a / (3.0 * shadowed));
     EXPECT_NEAR(mean, 0.0, 4 * se);
     ASSERT_GT(shadowed, 0);
     const double n_shadow = 3.0 * shadowed;
@@ -229,10 +238,11 @@ TEST(StabilityIorPath, ExtremeIorsAndTotalInternalReflectionEnd) {
         const scene::Scene s = load_scene("ior_sphere.pov", prelude, w, h);
         const render::RenderResult r = render_path(s, w, h, spp, max_depth, 1);
         const double rays_per_path = static_cast<double>(r.rays) / (w * h * spp);
-        std::printf("path: ior %s (sphere + TIR cube): non-finite paths %llu, pixels %ld, rays "
-                    "per path %.3f (bound %d)\n", ior,
-                    static_cast<unsigned long long>(r.nonfinite_paths), count_nonfinite(r.image),
-                    rays_per_path, 2 * (max_depth + 1));
+        std::printf(
+            "case 15 path: ior %s (sphere + TIR cube): non-finite paths %llu, pixels %ld, rays "
+            "per path %.3f (bound %d)\n",
+            ior, static_cast<unsigned long long>(r.nonfinite_paths), count_nonfinite(r.image),
+            rays_per_path, 2 * (max_depth + 1));
         EXPECT_EQ(r.nonfinite_paths, 0u) << ior;
         EXPECT_EQ(count_nonfinite(r.image), 0) << ior;
         EXPECT_LE(rays_per_path, 2.0 * (max_depth + 1)) << ior;

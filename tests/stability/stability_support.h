@@ -4,14 +4,20 @@
 // primary rays as the camera contract in scene/camera.h defines them).
 #pragma once
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/log.h"
 #include "formats/pov/parser.h"
+#include "io/image_compare.h"
 #include "render/render.h"
 #include "scene/scene.h"
 
@@ -43,6 +49,22 @@ inline render::Image render_scene(const scene::Scene& scene, int width, int heig
     options.threads = threads;
     Diagnostics diag;
     return render::render(scene, options, diag).image;
+}
+
+// The path tracer with a fixed seed: `threads` 0 uses every hardware thread.
+inline render::RenderResult render_path_tracer(const scene::Scene& scene, int width, int height,
+                                               int spp, int max_depth = 8, uint32_t seed = 1,
+                                               int threads = 0) {
+    render::RenderOptions options;
+    options.width = width;
+    options.height = height;
+    options.integrator = render::IntegratorKind::Path;
+    options.spp = spp;
+    options.max_depth = max_depth;
+    options.seed = seed;
+    options.threads = threads;
+    Diagnostics diag;
+    return render::render(scene, options, diag);
 }
 
 inline render::Image render_file(const std::string& file, const std::string& prelude,
@@ -90,6 +112,47 @@ inline CameraRay primary_ray(const scene::Camera& cam, int x, int y, int width, 
     if (cam.kind == scene::CameraKind::Orthographic)
         return {cam.location + cam.right * sx + cam.up * sy, normalize(cam.direction)};
     return {cam.location, normalize(cam.direction + cam.right * sx + cam.up * sy)};
+}
+
+// POV-Ray 3.7 as the peer for the cases where its absolute epsilons fail (VALIDATION.md):
+// renders `prelude` + scenes_dir()/file in a fresh folder under /tmp (POV-Ray writes only there
+// and under its working directory) with VALIDATION.md's reference command, one ray per pixel
+// centre, and returns its PNG as linear film values (inverse of to_8bit, so that to_8bit gives
+// back POV-Ray's 8-bit values). Empty when `povray` is not installed or fails.
+inline bool povray_available() {
+    return std::system("command -v povray >/dev/null 2>&1") == 0;
+}
+inline std::optional<render::Image> povray_render(const std::string& file,
+                                                  const std::string& prelude, int width,
+                                                  int height) {
+    if (!povray_available()) return std::nullopt;
+    char dir_template[] = "/tmp/glint_stability_XXXXXX";
+    const char* dir = mkdtemp(dir_template);
+    if (!dir) return std::nullopt;
+    const std::string folder = dir;
+    std::ofstream(folder + "/scene.pov") << prelude << "\n#include \"" << file << "\"\n";
+    const std::string command =
+        "cd " + folder + " && povray +Iscene.pov +Oout.png +W" + std::to_string(width) + " +H" +
+        std::to_string(height) + " -D -A +WT1 -GA +L" + scenes_dir() +
+        " +L/usr/share/povray-3.7/include >log.txt 2>&1";
+    std::optional<render::Image> result;
+    if (std::system(command.c_str()) == 0) {
+        try {
+            const io::Rgb8Image png = io::read_rgb8(folder + "/out.png");
+            render::Image image;
+            image.width = png.width;
+            image.height = png.height;
+            image.rgba.assign(static_cast<size_t>(png.width) * png.height * 4, 1.0f);
+            for (size_t i = 0; i < static_cast<size_t>(png.width) * png.height; ++i)
+                for (int c = 0; c < 3; ++c)
+                    image.rgba[i * 4 + c] =
+                        static_cast<float>(std::pow(png.rgb[i * 3 + c] / 255.0, 2.2));
+            result = std::move(image);
+        } catch (const std::exception&) {
+        }
+    }
+    if (std::system(("rm -rf " + folder).c_str()) != 0) std::fprintf(stderr, "rm %s failed\n", dir);
+    return result;
 }
 
 }  // namespace glint::stability

@@ -221,7 +221,15 @@ std::unique_ptr<Primitive> make_mesh(const scene::Mesh& mesh, Diagnostics& diag,
         const Vec3 &p0 = mesh.positions[face.v[0]], &p1 = mesh.positions[face.v[1]],
                    &p2 = mesh.positions[face.v[2]];
         Vec3 c = cross(p1 - p0, p2 - p0);
-        if (!is_finite(p0) || !is_finite(p1) || !is_finite(p2) || !is_finite(c) ||
+        // A vertex beyond 1e15 (VALIDATION.md case 7's 1e30) is corrupt input, not geometry:
+        // there a double cannot resolve 1/8 of a unit, and the triangle would cut the scene
+        // as a sliver of unbounded size.
+        constexpr double kMaxCoordinate = 1e15;
+        auto sane = [&](const Vec3& p) {
+            return std::fabs(p.x) <= kMaxCoordinate && std::fabs(p.y) <= kMaxCoordinate &&
+                   std::fabs(p.z) <= kMaxCoordinate;
+        };
+        if (!sane(p0) || !sane(p1) || !sane(p2) || !is_finite(c) ||
             !(length_squared(c) > 0)) {
             ++degenerate;
             continue;
@@ -230,8 +238,8 @@ std::unique_ptr<Primitive> make_mesh(const scene::Mesh& mesh, Diagnostics& diag,
     }
     if (degenerate > 0)
         diag.warning(mesh.loc, std::to_string(degenerate) +
-                                   " degenerate mesh triangle(s) (zero area or non-finite "
-                                   "vertices) skipped");
+                                   " degenerate mesh triangle(s) (zero area, or vertices not "
+                                   "finite or beyond 1e15) skipped");
     if (bad_index > 0)
         diag.warning(mesh.loc,
                      std::to_string(bad_index) + " mesh triangle(s) with invalid indices skipped");

@@ -5,6 +5,7 @@
 // or reflection ray that hit the plane it started on).
 #ifndef (Distance) #declare Distance = 1e5; #end
 #ifndef (Height) #declare Height = 50; #end
+#ifndef (Reflection) #declare Reflection = 0.2; #end
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 
@@ -15,4 +16,4 @@ light_source { <-1, 2, -1> * 1e7 color rgb 1 parallel point_at <0, 0, 0> }
 background { color rgb <0.3, 0.4, 0.6> }
 
 plane { y, 0 pigment { color rgb <0.7, 0.7, 0.65> }
-        finish { ambient 0.1 diffuse 0.6 reflection 0.2 } }
+        finish { ambient 0.1 diffuse 0.6 reflection Reflection } }
