@@ -32,6 +32,8 @@ struct RenderArgs {
     // <out-stem>.<name>.exr (render_command.cpp: aov_output_path).
     std::string aov;
     bool variance = false;
+    // --save-partial: on SIGINT/SIGTERM write what was rendered (render_command.cpp).
+    bool save_partial = false;
     // --view/--look/--exposure/--gamma/--ocio-config: Blender's color management for 8-bit
     // output (convert_command.cpp: add_view_options).
     io::ViewSettings view;

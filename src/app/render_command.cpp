@@ -18,6 +18,7 @@
 #include "io/image_output.h"
 #include "io/progress.h"
 #include "io/scene_encoding.h"
+#include "render/integrators/driver.h"
 #include "render/render.h"
 #include "scene/features.h"
 
@@ -75,17 +76,11 @@ io::ProgressStyle progress_style(const std::string& flag) {
     return io::ProgressStyle::None;
 }
 
-// Refuses an output path that cannot work before spending time on the render.
+// Refuses an output path that cannot work before spending time on the render: unsupported
+// extension, missing or unwritable folder, a folder in the file's place.
 void check_output_path(const std::string& path) {
     io::output_format_for(path);  // throws for an unsupported extension
-    namespace fs = std::filesystem;
-    fs::path parent = fs::path(path).parent_path();
-    std::error_code ec;
-    if (!parent.empty() && !fs::is_directory(parent, ec))
-        throw Error(ErrorKind::Output, {},
-                    "cannot write " + path + ": folder " + parent.string() + " does not exist");
-    if (fs::is_directory(path, ec))
-        throw Error(ErrorKind::Output, {}, "cannot write " + path + ": it is a folder");
+    io::check_writable(path);
 }
 
 void print_features(const scene::Features& f) {
@@ -161,6 +156,11 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                     "normal facing the camera, -1..1), depth (.depth.exr, channel Z: distance "
                     "along the camera ray); each the mean over the pixel's samples, a sample "
                     "that hits nothing counting 0 (so depth 0 where nothing is hit)");
+    cmd->add_flag("--save-partial", args.save_partial,
+                  "On SIGINT/SIGTERM write what was rendered, still atomically, then exit 130: "
+                  "Whitted the finished 32x32 tiles and transparent black elsewhere; the path "
+                  "tracer every pixel at the samples of its last finished progressive pass "
+                  "(1, 2, 4, 8, ... spp). The file's ImageDescription says how much");
     cmd->add_flag("--variance", args.variance,
                   "Path tracer: also write OUT-stem.variance.exr, per pixel and channel the "
                   "variance of the pixel's mean (sample variance / n; 0 with fewer than 2 "
@@ -259,6 +259,15 @@ RenderArgs merge_pov_settings(const RenderArgs& args, const PovSettings& pov) {
 
 int render_frame(const RenderArgs& args);
 
+// The image and its side files (--aov, --variance): all of them or none.
+struct Outputs {
+    const render::Image* image = nullptr;
+    const render::Image* albedo = nullptr;
+    const render::Image* normal = nullptr;
+    const render::Image* depth = nullptr;
+    const render::Image* variance = nullptr;
+};
+
 // The AOVs --aov names, each once, in the order given.
 std::vector<std::string> parse_aov_list(const std::string& text) {
     std::vector<std::string> names;
@@ -284,6 +293,56 @@ std::string aov_output_path(const std::string& output, const std::string& name) 
     fs::path out(output);
     return (out.parent_path() / (out.stem().string() + "." + name + ".exr")).string();
 }
+
+namespace {
+
+void write_outputs(const RenderArgs& args, const std::vector<std::string>& aovs,
+                   const io::OutputEncoding& encoding, const Outputs& out,
+                   const io::ImageMetadata& metadata) {
+    io::OutputBatch batch;
+    io::write_image(*out.image, args.output, encoding, metadata, &batch);
+    for (const std::string& name : aovs) {
+        const render::Image& aov = name == "albedo"   ? *out.albedo
+                                   : name == "normal" ? *out.normal
+                                                      : *out.depth;
+        io::write_float_exr(aov, aov_output_path(args.output, name), name == "depth" ? 1 : 3,
+                            metadata, &batch);
+    }
+    if (args.variance)
+        io::write_float_exr(*out.variance, aov_output_path(args.output, "variance"), 3, metadata,
+                            &batch);
+    batch.commit();
+}
+
+// --save-partial: writes what the interrupted render finished; returns the exit code.
+int save_partial(const RenderArgs& args, const std::vector<std::string>& aovs,
+                 const io::OutputEncoding& encoding, const render::PartialRender& p) {
+    std::string what;
+    if (p.samples_per_pixel > 0)
+        what = std::to_string(p.samples_per_pixel) + " of " + std::to_string(p.spp_requested) +
+               " samples per pixel (the last finished pass)";
+    else
+        what = std::to_string(p.tiles_done) + " of " + std::to_string(p.tiles_total) +
+               " tiles of 32x32 pixels" + (p.spp_requested > 0 ? " at 1 sample per pixel" : "") +
+               ", the rest black";
+    std::string key = p.samples_per_pixel > 0
+                          ? "spp " + std::to_string(p.samples_per_pixel) + "/" +
+                                std::to_string(p.spp_requested)
+                          : "tiles " + std::to_string(p.tiles_done) + "/" +
+                                std::to_string(p.tiles_total);
+    const io::ImageMetadata metadata = {
+        {"ImageDescription", "glint: interrupted render, " + what},
+        {"glint:partial", key},
+    };
+    const render::PathFilm& f = p.film;
+    write_outputs(args, aovs, encoding, {&f.image, &f.albedo, &f.normal, &f.depth, &f.variance},
+                  metadata);
+    std::fprintf(stderr, "glint: interrupted; partial image written to %s (%s)\n",
+                 args.output.c_str(), what.c_str());
+    return kExitInterrupted;
+}
+
+}  // namespace
 
 int run_render(const RenderArgs& args) {
     install_signal_handlers();
@@ -349,6 +408,8 @@ int render_frame(const RenderArgs& args) {
     options.aovs = !aovs.empty();
     options.variance = args.variance;
     check_output_path(args.output);
+    for (const std::string& name : aovs) io::check_writable(aov_output_path(args.output, name));
+    if (args.variance) io::check_writable(aov_output_path(args.output, "variance"));
     // A bad view, look or missing config fails before the render, not after it.
     const io::ViewSettings view = checked_view_settings(args.view);
     if (view.active() && io::is_float_format(args.output))
@@ -367,33 +428,37 @@ int render_frame(const RenderArgs& args) {
         else if (args.verbose)
             std::fprintf(stderr, "%s\n", d.message.c_str());
     });
+    io::OutputEncoding encoding = io::output_encoding_for(scene);
+    encoding.view = view;
     render::RenderResult result;
     try {
         result = render::render(scene, options, diag);
+    } catch (const render::Interrupted& e) {
+        progress.abandon();
+        if (!args.save_partial) throw;
+        return save_partial(args, aovs, encoding, e.partial());
     } catch (...) {
         progress.abandon();
         throw;
     }
     progress.finish();
-    if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
+    // A signal after the last pixel: with --save-partial the finished image is written.
+    const bool interrupted = cancel_flag().load();
+    if (interrupted && !args.save_partial) throw Error(ErrorKind::Cancelled, {}, "interrupted");
 
-    io::OutputEncoding encoding = io::output_encoding_for(scene);
-    encoding.view = view;
     Clock::time_point write_start = Clock::now();
-    io::write_image(result.image, args.output, encoding);
-    for (const std::string& name : aovs) {
-        const render::Image& aov = name == "albedo"   ? result.albedo
-                                   : name == "normal" ? result.normal
-                                                      : result.depth;
-        io::write_float_exr(aov, aov_output_path(args.output, name), name == "depth" ? 1 : 3);
-    }
-    if (args.variance) {
-        if (result.samples_per_pixel < 2)
-            warn("--variance: only " + std::to_string(result.samples_per_pixel) +
-                 " sample per pixel, the variance image is 0");
-        io::write_float_exr(result.variance, aov_output_path(args.output, "variance"));
-    }
+    if (args.variance && result.samples_per_pixel < 2)
+        warn("--variance: only " + std::to_string(result.samples_per_pixel) +
+             " sample per pixel, the variance image is 0");
+    write_outputs(args, aovs, encoding,
+                  {&result.image, &result.albedo, &result.normal, &result.depth, &result.variance},
+                  {});
     double write_seconds = seconds_since(write_start);
+    if (interrupted) {
+        std::fprintf(stderr, "glint: interrupted after the render finished; the image written "
+                             "to %s is complete\n", args.output.c_str());
+        return kExitInterrupted;
+    }
 
     if (args.verbose) {
         print_features(result.features);

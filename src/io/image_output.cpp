@@ -1,12 +1,16 @@
 #include "io/image_output.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <vector>
@@ -66,17 +70,56 @@ class TempFile {
     std::string path_;
 };
 
+std::string temp_name(const std::string& path) {
+    return path + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
+}
+
+// Writes `bytes` to a new file and flushes it to the disk. Returns the reason it failed (a
+// full disk, a file size limit, an I/O error), empty on success. OpenImageIO's own file
+// writers do not all report failed writes (its PNG writer does not), so the encoded file is
+// written here, every call checked.
+std::string write_file(const std::string& path, const std::vector<unsigned char>& bytes) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) return std::strerror(errno);
+    size_t written = 0;
+    while (written < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            const int err = n < 0 ? errno : ENOSPC;
+            ::close(fd);
+            return std::strerror(err);
+        }
+        written += static_cast<size_t>(n);
+    }
+    // Some file systems report a full disk only here.
+    if (::fsync(fd) != 0 && errno != EINVAL) {
+        const int err = errno;
+        ::close(fd);
+        return std::strerror(err);
+    }
+    if (::close(fd) != 0) return std::strerror(errno);
+    return {};
+}
+
 // Writes through a temporary beside the target (so the rename stays on one file system) and
 // renames it, so a failed write never leaves a partial file.
-void write_atomically(const std::string& path, const char* oiio_name, const OIIO::ImageSpec& spec,
-                      OIIO::TypeDesc type, const void* data) {
-    TempFile temp(path + ".tmp-" + std::to_string(static_cast<long>(::getpid())));
+void write_atomically(const std::string& path, const char* oiio_name, OIIO::ImageSpec spec,
+                      OIIO::TypeDesc type, const void* data, const ImageMetadata& metadata,
+                      OutputBatch* batch) {
+    for (const auto& [name, value] : metadata) spec.attribute(name, value);
+    TempFile temp(temp_name(path));
     auto fail = [&](const std::string& why) {
         return Error(ErrorKind::Output, {}, "cannot write " + path + ": " + why);
     };
     {
+        // Encoded in memory, then written by write_file.
+        std::vector<unsigned char> bytes;
+        OIIO::Filesystem::IOVecOutput memory(bytes);
         std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(oiio_name);
         if (!out) throw fail("OpenImageIO has no " + std::string(oiio_name) + " writer");
+        if (!out->supports("ioproxy") || !out->set_ioproxy(&memory))
+            throw fail("OpenImageIO's " + std::string(oiio_name) + " writer cannot write to memory");
         if (!out->open(temp.path(), spec)) {
             std::string why = out->geterror();
             throw fail(why.empty() ? "cannot create the file" : why);
@@ -88,6 +131,13 @@ void write_atomically(const std::string& path, const char* oiio_name, const OIIO
             why = out->geterror();
         }
         if (!ok) throw fail(why.empty() ? "write failed" : why);
+        why = write_file(temp.path(), bytes);
+        if (!why.empty()) throw fail(why);
+    }
+    if (batch) {
+        batch->add(temp.path(), path);
+        temp.release();
+        return;
     }
     std::error_code ec;
     fs::rename(temp.path(), path, ec);
@@ -97,12 +147,50 @@ void write_atomically(const std::string& path, const char* oiio_name, const OIIO
 
 }  // namespace
 
+OutputBatch::~OutputBatch() {
+    for (const auto& [temp, path] : staged_) {
+        std::error_code ec;
+        fs::remove(temp, ec);
+    }
+}
+
+void OutputBatch::commit() {
+    while (!staged_.empty()) {
+        const auto& [temp, path] = staged_.front();
+        std::error_code ec;
+        fs::rename(temp, path, ec);
+        if (ec) throw Error(ErrorKind::Output, {}, "cannot write " + path + ": " + ec.message());
+        staged_.erase(staged_.begin());
+    }
+}
+
+void check_writable(const std::string& path) {
+    auto fail = [&](const std::string& why) {
+        return Error(ErrorKind::Output, {}, "cannot write " + path + ": " + why);
+    };
+    const fs::path parent = fs::path(path).parent_path();
+    std::error_code ec;
+    if (!parent.empty() && !fs::is_directory(parent, ec))
+        throw fail("folder " + parent.string() + " does not exist");
+    if (fs::is_directory(path, ec)) throw fail("it is a folder");
+    const std::string temp = temp_name(path);
+    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0) {
+        const int err = errno;
+        if (err == EEXIST) return;  // our own temporary name: writable enough
+        throw fail(std::strerror(err));
+    }
+    ::close(fd);
+    ::unlink(temp.c_str());
+}
+
 std::string output_format_for(const std::string& path) { return format_info(path).oiio_name; }
 
 bool is_float_format(const std::string& path) { return format_info(path).is_float; }
 
 void write_image(const render::Image& image, const std::string& path,
-                 const OutputEncoding& encoding) {
+                 const OutputEncoding& encoding, const ImageMetadata& metadata,
+                 OutputBatch* batch) {
     const FormatInfo& format = format_info(path);
     if (image.width <= 0 || image.height <= 0 ||
         image.rgba.size() != static_cast<size_t>(image.width) * image.height * 4)
@@ -181,10 +269,11 @@ void write_image(const render::Image& image, const std::string& path,
         }
     }
 
-    write_atomically(path, format.oiio_name, spec, type, data);
+    write_atomically(path, format.oiio_name, spec, type, data, metadata, batch);
 }
 
-void write_float_exr(const render::Image& image, const std::string& path, int channels) {
+void write_float_exr(const render::Image& image, const std::string& path, int channels,
+                     const ImageMetadata& metadata, OutputBatch* batch) {
     if (channels != 1 && channels != 3)
         throw Error(ErrorKind::Output, {}, "cannot write " + path + ": 1 or 3 channels only");
     if (image.width <= 0 || image.height <= 0 ||
@@ -197,7 +286,7 @@ void write_float_exr(const render::Image& image, const std::string& path, int ch
     std::vector<float> data(pixels * channels);
     for (size_t i = 0; i < pixels; ++i)
         for (int c = 0; c < channels; ++c) data[i * channels + c] = image.rgba[i * 4 + c];
-    write_atomically(path, "openexr", spec, OIIO::TypeDesc::FLOAT, data.data());
+    write_atomically(path, "openexr", spec, OIIO::TypeDesc::FLOAT, data.data(), metadata, batch);
 }
 
 render::Image read_float_image(const std::string& path, bool* has_alpha) {

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "render/image.h"
 
@@ -52,16 +54,45 @@ std::string output_format_for(const std::string& path);
 // output_format_for.
 bool is_float_format(const std::string& path);
 
+// Text stored in the file's header as (name, value) string attributes: PNG text chunks, EXR
+// header attributes, TIFF/JPEG where OpenImageIO maps the name (ImageDescription always).
+using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
+
+// Files that appear together or not at all (an image and its AOV/variance side files): writers
+// given a batch leave their file under its temporary name; commit() renames them all into
+// place. A batch destroyed without commit() removes its temporaries.
+class OutputBatch {
+public:
+    OutputBatch() = default;
+    ~OutputBatch();
+    OutputBatch(const OutputBatch&) = delete;
+    OutputBatch& operator=(const OutputBatch&) = delete;
+    // Throws Error(Output) when a rename fails; the files renamed before it stay.
+    void commit();
+    void add(std::string temp, std::string path) { staged_.emplace_back(std::move(temp), std::move(path)); }
+
+private:
+    std::vector<std::pair<std::string, std::string>> staged_;  // temporary, final path
+};
+
+// Throws Error(Output) ("cannot write PATH: ...") unless a file can be created beside `path`
+// under its temporary name: the folder exists and is writable, `path` is not a folder. Creates
+// and removes that file, so it leaves nothing behind. For checks before a long render.
+void check_writable(const std::string& path);
+
 // Throws glint::Error(ErrorKind::Output) naming the path and the reason. Writes
 // `<path>.tmp-<pid>` beside the target and renames it; on failure the temporary is removed.
-// PNG and JPEG get 8 bits, TIFF 16 bits per channel, EXR and HDR 32-bit float.
+// PNG and JPEG get 8 bits, TIFF 16 bits per channel, EXR and HDR 32-bit float. With a batch
+// the rename waits for batch->commit().
 void write_image(const render::Image& image, const std::string& path,
-                 const OutputEncoding& encoding);
+                 const OutputEncoding& encoding, const ImageMetadata& metadata = {},
+                 OutputBatch* batch = nullptr);
 
 // Writes the first `channels` of the image (1 or 3) as a 32-bit float OpenEXR file, values as
 // they are (no encoding): the path tracer's AOVs and variance. One channel is named Z
 // (OpenEXR's depth channel), three R, G, B. Atomic like write_image; throws Error(Output).
-void write_float_exr(const render::Image& image, const std::string& path, int channels = 3);
+void write_float_exr(const render::Image& image, const std::string& path, int channels = 3,
+                     const ImageMetadata& metadata = {}, OutputBatch* batch = nullptr);
 
 // Reads a float image (OpenEXR, Radiance HDR) as linear RGBA: one channel becomes gray, a
 // missing alpha 1; `has_alpha` tells whether the file had one. Throws Error(MissingFile) when

@@ -36,15 +36,21 @@ public:
         : camera_(camera), opt_(options), settings_(settings), radiance_(radiance),
           image_(image) {}
 
-    void render(const Tile& t) const {
+    // False when cancelled before the tile was finished (its pixels are then incomplete).
+    bool render(const Tile& t) const {
         switch (opt_.aa) {
-            case AaMode::None: none(t); break;
-            case AaMode::Grid: grid(t); break;
-            case AaMode::Adaptive: adaptive(t); break;
+            case AaMode::None: return none(t);
+            case AaMode::Grid: return grid(t);
+            case AaMode::Adaptive: return adaptive(t);
         }
+        return false;
     }
 
 private:
+    bool cancelled() const {
+        return opt_.cancel && opt_.cancel->load(std::memory_order_relaxed);
+    }
+
     Color sample(double x, double y, int px, int py, uint32_t index) const {
         std::optional<Ray> ray = camera_.generate(x, y);
         if (!ray) return Color(0, 0, 0);
@@ -60,14 +66,18 @@ private:
         p[3] = 1.0f;
     }
 
-    void none(const Tile& t) const {
-        for (int y = t.y0; y < t.y1; ++y)
+    bool none(const Tile& t) const {
+        for (int y = t.y0; y < t.y1; ++y) {
+            if (cancelled()) return false;
             for (int x = t.x0; x < t.x1; ++x) store(x, y, sample(x, y));
+        }
+        return true;
     }
 
-    void grid(const Tile& t) const {
+    bool grid(const Tile& t) const {
         int n = std::max(1, opt_.grid_n);
         for (int y = t.y0; y < t.y1; ++y) {
+            if (cancelled()) return false;
             for (int x = t.x0; x < t.x1; ++x) {
                 Color sum;
                 for (int j = 0; j < n; ++j)
@@ -77,6 +87,7 @@ private:
                 store(x, y, sum / static_cast<double>(n * n));
             }
         }
+        return true;
     }
 
     // Color as compared by adaptive AA: linear, then encoded with antialias_gamma 2.5.
@@ -110,7 +121,7 @@ private:
     // POV-Ray's sampling method 1 (tracetask.cpp NonAdaptiveSupersamplingM1): each pixel is
     // compared with its left and top neighbours inside the block (plus a border row and
     // column traced but never supersampled); differing pixels are supersampled once.
-    void adaptive(const Tile& t) const {
+    bool adaptive(const Tile& t) const {
         int w = t.x1 - t.x0 + 1, h = t.y1 - t.y0 + 1;
         std::vector<Color> px(static_cast<size_t>(w) * h);
         std::vector<char> done(static_cast<size_t>(w) * h, 0);
@@ -120,6 +131,7 @@ private:
             done[at(x, t.y0 - 1)] = 1;
         }
         for (int y = t.y0; y < t.y1; ++y) {
+            if (cancelled()) return false;
             px[at(t.x0 - 1, y)] = sample(t.x0 - 1, y);
             done[at(t.x0 - 1, y)] = 1;
             for (int x = t.x0; x < t.x1; ++x) {
@@ -141,6 +153,7 @@ private:
         }
         for (int y = t.y0; y < t.y1; ++y)
             for (int x = t.x0; x < t.x1; ++x) store(x, y, px[at(x, y)]);
+        return true;
     }
 
     const Camera& camera_;
@@ -149,6 +162,26 @@ private:
     const RadianceFn& radiance_;
     Image* image_;
 };
+
+std::vector<Tile> make_tiles(int width, int height) {
+    std::vector<Tile> tiles;
+    for (int y = 0; y < height; y += kBlockSize)
+        for (int x = 0; x < width; x += kBlockSize)
+            tiles.push_back({x, y, std::min(x + kBlockSize, width), std::min(y + kBlockSize, height)});
+    return tiles;
+}
+
+// Sets every pixel of the tiles not marked done to transparent black (RGBA 0).
+void clear_unfinished(Image* image, const std::vector<Tile>& tiles,
+                      const std::vector<char>& done) {
+    if (image->rgba.empty()) return;
+    for (size_t i = 0; i < tiles.size(); ++i) {
+        if (done[i]) continue;
+        const Tile& t = tiles[i];
+        for (int y = t.y0; y < t.y1; ++y)
+            for (int x = t.x0; x < t.x1; ++x) std::fill_n(image->pixel(x, y), 4, 0.0f);
+    }
+}
 
 }  // namespace
 
@@ -162,22 +195,19 @@ Image run_tiles(const Camera& camera, const RenderOptions& options,
     image.height = options.height;
     image.rgba.assign(static_cast<size_t>(options.width) * options.height * 4, 0.0f);
 
-    std::vector<Tile> tiles;
-    for (int y = 0; y < options.height; y += kBlockSize)
-        for (int x = 0; x < options.width; x += kBlockSize)
-            tiles.push_back({x, y, std::min(x + kBlockSize, options.width),
-                             std::min(y + kBlockSize, options.height)});
+    const std::vector<Tile> tiles = make_tiles(options.width, options.height);
+    std::vector<char> tile_done(tiles.size(), 0);  // each written by the one thread of its tile
 
     TileRenderer renderer(camera, options, settings, radiance, &image);
     std::atomic<size_t> finished{0};
     std::atomic<bool> cancelled{false};
     auto body = [&](const tbb::blocked_range<size_t>& range) {
         for (size_t i = range.begin(); i != range.end(); ++i) {
-            if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
+            if (!renderer.render(tiles[i])) {
                 cancelled = true;
                 return;
             }
-            renderer.render(tiles[i]);
+            tile_done[i] = 1;
             size_t n = ++finished;
             if (options.progress) options.progress(static_cast<double>(n) / tiles.size());
         }
@@ -189,7 +219,12 @@ Image run_tiles(const Camera& camera, const RenderOptions& options,
                           tbb::simple_partitioner());
     });
     if (cancelled || (options.cancel && options.cancel->load())) {
-        throw Error(ErrorKind::Cancelled, {}, "render cancelled");
+        auto partial = std::make_shared<PartialRender>();
+        clear_unfinished(&image, tiles, tile_done);
+        partial->film.image = std::move(image);
+        partial->tiles_total = tiles.size();
+        partial->tiles_done = static_cast<size_t>(std::count(tile_done.begin(), tile_done.end(), 1));
+        throw Interrupted(std::move(partial));
     }
     return image;
 }
@@ -235,32 +270,62 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
         extra.mean.assign(pixels * 3, 0.0);
         extra.m2.assign(pixels * 3, 0.0);
     }
-    std::vector<Tile> tiles;
-    for (int y = 0; y < options.height; y += kBlockSize)
-        for (int x = 0; x < options.width; x += kBlockSize)
-            tiles.push_back({x, y, std::min(x + kBlockSize, options.width),
-                             std::min(y + kBlockSize, options.height)});
+    const std::vector<Tile> tiles = make_tiles(options.width, options.height);
     const int total = std::max(1, options.spp);
     int done = 0;
     std::atomic<bool> cancelled{false};
+    auto cancel_requested = [&options] {
+        return options.cancel && options.cancel->load(std::memory_order_relaxed);
+    };
+    // The outputs at n samples per pixel from the sums; after every finished pass, so an
+    // interruption finds the last pass's film ready (and the last one is the result).
+    auto resolve = [&](int n, PathFilm* out) {
+        out->image = blank_image(options.width, options.height);
+        const double inv = 1.0 / n;
+        for (size_t i = 0; i < pixels; ++i)
+            for (int c = 0; c < 3; ++c) out->image.rgba[i * 4 + c] = sanitize(sum[i * 3 + c] * inv);
+        if (!extra.aov.empty()) {
+            out->albedo = blank_image(options.width, options.height);
+            out->normal = blank_image(options.width, options.height);
+            out->depth = blank_image(options.width, options.height);
+            for (size_t i = 0; i < pixels; ++i) {
+                const double* a = &extra.aov[i * 7];
+                for (int c = 0; c < 3; ++c) {
+                    out->albedo.rgba[i * 4 + c] = sanitize(a[c] * inv);
+                    out->normal.rgba[i * 4 + c] = finite_signed(a[3 + c] * inv);
+                    out->depth.rgba[i * 4 + c] = sanitize(a[6] * inv);
+                }
+            }
+        }
+        if (!extra.mean.empty()) {
+            out->variance = blank_image(options.width, options.height);
+            if (n >= 2) {
+                const double scale = 1.0 / (static_cast<double>(n) * (n - 1));
+                for (size_t i = 0; i < pixels; ++i)
+                    for (int c = 0; c < 3; ++c)
+                        out->variance.rgba[i * 4 + c] = sanitize(extra.m2[i * 3 + c] * scale);
+            }
+        }
+    };
     int threads = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
     tbb::task_arena arena(threads);
     while (done < total) {
         const int pass = std::min(total - done, std::max(1, done));
         const int s0 = done, s1 = done + pass;
         std::atomic<size_t> finished{0};
+        std::vector<char> tile_done(tiles.size(), 0);
         auto body = [&](const tbb::blocked_range<size_t>& range) {
             for (size_t i = range.begin(); i != range.end(); ++i) {
-                if (options.cancel && options.cancel->load(std::memory_order_relaxed)) {
-                    cancelled = true;
-                    return;
-                }
                 const Tile& t = tiles[i];
                 for (int y = t.y0; y < t.y1; ++y) {
                     for (int x = t.x0; x < t.x1; ++x) {
                         const size_t p = static_cast<size_t>(y) * options.width + x;
                         double* acc = &sum[p * 3];
                         for (int s = s0; s < s1; ++s) {
+                            if (cancel_requested()) {
+                                cancelled = true;
+                                return;
+                            }
                             const uint32_t index = static_cast<uint32_t>(s);
                             const Sample2 j = PixelSampler(x, y, index, options.seed).get2(0);
                             std::optional<Ray> ray = camera.generate(x + j.u - 0.5, y + j.v - 0.5);
@@ -300,6 +365,7 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
                         }
                     }
                 }
+                tile_done[i] = 1;
                 const size_t n = ++finished;
                 if (options.progress)
                     options.progress((s0 + static_cast<double>(pass) * n / tiles.size()) / total);
@@ -310,39 +376,31 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
                               tbb::simple_partitioner());
         });
         if (cancelled || (options.cancel && options.cancel->load())) {
-            throw Error(ErrorKind::Cancelled, {}, "render cancelled");
+            auto partial = std::make_shared<PartialRender>();
+            partial->spp_requested = total;
+            partial->tiles_total = tiles.size();
+            if (done > 0) {
+                partial->film = std::move(*film);  // the last finished pass
+                partial->samples_per_pixel = done;
+                partial->tiles_done = tiles.size();
+            } else {
+                // The first pass's finished tiles hold exactly their one sample.
+                resolve(1, &partial->film);
+                for (Image* image : {&partial->film.image, &partial->film.albedo,
+                                     &partial->film.normal, &partial->film.depth,
+                                     &partial->film.variance})
+                    clear_unfinished(image, tiles, tile_done);
+                partial->tiles_done =
+                    static_cast<size_t>(std::count(tile_done.begin(), tile_done.end(), 1));
+            }
+            throw Interrupted(std::move(partial));
         }
         done = s1;
+        resolve(done, film);
         if (options.time_limit > 0 &&
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >=
                 options.time_limit)
             break;
-    }
-    film->image = blank_image(options.width, options.height);
-    const double inv = 1.0 / done;
-    for (size_t i = 0; i < pixels; ++i)
-        for (int c = 0; c < 3; ++c) film->image.rgba[i * 4 + c] = sanitize(sum[i * 3 + c] * inv);
-    if (!extra.aov.empty()) {
-        film->albedo = blank_image(options.width, options.height);
-        film->normal = blank_image(options.width, options.height);
-        film->depth = blank_image(options.width, options.height);
-        for (size_t i = 0; i < pixels; ++i) {
-            const double* a = &extra.aov[i * 7];
-            for (int c = 0; c < 3; ++c) {
-                film->albedo.rgba[i * 4 + c] = sanitize(a[c] * inv);
-                film->normal.rgba[i * 4 + c] = finite_signed(a[3 + c] * inv);
-                film->depth.rgba[i * 4 + c] = sanitize(a[6] * inv);
-            }
-        }
-    }
-    if (!extra.mean.empty()) {
-        film->variance = blank_image(options.width, options.height);
-        if (done >= 2) {
-            const double scale = 1.0 / (static_cast<double>(done) * (done - 1));
-            for (size_t i = 0; i < pixels; ++i)
-                for (int c = 0; c < 3; ++c)
-                    film->variance.rgba[i * 4 + c] = sanitize(extra.m2[i * 3 + c] * scale);
-        }
     }
     return done;
 }

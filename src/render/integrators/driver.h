@@ -5,9 +5,13 @@
 // the image is bit-identical whatever the thread count.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <utility>
 
+#include "core/error.h"
 #include "render/camera.h"
 #include "render/integrators/aov.h"
 #include "render/image.h"
@@ -35,7 +39,9 @@ struct DriverSettings {
     double working_gamma = 1.0;
 };
 
-// Throws Error(ErrorKind::Cancelled) when options.cancel is set during the render.
+// Throws Interrupted (an Error(ErrorKind::Cancelled)) when options.cancel is set during the
+// render; it carries what was finished. Cancellation is checked before every row of a tile, so
+// a render stops within a row's time; a tile cut short counts as not finished.
 Image run_tiles(const Camera& camera, const RenderOptions& options,
                 const DriverSettings& settings, const RadianceFn& radiance);
 
@@ -63,7 +69,36 @@ struct PathFilm {
 int run_path_tiles(const Camera& camera, const RenderOptions& options,
                    const PathRadianceFn& radiance, PathFilm* film);
 // The same without AOVs or variance, for a plain radiance function.
+// Both check cancellation before every sample and throw Interrupted.
 int run_path_tiles(const Camera& camera, const RenderOptions& options, const RadianceFn& radiance,
                    Image* image);
+
+// What an interrupted render had finished (glint render --save-partial writes it). The images
+// are complete, width x height:
+// - Whitted (samples_per_pixel 0): the finished tiles as rendered; every other pixel is
+//   transparent black (RGBA 0, 0, 0, 0).
+// - Path tracer, after at least one finished progressive pass: every pixel at the
+//   samples_per_pixel of the last finished pass, bit-identical to a full render with
+//   --spp samples_per_pixel (the same sums in the same order); alpha 1 everywhere.
+// - Path tracer interrupted during its first pass (samples_per_pixel 0): the tiles that
+//   finished it at 1 sample, the rest transparent black, like Whitted.
+// AOVs and variance follow the image (empty when not asked for).
+struct PartialRender {
+    PathFilm film;
+    int samples_per_pixel = 0;  // path tracer: of the last finished pass; 0: see tiles
+    int spp_requested = 0;      // path tracer: options.spp; 0 for Whitted
+    size_t tiles_done = 0;      // tiles whose pixels are kept (all of them after a pass)
+    size_t tiles_total = 0;
+};
+
+class Interrupted : public Error {
+public:
+    explicit Interrupted(std::shared_ptr<const PartialRender> partial)
+        : Error(ErrorKind::Cancelled, {}, "render cancelled"), partial_(std::move(partial)) {}
+    const PartialRender& partial() const { return *partial_; }
+
+private:
+    std::shared_ptr<const PartialRender> partial_;
+};
 
 }  // namespace glint::render
