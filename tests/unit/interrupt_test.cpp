@@ -3,20 +3,27 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/mount.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <cmath>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "render/integrators/driver.h"
 
 namespace fs = std::filesystem;
 
@@ -321,6 +328,34 @@ TEST_F(InterruptTest, FullDiskIsErrorFiveWithoutLeftovers) {
     }
 }
 
+// A real full disk where the test may mount one (root with CAP_SYS_ADMIN; skipped otherwise):
+// a 64 KiB tmpfs. The 16 KiB PNG fits, the set with float side files does not.
+TEST_F(InterruptTest, FullTmpfsIsErrorFiveWithoutLeftovers) {
+    const fs::path small = dir_ / "small";
+    fs::create_directories(small);
+    if (::mount("tmpfs", small.c_str(), "tmpfs", 0, "size=64k") != 0)
+        GTEST_SKIP() << "cannot mount a tmpfs here: " << std::strerror(errno);
+    struct Unmount {
+        const fs::path& p;
+        ~Unmount() { ::umount2(p.c_str(), MNT_DETACH); }
+    } unmount{small};
+    const std::vector<std::string> base = {"render", path("s.pov"), "--progress", "none"};
+    std::vector<std::string> a = base;
+    a.insert(a.end(), {"-o", (small / "a.png").string(), "--width", "128", "--height", "96"});
+    Exit r = run_glint(a, path("err.txt"));
+    ASSERT_EQ(r.code, 0) << err();
+    std::vector<std::string> b = base;
+    b.insert(b.end(), {"-o", (small / "b.png").string(), "--width", "64", "--height", "64",
+                       "--integrator", "path", "--spp", "4", "--variance", "--aov",
+                       "albedo,normal,depth"});
+    r = run_glint(b, path("err.txt"));
+    EXPECT_EQ(r.code, 5) << err();
+    EXPECT_NE(err().find("No space left on device"), std::string::npos) << err();
+    std::vector<std::string> left;
+    for (const auto& e : fs::directory_iterator(small)) left.push_back(e.path().filename());
+    EXPECT_EQ(left, std::vector<std::string>{"a.png"});
+}
+
 // --save-partial when the partial write itself fails: exit 5, nothing left.
 TEST_F(InterruptTest, SavePartialWriteFailureIsErrorFive) {
     Exit r = run_glint({"render", path("s.pov"), "-o", path("o.exr"), "--width", "256",
@@ -332,3 +367,128 @@ TEST_F(InterruptTest, SavePartialWriteFailureIsErrorFive) {
     EXPECT_NE(err().find("error: cannot write"), std::string::npos) << err();
     EXPECT_EQ(extra_files(), std::vector<std::string>{});
 }
+
+// The driver itself, cancelled at a fixed point (no timing): what Interrupted carries.
+namespace glint::render {
+namespace {
+
+Camera driver_camera(int w, int h) {
+    scene::Camera c;
+    c.location = Vec3(0, 0, -5);
+    return Camera(c, w, h);
+}
+
+// Depends on the ray and the sample number, never black.
+Color pattern(const Ray& r, const SampleId& id) {
+    const double v = std::sin(r.dir.x * 91.7 + id.index * 0.37) * std::cos(r.dir.y * 57.3);
+    return Color(0.6 + 0.4 * v, 0.1 + r.dir.x * r.dir.x, 0.5 + 0.01 * (id.index % 7));
+}
+
+TEST(InterruptDriver, PathPartialIsTheLastFinishedPassBitForBit) {
+    const int w = 70, h = 45;  // 3 x 2 tiles, partial ones at the edges
+    const Camera cam = driver_camera(w, h);
+    for (uint32_t cancel_at : {2u, 3u, 4u, 7u, 9u}) {  // passes: [0,1) [1,2) [2,4) [4,8) [8,16)
+        std::atomic<bool> cancel{false};
+        RenderOptions o;
+        o.width = w;
+        o.height = h;
+        o.spp = 64;
+        o.threads = 2;
+        o.aovs = true;
+        o.variance = true;
+        o.cancel = &cancel;
+        PathRadianceFn fn = [&](const Ray& r, const SampleId& id, FirstHit* first) {
+            // Cancel on the first sample of `cancel_at` in the centre pixel.
+            if (id.index == cancel_at && id.x == w / 2 && id.y == h / 2) cancel = true;
+            if (first) {
+                first->hit = true;
+                first->albedo = Color(0.3, 0.2, 0.1 * (id.index % 3));
+                first->depth = 1.0 + id.index;
+            }
+            return pattern(r, id);
+        };
+        PathFilm film;
+        std::shared_ptr<const PartialRender> got;
+        try {
+            run_path_tiles(cam, o, fn, &film);
+        } catch (const Interrupted& e) {
+            got = std::make_shared<PartialRender>(e.partial());
+        }
+        ASSERT_TRUE(got) << "not interrupted at " << cancel_at;
+        int expect = 1;
+        while (expect * 2 <= static_cast<int>(cancel_at)) expect *= 2;
+        EXPECT_EQ(got->samples_per_pixel, expect) << cancel_at;
+        EXPECT_EQ(got->spp_requested, 64);
+        EXPECT_EQ(got->tiles_done, got->tiles_total);
+        RenderOptions full = o;
+        full.cancel = nullptr;
+        full.spp = expect;
+        PathFilm ref;
+        EXPECT_EQ(run_path_tiles(cam, full, fn, &ref), expect);
+        EXPECT_EQ(got->film.image.rgba, ref.image.rgba) << cancel_at;
+        EXPECT_EQ(got->film.albedo.rgba, ref.albedo.rgba) << cancel_at;
+        EXPECT_EQ(got->film.depth.rgba, ref.depth.rgba) << cancel_at;
+        EXPECT_EQ(got->film.variance.rgba, ref.variance.rgba) << cancel_at;
+    }
+}
+
+TEST(InterruptDriver, FirstPassAndWhittedKeepFinishedTilesOnly) {
+    const int w = 100, h = 70;  // 4 x 3 tiles
+    const Camera cam = driver_camera(w, h);
+    RenderOptions o;
+    o.width = w;
+    o.height = h;
+    o.threads = 1;
+    o.aa = AaMode::Grid;
+    o.grid_n = 2;
+    const Image ref = run_tiles(cam, o, {}, pattern);
+    for (bool path : {false, true}) {
+        std::atomic<bool> cancel{false};
+        o.cancel = &cancel;
+        o.spp = 8;
+        // Cancelled inside the 6th tile (x 32..63, y 32..63) on its 3rd row.
+        RadianceFn fn = [&](const Ray& r, const SampleId& id) {
+            if (id.x == 40 && id.y == 34) cancel = true;
+            return pattern(r, id);
+        };
+        std::shared_ptr<const PartialRender> got;
+        try {
+            if (path) {
+                Image img;
+                run_path_tiles(cam, o, fn, &img);
+            } else {
+                run_tiles(cam, o, {}, fn);
+            }
+        } catch (const Interrupted& e) {
+            got = std::make_shared<PartialRender>(e.partial());
+        }
+        ASSERT_TRUE(got);
+        EXPECT_EQ(got->samples_per_pixel, 0);
+        EXPECT_EQ(got->tiles_total, 12u);
+        EXPECT_EQ(got->tiles_done, 5u) << "one thread renders tiles in order";
+        Image full1;
+        if (path) {
+            RenderOptions one = o;
+            one.cancel = nullptr;
+            one.spp = 1;
+            run_path_tiles(cam, one, pattern, &full1);
+        }
+        const Image& expect = path ? full1 : ref;
+        const Image& img = got->film.image;
+        ASSERT_EQ(img.rgba.size(), expect.rgba.size());
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const int tile = (y / 32) * 4 + x / 32;
+                const float* p = img.pixel(x, y);
+                if (tile < 5) {
+                    for (int c = 0; c < 4; ++c)
+                        ASSERT_EQ(p[c], expect.pixel(x, y)[c]) << x << "," << y << " " << path;
+                } else {
+                    for (int c = 0; c < 4; ++c) ASSERT_EQ(p[c], 0.0f) << x << "," << y;
+                }
+            }
+    }
+}
+
+}  // namespace
+}  // namespace glint::render

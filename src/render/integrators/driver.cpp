@@ -77,8 +77,8 @@ private:
     bool grid(const Tile& t) const {
         int n = std::max(1, opt_.grid_n);
         for (int y = t.y0; y < t.y1; ++y) {
-            if (cancelled()) return false;
             for (int x = t.x0; x < t.x1; ++x) {
+                if (cancelled()) return false;  // up to 64 x 64 samples a pixel
                 Color sum;
                 for (int j = 0; j < n; ++j)
                     for (int i = 0; i < n; ++i)
