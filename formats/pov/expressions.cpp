@@ -650,7 +650,15 @@ public:
         }
         if (f == "concat") {
             std::string r;
-            for (size_t i = 0; i < a.size(); ++i) r += S(i);
+            for (size_t i = 0; i < a.size(); ++i) {
+                const std::string& part = S(i);
+                if (static_cast<long long>(r.size() + part.size()) > p_.options.max_string_length)
+                    p_.fail_limit(fn_loc,
+                                  "concat() would make a string longer than " +
+                                      std::to_string(p_.options.max_string_length) + " bytes",
+                                  "--max-string-length");
+                r += part;
+            }
             return r;
         }
         if (f == "chr") { need(1); return std::string(1, static_cast<char>(static_cast<int>(F(0)))); }

@@ -337,15 +337,25 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
     } else if (w == "mesh" || w == "mesh2") {
         scene::Mesh mesh;
         mesh.loc = kloc;
+        auto check_triangles = [&](size_t more) {
+            if (triangles_ + static_cast<long long>(more) > options.max_triangles)
+                fail_limit(kloc,
+                           "the scene has more than " + std::to_string(options.max_triangles) +
+                               " mesh triangles",
+                           "--max-triangles");
+        };
         if (w == "mesh") {
             for (;;) {
                 if (accept("triangle")) parse_mesh_triangle(*this, mesh, false);
                 else if (accept("smooth_triangle")) parse_mesh_triangle(*this, mesh, true);
                 else break;
+                check_triangles(mesh.faces.size());
             }
         } else {
             parse_mesh2(*this, mesh);
         }
+        check_triangles(mesh.faces.size());
+        triangles_ += static_cast<long long>(mesh.faces.size());
         if (accept("inside_vector")) {
             mesh.has_inside_vector = true;
             mesh.inside_vector = parse_vector();
@@ -433,6 +443,13 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
         // OBJ is right-handed and y-up; mirroring z shows the model as authored in POV-Ray's
         // left-handed space (as the model viewer does).
         obj::import_obj(path, scene, Transform::scale(Vec3(1, 1, -1)), -1, diag);
+        for (size_t m = meshes_before; m < scene.meshes.size(); ++m)
+            triangles_ += static_cast<long long>(scene.meshes[m].faces.size());
+        if (triangles_ > options.max_triangles)
+            fail_limit(floc,
+                       "the scene has more than " + std::to_string(options.max_triangles) +
+                           " mesh triangles",
+                       "--max-triangles");
         std::vector<scene::Object> parts(scene.objects.begin() + objects_before,
                                          scene.objects.end());
         scene.objects.resize(objects_before);

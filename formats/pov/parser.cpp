@@ -57,6 +57,10 @@ void Parser::place_object(PovObject o) {
     if (o.is_light || !o.left_out.empty()) return;
     scene::Texture def = default_texture_;
     def.loc = o.obj.loc;
+    if (static_cast<long long>(scene.objects.size()) >= options.max_objects)
+        fail_limit(o.obj.loc,
+                   "the scene has more than " + std::to_string(options.max_objects) + " objects",
+                   "--max-objects");
     scene.objects.push_back(to_ir(*this, o, def, scene::Interior{}, true));
     propagate_flags(scene.objects.back());
 }
@@ -186,10 +190,13 @@ Value Parser::parse_array() {
         FileLoc l = loc();
         double n = parse_float();
         expect("]", "after the array size");
-        if (n < 1 || n > 1e8) fail_at(l, "array size must be at least 1");
+        if (!(n >= 1)) fail_at(l, "array size must be at least 1");
+        const double limit = static_cast<double>(options.max_array_elements);
+        if (n * static_cast<double>(total) > limit)
+            fail_limit(l, "array of more than " + std::to_string(options.max_array_elements) +
+                              " elements", "--max-array-size");
         a->sizes.push_back(static_cast<int>(n));
         total *= static_cast<size_t>(n);
-        if (total > 100'000'000) fail_at(l, "array too large");
     }
     if (a->sizes.empty()) fail("expected '[' and a size after 'array'");
     a->items.resize(total);

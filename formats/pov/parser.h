@@ -32,11 +32,16 @@ struct ParseOptions {
     // image_width / image_height as the scene sees them.
     int image_width = 320;
     int image_height = 240;
-    // Resource limits: exceeded limits are errors, never hangs.
-    long long max_loop_iterations = 10'000'000;  // per #while/#for loop
-    int max_include_depth = 64;
-    int max_macro_depth = 256;
+    // Resource limits: exceeded limits are errors (ErrorKind::Render, exit 4, at the place in
+    // the scene), never hangs or exhausted memory. The CLI flags named in the messages set them.
+    long long max_loop_iterations = 10'000'000;  // per #while/#for loop (--max-loop-iterations)
+    int max_include_depth = 64;                  // --max-include-depth
+    int max_macro_depth = 256;                   // --max-recursion
     long long max_tokens = 2'000'000'000;
+    long long max_array_elements = 10'000'000;   // per array, all dimensions (--max-array-size)
+    long long max_string_length = 100'000'000;   // bytes per string value (--max-string-length)
+    long long max_triangles = 50'000'000;        // mesh triangles in the scene (--max-triangles)
+    long long max_objects = 10'000'000;          // top-level objects in the scene (--max-objects)
     // Set (by SIGINT/SIGTERM in the CLI): parsing stops with ErrorKind::Cancelled within a few
     // thousand tokens, so a long #while loop or include chain can be interrupted too.
     const std::atomic<bool>* cancel = nullptr;

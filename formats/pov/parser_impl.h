@@ -104,6 +104,9 @@ public:
     // lower case) is called what it most likely is: an unknown identifier.
     std::string got(const Token& t) const;
     [[noreturn]] void fail_at(const FileLoc& loc, const std::string& message) const;
+    // A resource limit of ParseOptions was passed: ErrorKind::Render (exit 4), naming the flag.
+    [[noreturn]] void fail_limit(const FileLoc& loc, const std::string& message,
+                                 const char* flag) const;
     [[noreturn]] void unsupported(const std::string& what) const;
     bool in_system_file() const;
 
@@ -285,6 +288,7 @@ private:
     bool ungot_ = false;
     long long token_count_ = 0;
     int macro_depth_ = 0;
+    long long triangles_ = 0;  // mesh triangles so far, against options.max_triangles
     std::string scene_dir_;
     Token end_token_;
     // An array element read in the grammar becomes a token "A[3]" whose symbol lives here, so

@@ -80,6 +80,10 @@ void Parser::fail_at(const FileLoc& l, const std::string& message) const {
     throw Error(ErrorKind::Scene, l, message);
 }
 
+void Parser::fail_limit(const FileLoc& l, const std::string& message, const char* flag) const {
+    throw Error(ErrorKind::Render, l, message + " (limit: " + flag + ")");
+}
+
 void Parser::unsupported(const std::string& what) const {
     throw Unsupported(loc(), what + " is not supported yet");
 }
@@ -498,8 +502,10 @@ void Parser::handle_include(const FileLoc& dloc) {
     int non_macro = 0;
     for (const auto& f : frames_) non_macro += f.is_macro ? 0 : 1;
     if (non_macro >= options.max_include_depth)
-        fail_at(dloc, "#include nested deeper than " + std::to_string(options.max_include_depth) +
-                          " files");
+        fail_limit(dloc,
+                   "#include nested deeper than " + std::to_string(options.max_include_depth) +
+                       " files",
+                   "--max-include-depth");
     std::vector<std::pair<std::string, bool>> dirs;
     dirs.push_back({files_[cur_file_]->dir, files_[cur_file_]->system});
     dirs.push_back({scene_dir_, false});
@@ -579,8 +585,10 @@ void Parser::handle_macro_def(const FileLoc& dloc) {
 
 void Parser::call_macro(const Macro& m, const FileLoc& cloc) {
     if (macro_depth_ >= options.max_macro_depth)
-        fail_at(cloc, "macro calls nested deeper than " + std::to_string(options.max_macro_depth) +
-                          " (runaway recursion?)");
+        fail_limit(cloc,
+                   "macro calls nested deeper than " + std::to_string(options.max_macro_depth) +
+                      ": runaway recursion?",
+                   "--max-recursion");
     expect("(", ("after the macro name '" + m.name + "'").c_str());
     std::unordered_map<std::string, Symbol> args;
     size_t saved = declare_frame_, saved_pending = pending_declare_frame_;
@@ -734,8 +742,10 @@ void Parser::handle_end(const FileLoc& dloc) {
             return;
         case CondKind::While: {
             if (++c.iterations >= options.max_loop_iterations)
-                fail_at(c.loc, "#while loop ran more than " +
-                                   std::to_string(options.max_loop_iterations) + " iterations");
+                fail_limit(c.loc,
+                           "#while loop ran more than " +
+                               std::to_string(options.max_loop_iterations) + " iterations",
+                           "--max-loop-iterations");
             size_t after = f.pos;
             f.pos = c.restart;
             if (parse_cond_paren() == 0) {
@@ -746,8 +756,10 @@ void Parser::handle_end(const FileLoc& dloc) {
         }
         case CondKind::For: {
             if (++c.iterations >= options.max_loop_iterations)
-                fail_at(c.loc, "#for loop ran more than " +
-                                   std::to_string(options.max_loop_iterations) + " iterations");
+                fail_limit(c.loc,
+                           "#for loop ran more than " +
+                               std::to_string(options.max_loop_iterations) + " iterations",
+                           "--max-loop-iterations");
             const Symbol* s = lookup(c.var);
             const Num* n = s ? std::get_if<Num>(&s->value) : nullptr;
             if (!n) fail_at(c.loc, "the #for loop variable '" + c.var + "' is no longer a float");

@@ -26,6 +26,25 @@ void add_scene_options(CLI::App& cmd, SceneRequest& request, bool scene_required
     cmd.add_option("-H,--height", request.height, "Image height in pixels (image_height)")
         ->capture_default_str()
         ->check(CLI::Range(1, 1 << 16));
+    // Resource limits: a scene that passes one stops with exit code 4 and its location.
+    SceneRequest::Limits& l = request.limits;
+    cmd.add_option("--max-loop-iterations", l.loop_iterations,
+                   "Limit: iterations of one #while/#for loop")
+        ->capture_default_str()->check(CLI::PositiveNumber);
+    cmd.add_option("--max-recursion", l.recursion, "Limit: nested macro calls")
+        ->capture_default_str()->check(CLI::PositiveNumber);
+    cmd.add_option("--max-include-depth", l.include_depth, "Limit: nested #include files")
+        ->capture_default_str()->check(CLI::PositiveNumber);
+    cmd.add_option("--max-array-size", l.array_size, "Limit: elements of one array")
+        ->capture_default_str()->check(CLI::PositiveNumber);
+    cmd.add_option("--max-string-length", l.string_length, "Limit: bytes of one string")
+        ->capture_default_str()->check(CLI::PositiveNumber);
+    cmd.add_option("--max-triangles", l.triangles, "Limit: mesh triangles in the scene")
+        ->capture_default_str()->check(CLI::PositiveNumber);
+    cmd.add_option("--max-objects", l.objects, "Limit: top-level objects in the scene")
+        ->capture_default_str()->check(CLI::PositiveNumber);
+    cmd.add_option("--max-image-pixels", l.image_pixels, "Limit: width x height of the image")
+        ->capture_default_str()->check(CLI::PositiveNumber);
 }
 
 namespace {
@@ -77,6 +96,15 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose) {
     if (fs::is_directory(request.path, ec))
         throw Error(ErrorKind::MissingFile, {}, "scene path is a folder: " + request.path);
 
+    const SceneRequest::Limits& limits = request.limits;
+    const long long pixels = static_cast<long long>(request.width) * request.height;
+    if (pixels > limits.image_pixels)
+        throw Error(ErrorKind::Render, {},
+                    "the image is " + std::to_string(request.width) + "x" +
+                        std::to_string(request.height) + " = " + std::to_string(pixels) +
+                        " pixels, more than " + std::to_string(limits.image_pixels) +
+                        " (limit: --max-image-pixels)");
+
     std::string ext = fs::path(request.path).extension().string();
     for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
     if (ext == ".obj") {
@@ -84,6 +112,13 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose) {
         ParseDiagnosticPrinter printer(verbose);
         Diagnostics diag([&printer](const Diagnostic& d) { printer.print(d); });
         scene::Scene scene = obj::viewer_scene(request.path, request.width, request.height, diag);
+        long long triangles = 0;
+        for (const scene::Mesh& m : scene.meshes) triangles += static_cast<long long>(m.faces.size());
+        if (triangles > limits.triangles)
+            throw Error(ErrorKind::Render, {},
+                        request.path + " has " + std::to_string(triangles) +
+                            " triangles, more than " + std::to_string(limits.triangles) +
+                            " (limit: --max-triangles)");
         scene::validate(scene);
         return scene;
     }
@@ -101,6 +136,13 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose) {
     options.declares = request.declares;
     options.image_width = request.width;
     options.image_height = request.height;
+    options.max_loop_iterations = limits.loop_iterations;
+    options.max_macro_depth = limits.recursion;
+    options.max_include_depth = limits.include_depth;
+    options.max_array_elements = limits.array_size;
+    options.max_string_length = limits.string_length;
+    options.max_triangles = limits.triangles;
+    options.max_objects = limits.objects;
     options.object_query = render::answer_object_query;  // trace(), min_extent(), max_extent()
     options.pattern_hook = render::parse_time_pattern;   // pattern functions called while parsing
     options.cancel = &cancel_flag();                      // SIGINT/SIGTERM stop the parse too

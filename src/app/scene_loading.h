@@ -27,10 +27,23 @@ struct SceneRequest {
     std::optional<double> initial_clock, final_clock;
     int initial_frame = 1, final_frame = 1, frame_number = 0;
     std::vector<std::pair<std::string, double>> declares;
+    // Resource limits (--max-*; README "Resource limits"): passing one is exit 4, never a hang
+    // or an exhausted machine. Defaults are pov::ParseOptions's.
+    struct Limits {
+        long long loop_iterations = 10'000'000;
+        int recursion = 256;
+        int include_depth = 64;
+        long long array_size = 10'000'000;
+        long long string_length = 100'000'000;
+        long long triangles = 50'000'000;
+        long long objects = 10'000'000;
+        long long image_pixels = 1LL << 28;  // 16384 x 16384
+    } limits;
 };
 
 // Registers the flags every scene-reading subcommand shares: SCENE, -I/--include (one folder
-// each, repeatable), --clock, -W/--width and -H/--height (image_width/image_height). SCENE is
+// each, repeatable), --clock, -W/--width and -H/--height (image_width/image_height), the
+// resource limits (--max-loop-iterations, --max-recursion, ...). SCENE is
 // optional for `render`, where POV-Ray's +I or an .ini may name it.
 void add_scene_options(CLI::App& cmd, SceneRequest& request, bool scene_required = true);
 

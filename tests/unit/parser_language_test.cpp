@@ -354,7 +354,7 @@ TEST(ParserDirective, LocalShadowsInsideMacros) {
                   o.max_macro_depth = 10;
                   return o;
               }()),
-              "1:12: macro calls nested deeper than 10 (runaway recursion?)");
+              "1:12: macro calls nested deeper than 10: runaway recursion? (limit: --max-recursion)");
 }
 
 TEST(ParserDirective, DeclaredSkySphere) {

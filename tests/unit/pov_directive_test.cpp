@@ -148,9 +148,9 @@ TEST(PovDirective, Errors) {
     EXPECT_EQ(error_of("#declare X = 1;\n#declare Y = X + Z;"), "2:18: unknown identifier 'Z'");
     ParseOptions small;
     small.max_loop_iterations = 100;
-    EXPECT_EQ(error_of("#while (1) #end", small), "1:1: #while loop ran more than 100 iterations");
+    EXPECT_EQ(error_of("#while (1) #end", small), "1:1: #while loop ran more than 100 iterations (limit: --max-loop-iterations)");
     EXPECT_EQ(error_of("#macro R(N) R(N + 1) #end\nsphere { 0, R(1) }"),
-              "1:13: macro calls nested deeper than 256 (runaway recursion?)");
+              "1:13: macro calls nested deeper than 256: runaway recursion? (limit: --max-recursion)");
 }
 
 // The body's text alone does not say which call failed: the note names the call site.
@@ -309,7 +309,7 @@ TEST_F(PovIncludeTest, IncludeDepthLimit) {
         parse_file((root / "scene" / "main.pov").string(), o, diag);
         FAIL() << "expected an error";
     } catch (const Error& e) {
-        EXPECT_STREQ(e.what(), "#include nested deeper than 8 files");
+        EXPECT_STREQ(e.what(), "#include nested deeper than 8 files (limit: --max-include-depth)");
     }
 }
 

@@ -1,0 +1,4 @@
+#version 3.7;
+global_settings { assumed_gamma 1 }
+#declare A = array[3] { 1, 2, 3 }
+#declare B = A[3];

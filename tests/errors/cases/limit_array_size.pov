@@ -1,0 +1,3 @@
+#version 3.7;
+global_settings { assumed_gamma 1 }
+#declare A = array[1000][1000];

@@ -1,0 +1,8 @@
+#version 3.7;
+global_settings { assumed_gamma 1 }
+mesh2 {
+    vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }
+    normal_vectors { 1, <0,0,-1> }
+    face_indices { 1, <0, 1, 2> }
+    normal_indices { 1, <0, 0, 1> }
+}

@@ -1,0 +1,6 @@
+#version 3.7;
+global_settings { assumed_gamma 1 }
+#switch (1)
+#case (1)
+    sphere { 0, 1 }
+#break

@@ -1,0 +1,4 @@
+#version 3.7;
+global_settings { assumed_gamma 1 }
+sphere { <0, 1, 0>, 1
+    pigment { rgb 1 }
