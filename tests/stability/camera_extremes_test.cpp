@@ -103,5 +103,47 @@ TEST(StabilityCamera, PathTracerExtremeFieldsOfViewAndImageShapes) {
     }
 }
 
+TEST(StabilityCamera, PovRayFigures) {
+    // Not a bound on POV-Ray: its figures for the report, measured as glint's are (the marker
+    // must cover the centre pixels). At fov 1e-4 the marker's radius is ~1e-7, below POV-Ray's
+    // absolute intersection epsilons.
+    if (!povray_available()) GTEST_SKIP() << "povray not installed";
+    const double distance = length(kTarget - kLocation);
+    struct Size {
+        int width, height;
+    };
+    for (double fov : {1e-4, 60.0, 179.0}) {
+        const scene::Scene probe = load_scene("camera_extremes.pov", prelude(fov, 0.01), 1, 1);
+        const double tan_width = length(probe.camera.right) / length(probe.camera.direction);
+        const double tan_height = length(probe.camera.up) / length(probe.camera.direction);
+        for (const Size size : {Size{1, 1}, Size{1, 4096}, Size{4096, 1}}) {
+            double marker = distance * 0.005 * tan_width;
+            if (size.width > 1) marker = distance * 2 * tan_width / size.width;
+            if (size.height > 1) marker = distance * 2 * tan_height / size.height;
+            const auto image =
+                povray_render("camera_extremes.pov", prelude(fov, marker), size.width, size.height);
+            ASSERT_TRUE(image.has_value());
+            int hits = 0, wanted = 0;
+            auto check = [&](int x, int y) {
+                ++wanted;
+                if (is_marker(image->pixel(x, y))) ++hits;
+            };
+            if (size.width == 1 && size.height == 1) {
+                check(0, 0);
+            } else if (size.width > 1) {
+                check(size.width / 2 - 1, 0);
+                check(size.width / 2, 0);
+            } else {
+                check(0, size.height / 2 - 1);
+                check(0, size.height / 2);
+            }
+            std::printf(
+                "case 17 povray fov %g, %dx%d (marker radius %.3g): centre pixels on the "
+                "marker = %d of %d\n",
+                fov, size.width, size.height, marker, hits, wanted);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace glint::stability

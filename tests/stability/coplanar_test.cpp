@@ -43,9 +43,10 @@ TEST(StabilityCoplanar, Case3SameImageAcrossRunsAndThreadCounts) {
                 if (p[0] > 4 * (p[1] + p[2]) && p[0] > 0.05f) ++red;
                 if (p[1] > 4 * (p[0] + p[2]) && p[1] > 0.05f) ++green;
             }
-        std::printf("case 3 %s: differing film values at 1/2 threads, twice = %ld of %zu (bound "
-                    "0); red %ld, green %ld pixels\n", path ? "path" : "whitted", worst,
-                    first.rgba.size(), red, green);
+        std::printf(
+            "case 3 %s: differing film values at 1/2 threads, twice = %ld of %zu (bound "
+            "0); red %ld, green %ld pixels\n",
+            path ? "path" : "whitted", worst, first.rgba.size(), red, green);
         EXPECT_EQ(worst, 0) << (path ? "path" : "whitted");
         EXPECT_EQ(count_nonfinite(first), 0);
     }

@@ -75,8 +75,10 @@ TEST(StabilityGeometry, Case4WatertightMeshDoesNotLeak) {
         if (!prim->intersect(render::Ray{origin, target - origin, kInfinity}, kInfinity, &hit))
             ++leaks;
     }
-    std::printf("case 4: leaks = %ld of %ld rays from inside a closed %zu-triangle mesh aimed at "
-                "vertices and edges (bound 0)\n", leaks, kRays, mesh.faces.size());
+    std::printf(
+        "case 4: leaks = %ld of %ld rays from inside a closed %zu-triangle mesh aimed at "
+        "vertices and edges (bound 0)\n",
+        leaks, kRays, mesh.faces.size());
     EXPECT_EQ(leaks, 0);
 }
 
@@ -112,8 +114,10 @@ TEST(StabilityGeometry, Case5AxisAlignedRaysThroughBoxFacesAndEdges) {
                         }
         }
     }
-    std::printf("case 5: rays with the wrong hit count = %ld of %ld, non-finite hits = %ld "
-                "(bound 0, 0)\n", wrong, rays, nonfinite);
+    std::printf(
+        "case 5: rays with the wrong hit count = %ld of %ld, non-finite hits = %ld "
+        "(bound 0, 0)\n",
+        wrong, rays, nonfinite);
     EXPECT_EQ(wrong, 0);
     EXPECT_EQ(nonfinite, 0);
 }
@@ -154,9 +158,10 @@ TEST(StabilityGeometry, Case6GrazingAndEdgeOnTriangles) {
         check(render::Ray{target - dir * 3, dir, kInfinity});
         if (dir.z == 0 && hits > before) ++edge_on_hits;
     }
-    std::printf("case 6: bad hits (NaN t or barycentric outside [0, 1]) = %ld of %ld hits, %ld "
-                "rays; edge-on (d.n = 0) hits = %ld (bound 0, 0)\n", bad, hits, rays,
-                edge_on_hits);
+    std::printf(
+        "case 6: bad hits (NaN t or barycentric outside [0, 1]) = %ld of %ld hits, %ld "
+        "rays; edge-on (d.n = 0) hits = %ld (bound 0, 0)\n",
+        bad, hits, rays, edge_on_hits);
     EXPECT_EQ(bad, 0);
     EXPECT_EQ(edge_on_hits, 0);
     EXPECT_GT(hits, 0);
@@ -186,9 +191,10 @@ TEST(StabilityGeometry, Case8BvhStress) {
     const render::Bvh sl(slivers);
     const double sl_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("case 8: 1e5 boxes with one centroid: depth %d, build %.3f s; 1e5 slivers "
-                "1e6:1: depth %d, build %.3f s (bound depth <= %d, build < %.0f s)\n",
-                one.depth(), one_s, sl.depth(), sl_s, kMaxDepth, kMaxSeconds);
+    std::printf(
+        "case 8: 1e5 boxes with one centroid: depth %d, build %.3f s; 1e5 slivers "
+        "1e6:1: depth %d, build %.3f s (bound depth <= %d, build < %.0f s)\n",
+        one.depth(), one_s, sl.depth(), sl_s, kMaxDepth, kMaxSeconds);
     EXPECT_LE(one.depth(), kMaxDepth);
     EXPECT_LE(sl.depth(), kMaxDepth);
     EXPECT_LT(one_s, kMaxSeconds);
@@ -228,8 +234,10 @@ TEST(StabilityGeometry, Case9CameraInsideASphere) {
             }
         }
     }
-    std::printf("case 9: rays from the centre off by more than 4 ulp of the radius (or missing) "
-                "= %ld of %ld; worst %.2f ulp (bound 0, <= 4 ulp)\n", bad, total, worst_ulps);
+    std::printf(
+        "case 9: rays from the centre off by more than 4 ulp of the radius (or missing) "
+        "= %ld of %ld; worst %.2f ulp (bound 0, <= 4 ulp)\n",
+        bad, total, worst_ulps);
     EXPECT_EQ(bad, 0);
 }
 

@@ -31,9 +31,11 @@ TEST(StabilityGloss, Case14PhongExtremeExponents) {
                 }
         const float centre = image.pixel(w / 2, h / 2)[0];
         const int dist = std::max(std::abs(bx - w / 2), std::abs(by - h / 2));
-        std::printf("case 14 whitted phong_size %s: non-finite %ld (bound 0); brightest pixel "
-                    "%.4g at (%d, %d), %d px from the mirror pixel (bound 0 for size >= 40); "
-                    "centre %.4g\n", size, bad, best, bx, by, dist, centre);
+        std::printf(
+            "case 14 whitted phong_size %s: non-finite %ld (bound 0); brightest pixel "
+            "%.4g at (%d, %d), %d px from the mirror pixel (bound 0 for size >= 40); "
+            "centre %.4g\n",
+            size, bad, best, bx, by, dist, centre);
         EXPECT_EQ(bad, 0) << size;
         if (std::string(size) != "0") {
             EXPECT_EQ(centre, best) << size;  // ties allowed (a flat-topped highlight)

@@ -66,8 +66,8 @@ std::array<int, 3> expected_plane_colour() {
     const double background[3] = {0.3, 0.4, 0.6};
     std::array<int, 3> rgb{};
     for (int c = 0; c < 3; ++c)
-        rgb[c] = to_8bit(static_cast<float>(pigment[c] * (0.1 + 0.6 * cosine) +
-                                            0.2 * background[c]));
+        rgb[c] =
+            to_8bit(static_cast<float>(pigment[c] * (0.1 + 0.6 * cosine) + 0.2 * background[c]));
     return rgb;
 }
 
@@ -87,9 +87,10 @@ TEST(StabilityGroundPlane, NoAcneAtGrazingAnglesFromFarAway) {
         const render::Image image = render_scene(scene, kWidth, kHeight);
         EXPECT_EQ(count_nonfinite(image), 0) << v.name;
         const AcneResult r = measure(scene, image);
-        std::printf("case 2 whitted (%s): acne pixels = %ld of %ld plane pixels (bound 0); plane "
-                    "colour %d,%d,%d\n",
-                    v.name, r.acne, r.plane_pixels, r.median[0], r.median[1], r.median[2]);
+        std::printf(
+            "case 2 whitted (%s): acne pixels = %ld of %ld plane pixels (bound 0); plane "
+            "colour %d,%d,%d\n",
+            v.name, r.acne, r.plane_pixels, r.median[0], r.median[1], r.median[2]);
         EXPECT_GT(r.plane_pixels, kWidth * kHeight / 4) << v.name;
         EXPECT_EQ(r.acne, 0) << v.name;
         for (int c = 0; c < 3; ++c)
@@ -143,9 +144,11 @@ TEST(StabilityGroundPlane, NoAcneWithThePathTracer) {
         const render::RenderResult r = render_path_tracer(scene, w, h, 16, 8, 2);
         const NoisyAcne acne = measure_noisy(scene, r.image);
         if (first_median == 0) first_median = acne.median;
-        std::printf("case 2 path (%s): acne pixels = %ld of %ld plane pixels (bound 0); median "
-                    "%.4f, sigma %.4f; non-finite %ld\n", prelude, acne.acne, acne.plane_pixels,
-                    acne.median, acne.sigma, count_nonfinite(r.image));
+        std::printf(
+            "case 2 path (%s): acne pixels = %ld of %ld plane pixels (bound 0); median "
+            "%.4f, sigma %.4f; non-finite %ld\n",
+            prelude, acne.acne, acne.plane_pixels, acne.median, acne.sigma,
+            count_nonfinite(r.image));
         EXPECT_GT(acne.plane_pixels, w * h / 4);
         EXPECT_EQ(acne.acne, 0) << prelude;
         EXPECT_EQ(count_nonfinite(r.image), 0);
@@ -162,9 +165,10 @@ TEST(StabilityGroundPlane, PovRayFigures) {
         ASSERT_TRUE(image.has_value());
         const scene::Scene scene = load_scene("ground_plane.pov", prelude, kWidth, kHeight);
         const AcneResult r = measure(scene, *image);
-        std::printf("case 2 povray (distance 1e5, height %s): acne pixels = %ld of %ld plane "
-                    "pixels; plane colour %d,%d,%d\n", height, r.acne, r.plane_pixels,
-                    r.median[0], r.median[1], r.median[2]);
+        std::printf(
+            "case 2 povray (distance 1e5, height %s): acne pixels = %ld of %ld plane "
+            "pixels; plane colour %d,%d,%d\n",
+            height, r.acne, r.plane_pixels, r.median[0], r.median[1], r.median[2]);
     }
 }
 

@@ -249,5 +249,16 @@ TEST(StabilityIorPath, ExtremeIorsAndTotalInternalReflectionEnd) {
     }
 }
 
+TEST(StabilityIor, PovRayFigures) {
+    // Not a bound on POV-Ray: its figure for the report (8-bit, POV-Ray writes no float film).
+    if (!povray_available()) GTEST_SKIP() << "povray not installed";
+    const auto without =
+        povray_render("ior_sphere.pov", "#declare Show_Sphere = 0;", kWidth, kHeight);
+    const auto with = povray_render("ior_sphere.pov", "#declare Ior = 1.0;", kWidth, kHeight);
+    ASSERT_TRUE(without.has_value() && with.has_value());
+    std::printf("case 15 povray: ior 1.0 sphere vs no sphere: pixels within 0/255 = %.5f\n",
+                fraction_within(*with, *without, 0));
+}
+
 }  // namespace
 }  // namespace glint::stability

@@ -29,8 +29,8 @@ inline std::string scenes_dir() {
 
 // Parses `#declare`s given in `prelude`, then #includes scenes_dir()/file, so that one scene
 // file serves every parameter value the test needs.
-inline scene::Scene load_scene(const std::string& file, const std::string& prelude,
-                               int width, int height) {
+inline scene::Scene load_scene(const std::string& file, const std::string& prelude, int width,
+                               int height) {
     pov::ParseOptions options;
     options.include_dirs = {scenes_dir()};
     options.image_width = width;
@@ -40,8 +40,8 @@ inline scene::Scene load_scene(const std::string& file, const std::string& prelu
     return pov::parse_string(text, scenes_dir() + "/prelude_" + file, options, diag);
 }
 
-inline render::Image render_scene(const scene::Scene& scene, int width, int height,
-                                  int threads = 0, render::AaMode aa = render::AaMode::None) {
+inline render::Image render_scene(const scene::Scene& scene, int width, int height, int threads = 0,
+                                  render::AaMode aa = render::AaMode::None) {
     render::RenderOptions options;
     options.width = width;
     options.height = height;
@@ -67,8 +67,8 @@ inline render::RenderResult render_path_tracer(const scene::Scene& scene, int wi
     return render::render(scene, options, diag);
 }
 
-inline render::Image render_file(const std::string& file, const std::string& prelude,
-                                 int width, int height, int threads = 0) {
+inline render::Image render_file(const std::string& file, const std::string& prelude, int width,
+                                 int height, int threads = 0) {
     return render_scene(load_scene(file, prelude, width, height), width, height, threads);
 }
 
@@ -119,9 +119,7 @@ inline CameraRay primary_ray(const scene::Camera& cam, int x, int y, int width, 
 // and under its working directory) with VALIDATION.md's reference command, one ray per pixel
 // centre, and returns its PNG as linear film values (inverse of to_8bit, so that to_8bit gives
 // back POV-Ray's 8-bit values). Empty when `povray` is not installed or fails.
-inline bool povray_available() {
-    return std::system("command -v povray >/dev/null 2>&1") == 0;
-}
+inline bool povray_available() { return std::system("command -v povray >/dev/null 2>&1") == 0; }
 inline std::optional<render::Image> povray_render(const std::string& file,
                                                   const std::string& prelude, int width,
                                                   int height) {
@@ -131,10 +129,10 @@ inline std::optional<render::Image> povray_render(const std::string& file,
     if (!dir) return std::nullopt;
     const std::string folder = dir;
     std::ofstream(folder + "/scene.pov") << prelude << "\n#include \"" << file << "\"\n";
-    const std::string command =
-        "cd " + folder + " && povray +Iscene.pov +Oout.png +W" + std::to_string(width) + " +H" +
-        std::to_string(height) + " -D -A +WT1 -GA +L" + scenes_dir() +
-        " +L/usr/share/povray-3.7/include >log.txt 2>&1";
+    const std::string command = "cd " + folder + " && povray +Iscene.pov +Oout.png +W" +
+                                std::to_string(width) + " +H" + std::to_string(height) +
+                                " -D -A +WT1 -GA +L" + scenes_dir() +
+                                " +L/usr/share/povray-3.7/include >log.txt 2>&1";
     std::optional<render::Image> result;
     if (std::system(command.c_str()) == 0) {
         try {
