@@ -38,6 +38,36 @@ cases=(
 "18|Determinism at 1 and 2 threads, twice|bit-identical|$stab|StabilityDeterminism.*|^case 18"
 )
 
+worst() {  # worst LOG PREFIX FIELD-REGEX min|max|sum
+    grep -E "$2" "$1" 2>/dev/null | grep -oE "$3" | grep -oE "[0-9.e+-]+( of [0-9]+)?$" |
+        awk -v how="$4" '{ v = $1 + 0; n++
+            if (how == "sum") { s += v; t += $3 } else if (n == 1 || (how == "min" ? v < m : v > m)) m = v }
+            END { if (!n) print "n/a"; else if (how == "sum") printf "%d of %d\n", s, t; else print m }'
+}
+
+# The key figure of each case for the summary table: label ~ line regex ~ field regex ~ how
+# (min, max or sum of "N of M"), taken from the lines its tests print.
+declare -A key=(
+[1]="min fraction within 1/255~^case 1 (whitted|path) (scale 1e-4|scale 1e4|translate 1e5|#declare)~scale 1 = [0-9.]+~min"
+[2]="acne pixels~^case 2 (whitted|path)~acne pixels = [0-9]+ of [0-9]+~sum"
+[3]="differing values~^case 3~twice = [0-9]+ of [0-9]+~sum"
+[4]="leaks~^case 4~leaks = [0-9]+ of [0-9]+~sum"
+[5]="wrong hit counts~^case 5~count = [0-9]+ of [0-9]+~sum"
+[6]="bad hits~^case 6~[)] = [0-9]+ of [0-9]+~sum"
+[7]="differing values~^case 7 (whitted|path)~input = [0-9]+ of [0-9]+~sum"
+[8]="max depth~^case 8~depth [0-9]+~max"
+[9]="worst ulp~^case 9~worst [0-9.]+~max"
+[10]="mean~^white furnace~mean [0-9.]+~min"
+[11]="mean~^closed-sphere~mean [0-9.]+~min"
+[12]="min mean at depth 64~^specular furnace [(](mirror|glass)[)]: mean~mean [0-9.]+~min"
+[13]="smallest p~^chi2 ~ p [0-9.]+~min"
+[14]="non-finite~^case 14~non-finite [0-9]+~max"
+[15]="ior 1 max difference~^case 15 (whitted|path): ior 1.0 ~difference = [0-9.e+-]+~max"
+[16]="slope~^convergence~slope -?[0-9.]+~min"
+[17]="non-finite~^case 17 (whitted|path)~non-finite values = [0-9]+~max"
+[18]="differing values~^case 18~values = [0-9]+ of [0-9]+~sum"
+)
+
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 {
@@ -50,8 +80,8 @@ trap 'rm -rf "$tmp"' EXIT
     echo "(not bounded: POV-Ray's epsilons are absolute, MIN_ISECT_DEPTH 1e-4, SHADOW_TOLERANCE"
     echo "1e-3, so it fails where the scene's scale moves away from 1)."
     echo
-    echo "| case | what | bound | result | seconds |"
-    echo "|---|---|---|---|---|"
+    echo "| case | what | bound | measured | result | seconds |"
+    echo "|---|---|---|---|---|---|"
 } > "$tmp/head"
 : > "$tmp/body"
 for entry in "${cases[@]}"; do
@@ -70,8 +100,10 @@ for entry in "${cases[@]}"; do
     if [ $rc -eq 0 ] && grep -q "PASSED" "$log"; then result=pass
     elif [ $rc -eq 127 ]; then result="not run"
     else result="**FAIL**"; fi
-    printf '| %s | %s | %s | %s | %.1f |\n' "$num" "$what" "$bound" "$result" "$secs" \
-        >> "$tmp/head"
+    IFS='~' read -r klabel kline kfield khow <<< "${key[$num]}"
+    measured="$klabel: $(worst "$log" "$kline" "$kfield" "$khow")"
+    printf '| %s | %s | %s | %s | %s | %.1f |\n' "$num" "$what" "$bound" "$measured" "$result" \
+        "$secs" >> "$tmp/head"
     {
         echo
         echo "## Case $num: $what"
@@ -109,12 +141,6 @@ for entry in "${cases[@]}"; do
 done
 # POV-Ray beside glint, where POV-Ray is installed: the worst figure of each over the same
 # variants of the same scene, measured by the same code.
-worst() {  # worst LOG PREFIX FIELD-REGEX min|max|sum
-    grep -E "$2" "$1" 2>/dev/null | grep -oE "$3" | grep -oE "[0-9.e+-]+( of [0-9]+)?$" |
-        awk -v how="$4" '{ v = $1 + 0; n++
-            if (how == "sum") { s += v; t += $3 } else if (n == 1 || (how == "min" ? v < m : v > m)) m = v }
-            END { if (!n) print "n/a"; else if (how == "sum") printf "%d of %d\n", s, t; else print m }'
-}
 {
     echo
     echo "## POV-Ray 3.7 beside glint"
