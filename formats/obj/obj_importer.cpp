@@ -9,6 +9,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include <tiny_obj_loader.h>
 
@@ -40,6 +41,19 @@ std::string first_line(const std::string& s) {
     std::string t = s.substr(0, s.find('\n'));
     while (!t.empty() && (t.back() == '\r' || t.back() == ' ')) t.pop_back();
     return t;
+}
+
+// The line of the k-th (0-based) `cmd` statement (v, vt, vn) of the file, 0 when not found.
+int statement_line(const std::string& path, const char* cmd, size_t k) {
+    std::ifstream in(path);
+    std::string line;
+    size_t seen = 0;
+    for (int line_no = 1; std::getline(in, line); ++line_no) {
+        std::istringstream ls(line);
+        std::string c;
+        if (ls >> c && c == cmd && seen++ == k) return line_no;
+    }
+    return 0;
 }
 
 // tinyobjloader only checks face indices against the final counts and names the last line.
@@ -270,11 +284,30 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
         throw Error(ErrorKind::Scene, file_loc(file, reported_line(err)),
                     "broken OBJ: " + first_line(err));
     }
-    if (warn.find("indices out of bounds") != std::string::npos) {
+    // tinyobjloader resolves a negative index that reaches before the first element to a
+    // negative position without a warning: every index is checked here.
+    bool bad_index = warn.find("indices out of bounds") != std::string::npos;
+    const size_t n_pos = attrib.vertices.size() / 3, n_uv = attrib.texcoords.size() / 2,
+                 n_nrm = attrib.normals.size() / 3;
+    for (const tinyobj::shape_t& sh : shapes)
+        for (const tinyobj::index_t& ix : sh.mesh.indices)
+            bad_index = bad_index || ix.vertex_index < 0 || size_t(ix.vertex_index) >= n_pos ||
+                        ix.texcoord_index >= int(n_uv) || ix.normal_index >= int(n_nrm);
+    if (bad_index) {
         std::string what;
         FileLoc l = locate_bad_index(path, file, &what);
         throw Error(ErrorKind::Scene, l, what);
     }
+    // A `v 1 nan 0` or `v 1e400 0 0` would reach the renderer as NaN or infinity.
+    for (const auto& [values, width, cmd] :
+         {std::tuple{&attrib.vertices, 3, "v"}, std::tuple{&attrib.normals, 3, "vn"},
+          std::tuple{&attrib.texcoords, 2, "vt"}})
+        for (size_t i = 0; i < values->size(); ++i)
+            if (!std::isfinite((*values)[i]))
+                throw Error(ErrorKind::Scene,
+                            file_loc(file, statement_line(path, cmd, i / width)),
+                            std::string("'") + cmd + "' statement with a value that is not a "
+                            "finite number (NaN, or out of range like 1e400)");
     // Other warnings (a missing .mtl, both d and Tr, ...) go through, one per line.
     std::istringstream ws(warn);
     for (std::string w; std::getline(ws, w);) {
@@ -321,6 +354,22 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
         v.Pcr = mt.clearcoat_roughness;
         v.aniso = mt.anisotropy;
         v.anisor = mt.anisotropy_rotation;
+        for (const auto& [name, c] : {std::pair{"Ka", v.Ka}, std::pair{"Kd", v.Kd},
+                                      std::pair{"Ks", v.Ks}, std::pair{"Ke", v.Ke},
+                                      std::pair{"Tf", v.Tf}})
+            if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b))
+                throw Error(ErrorKind::Scene, mtl_loc,
+                            "material '" + mt.name + "': " + name +
+                                " is not a finite color (NaN, or out of range like 1e400)");
+        for (const auto& [name, x] :
+             {std::pair{"Ns", v.Ns}, std::pair{"Ni", v.Ni}, std::pair{"d", v.d},
+              std::pair{"Pr", v.Pr}, std::pair{"Pm", v.Pm}, std::pair{"Ps", v.Ps},
+              std::pair{"Pc", v.Pc}, std::pair{"Pcr", v.Pcr}, std::pair{"aniso", v.aniso},
+              std::pair{"anisor", v.anisor}})
+            if (!std::isfinite(x))
+                throw Error(ErrorKind::Scene, mtl_loc,
+                            "material '" + mt.name + "': " + name +
+                                " is not a finite number (NaN, or out of range like 1e400)");
         scene::Material m = material_from_mtl(v);
         m.loc = mtl_loc;
         scene::Pbr& p = m.pbr;
@@ -463,6 +512,9 @@ scene::Scene viewer_scene(const std::string& path, int width, int height, Diagno
     scene.global.assumed_gamma = 1.0;
     scene.background = scene::ColorFT(Color(0.18, 0.18, 0.2));
     ObjImport im = import_obj(path, scene, Transform::scale(Vec3(1, 1, -1)), -1, diag);
+    if (im.triangles == 0)
+        throw Error(ErrorKind::Scene, FileLoc{std::make_shared<const std::string>(path), 0, 0},
+                    "OBJ file '" + path + "' has no faces: nothing to render");
     Bounds3 b = im.bounds;
     if (b.empty()) b = Bounds3{Vec3(-1, -1, -1), Vec3(1, 1, 1)};
     const Vec3 c = b.centroid();

@@ -73,6 +73,13 @@ private:
             fail(o.loc, "internal: top-level object without a material");
         if (o.material >= static_cast<int>(scene_.materials.size()))
             fail(o.loc, "material id out of range");
+        // `scale <1, 1e300 * 1e300 - 1e300 * 1e300, 1>` (NaN) would reach the film.
+        for (const Matrix4* m : {&o.transform.matrix(), &o.transform.inverse_matrix()})
+            for (const auto& row : m->m)
+                for (double x : row)
+                    if (!std::isfinite(x))
+                        fail(o.loc, "the object's transformation is not finite (NaN or "
+                                    "infinity in a scale, rotate, translate or matrix)");
         std::visit([&](const auto& s) { shape(s, o.loc); }, o.shape);
         for (const Object& c : o.bounded_by) object(c, false);
         for (const Object& c : o.clipped_by) object(c, false);
