@@ -85,7 +85,12 @@ FileLoc locate_bad_index(const std::string& path, const std::shared_ptr<const st
                     std::string field = corner.substr(start, slash - start);
                     start = slash == std::string::npos ? corner.size() + 1 : slash + 1;
                     if (field.empty()) continue;
-                    long long idx = std::strtoll(field.c_str(), nullptr, 10);
+                    char* end = nullptr;
+                    long long idx = std::strtoll(field.c_str(), &end, 10);
+                    if (end == field.c_str() || *end != '\0') {
+                        *what = std::string(names[k]) + " index '" + field + "' is not a number";
+                        return file_loc(file, line_no, static_cast<int>(col));
+                    }
                     long long resolved = idx < 0 ? counts[k] + idx + 1 : idx;
                     if (idx == 0 || resolved < 1 || resolved > counts[k]) {
                         *what = std::string(names[k]) + " index " + field + " is out of range (" +
@@ -281,6 +286,12 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
     if (!ok) {
         if (err.find("Cannot open file") != std::string::npos)
             throw Error(ErrorKind::MissingFile, FileLoc{}, "cannot open OBJ file '" + path + "'");
+        if (err.find("face index") != std::string::npos) {
+            // tinyobjloader's "zero value for face index" also stands for a non-number.
+            std::string what;
+            FileLoc l = locate_bad_index(path, file, &what);
+            if (l.line > 0) throw Error(ErrorKind::Scene, l, what);
+        }
         throw Error(ErrorKind::Scene, file_loc(file, reported_line(err)),
                     "broken OBJ: " + first_line(err));
     }
