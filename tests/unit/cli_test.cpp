@@ -230,8 +230,20 @@ TEST_F(CliTest, VerbosePrintsFeaturesAndTimings) {
 
 namespace {
 
-// Runs glint with `args` (stderr to /dev/null), sends `sig` after `delay`, and waits up to
-// 20 s for it to end (then kills it). `seconds`: from the signal to the exit.
+// Whether process `pid` has installed a handler for `sig` (the SigCgt mask of /proc/PID/status).
+bool catches(pid_t pid, int sig) {
+    std::ifstream in("/proc/" + std::to_string(pid) + "/status");
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("SigCgt:", 0) == 0)
+            return (std::stoull(line.substr(7), nullptr, 16) >> (sig - 1)) & 1;
+    return false;
+}
+
+// Runs glint with `args` (stderr to /dev/null), waits until it has installed its handler for
+// `sig` (on a loaded machine start-up alone, before main, can take a second), sends `sig`
+// `delay` after that, and waits up to 20 s for it to end (then kills it). `seconds`: from the
+// signal to the exit.
 struct Signalled {
     bool ended = false;
     int status = 0;
@@ -250,6 +262,15 @@ Signalled run_and_signal(std::vector<std::string> args, std::chrono::millisecond
         std::freopen("/dev/null", "w", stderr);
         execv(GLINT_BINARY, argv.data());
         _exit(127);
+    }
+    const auto started = std::chrono::steady_clock::now();
+    while (!catches(pid, sig) &&
+           std::chrono::steady_clock::now() < started + std::chrono::seconds(20)) {
+        if (waitpid(pid, &r.status, WNOHANG) == pid) {  // ended before it could be signalled
+            r.ended = true;
+            return r;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
     std::this_thread::sleep_for(delay);
     kill(pid, sig);
