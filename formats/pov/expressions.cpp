@@ -183,6 +183,13 @@ public:
         }
     }
 
+    // Overflow (1e300 * 1e300) or inf - inf would carry NaN or infinity into the scene.
+    void check_finite(const Num& r, const FileLoc& l, const std::string& what) const {
+        for (int i = 0; i < r.terms; ++i)
+            if (!std::isfinite(r.v[i]))
+                p_.fail_at(l, "the result of " + what + " is not a finite number (overflow)");
+    }
+
     static Num combine(Num a, Num b, char op) {
         int n = std::max(a.terms, b.terms);
         a.promote(n);
@@ -201,9 +208,12 @@ public:
             const Token& t = p_.next();
             if (t.is("+") || t.is("-")) {
                 char op = t.text[0];
+                FileLoc op_loc = p_.loc();
                 Num x = num(a, "a number before '+' or '-'");
                 Num y = num(multiplicative(), "a number after '+' or '-'");
-                a = combine(x, y, op);
+                Num r = combine(x, y, op);
+                check_finite(r, op_loc, std::string("'") + op + "'");
+                a = r;
             } else {
                 p_.unget();
                 return a;
@@ -225,7 +235,9 @@ public:
                     for (int i = 0; i < y.terms; ++i)
                         if (y.v[i] == 0) p_.fail_at(op_loc, "division by zero");
                 }
-                a = combine(x, y, op);
+                Num r = combine(x, y, op);
+                check_finite(r, op_loc, std::string("'") + op + "'");
+                a = r;
             } else {
                 p_.unget();
                 return a;
@@ -519,7 +531,10 @@ public:
         };
         if (auto it = unary.find(f); it != unary.end()) {
             need(1);
-            return R(it->second(F(0)));
+            const double r = it->second(F(0));
+            if (!std::isfinite(r))
+                p_.fail_at(fn_loc, "the result of " + f + "() is not a finite number (overflow)");
+            return R(r);
         }
         if (f == "atan") {
             if (a.size() == 2) return R(std::atan2(F(0), F(1)));

@@ -1,3 +1,0 @@
-#version 3.7;
-global_settings { assumed_gamma 1 }
-sphere { 0, 1 pigment { rgb 1 } scale <1, 1e300*1e300 - 1e300*1e300, 1> }
