@@ -8,7 +8,6 @@
 // Internal to formats/pov; the public entry points are in parser.h.
 #pragma once
 
-#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -290,9 +289,6 @@ private:
     long long token_count_ = 0;
     int macro_depth_ = 0;
     long long triangles_ = 0;  // mesh triangles so far, against options.max_triangles
-    // Where the stack was when the parser was made; next() fails past kParseStackBytes.
-    std::uintptr_t stack_base_ = 0;
-    static constexpr std::uintptr_t kParseStackBytes = 4u << 20;
     std::string scene_dir_;
     Token end_token_;
     // An array element read in the grammar becomes a token "A[3]" whose symbol lives here, so

@@ -32,7 +32,6 @@ bool starts_statement(const std::string& d) {
 }  // namespace
 
 Parser::Parser(const ParseOptions& opts, Diagnostics& d) : options(opts), diag(d) {
-    stack_base_ = reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0));
     scopes_.emplace_back();  // global
     end_token_.kind = TokKind::End;
     fake_end_.kind = TokKind::Symbol;
@@ -117,14 +116,6 @@ const Token& Parser::raw() {
 }
 
 const Token& Parser::next() {
-    // The grammar is parsed by recursive descent: `((((...` or `union { union { ...` nested
-    // 100,000 deep would overflow the stack (a crash). Every level reads a token, so the
-    // stack used so far is checked here, against a budget well inside the usual 8 MiB.
-    const std::uintptr_t here = reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0));
-    if (stack_base_ > here && stack_base_ - here > kParseStackBytes)
-        throw Error(ErrorKind::Render, loc(),
-                    "the scene nests expressions, objects or blocks too deeply for the parser "
-                    "(over " + std::to_string(kParseStackBytes >> 20) + " MiB of stack)");
     for (;;) {
         if (ungot_) {
             ungot_ = false;
