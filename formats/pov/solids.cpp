@@ -30,9 +30,11 @@ int parse_count(Parser& p, int min, const std::string& too_few) {
     p.peek();
     FileLoc at = p.loc();
     double v = parse_float_before_points(p);
+    // Checked as a double first: casting 1e19 or NaN to int is undefined (found by fuzz_pov).
+    if (!(v < 10000001)) p.fail_at(at, "point count is too large (at most 10000000)");
+    if (v < min) p.fail_at(at, too_few);
     int n = static_cast<int>(v);
     if (n < min) p.fail_at(at, too_few);
-    if (n > 10000000) p.fail_at(at, "point count " + std::to_string(n) + " is too large");
     return n;
 }
 
