@@ -102,6 +102,20 @@ std::string write_file(const std::string& path, const std::vector<unsigned char>
     return {};
 }
 
+// Flushes a file written by someone else to the disk (a full disk may show only here).
+// Returns the reason it failed, empty on success.
+std::string flush_file(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd < 0) return std::strerror(errno);
+    if (::fsync(fd) != 0 && errno != EINVAL) {
+        const int err = errno;
+        ::close(fd);
+        return std::strerror(err);
+    }
+    if (::close(fd) != 0) return std::strerror(errno);
+    return {};
+}
+
 // Writes through a temporary beside the target (so the rename stays on one file system) and
 // renames it, so a failed write never leaves a partial file.
 void write_atomically(const std::string& path, const char* oiio_name, OIIO::ImageSpec spec,
@@ -113,12 +127,16 @@ void write_atomically(const std::string& path, const char* oiio_name, OIIO::Imag
         return Error(ErrorKind::Output, {}, "cannot write " + path + ": " + why);
     };
     {
-        // Encoded in memory, then written by write_file.
+        // Encoded in memory, then written by write_file; except TIFF, whose writer (libtiff)
+        // reports its own write errors and, in OpenImageIO 2.4, writes an unreadable file (no
+        // image directory) through a memory proxy: it writes the temporary itself, which is
+        // then flushed to the disk like the others.
+        const bool via_memory = std::string(oiio_name) != "tiff";
         std::vector<unsigned char> bytes;
         OIIO::Filesystem::IOVecOutput memory(bytes);
         std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(oiio_name);
         if (!out) throw fail("OpenImageIO has no " + std::string(oiio_name) + " writer");
-        if (!out->supports("ioproxy") || !out->set_ioproxy(&memory))
+        if (via_memory && (!out->supports("ioproxy") || !out->set_ioproxy(&memory)))
             throw fail("OpenImageIO's " + std::string(oiio_name) + " writer cannot write to memory");
         if (!out->open(temp.path(), spec)) {
             std::string why = out->geterror();
@@ -131,7 +149,7 @@ void write_atomically(const std::string& path, const char* oiio_name, OIIO::Imag
             why = out->geterror();
         }
         if (!ok) throw fail(why.empty() ? "write failed" : why);
-        why = write_file(temp.path(), bytes);
+        why = via_memory ? write_file(temp.path(), bytes) : flush_file(temp.path());
         if (!why.empty()) throw fail(why);
     }
     if (batch) {
