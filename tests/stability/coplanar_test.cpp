@@ -15,14 +15,6 @@ namespace {
 constexpr int kWidth = 160;
 constexpr int kHeight = 120;
 
-long differing(const render::Image& a, const render::Image& b) {
-    if (a.rgba.size() != b.rgba.size()) return static_cast<long>(a.rgba.size() + b.rgba.size());
-    long n = 0;
-    for (size_t i = 0; i < a.rgba.size(); ++i)
-        if (std::memcmp(&a.rgba[i], &b.rgba[i], sizeof(float)) != 0) ++n;
-    return n;
-}
-
 TEST(StabilityCoplanar, Case3SameImageAcrossRunsAndThreadCounts) {
     const scene::Scene scene = load_scene("coplanar.pov", "", kWidth, kHeight);
     for (bool path : {false, true}) {
@@ -33,7 +25,7 @@ TEST(StabilityCoplanar, Case3SameImageAcrossRunsAndThreadCounts) {
         const render::Image first = render_at(1);
         ASSERT_EQ(first.rgba.size(), size_t{kWidth * kHeight * 4});
         long worst = 0;
-        for (int threads : {2, 1, 2}) worst = std::max(worst, differing(first, render_at(threads)));
+        for (int threads : {2, 1, 2}) worst = std::max(worst, differing_values(first, render_at(threads)));
         // How the overlap of the two red/green triangles resolved (reported, not bounded: the
         // two planes' t values may differ in the last bit from pixel to pixel).
         long red = 0, green = 0;

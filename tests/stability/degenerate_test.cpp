@@ -15,14 +15,6 @@ namespace {
 constexpr int kWidth = 160;
 constexpr int kHeight = 120;
 
-long differing(const render::Image& a, const render::Image& b) {
-    if (a.rgba.size() != b.rgba.size()) return static_cast<long>(a.rgba.size() + b.rgba.size());
-    long n = 0;
-    for (size_t i = 0; i < a.rgba.size(); ++i)
-        if (std::memcmp(&a.rgba[i], &b.rgba[i], sizeof(float)) != 0) ++n;
-    return n;
-}
-
 // The scene with degenerate triangles added to its pyramid and an empty mesh object added.
 // `huge`: the value of the "1e30" coordinates (the control uses 1e14, which is kept).
 scene::Scene with_degenerate_input(scene::Scene s, double huge = 1e30) {
@@ -76,7 +68,7 @@ TEST(StabilityDegenerate, Case7SkippedWithWarningAndImageUnchanged) {
         Diagnostics clean_diag, dirty_diag;
         const render::RenderResult a = render::render(clean, options, clean_diag);
         const render::RenderResult b = render::render(dirty, options, dirty_diag);
-        const long n = differing(a.image, b.image);
+        const long n = differing_values(a.image, b.image);
         const int warnings = dirty_diag.warning_count() - clean_diag.warning_count();
         std::printf(
             "case 7 %s: differing film values with degenerate input = %ld of %zu (bound "
@@ -90,7 +82,7 @@ TEST(StabilityDegenerate, Case7SkippedWithWarningAndImageUnchanged) {
             Diagnostics control_diag;
             const render::RenderResult c =
                 render::render(with_degenerate_input(clean, 1e14), options, control_diag);
-            const long shown = differing(a.image, c.image);
+            const long shown = differing_values(a.image, c.image);
             std::printf(
                 "case 7 control: the same faces with 1e14 for 1e30 change %ld film "
                 "values (bound > 0)\n",

@@ -12,15 +12,6 @@
 namespace glint::stability {
 namespace {
 
-long differing_values(const render::Image& a, const render::Image& b) {
-    if (a.rgba.size() != b.rgba.size())
-        return static_cast<long>(std::max(a.rgba.size(), b.rgba.size()));
-    long n = 0;
-    for (size_t i = 0; i < a.rgba.size(); ++i)
-        if (std::memcmp(&a.rgba[i], &b.rgba[i], sizeof(float)) != 0) ++n;
-    return n;
-}
-
 scene::Scene demo_scene() {
     pov::ParseOptions options;
     options.include_dirs = {"/usr/share/povray-3.7/include"};

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <optional>
 #include <string>
@@ -85,6 +86,16 @@ inline int diff_8bit(const render::Image& a, const render::Image& b, int x, int 
     for (int c = 0; c < 3; ++c)
         d = std::max(d, std::abs(to_8bit(a.pixel(x, y)[c]) - to_8bit(b.pixel(x, y)[c])));
     return d;
+}
+
+// Number of film values (floats) that differ bit for bit; different sizes count as all.
+inline long differing_values(const render::Image& a, const render::Image& b) {
+    if (a.rgba.size() != b.rgba.size())
+        return static_cast<long>(std::max(a.rgba.size(), b.rgba.size()));
+    long n = 0;
+    for (size_t i = 0; i < a.rgba.size(); ++i)
+        if (std::memcmp(&a.rgba[i], &b.rgba[i], sizeof(float)) != 0) ++n;
+    return n;
 }
 
 // Fraction of pixels whose largest 8-bit channel difference is <= tolerance.
