@@ -85,11 +85,6 @@ double srgb_decode(double c) {
 
 }  // namespace
 
-// Nesting depth of expressions over all ExprParser objects of this thread (vectors and
-// function calls start new ones), and its bound.
-thread_local int expr_depth_ = 0;
-constexpr int kMaxExprDepth = 128;  // ~4 MB of stack under ASan, far less without
-
 // Recursive-descent expression parser; one object per top-level call keeps the
 // "inside <...>" state (where '>' closes the vector instead of comparing).
 class ExprParser {
@@ -251,16 +246,8 @@ public:
     }
 
     Value unary() {
-        // Every nesting ('-', '(', '<', function arguments) passes here: a bound on the depth
-        // keeps `((((...` or `<<<<...` from overflowing the stack (found by fuzz_pov).
-        struct DepthGuard {
-            int& d;
-            explicit DepthGuard(int& depth) : d(++depth) {}
-            ~DepthGuard() { --d; }
-        } guard(expr_depth_);
-        if (expr_depth_ > kMaxExprDepth)
-            p_.fail_at(p_.loc(), "expression nested deeper than " + std::to_string(kMaxExprDepth) +
-                                     " levels");
+        // How deeply `((((...` or `<<<<...` may nest is bounded by the parser's stack budget
+        // (Parser::next), like every other kind of nesting.
         const Token& t = p_.next();
         if (t.is("-")) {
             Num n = num(unary(), "a number after '-'");

@@ -3,7 +3,12 @@
 // (where POV-Ray's default texture and the material ids are settled).
 #include "formats/pov/parser.h"
 
+#include <pthread.h>
+
+#include <exception>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <unordered_set>
 
 #include "formats/pov/parser_impl.h"
@@ -400,15 +405,60 @@ scene::Scene Parser::parse_main_string(const std::string& text, const std::strin
     return std::move(scene);
 }
 
+namespace {
+
+// Runs `parse` on a thread whose stack is the parser's budget plus a margin (reserved, not
+// touched: only the pages a deep scene reaches are ever used), so that the parser's own stack
+// check, not the 8 MiB of a main thread or the smaller stacks of worker threads, is what stops
+// deep nesting. The caller waits; an exception crosses back to it.
+scene::Scene on_parse_stack(const ParseOptions& options,
+                            const std::function<scene::Scene()>& parse) {
+    const std::size_t stack =
+        (std::size_t(std::max(options.max_parse_stack_mib, 1)) << 20) + Parser::kParseStackMargin;
+    struct Job {
+        const std::function<scene::Scene()>* parse;
+        std::optional<scene::Scene> result;
+        std::exception_ptr error;
+    } job{&parse, std::nullopt, nullptr};
+    auto body = [](void* arg) -> void* {
+        auto* j = static_cast<Job*>(arg);
+        try {
+            j->result.emplace((*j->parse)());
+        } catch (...) {
+            j->error = std::current_exception();
+        }
+        return nullptr;
+    };
+    pthread_attr_t attr;
+    pthread_t thread;
+    bool started = pthread_attr_init(&attr) == 0 &&
+                   pthread_attr_setstacksize(&attr, stack) == 0 &&
+                   pthread_create(&thread, &attr, body, &job) == 0;
+    pthread_attr_destroy(&attr);
+    if (!started)
+        throw Error(ErrorKind::Render, FileLoc{},
+                    "cannot start the parser's thread (" +
+                        std::to_string(stack >> 20) + " MiB of stack)");
+    pthread_join(thread, nullptr);
+    if (job.error) std::rethrow_exception(job.error);
+    return std::move(*job.result);
+}
+
+}  // namespace
+
 scene::Scene parse_file(const std::string& path, const ParseOptions& options, Diagnostics& diag) {
-    Parser p(options, diag);
-    return p.parse_main_file(path);
+    return on_parse_stack(options, [&] {
+        Parser p(options, diag);
+        return p.parse_main_file(path);
+    });
 }
 
 scene::Scene parse_string(const std::string& text, const std::string& name,
                           const ParseOptions& options, Diagnostics& diag) {
-    Parser p(options, diag);
-    return p.parse_main_string(text, name);
+    return on_parse_stack(options, [&] {
+        Parser p(options, diag);
+        return p.parse_main_string(text, name);
+    });
 }
 
 }  // namespace glint::pov

@@ -42,6 +42,10 @@ struct ParseOptions {
     long long max_string_length = 100'000'000;   // bytes per string value (--max-string-length)
     long long max_triangles = 50'000'000;        // mesh triangles in the scene (--max-triangles)
     long long max_objects = 10'000'000;          // top-level objects in the scene (--max-objects)
+    // Stack the recursive-descent parser may use, in MiB (--max-parse-stack): how deeply
+    // parentheses, objects, blocks and macro calls can nest. The parser runs on a thread of
+    // its own whose stack is this plus a margin, reserved but only touched as deep as used.
+    int max_parse_stack_mib = 256;
     // Set (by SIGINT/SIGTERM in the CLI): parsing stops with ErrorKind::Cancelled within a few
     // thousand tokens, so a long #while loop or include chain can be interrupted too.
     const std::atomic<bool>* cancel = nullptr;

@@ -8,6 +8,7 @@
 // Internal to formats/pov; the public entry points are in parser.h.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
@@ -289,6 +290,19 @@ private:
     long long token_count_ = 0;
     int macro_depth_ = 0;
     long long triangles_ = 0;  // mesh triangles so far, against options.max_triangles
+    // The grammar is recursive descent, and directives, macro calls and #while bodies can be
+    // reached from inside any value, so nesting has no fixed bound in the grammar. The parser
+    // runs on a thread of its own with options.max_parse_stack_mib plus kParseStackMargin of
+    // stack (parser.cpp), and next() stops the scene once the budget is used: where the stack
+    // was when the parser was made is stack_base_.
+    std::uintptr_t stack_base_ = 0;
+    std::uintptr_t stack_budget_ = 0;
+
+public:
+    // Below the budget, for what runs under one next() (an image load, a function compile).
+    static constexpr std::size_t kParseStackMargin = std::size_t(64) << 20;
+
+private:
     std::string scene_dir_;
     Token end_token_;
     // An array element read in the grammar becomes a token "A[3]" whose symbol lives here, so

@@ -32,6 +32,8 @@ bool starts_statement(const std::string& d) {
 }  // namespace
 
 Parser::Parser(const ParseOptions& opts, Diagnostics& d) : options(opts), diag(d) {
+    stack_base_ = reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0));
+    stack_budget_ = std::uintptr_t(std::max(opts.max_parse_stack_mib, 1)) << 20;
     scopes_.emplace_back();  // global
     end_token_.kind = TokKind::End;
     fake_end_.kind = TokKind::Symbol;
@@ -116,6 +118,14 @@ const Token& Parser::raw() {
 }
 
 const Token& Parser::next() {
+    // Every level of nesting reads a token, so the stack used so far is checked here.
+    const auto here = reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0));
+    if (stack_base_ > here && stack_base_ - here > stack_budget_)
+        fail_limit(loc(),
+                   "the scene nests expressions, objects, blocks or macro calls too deeply "
+                   "for the parser (over " + std::to_string(stack_budget_ >> 20) +
+                       " MiB of stack): runaway recursion?",
+                   "--max-parse-stack");
     for (;;) {
         if (ungot_) {
             ungot_ = false;

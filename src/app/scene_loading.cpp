@@ -45,6 +45,9 @@ void add_scene_options(CLI::App& cmd, SceneRequest& request, bool scene_required
         ->capture_default_str()->check(CLI::PositiveNumber);
     cmd.add_option("--max-image-pixels", l.image_pixels, "Limit: width x height of the image")
         ->capture_default_str()->check(CLI::PositiveNumber);
+    cmd.add_option("--max-parse-stack", l.parse_stack_mib,
+                   "Limit: MiB of stack the parser may use (how deeply a scene can nest)")
+        ->capture_default_str()->check(CLI::Range(1, 65536));
 }
 
 namespace {
@@ -143,6 +146,7 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose) {
     options.max_string_length = limits.string_length;
     options.max_triangles = limits.triangles;
     options.max_objects = limits.objects;
+    options.max_parse_stack_mib = limits.parse_stack_mib;
     options.object_query = render::answer_object_query;  // trace(), min_extent(), max_extent()
     options.pattern_hook = render::parse_time_pattern;   // pattern functions called while parsing
     options.cancel = &cancel_flag();                      // SIGINT/SIGTERM stop the parse too

@@ -38,6 +38,7 @@ struct SceneRequest {
         long long triangles = 50'000'000;
         long long objects = 10'000'000;
         long long image_pixels = 1LL << 28;  // 16384 x 16384
+        int parse_stack_mib = 256;
     } limits;
 };
 
