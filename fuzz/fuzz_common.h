@@ -37,6 +37,9 @@ inline pov::ParseOptions fuzz_options() {
     o.max_include_depth = 8;
     o.max_macro_depth = 64;
     o.max_tokens = 100'000;  // about 0.3 s of CPU with the sanitizers
+    // On libFuzzer's thread (8 MiB of stack): half of it for the parser's nesting.
+    o.parse_on_calling_thread = true;
+    o.max_parse_stack_mib = 4;
     o.image_width = 64;
     o.image_height = 48;
     return o;

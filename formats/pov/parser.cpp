@@ -413,6 +413,7 @@ namespace {
 // deep nesting. The caller waits; an exception crosses back to it.
 scene::Scene on_parse_stack(const ParseOptions& options,
                             const std::function<scene::Scene()>& parse) {
+    if (options.parse_on_calling_thread) return parse();
     const std::size_t stack =
         (std::size_t(std::max(options.max_parse_stack_mib, 1)) << 20) + Parser::kParseStackMargin;
     struct Job {

@@ -46,6 +46,10 @@ struct ParseOptions {
     // parentheses, objects, blocks and macro calls can nest. The parser runs on a thread of
     // its own whose stack is this plus a margin, reserved but only touched as deep as used.
     int max_parse_stack_mib = 256;
+    // Parse on the calling thread instead (the fuzz targets, which parse millions of inputs and
+    // would spend a third of their time making threads): the budget must then fit well inside
+    // the caller's own stack.
+    bool parse_on_calling_thread = false;
     // Set (by SIGINT/SIGTERM in the CLI): parsing stops with ErrorKind::Cancelled within a few
     // thousand tokens, so a long #while loop or include chain can be interrupted too.
     const std::atomic<bool>* cancel = nullptr;
