@@ -28,7 +28,7 @@ void Parser::parse_fog() {
             fog.distance = parse_float();
         } else if (w == "fog_type") {
             FileLoc l = loc();
-            int type = static_cast<int>(parse_float());
+            int type = to_int(parse_float());
             if (type != 1 && type != 2)
                 diag.warning(l, "unknown fog type " + std::to_string(type) + " (1 or 2)");
             fog.type = type == 2 ? scene::FogType::Ground : scene::FogType::Constant;
@@ -45,7 +45,7 @@ void Parser::parse_fog() {
             fog.turbulence = parse_vector();
         } else if (w == "octaves") {
             turb();
-            fog.octaves = std::clamp(static_cast<int>(parse_float()), 1, 10);
+            fog.octaves = std::clamp(to_int(parse_float()), 1, 10);
         } else if (w == "omega") {
             turb();
             fog.omega = parse_float();

@@ -197,13 +197,13 @@ void Parser::parse_global_settings() {
         } else if (w == "ambient_light") {
             scene.global.ambient_light = parse_rgb();
         } else if (w == "max_trace_level") {
-            scene.global.max_trace_level = static_cast<int>(parse_float());
+            scene.global.max_trace_level = to_int(parse_float());
         } else if (w == "adc_bailout") {
             scene.global.adc_bailout = parse_float();
         } else if (w == "noise_generator") {
-            scene.global.noise_generator = static_cast<int>(parse_float());
+            scene.global.noise_generator = to_int(parse_float());
         } else if (w == "number_of_waves") {
-            scene.global.number_of_waves = static_cast<int>(parse_float());
+            scene.global.number_of_waves = to_int(parse_float());
         } else if (w == "radiosity" || w == "photons" || w == "subsurface") {
             diag.warning(loc(), "global_settings '" + w + "' is not supported and is ignored");
             skip_block_tokens(*this, w);

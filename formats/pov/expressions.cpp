@@ -483,7 +483,7 @@ public:
             double r = static_cast<double>(keep->sizes.size());
             if (f == "dimension_size") {
                 p_.expect(",", "in dimension_size()");
-                int d = static_cast<int>(p_.parse_float());
+                int d = to_int(p_.parse_float());
                 if (d < 1 || d > static_cast<int>(keep->sizes.size()))
                     p_.fail_at(fn_loc, "dimension_size: the array has no dimension " + std::to_string(d));
                 r = keep->sizes[d - 1];
@@ -567,7 +567,7 @@ public:
         }
         if (f == "bitwise_and" || f == "bitwise_or" || f == "bitwise_xor") {
             need(2);
-            long long x = static_cast<long long>(F(0)), y = static_cast<long long>(F(1));
+            long long x = to_long_long(F(0)), y = to_long_long(F(1));
             return R(static_cast<double>(f == "bitwise_and" ? (x & y)
                                          : f == "bitwise_or" ? (x | y) : (x ^ y)));
         }
@@ -589,7 +589,7 @@ public:
             TurbulenceParams turb;
             turb.lambda = F(0);
             turb.omega = F(1);
-            turb.octaves = std::clamp(static_cast<int>(F(2)), 1, 10);
+            turb.octaves = std::clamp(to_int(F(2)), 1, 10);
             return Value(Num::vec(dturbulence(V(3), turb)));
         }
         if (f == "vlength") { need(1); return R(length(V(0))); }
@@ -612,12 +612,12 @@ public:
         if (f == "seed") {
             // POV-Ray's random streams (express.cpp stream_seed / randomsequences.cpp).
             need(1);
-            p_.rand_streams.push_back(static_cast<uint32_t>(static_cast<int>(F(0))));
+            p_.rand_streams.push_back(static_cast<uint32_t>(to_int(F(0))));
             return R(static_cast<double>(p_.rand_streams.size() - 1));
         }
         if (f == "rand") {
             need(1);
-            int i = static_cast<int>(F(0));
+            int i = to_int(F(0));
             if (i < 0 || i >= static_cast<int>(p_.rand_streams.size()))
                 p_.fail_at(fn_loc, "rand(): no random stream " + std::to_string(i) + " (use seed())");
             uint32_t& n = p_.rand_streams[i];
@@ -636,7 +636,9 @@ public:
         }
         if (f == "str") {
             need(3);
-            int w = static_cast<int>(F(1)), prec = static_cast<int>(F(2));
+            // The text is at most 511 bytes, so wider fields and longer fractions change
+            // nothing but the time snprintf takes: both are bounded (2^31 wide would hang).
+            int w = std::clamp(to_int(F(1)), -511, 511), prec = std::min(to_int(F(2)), 511);
             char buf[512];
             if (prec < 0) prec = 6;
             if (w < 0)
@@ -649,9 +651,9 @@ public:
             // vstr(N, V, separator, width, precision): N components of V, each like str().
             need(5);
             Num n = num(a[1], "a vector argument of vstr");
-            int count = std::clamp(static_cast<int>(F(0)), 2, 5);
+            int count = std::clamp(to_int(F(0)), 2, 5);
             n.promote(count);
-            int w = static_cast<int>(F(3)), prec = static_cast<int>(F(4));
+            int w = std::clamp(to_int(F(3)), -511, 511), prec = std::min(to_int(F(4)), 511);
             if (prec < 0) prec = 6;
             std::string sep = S(2), r;
             for (int i = 0; i < count; ++i) {
@@ -678,12 +680,12 @@ public:
             }
             return r;
         }
-        if (f == "chr") { need(1); return std::string(1, static_cast<char>(static_cast<int>(F(0)))); }
+        if (f == "chr") { need(1); return std::string(1, static_cast<char>(to_int(F(0)))); }
         if (f == "substr") {
             need(3);
             std::string s = S(0);
-            int pos = static_cast<int>(F(1)), len = static_cast<int>(F(2));
-            if (pos < 1 || len < 0 || pos - 1 + len > static_cast<int>(s.size()))
+            int pos = to_int(F(1)), len = to_int(F(2));
+            if (pos < 1 || len < 0 || pos - 1LL + len > static_cast<long long>(s.size()))
                 p_.fail_at(fn_loc, "substr range is outside the string");
             return s.substr(pos - 1, len);
         }

@@ -416,7 +416,7 @@ int Parser::parse_function_definition() {
         FileLoc nl = loc();
         double n = parse_float();
         expect(")", "after the internal function number");
-        int id = static_cast<int>(n);
+        int id = to_int(n);
         if (id < 0 || id >= scene::kInternalFunctionCount)
             fail_at(nl, "there is no internal function " + std::to_string(id) + " (0 to " +
                             std::to_string(scene::kInternalFunctionCount - 1) + ")");

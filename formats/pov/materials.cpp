@@ -156,13 +156,13 @@ void Parser::parse_image_map_body(scene::ImageMap& im, double* bump_size) {
         if (bump_size && k.is("bump_size")) {
             *bump_size = parse_float();
         } else if (k.is("map_type")) {
-            im.map_type = static_cast<int>(parse_float());
+            im.map_type = to_int(parse_float());
             if (im.map_type != 0 && im.map_type != 1 && im.map_type != 2 && im.map_type != 5)
                 fail("map_type " + std::to_string(im.map_type) + " is not supported");
         } else if (k.is("once")) {
             im.once = true;
         } else if (k.is("interpolate")) {
-            im.interpolate = static_cast<int>(parse_float());
+            im.interpolate = to_int(parse_float());
         } else if (k.is("filter") || k.is("transmit")) {
             bool filter = k.text == "filter";
             if (!accept("all")) {

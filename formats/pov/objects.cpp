@@ -121,7 +121,7 @@ template <typename F>
 static void parse_counted(Parser& p, const char* name, F item) {
     p.expect_open(name);
     FileLoc o = p.loc();
-    int n = static_cast<int>(parse_float_before_points(p));
+    int n = to_int(parse_float_before_points(p));
     if (n < 0) p.fail(std::string("negative count in ") + name);
     for (int i = 0; i < n; ++i) {
         p.skip_comma();
@@ -171,7 +171,7 @@ static void parse_mesh2(Parser& p, scene::Mesh& mesh) {
                 if (p.peek().is(",") && !textures.empty()) {
                     p.skip_comma();
                     if (p.next_is_expression_start() && p.peek().kind != TokKind::Symbol) {
-                        int t = static_cast<int>(p.parse_float());
+                        int t = to_int(p.parse_float());
                         if (t < 0 || t >= static_cast<int>(textures.size()))
                             p.fail("texture index out of range");
                         f.material = textures[t];
@@ -527,16 +527,16 @@ void Parser::parse_light_body(scene::Light& l, std::optional<PovObject>* looks_l
             if (w == "orient") sampling.orient = on;
             if (w == "jitter") sampling.jitter = on;
         } else if (w == "adaptive") {
-            sampling.adaptive = static_cast<int>(parse_float());
+            sampling.adaptive = to_int(parse_float());
         } else if (w == "area_light") {
             scene::AreaLight a;
             a.axis1 = parse_vector();
             skip_comma();
             a.axis2 = parse_vector();
             skip_comma();
-            a.size1 = static_cast<int>(parse_float());
+            a.size1 = to_int(parse_float());
             skip_comma();
-            a.size2 = static_cast<int>(parse_float());
+            a.size2 = to_int(parse_float());
             if (a.size1 < 1 || a.size2 < 1) fail("area_light sizes must be at least 1");
             l.area = a;
         } else if (w == "looks_like" && looks_like) {

@@ -8,6 +8,8 @@
 // Internal to formats/pov; the public entry points are in parser.h.
 #pragma once
 
+#include <algorithm>
+#include <climits>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -26,6 +28,19 @@
 #include "scene/scene.h"
 
 namespace glint::pov {
+
+// A float read where the language wants an integer, truncated toward zero like POV-Ray's
+// (int) cast. Casting a value outside int's range (or NaN) is undefined behaviour, so it is
+// clamped first: a count or an index of 1e20 then meets the same range check as one of 1e9.
+inline int to_int(double v) {
+    if (!(v == v)) return 0;
+    return static_cast<int>(std::clamp(v, double(INT_MIN), double(INT_MAX)));
+}
+inline long long to_long_long(double v) {
+    if (!(v == v)) return 0;
+    constexpr double kMax = 9.2e18;  // below 2^63, which is itself out of range
+    return static_cast<long long>(std::clamp(v, -kMax, kMax));
+}
 
 // Thrown for a feature glint does not implement yet. Inside the standard include files a
 // declaration that throws this is skipped and its identifier marked unusable.

@@ -129,7 +129,7 @@ void prepend_warp(scene::PatternParams& pp, Transform& head, const scene::Warp& 
 }
 
 int clamp_octaves(double v) {
-    int o = static_cast<int>(v);
+    int o = to_int(v);
     return o < 1 ? 1 : (o > 10 ? 10 : o);  // POV-Ray avoids domain errors past 10
 }
 
@@ -151,7 +151,7 @@ bool skip_unsupported_pattern(Parser& p, const std::string& w, PatternKind* kind
         }
         // Its interior/exterior modifiers still parse: they are the fractal ones.
         *kind = PatternKind::Mandel;
-        params->iterations = static_cast<int>(p.parse_float());
+        params->iterations = to_int(p.parse_float());
         return true;
     }
     // The object pattern's entries sit inside its own block: the pigment or texture stays as
@@ -213,7 +213,7 @@ void Parser::parse_pattern_arguments(PatternKind kind, scene::PatternParams& pp,
             break;
         case PatternKind::Spiral1:
         case PatternKind::Spiral2:
-            pp.arms = static_cast<int>(parse_float());
+            pp.arms = to_int(parse_float());
             pp.wave = scene::WaveType::Triangle;
             break;
         case PatternKind::Gradient: {
@@ -231,7 +231,7 @@ void Parser::parse_pattern_arguments(PatternKind kind, scene::PatternParams& pp,
                 pp.julia_param = Vec2(c.v[0], c.v[1]);
                 skip_comma();
             }
-            pp.iterations = static_cast<int>(parse_float());
+            pp.iterations = to_int(parse_float());
             pp.interior_type = 0;
             pp.exterior_type = 1;
             pp.interior_factor = pp.exterior_factor = 1;
@@ -342,7 +342,7 @@ bool Parser::parse_pattern_modifier(const std::string& w, PatternKind kind,
     } else if (w == "exterior" || w == "interior") {
         only(fractal, "mandel and julia");
         FileLoc l = loc();
-        int type = static_cast<int>(parse_float());
+        int type = to_int(parse_float());
         bool ext = w == "exterior";
         if (type < 0 || type > (ext ? 8 : 6))
             fail_at(l, std::string("fractal ") + w + " type must be 0 to " + (ext ? "8" : "6"));
@@ -358,7 +358,7 @@ bool Parser::parse_pattern_modifier(const std::string& w, PatternKind kind,
     } else if (w == "exponent") {
         only(fractal, "mandel and julia");
         FileLoc l = loc();
-        int e = static_cast<int>(parse_float());
+        int e = to_int(parse_float());
         if (e < 2 || e > 33) {
             diag.warning(l, "fractal exponent must be 2 to 33; using 2");
             e = 2;

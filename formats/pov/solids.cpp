@@ -102,7 +102,7 @@ scene::Prism parse_prism(Parser& p, const FileLoc& kw) {
     if (s.height1 > s.height2) std::swap(s.height1, s.height2);
     p.peek();
     FileLoc at = p.loc();
-    int n = static_cast<int>(parse_float_before_points(p));
+    int n = to_int(parse_float_before_points(p));
     switch (s.spline) {
         case SplineType::Linear:
             if (n < 3) p.fail_at(at, "prism needs at least 3 points");
@@ -165,7 +165,7 @@ scene::Lathe parse_lathe(Parser& p) {
     spline_keyword(p, &s.spline);
     p.peek();
     FileLoc at = p.loc();
-    int n = static_cast<int>(parse_float_before_points(p));
+    int n = to_int(parse_float_before_points(p));
     switch (s.spline) {
         case SplineType::Linear:
             if (n < 2) p.fail_at(at, "lathe needs at least 2 points");
@@ -366,7 +366,7 @@ scene::Poly parse_poly(Parser& p, const std::string& w) {
         FileLoc at = p.loc();
         // `poly { 4 <...> }` (no comma, as in POV-Ray's primitiv.pov): a literal order right
         // before '<' is not the start of a comparison.
-        s.order = static_cast<int>(parse_float_before_points(p));
+        s.order = to_int(parse_float_before_points(p));
         p.skip_comma();
         if (s.order < 2 || s.order > 35)
             p.fail_at(at, "order of " + w + " is out of range (2 to 35)");
@@ -377,11 +377,11 @@ scene::Poly parse_poly(Parser& p, const std::string& w) {
         // xyz(i, j, k): value, ...
         while (p.accept("xyz")) {
             p.expect("(", "after xyz");
-            int i = static_cast<int>(p.parse_float());
+            int i = to_int(p.parse_float());
             p.skip_comma();
-            int j = static_cast<int>(p.parse_float());
+            int j = to_int(p.parse_float());
             p.skip_comma();
-            int k = static_cast<int>(p.parse_float());
+            int k = to_int(p.parse_float());
             p.expect(")", "after the xyz powers");
             FileLoc at = p.loc();
             p.expect(":", "after xyz(...)");

@@ -226,7 +226,7 @@ size_t Parser::parse_array_index(const ArrayValue& a, const std::string& name,
         FileLoc l = loc();
         double v = parse_float();
         expect("]", "after the array index");
-        int i = static_cast<int>(v);
+        int i = to_int(v);
         if (i < 0 || i >= a.sizes[d])
             fail_at(l, "index " + std::to_string(i) + " is outside the array '" + name + "' (size " +
                            std::to_string(a.sizes[d]) + ")");
