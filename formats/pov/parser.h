@@ -50,6 +50,10 @@ struct ParseOptions {
     // would spend a third of their time making threads): the budget must then fit well inside
     // the caller's own stack.
     bool parse_on_calling_thread = false;
+    // Memory the process may hold while the scene is parsed, in MiB (--max-memory; 0: no
+    // limit). Checked every few thousand tokens, so arrays, strings and meshes built by loops
+    // stop with an error instead of taking the machine's memory.
+    long long max_memory_mib = 0;
     // Set (by SIGINT/SIGTERM in the CLI): parsing stops with ErrorKind::Cancelled within a few
     // thousand tokens, so a long #while loop or include chain can be interrupted too.
     const std::atomic<bool>* cancel = nullptr;

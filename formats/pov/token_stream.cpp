@@ -8,7 +8,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/memory.h"
 #include "formats/pov/parser_impl.h"
+#include "formats/pov/reserved_words.h"
 
 namespace glint::pov {
 
@@ -27,6 +29,15 @@ bool starts_statement(const std::string& d) {
     return opens_block(d) || d == "declare" || d == "local" || d == "include" ||
            d == "undef" || d == "default" || d == "version" || d == "debug" ||
            d == "warning" || d == "error";
+}
+
+// POV-Ray 3.7 refuses its reserved words (reserved_words.h) as the name a #declare, #local,
+// #macro (or its parameters), #for, #undef or #fopen defines.
+void check_not_reserved(const std::string& name, const std::string& expected, const FileLoc& at) {
+    if (is_reserved_word(name))
+        throw Error(ErrorKind::Scene, at,
+                    "expected " + expected + ", got the reserved word '" + name +
+                        "' (a POV-Ray keyword cannot be redefined)");
 }
 
 }  // namespace
@@ -149,6 +160,12 @@ const Token& Parser::next() {
         if ((token_count_ & 0xfff) == 0 && options.cancel &&
             options.cancel->load(std::memory_order_relaxed))
             throw Error(ErrorKind::Cancelled, {}, "interrupted while parsing");
+        if ((token_count_ & 0x3fff) == 0 && options.max_memory_mib > 0 &&
+            static_cast<long long>(resident_bytes() >> 20) > options.max_memory_mib)
+            fail_limit(loc_of(cur_file_, t),
+                       "the scene holds more than " + std::to_string(options.max_memory_mib) +
+                           " MiB of memory while it is parsed",
+                       "--max-memory");
         if (t.kind == TokKind::Directive) {
             handle_directive(t, cur_file_);
             continue;
@@ -313,6 +330,9 @@ std::string Parser::read_name(const char* context) {
     const Token& t = raw();
     if (t.kind != TokKind::Word)
         fail(std::string("expected an identifier after ") + context + ", got " + got(t));
+    if (std::string_view(context) != "#declare" && std::string_view(context) != "#local" &&
+        std::string_view(context) != "#ifdef")  // #declare deprecated: see handle_declare
+        check_not_reserved(t.text, std::string("an identifier after ") + context, loc());
     return t.text;
 }
 
@@ -405,6 +425,9 @@ void Parser::handle_declare(bool local, const FileLoc& dloc) {
         if (deprecated.empty()) deprecated = "Identifier '" + name + "' was declared deprecated.";
     }
     FileLoc nloc = loc();
+    if (deprecated.empty())
+        check_not_reserved(name, std::string("an identifier after ") + (local ? "#local" : "#declare"),
+                           nloc);
     if (raw_next_is("[")) {
         // #declare A[i] = value
         const Symbol* s = lookup(name);
@@ -570,6 +593,7 @@ void Parser::handle_macro_def(const FileLoc& dloc) {
         if (t.is_symbol(')')) break;
         if (t.is_symbol(',')) continue;
         if (t.kind != TokKind::Word) fail("expected a parameter name, got " + got(t));
+        if (t.text != "optional") check_not_reserved(t.text, "a parameter name", loc());
         bool opt = false;
         if (t.text == "optional") {
             // POV-Ray 3.8's optional parameters: the argument may be left out (empty or
@@ -577,6 +601,7 @@ void Parser::handle_macro_def(const FileLoc& dloc) {
             const Token& n = raw();
             if (n.kind != TokKind::Word)
                 fail("expected a parameter name after 'optional', got " + got(n));
+            check_not_reserved(n.text, "a parameter name", loc());
             opt = true;
             m->params.push_back(n.text);
         } else {
@@ -800,6 +825,7 @@ void Parser::handle_for(const FileLoc& dloc) {
     expect("(", "after #for");
     const Token& t = next();
     if (t.kind != TokKind::Word) fail("expected the loop variable after '#for (', got " + got(t));
+    check_not_reserved(t.text, "the loop variable after '#for ('", loc());
     std::string var = t.text;
     expect(",", "after the #for variable");
     double start = parse_float();

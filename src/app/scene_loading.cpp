@@ -7,6 +7,7 @@
 #include "app/cli_common.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/memory.h"
 #include "formats/obj/obj_importer.h"
 #include "formats/pov/parser.h"
 #include "render/object_query.h"
@@ -44,6 +45,11 @@ void add_scene_options(CLI::App& cmd, SceneRequest& request, bool scene_required
     cmd.add_option("--max-objects", l.objects, "Limit: top-level objects in the scene")
         ->capture_default_str()->check(CLI::PositiveNumber);
     cmd.add_option("--max-image-pixels", l.image_pixels, "Limit: width x height of the image")
+        ->capture_default_str()->check(CLI::PositiveNumber);
+    if (l.memory_mib == 0)
+        l.memory_mib = static_cast<long long>((physical_memory_bytes() / 4 * 3) >> 20);
+    cmd.add_option("--max-memory", l.memory_mib,
+                   "Limit: MiB of memory while the scene is parsed (default: 3/4 of the machine's)")
         ->capture_default_str()->check(CLI::PositiveNumber);
     cmd.add_option("--max-parse-stack", l.parse_stack_mib,
                    "Limit: MiB of stack the parser may use (how deeply a scene can nest)")
@@ -147,6 +153,7 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose) {
     options.max_triangles = limits.triangles;
     options.max_objects = limits.objects;
     options.max_parse_stack_mib = limits.parse_stack_mib;
+    options.max_memory_mib = limits.memory_mib;
     options.object_query = render::answer_object_query;  // trace(), min_extent(), max_extent()
     options.pattern_hook = render::parse_time_pattern;   // pattern functions called while parsing
     options.cancel = &cancel_flag();                      // SIGINT/SIGTERM stop the parse too

@@ -39,6 +39,7 @@ struct SceneRequest {
         long long objects = 10'000'000;
         long long image_pixels = 1LL << 28;  // 16384 x 16384
         int parse_stack_mib = 256;
+        long long memory_mib = 0;  // 0: three quarters of the machine's memory
     } limits;
 };
 
