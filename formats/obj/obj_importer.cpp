@@ -1,6 +1,7 @@
 #include "formats/obj/obj_importer.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -53,6 +54,126 @@ int statement_line(const std::string& path, const char* cmd, size_t k) {
         std::string c;
         if (ls >> c && c == cmd && seen++ == k) return line_no;
     }
+    return 0;
+}
+
+// One whitespace-separated field of a statement and its 1-based column.
+struct Field {
+    std::string_view text;
+    int column = 0;
+};
+
+// The fields of one line (spaces, tabs and a CR separate them; a `#` starts a comment), at
+// most `max` of them; returns how many there are in all. Allocation-free: it runs on every
+// line of an OBJ file.
+template <size_t N>
+size_t split_fields(std::string_view line, Field (&out)[N]) {
+    size_t n = 0, i = 0;
+    auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; };
+    while (i < line.size()) {
+        while (i < line.size() && space(line[i])) ++i;
+        if (i >= line.size() || line[i] == '#') break;
+        size_t b = i;
+        while (i < line.size() && !space(line[i]) && line[i] != '#') ++i;
+        if (n < N) out[n] = Field{line.substr(b, i - b), static_cast<int>(b) + 1};
+        ++n;
+    }
+    return n;
+}
+
+// What a value field holds: a finite number, something else, or a number out of range.
+enum class NumberCheck { Ok, NotANumber, NotFinite };
+
+NumberCheck check_number(std::string_view s) {
+    if (!s.empty() && s[0] == '+') s.remove_prefix(1);  // from_chars takes '-' but not '+'
+    if (s.empty() || !(std::isdigit(static_cast<unsigned char>(s[0])) || s[0] == '.' ||
+                       s[0] == '-'))
+        return NumberCheck::NotANumber;  // also keeps out from_chars' "inf" and "nan"
+    if (s[0] == '-' && (s.size() < 2 || !(std::isdigit(static_cast<unsigned char>(s[1])) ||
+                                          s[1] == '.')))
+        return NumberCheck::NotANumber;
+    double x = 0;
+    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), x);
+    if (ec == std::errc::result_out_of_range) return NumberCheck::NotFinite;
+    if (ec != std::errc() || end != s.data() + s.size()) return NumberCheck::NotANumber;
+    return std::isfinite(x) ? NumberCheck::Ok : NumberCheck::NotFinite;
+}
+
+std::string shown(std::string_view s) {
+    return s.size() > 40 ? std::string(s.substr(0, 40)) + "..." : std::string(s);
+}
+
+// Checks that a statement's values are numbers: at least `min_count`, and all of the first
+// `check_count` fields after the keyword (tinyobjloader reads a field that is not a number,
+// or a missing one, as 0 without a word). `what` names the values for the message.
+template <size_t N>
+void check_values(const Field (&f)[N], size_t n, size_t min_count, size_t check_count,
+                  const char* what, const std::shared_ptr<const std::string>& file,
+                  int line_no) {
+    const std::string key(f[0].text);
+    const size_t values = n - 1;
+    for (size_t k = 1; k <= std::min({values, check_count, N - 1}); ++k) {
+        NumberCheck c = check_number(f[k].text);
+        if (c == NumberCheck::NotANumber)
+            throw Error(ErrorKind::Scene, file_loc(file, line_no, f[k].column),
+                        "'" + key + "' value '" + shown(f[k].text) + "' is not a number");
+        if (c == NumberCheck::NotFinite)
+            throw Error(ErrorKind::Scene, file_loc(file, line_no, f[k].column),
+                        "'" + key + "' value '" + shown(f[k].text) +
+                            "' is out of range (not a finite number)");
+    }
+    if (values < min_count) {
+        const Field& last = f[std::min(values, N - 1)];
+        int col = last.column + static_cast<int>(last.text.size());  // just past it
+        throw Error(ErrorKind::Scene, file_loc(file, line_no, col),
+                    "'" + key + "' needs " +
+                        (min_count == 1 ? std::string("a number")
+                                        : std::to_string(min_count) + " numbers (" + what + ")") +
+                        ", found " + (values == 0 ? std::string("none") : std::to_string(values)));
+    }
+}
+
+// One pass over the OBJ file: the values of every v, vn and vt statement are numbers, enough
+// of them (v x y z [w] or v x y z r g b; vn x y z; vt u [v [w]]).
+void check_obj_numbers(const std::string& path, const std::shared_ptr<const std::string>& file) {
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    Field f[8];
+    for (int line_no = 1; std::getline(in, line); ++line_no) {
+        size_t a = line.find_first_not_of(" \t");
+        if (a == std::string::npos || line[a] != 'v') continue;
+        const size_t n = split_fields(line, f);
+        const std::string_view key = f[0].text;
+        if (key == "v") check_values(f, n, 3, 7, "x y z", file, line_no);
+        else if (key == "vn") check_values(f, n, 3, 3, "x y z", file, line_no);
+        else if (key == "vt") check_values(f, n, 1, 3, "u", file, line_no);
+    }
+}
+
+// The same for an MTL statement tinyobjloader reads as numbers (its spelling: case matters).
+// Returns the number of values of a color statement (1: the MTL spec's gray `Kd 0.5`).
+template <size_t N>
+size_t check_mtl_numbers(const Field (&f)[N], size_t n,
+                         const std::shared_ptr<const std::string>& file, int line_no) {
+    const std::string_view key = f[0].text;
+    for (const char* k : {"Ka", "Kd", "Ks", "Kt", "Tf", "Ke"})
+        if (key == k) {
+            if (n == 2) {  // `Kd 0.5` stands for `Kd 0.5 0.5 0.5`
+                check_values(f, n, 1, 1, "r g b", file, line_no);
+                return 1;
+            }
+            check_values(f, n, 3, 3, "r g b", file, line_no);
+            return 3;
+        }
+    for (const char* k : {"Ni", "Ns", "d", "Tr", "Pr", "Pm", "Ps", "Pc", "Pcr", "aniso",
+                          "anisor", "illum"})
+        if (key == k) {
+            check_values(f, n, 1, 1, "", file, line_no);
+            if (key == "illum" && f[1].text.find_first_of(".eE") != std::string_view::npos)
+                throw Error(ErrorKind::Scene, file_loc(file, line_no, f[1].column),
+                            "'illum' value '" + shown(f[1].text) + "' is not a whole number");
+            return 1;
+        }
     return 0;
 }
 
@@ -125,22 +246,33 @@ private:
 
 // What the MTL files say beyond tinyobjloader's values: the statements each material wrote
 // (lowercased keywords), and whether Blender wrote the file (its first line).
+// Also checks that the values tinyobjloader reads as numbers are numbers.
 struct MtlStatements {
     std::map<std::string, std::set<std::string>> keywords;  // by material name
+    std::map<std::string, std::set<std::string>> gray;      // colors given as one value
     std::set<std::string> blender;                          // materials in Blender's files
 };
 
 MtlStatements scan_mtl(const std::vector<std::string>& files) {
     MtlStatements out;
     for (const std::string& f : files) {
-        std::ifstream in(f);
+        std::ifstream in(f, std::ios::binary);
         std::string line, current;
         bool blender = false, first = true;
-        while (std::getline(in, line)) {
+        const auto file = std::make_shared<const std::string>(f);
+        Field fields[4];
+        for (int line_no = 1; std::getline(in, line); ++line_no) {
             if (first && line.rfind("# Blender", 0) == 0) blender = true;
             first = false;
             size_t a = line.find_first_not_of(" \t");
             if (a == std::string::npos || line[a] == '#') continue;
+            const size_t n = split_fields(line, fields);
+            if (n > 0 && check_mtl_numbers(fields, n, file, line_no) == 1 && n == 2 &&
+                fields[0].text.size() == 2 && !current.empty()) {
+                std::string k(fields[0].text);
+                std::transform(k.begin(), k.end(), k.begin(), ::tolower);
+                out.gray[current].insert(k);
+            }
             size_t b = line.find_first_of(" \t\r", a);
             std::string key = line.substr(a, b == std::string::npos ? std::string::npos : b - a);
             std::transform(key.begin(), key.end(), key.begin(), ::tolower);
@@ -276,6 +408,8 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
     std::vector<tinyobj::material_t> materials;
     std::string warn, err;
     MtlFileReader mtl_reader(fs::path(path).parent_path().string());
+    // tinyobjloader reads a value that is not a number as 0: such files are errors.
+    check_obj_numbers(path, file);
     bool ok = false;
     {
         std::ifstream in(path);
@@ -340,13 +474,18 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
         const std::set<std::string>& has = found != statements.keywords.end() ? found->second : kNone;
         auto given = [&](const char* k) { return has.count(k) > 0; };
         const bool blender = statements.blender.count(mt.name) > 0;
+        auto grays = statements.gray.find(mt.name);
+        auto one = [&](const char* k, const tinyobj::real_t* c) {  // `Kd 0.5`: gray
+            return grays != statements.gray.end() && grays->second.count(k) ? Color(c[0], c[0], c[0])
+                                                                              : rgb(c);
+        };
         MtlValues v;
-        v.Ka = rgb(mt.ambient);
+        v.Ka = one("ka", mt.ambient);
         v.has_Ka = given("ka");
-        if (given("kd")) v.Kd = rgb(mt.diffuse);
-        v.Ks = rgb(mt.specular);
-        v.Ke = rgb(mt.emission);
-        v.Tf = rgb(mt.transmittance);
+        if (given("kd")) v.Kd = one("kd", mt.diffuse);
+        v.Ks = one("ks", mt.specular);
+        v.Ke = one("ke", mt.emission);
+        v.Tf = one(grays != statements.gray.end() && grays->second.count("kt") ? "kt" : "tf", mt.transmittance);
         v.has_Tf = given("tf");
         v.Ns = mt.shininess;
         v.has_Ns = given("ns");
