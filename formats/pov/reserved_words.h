@@ -83,6 +83,9 @@ inline constexpr std::array<std::string_view, 498> kReservedWords = {
     "while", "width", "wood", "wrinkles", "write", "x", "xyz", "y", "yes", "z",
 };
 
+// is_reserved_word searches it by halves.
+static_assert(std::is_sorted(kReservedWords.begin(), kReservedWords.end()));
+
 inline bool is_reserved_word(std::string_view word) {
     return std::binary_search(kReservedWords.begin(), kReservedWords.end(), word);
 }
