@@ -59,7 +59,7 @@ void Parser::parse_camera_body(scene::Camera& cam) {
             static const scene::CameraKind kCyl[] = {
                 scene::CameraKind::Cylinder1, scene::CameraKind::Cylinder2,
                 scene::CameraKind::Cylinder3, scene::CameraKind::Cylinder4};
-            int i = static_cast<int>(type);
+            int i = to_int(type);
             if (i < 1 || i > 4)
                 fail_at(l, "invalid cylinder camera type " + std::to_string(i) +
                                "; valid types are 1 to 4");

@@ -137,7 +137,7 @@ static void parse_mesh2(Parser& p, scene::Mesh& mesh) {
         p.peek();
         FileLoc at = p.loc();
         Vec3 v = p.parse_vector();
-        std::array<int, 3> r{static_cast<int>(v.x), static_cast<int>(v.y), static_cast<int>(v.z)};
+        std::array<int, 3> r{to_int(v.x), to_int(v.y), to_int(v.z)};
         for (int k : r)
             if (k < 0 || k >= limit)
                 p.fail_at(at, std::string(what) + " index " + std::to_string(k) + " is out of range (0.." +

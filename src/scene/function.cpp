@@ -4,6 +4,7 @@
 #include "scene/function.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 
 #include "core/noise.h"
@@ -188,6 +189,16 @@ double noise_at(const FunctionEnv& env, const Vec3& p, int generator) {
     return env.noise ? env.noise(p, generator) : glint::noise(p, generator);
 }
 
+// A parameter used as a count or a selector: truncated like POV-Ray's (int) cast, but clamped
+// first, since casting 1e20 or NaN to int is undefined behaviour.
+int int_param(double v, int lo, int hi) {
+    if (!(v == v)) return lo;
+    return static_cast<int>(std::clamp(v, double(lo), double(hi)));
+}
+// Octave counts past this add nothing visible (the amplitude is below a double's precision
+// long before) and would only let one function call run for minutes.
+constexpr int kMaxOctaves = 64;
+
 // The formulas of POV-Ray's fnintern.cpp for the internal functions example scenes use.
 // a[0..2] = x, y, z; a[3 + i] = P(i).
 double eval_internal(const FunctionEnv& env, int id, const double* a) {
@@ -227,18 +238,19 @@ double eval_internal(const FunctionEnv& env, int id, const double* a) {
         }
         case 29: {  // f_hetero_mf
             Vec3 v(x, y, z);
-            int gen = static_cast<int>(P[5]) & 3;
+            int gen = int_param(P[5], INT_MIN, INT_MAX) & 3;
             double signal = (noise_at(env, v, gen) * 2.0 - 1.0) + P[3];
             v *= P[1];
             double step = std::pow(P[1], -P[0]), ea = step;
-            for (int i = 1; i < P[2]; ++i) {
+            const double octaves = std::min(P[2], double(kMaxOctaves));
+            for (int i = 1; i < octaves; ++i) {
                 double inc = ((noise_at(env, v, gen) * 2.0 - 1.0) + P[3]) * ea;
-                for (int k = static_cast<int>(P[4]); k > 0; --k) inc *= signal;
+                for (int k = int_param(P[4], 0, kMaxOctaves); k > 0; --k) inc *= signal;
                 signal += inc;
                 v *= P[1];
                 ea *= step;
             }
-            double rem = P[2] - static_cast<int>(P[2]);
+            double rem = octaves - std::trunc(octaves);
             if (rem != 0.0) {
                 double inc = ((noise_at(env, v, gen) * 2.0 - 1.0) + P[3]) * ea;
                 signal += rem * inc * signal;
@@ -253,13 +265,14 @@ double eval_internal(const FunctionEnv& env, int id, const double* a) {
             return std::sqrt(x * x + y * y + z * z);
         case 58: {  // f_ridge
             Vec3 p(x, y, z);
-            int gen = static_cast<int>(P[5]) & 3;
+            int gen = int_param(P[5], INT_MIN, INT_MAX) & 3;
             double lambda = P[0], omega = P[2], l = lambda, o = omega;
-            int octaves = static_cast<int>(P[1]);
+            const double oct = std::clamp(P[1], -double(kMaxOctaves), double(kMaxOctaves));
+            int octaves = int_param(oct, -kMaxOctaves, kMaxOctaves);
             double off = P[3], ridge = P[4], tot = 1.0;
             double rscale = 1.0 / std::max(ridge, 1.0 - ridge);
             double scale = 1.0 / std::max(off, 1.0 - off);
-            double resid = P[1] - octaves;
+            double resid = oct - octaves;
             double value = std::fabs(noise_at(env, p, gen) - ridge) * rscale - off;
             for (int i = 2; i <= octaves; ++i) {
                 double v = std::fabs(noise_at(env, p * l, gen) - ridge) * rscale;
@@ -277,14 +290,15 @@ double eval_internal(const FunctionEnv& env, int id, const double* a) {
         }
         case 59: {  // f_ridged_mf
             Vec3 v(x, y, z);
-            int gen = static_cast<int>(P[5]) & 3;
+            int gen = int_param(P[5], INT_MIN, INT_MAX) & 3;
             auto ridged = [&](const Vec3& q) {
                 double s = noise_at(env, q, gen) * 2.0 - 1.0;
                 s = P[3] - std::fabs(s);
                 return s * s;
             };
             double signal = ridged(v), result = signal, freq = 1.0;
-            for (int i = 1; i < P[2]; ++i) {
+            const double octaves = std::min(P[2], double(kMaxOctaves));
+            for (int i = 1; i < octaves; ++i) {
                 freq *= P[1];
                 v *= P[1];
                 double weight = std::clamp(signal * P[4], 0.0, 1.0);
@@ -328,7 +342,7 @@ double eval_internal(const FunctionEnv& env, int id, const double* a) {
         case 76:  // f_noise3d
             return noise_at(env, Vec3(x, y, z), env.noise_generator);
         case 78:  // f_noise_generator
-            return noise_at(env, Vec3(x, y, z), static_cast<int>(P[0]) & 3);
+            return noise_at(env, Vec3(x, y, z), int_param(P[0], INT_MIN, INT_MAX) & 3);
         default:
             return 0.0;
     }
