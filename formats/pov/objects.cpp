@@ -1,6 +1,7 @@
 // Objects (reference manual 3.4 "Objects"; parse.cpp in POV-Ray): finite and infinite shapes,
 // CSG, meshes, light sources and the object modifiers. Transforms after a texture move the
 // texture with the object, as POV-Ray does.
+#include <cstdio>
 #include <cmath>
 #include <unordered_set>
 
@@ -138,10 +139,14 @@ static void parse_mesh2(Parser& p, scene::Mesh& mesh) {
         FileLoc at = p.loc();
         Vec3 v = p.parse_vector();
         std::array<int, 3> r{to_int(v.x), to_int(v.y), to_int(v.z)};
-        for (int k : r)
-            if (k < 0 || k >= limit)
-                p.fail_at(at, std::string(what) + " index " + std::to_string(k) + " is out of range (0.." +
-                       std::to_string(limit - 1) + ")");
+        for (int k = 0; k < 3; ++k)
+            if (r[k] < 0 || r[k] >= limit) {
+                // The value as written: 2e72 clamped to int would read as 2147483647.
+                char shown[32];
+                std::snprintf(shown, sizeof shown, "%.10g", v[k]);
+                p.fail_at(at, std::string(what) + " index " + shown + " is out of range (0.." +
+                                  std::to_string(limit - 1) + ")");
+            }
         return r;
     };
     for (;;) {
