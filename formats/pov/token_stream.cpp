@@ -340,7 +340,9 @@ std::string Parser::read_name(const char* context) {
 
 bool Parser::handle_directive(const Token& d, int file) {
     FileLoc dloc = loc_of(file, d);
-    const std::string& k = d.text;
+    // A view: each comparison below checks the length first (a std::string against a literal
+    // costs a strlen and a memcmp each, a tenth of a bare #while iteration's time).
+    const std::string_view k = d.text;
     if (k == "declare" || k == "local") {
         handle_declare(k == "local", dloc);
     } else if (k == "include") {
@@ -379,7 +381,7 @@ bool Parser::handle_directive(const Token& d, int file) {
         for (size_t i = scopes_.size(); i-- > 0;)
             if (scopes_[i].erase(name)) break;
     } else if (k == "debug" || k == "warning" || k == "error") {
-        handle_message(k, dloc);
+        handle_message(d.text, dloc);
     } else if (k == "version") {
         size_t saved = declare_frame_;
         declare_frame_ = frames_.size();
@@ -402,7 +404,7 @@ bool Parser::handle_directive(const Token& d, int file) {
         // Messages to POV-Ray's statistics/render streams: shown like #debug.
         handle_message("debug", dloc);
     } else {
-        fail_at(dloc, "unknown directive '#" + k + "'");
+        fail_at(dloc, "unknown directive '#" + d.text + "'");
     }
     return true;
 }
