@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/quiet_stderr.h"
 #include "render/shapes/shapes.h"
 
 namespace glint::render {
@@ -276,10 +277,12 @@ std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const 
                                              const Transform& shading, const char** why) {
     const std::string& path = s.resolved_path.empty() ? s.file : s.resolved_path;
     FileLoc at = s.file_loc.line > 0 ? s.file_loc : loc;
+    QuietStderr quiet;  // libpng's own lines: glint's error says what went wrong
     auto in = OIIO::ImageInput::open(path);
     if (!in)
         throw Error(ErrorKind::MissingFile, at,
-                    "cannot read height_field image '" + s.file + "': " + OIIO::geterror());
+                    "cannot read height_field image '" + s.file + "': " +
+                        first_line_of(OIIO::geterror()));
     const OIIO::ImageSpec& spec = in->spec();
     int w = spec.width, h = spec.height, nc = spec.nchannels;
     if (w < 2 || h < 2 || nc <= 0) {
@@ -289,7 +292,8 @@ std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const 
     std::vector<float> raw(static_cast<size_t>(w) * h * nc);
     if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, raw.data()))
         throw Error(ErrorKind::MissingFile, at,
-                    "cannot decode height_field image '" + s.file + "': " + in->geterror());
+                    "cannot decode height_field image '" + s.file + "': " +
+                        first_line_of(in->geterror()));
     const std::string format = in->format_name();
     const bool high_depth = spec.format.size() > 1;
     const std::vector<std::array<uint8_t, 3>> palette_colors = read_palette(path);

@@ -1,13 +1,11 @@
 #include "render/textures/image_texture.h"
 
 #include <OpenImageIO/imageio.h>
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <cstdio>
 
 #include "core/error.h"
+#include "core/quiet_stderr.h"
 
 namespace glint::render {
 namespace {
@@ -40,39 +38,6 @@ void collect(const scene::Texture& t, std::vector<const scene::ImageMap*>* out) 
     for (const scene::Texture& e : t.entries) collect(e, out);
 }
 
-// libpng, under OpenImageIO, prints its own "libpng error: ..." and "libpng warning: ..." lines
-// on stderr, and OpenImageIO's error text repeats them over several lines. While an image is
-// read, stderr goes to /dev/null (images are loaded before the render starts, on one thread),
-// and glint's error gives the first line of OpenImageIO's text after its own file:line:col.
-class QuietStderr {
-public:
-    QuietStderr() {
-        std::fflush(stderr);
-        saved_ = ::dup(STDERR_FILENO);
-        const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
-        if (saved_ >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
-        if (null >= 0) ::close(null);
-    }
-    ~QuietStderr() {
-        std::fflush(stderr);
-        if (saved_ >= 0) {
-            ::dup2(saved_, STDERR_FILENO);
-            ::close(saved_);
-        }
-    }
-    QuietStderr(const QuietStderr&) = delete;
-    QuietStderr& operator=(const QuietStderr&) = delete;
-
-private:
-    int saved_ = -1;
-};
-
-std::string first_line(std::string s) {
-    s = s.substr(0, s.find('\n'));
-    while (!s.empty() && (s.back() == '\r' || s.back() == ' ' || s.back() == '.')) s.pop_back();
-    return s.empty() ? "unknown error" : s;
-}
-
 }  // namespace
 
 ImageGamma image_gamma(const scene::Scene& scene) {
@@ -96,11 +61,11 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const scene::ImageMap& ma
     OIIO::ImageSpec config;
     // POV-Ray works with unassociated alpha for PNG and friends.
     config.attribute("oiio:UnassociatedAlpha", 1);
-    QuietStderr quiet;
+    QuietStderr quiet;  // libpng's own lines: glint's error says what went wrong
     auto in = OIIO::ImageInput::open(path, &config);
     if (!in) {
         throw Error(ErrorKind::MissingFile, map.loc,
-                    "cannot read image '" + map.file + "': " + first_line(OIIO::geterror()));
+                    "cannot read image '" + map.file + "': " + first_line_of(OIIO::geterror()));
     }
     const OIIO::ImageSpec& spec = in->spec();
     int w = spec.width, h = spec.height, nc = spec.nchannels;
@@ -110,7 +75,7 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const scene::ImageMap& ma
     std::vector<float> raw(static_cast<size_t>(w) * h * nc);
     if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, raw.data())) {
         throw Error(ErrorKind::MissingFile, map.loc,
-                    "cannot decode image '" + map.file + "': " + first_line(in->geterror()));
+                    "cannot decode image '" + map.file + "': " + first_line_of(in->geterror()));
     }
     bool is_float = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
                     spec.format.basetype == OIIO::TypeDesc::HALF ||
