@@ -133,6 +133,32 @@ void check_values(const Field (&f)[N], size_t n, size_t min_count, size_t check_
     }
 }
 
+// `vw vertex joint weight joint weight ...` (skin weights, which glint does not use):
+// tinyobjloader casts each joint id from a float to int, undefined for 1e26 (found by
+// fuzz_obj under UBSan), so every joint id must be a number in int's range first.
+void check_skin_weights(std::string_view line, const std::shared_ptr<const std::string>& file,
+                        int line_no) {
+    Field one[1];
+    size_t index = 0, at = 0;
+    while (at < line.size()) {
+        const size_t n = split_fields(line.substr(at), one);
+        if (n == 0) break;
+        const Field f{one[0].text, one[0].column + static_cast<int>(at)};
+        if (index >= 2 && index % 2 == 0) {
+            double j = 0;
+            const bool number = check_number(f.text) == NumberCheck::Ok;
+            if (number) std::from_chars(f.text.data() + (f.text[0] == '+'),
+                                        f.text.data() + f.text.size(), j);
+            if (!number || !(j > -1.0 && j < 2147483648.0))
+                throw Error(ErrorKind::Scene, file_loc(file, line_no, f.column),
+                            "'vw' joint id '" + shown(f.text) + "' is not a number from 0 to " +
+                                "2147483647");
+        }
+        at = static_cast<size_t>(f.column - 1) + f.text.size();
+        ++index;
+    }
+}
+
 // One pass over the OBJ file: the values of every v, vn and vt statement are numbers, enough
 // of them (v x y z [w] or v x y z r g b; vn x y z; vt u [v [w]]).
 void check_obj_numbers(const std::string& path, const std::shared_ptr<const std::string>& file) {
@@ -147,6 +173,7 @@ void check_obj_numbers(const std::string& path, const std::shared_ptr<const std:
         if (key == "v") check_values(f, n, 3, 7, "x y z", file, line_no);
         else if (key == "vn") check_values(f, n, 3, 3, "x y z", file, line_no);
         else if (key == "vt") check_values(f, n, 1, 3, "u", file, line_no);
+        else if (key == "vw") check_skin_weights(line, file, line_no);
     }
 }
 
