@@ -16,9 +16,9 @@ mkdir -p "$logs"
 # halt_on_error: the first report ends the process with a non-zero exit (UB is already fatal:
 # -fno-sanitize-recover=undefined). Leak detection is on (ASan's default on Linux, made explicit).
 # check_initialization_order catches static-initialisation-order bugs as well.
-export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:print_stacktrace=1:check_initialization_order=1:strict_init_order=1:detect_odr_violation=2:log_path=$logs/asan"
+export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:print_stacktrace=1:check_initialization_order=1:strict_init_order=1:detect_odr_violation=2:log_path=$logs/report"
 export LSAN_OPTIONS="print_suppressions=0:suppressions=$here/lsan.supp"
-export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:log_path=$logs/ubsan"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:log_path=$logs/report"
 
 status=0
 ctest --test-dir "$build" --output-on-failure -j2 -L "unit|errors" "$@" || status=$?
