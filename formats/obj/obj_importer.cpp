@@ -9,6 +9,7 @@
 #include <map>
 #include <regex>
 #include <set>
+#include <iterator>
 #include <sstream>
 #include <tuple>
 
@@ -133,30 +134,31 @@ void check_values(const Field (&f)[N], size_t n, size_t min_count, size_t check_
     }
 }
 
-// `vw vertex joint weight joint weight ...` (skin weights, which glint does not use):
-// tinyobjloader casts each joint id from a float to int, undefined for 1e26 (found by
-// fuzz_obj under UBSan), so every joint id must be a number in int's range first.
-void check_skin_weights(std::string_view line, const std::shared_ptr<const std::string>& file,
-                        int line_no) {
-    Field one[1];
-    size_t index = 0, at = 0;
-    while (at < line.size()) {
-        const size_t n = split_fields(line.substr(at), one);
-        if (n == 0) break;
-        const Field f{one[0].text, one[0].column + static_cast<int>(at)};
-        if (index >= 2 && index % 2 == 0) {
-            double j = 0;
-            const bool number = check_number(f.text) == NumberCheck::Ok;
-            if (number) std::from_chars(f.text.data() + (f.text[0] == '+'),
-                                        f.text.data() + f.text.size(), j);
-            if (!number || !(j > -1.0 && j < 2147483648.0))
-                throw Error(ErrorKind::Scene, file_loc(file, line_no, f.column),
-                            "'vw' joint id '" + shown(f.text) + "' is not a number from 0 to " +
-                                "2147483647");
+// `vw` statements (skin weights) mean nothing to glint, which has no skinning, and
+// tinyobjloader's reader of them casts joint ids to int unchecked (1e26 or inf is undefined
+// behaviour, found by fuzz_obj under UBSan). Each becomes a comment before tinyobjloader reads
+// the text, split into lines as tinyobjloader splits them (at \n, \r or \r\n), and the
+// first is named in one warning.
+void drop_skin_weights(std::string& text, const std::shared_ptr<const std::string>& file,
+                       Diagnostics& diag) {
+    int line_no = 1, dropped = 0, first_line = 0;
+    for (size_t i = 0; i < text.size();) {
+        size_t a = i;
+        while (a < text.size() && (text[a] == ' ' || text[a] == '\t')) ++a;
+        if (a + 2 < text.size() && text[a] == 'v' && text[a + 1] == 'w' &&
+            (text[a + 2] == ' ' || text[a + 2] == '\t')) {
+            text[a] = '#';
+            if (dropped++ == 0) first_line = line_no;
         }
-        at = static_cast<size_t>(f.column - 1) + f.text.size();
-        ++index;
+        while (i < text.size() && text[i] != '\n' && text[i] != '\r') ++i;
+        if (i < text.size() && text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+        if (i < text.size()) ++i;
+        ++line_no;
     }
+    if (dropped > 0)
+        diag.warning(file_loc(file, first_line),
+                     "'vw' statements (skin weights) are ignored: glint has no skinning (" +
+                         std::to_string(dropped) + " in the file)");
 }
 
 // One pass over the OBJ file: the values of every v, vn and vt statement are numbers, enough
@@ -173,7 +175,6 @@ void check_obj_numbers(const std::string& path, const std::shared_ptr<const std:
         if (key == "v") check_values(f, n, 3, 7, "x y z", file, line_no);
         else if (key == "vn") check_values(f, n, 3, 3, "x y z", file, line_no);
         else if (key == "vt") check_values(f, n, 1, 3, "u", file, line_no);
-        else if (key == "vw") check_skin_weights(line, file, line_no);
     }
 }
 
@@ -439,9 +440,12 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
     check_obj_numbers(path, file);
     bool ok = false;
     {
-        std::ifstream in(path);
+        std::ifstream in(path, std::ios::binary);
         if (!in) throw Error(ErrorKind::MissingFile, FileLoc{}, "cannot open OBJ file '" + path + "'");
-        ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl_reader,
+        std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+        drop_skin_weights(text, file, diag);
+        std::istringstream obj_text(std::move(text));
+        ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &obj_text, &mtl_reader,
                               /*triangulate=*/true, /*default_vcols_fallback=*/false);
     }
     if (!ok) {
