@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/image_limits.h"
 #include "core/quiet_stderr.h"
 #include "render/shapes/shapes.h"
 
@@ -289,6 +290,7 @@ std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const 
         *why = "height_field image smaller than 2x2";
         return nullptr;
     }
+    check_image_size(w, h, nc, s.file, at);
     std::vector<float> raw(static_cast<size_t>(w) * h * nc);
     if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, raw.data()))
         throw Error(ErrorKind::MissingFile, at,

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/image_limits.h"
 #include "core/quiet_stderr.h"
 
 namespace glint::render {
@@ -72,6 +73,7 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const scene::ImageMap& ma
     if (w <= 0 || h <= 0 || nc <= 0) {
         throw Error(ErrorKind::MissingFile, map.loc, "image '" + map.file + "' is empty");
     }
+    check_image_size(w, h, nc, map.file, map.loc);
     std::vector<float> raw(static_cast<size_t>(w) * h * nc);
     if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, raw.data())) {
         throw Error(ErrorKind::MissingFile, map.loc,
