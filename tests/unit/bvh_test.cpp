@@ -206,50 +206,5 @@ TEST(Bvh, SkipsEmptyAndInfiniteBounds) {
                                [](int, double&) { return true; }));
 }
 
-// A mirrored tree (Bvh::mirror, for meshes with a mirror baked in) visits the same boxes in the
-// same order for the mirrored ray as the original tree does for the original ray, and its
-// boxes enclose the mirrored ones.
-TEST(Bvh, MirroredTreeVisitsInTheSameOrder) {
-    std::mt19937_64 rng(31);
-    std::uniform_real_distribution<double> u(-5, 5), r(0.01, 0.8);
-    std::vector<Bounds3> boxes;
-    for (int i = 0; i < 400; ++i) {
-        Vec3 c(u(rng), u(rng), u(rng)), e(r(rng), r(rng), r(rng));
-        boxes.push_back({c - e, c + e});
-    }
-    const render::Bvh plain(boxes, 4);
-    for (int mask = 1; mask < 8; ++mask) {
-        const bool flip[3] = {(mask & 1) != 0, (mask & 2) != 0, (mask & 4) != 0};
-        auto mirror = [&](Vec3 v) {
-            for (int a = 0; a < 3; ++a)
-                if (flip[a]) v[a] = -v[a];
-            return v;
-        };
-        render::Bvh mirrored(boxes, 4);
-        mirrored.mirror(flip);
-        const Bounds3 pb = plain.bounds(), mb = mirrored.bounds();
-        EXPECT_EQ(mirror(pb.lo) + mirror(pb.hi), mb.lo + mb.hi);
-        int visited = 0;
-        for (int i = 0; i < 300; ++i) {
-            const Vec3 o(u(rng) * 2, u(rng) * 2, u(rng) * 2);
-            const Vec3 d = Vec3(u(rng), u(rng), u(rng)) - o;
-            const double tmax = i % 3 == 0 ? 0.5 : kInfinity;
-            std::vector<int> a, b;
-            double t0 = tmax, t1 = tmax;
-            plain.traverse(render::Ray{o, d, kInfinity}, t0, [&](int k, double&) {
-                a.push_back(k);
-                return false;
-            });
-            mirrored.traverse(render::Ray{mirror(o), mirror(d), kInfinity}, t1, [&](int k, double&) {
-                b.push_back(k);
-                return false;
-            });
-            ASSERT_EQ(a, b) << "mask " << mask << " ray " << i;
-            visited += static_cast<int>(a.size());
-        }
-        EXPECT_GT(visited, 1000);
-    }
-}
-
 }  // namespace
 }  // namespace glint
