@@ -1,6 +1,5 @@
 #include "io/image_compare.h"
 
-#include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,6 +10,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "core/image_library.h"
 #include "io/color_encoding.h"
 #include "io/image_output.h"
 #include "render/image.h"
@@ -103,7 +103,7 @@ namespace {
 
 // An image file opened for reading, with the checks both readers make.
 struct OpenedImage {
-    std::unique_ptr<OIIO::ImageInput> in;
+    std::unique_ptr<ImageReader> in;
     int width = 0, height = 0, channels = 0;
     size_t pixels = 0;
     bool is_float = false;  // stored as float, half or double (EXR, HDR): linear values
@@ -115,33 +115,36 @@ Error read_error(const std::string& path, const std::string& why) {
 
 OpenedImage open_image(const std::string& path) {
     OpenedImage img;
-    img.in = OIIO::ImageInput::open(path);
-    if (!img.in) {
-        std::string why = OIIO::geterror();
-        throw read_error(path, why.empty() ? "cannot open the file" : why);
-    }
-    const OIIO::ImageSpec& spec = img.in->spec();
+    std::string why;
+    img.in = image_library().open(path, {}, &why);
+    if (!img.in) throw read_error(path, why);
+    const ImageHeader& spec = img.in->header();
     img.width = spec.width;
     img.height = spec.height;
-    img.channels = spec.nchannels;
+    img.channels = spec.channels;
     if (img.width <= 0 || img.height <= 0 || img.channels <= 0)
         throw read_error(path, "empty image");
     if (img.channels == 2) throw read_error(path, "gray+alpha images are not supported");
     img.pixels = static_cast<size_t>(img.width) * img.height;
-    img.is_float = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
-                   spec.format.basetype == OIIO::TypeDesc::HALF ||
-                   spec.format.basetype == OIIO::TypeDesc::DOUBLE;
+    img.is_float = is_float_pixel(spec.type);
     return img;
 }
 
-// All channels of the image, converted to T by OpenImageIO.
-template <typename T>
-std::vector<T> read_all(const std::string& path, OpenedImage& img, OIIO::TypeDesc type) {
-    std::vector<T> data(img.pixels * img.channels);
-    if (!img.in->read_image(0, 0, 0, img.channels, type, data.data()))
-        throw read_error(path, img.in->geterror());
-    img.in->close();
+// All channels of the image as floats (integer formats scaled to [0, 1]).
+std::vector<float> read_all(const std::string& path, OpenedImage& img) {
+    std::vector<float> data(img.pixels * img.channels);
+    const std::string why = img.in->read(img.channels, data.data());
+    if (!why.empty()) throw read_error(path, why);
+    img.in.reset();
     return data;
+}
+
+// 8-bit code values of [0, 1] floats, rounded to nearest as OpenImageIO converts.
+std::vector<unsigned char> to_u8(const std::vector<float>& v) {
+    std::vector<unsigned char> out(v.size());
+    for (size_t i = 0; i < v.size(); ++i)
+        out[i] = static_cast<unsigned char>(std::clamp(v[i], 0.0f, 1.0f) * 255.0f + 0.5f);
+    return out;
 }
 
 }  // namespace
@@ -152,15 +155,13 @@ Rgb8Image read_rgb8(const std::string& path) {
         LinearImage linear;
         linear.width = img.width;
         linear.height = img.height;
-        linear.rgb = to_rgb(read_all<float>(path, img, OIIO::TypeDesc::FLOAT), img.pixels,
-                            img.channels);
+        linear.rgb = to_rgb(read_all(path, img), img.pixels, img.channels);
         return encode_srgb8(linear);
     }
     Rgb8Image out;
     out.width = img.width;
     out.height = img.height;
-    out.rgb = to_rgb(read_all<unsigned char>(path, img, OIIO::TypeDesc::UINT8), img.pixels,
-                     img.channels);
+    out.rgb = to_rgb(to_u8(read_all(path, img)), img.pixels, img.channels);
     return out;
 }
 
@@ -169,7 +170,7 @@ LinearImage read_linear(const std::string& path) {
     LinearImage out;
     out.width = img.width;
     out.height = img.height;
-    out.rgb = to_rgb(read_all<float>(path, img, OIIO::TypeDesc::FLOAT), img.pixels, img.channels);
+    out.rgb = to_rgb(read_all(path, img), img.pixels, img.channels);
     if (!img.is_float) {
         // IEC 61966-2-1 sRGB decoding of the code values OpenImageIO scaled to [0, 1].
         for (float& v : out.rgb)

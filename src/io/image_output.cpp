@@ -1,7 +1,5 @@
 #include "io/image_output.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -16,7 +14,9 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/image_library.h"
 #include "io/color_encoding.h"
+#include "io/png_writer.h"
 
 namespace glint::io {
 
@@ -118,10 +118,9 @@ std::string flush_file(const std::string& path) {
 
 // Writes through a temporary beside the target (so the rename stays on one file system) and
 // renames it, so a failed write never leaves a partial file.
-void write_atomically(const std::string& path, const char* oiio_name, OIIO::ImageSpec spec,
-                      OIIO::TypeDesc type, const void* data, const ImageMetadata& metadata,
+void write_atomically(const std::string& path, ImageWrite w, const ImageMetadata& metadata,
                       OutputBatch* batch) {
-    for (const auto& [name, value] : metadata) spec.attribute(name, value);
+    for (const auto& [name, value] : metadata) w.attributes.emplace_back(name, value);
     TempFile temp(temp_name(path));
     auto fail = [&](const std::string& why) {
         return Error(ErrorKind::Output, {}, "cannot write " + path + ": " + why);
@@ -130,25 +129,15 @@ void write_atomically(const std::string& path, const char* oiio_name, OIIO::Imag
         // Encoded in memory, then written by write_file; except TIFF, whose writer (libtiff)
         // reports its own write errors and, in OpenImageIO 2.4, writes an unreadable file (no
         // image directory) through a memory proxy: it writes the temporary itself, which is
-        // then flushed to the disk like the others.
-        const bool via_memory = std::string(oiio_name) != "tiff";
+        // then flushed to the disk like the others. PNGs without alpha are encoded by libpng
+        // directly, so that a render writing one never loads OpenImageIO.
+        const bool via_memory = w.format != "tiff";
+        w.path = temp.path();
+        w.to_memory = via_memory;
         std::vector<unsigned char> bytes;
-        OIIO::Filesystem::IOVecOutput memory(bytes);
-        std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(oiio_name);
-        if (!out) throw fail("OpenImageIO has no " + std::string(oiio_name) + " writer");
-        if (via_memory && (!out->supports("ioproxy") || !out->set_ioproxy(&memory)))
-            throw fail("OpenImageIO's " + std::string(oiio_name) + " writer cannot write to memory");
-        if (!out->open(temp.path(), spec)) {
-            std::string why = out->geterror();
-            throw fail(why.empty() ? "cannot create the file" : why);
-        }
-        bool ok = out->write_image(type, data);
-        std::string why = ok ? std::string() : out->geterror();
-        if (!out->close() && ok) {
-            ok = false;
-            why = out->geterror();
-        }
-        if (!ok) throw fail(why.empty() ? "write failed" : why);
+        std::string why = png_writer_accepts(w) ? encode_png(w, &bytes)
+                                                : image_library().write(w, &bytes);
+        if (!why.empty()) throw fail(why);
         why = via_memory ? write_file(temp.path(), bytes) : flush_file(temp.path());
         if (!why.empty()) throw fail(why);
     }
@@ -216,11 +205,18 @@ void write_image(const render::Image& image, const std::string& path,
 
     const int channels = (encoding.alpha && format.supports_alpha) ? 4 : 3;
     const size_t pixels = static_cast<size_t>(image.width) * image.height;
-    OIIO::TypeDesc type = format.is_float           ? OIIO::TypeDesc::FLOAT
-                          : format.max_value == 255 ? OIIO::TypeDesc::UINT8
-                                                    : OIIO::TypeDesc::UINT16;
-    OIIO::ImageSpec spec(image.width, image.height, channels, type);
+    ImageWrite spec;
+    spec.format = format.oiio_name;
+    spec.width = image.width;
+    spec.height = image.height;
+    spec.channels = channels;
+    spec.type = format.is_float           ? PixelType::Float
+                : format.max_value == 255 ? PixelType::UInt8
+                                          : PixelType::UInt16;
     if (channels == 4) spec.alpha_channel = 3;
+    auto attribute = [&](const char* name, ImageAttribute value) {
+        spec.attributes.emplace_back(name, std::move(value));
+    };
 
     // Pixel data in the file's own type, so OpenImageIO does no conversion of its own.
     std::vector<float> float_data;
@@ -228,7 +224,7 @@ void write_image(const render::Image& image, const std::string& path,
     std::vector<uint16_t> u16_data;
     const void* data = nullptr;
     if (format.is_float) {
-        spec.attribute("oiio:ColorSpace", "Linear");
+        attribute("oiio:ColorSpace", std::string("Linear"));
         std::vector<float> linear = linear_rgba(image, encoding);
         float_data.resize(pixels * channels);
         for (size_t i = 0; i < pixels; ++i)
@@ -237,12 +233,12 @@ void write_image(const render::Image& image, const std::string& path,
     } else if (encoding.view.active()) {
         // Blender's display image of the linear values the float formats get; alpha 1 when
         // the file has none, as Blender reads an RGB EXR.
-        if (encoding.view.view == "Standard") spec.attribute("oiio:ColorSpace", "sRGB");
+        if (encoding.view.view == "Standard") attribute("oiio:ColorSpace", std::string("sRGB"));
         // Blender writes 8-bit files with straight alpha (PNG's; OpenImageIO must not divide
         // again) and 16-bit TIFF premultiplied (TIFF's associated alpha), each as it stores it.
         const bool eight_bit = format.max_value == 255;
-        if (eight_bit) spec.attribute("oiio:UnassociatedAlpha", 1);
-        if (eight_bit) spec.attribute("CompressionQuality", 95);
+        if (eight_bit) attribute("oiio:UnassociatedAlpha", 1);
+        if (eight_bit) attribute("CompressionQuality", 95);
         std::vector<float> linear = linear_rgba(image, encoding);
         if (channels == 3)
             for (size_t i = 0; i < pixels; ++i) linear[i * 4 + 3] = 1.0f;
@@ -262,10 +258,10 @@ void write_image(const render::Image& image, const std::string& path,
                          : static_cast<const void*>(u16_data.data());
     } else {
         if (encoding.transfer == OutputEncoding::Transfer::Srgb)
-            spec.attribute("oiio:ColorSpace", "sRGB");
+            attribute("oiio:ColorSpace", std::string("sRGB"));
         else if (encoding.transfer == OutputEncoding::Transfer::Gamma)
-            spec.attribute("oiio:Gamma", static_cast<float>(encoding.gamma));
-        if (format.max_value == 255) spec.attribute("CompressionQuality", 95);
+            attribute("oiio:Gamma", static_cast<float>(encoding.gamma));
+        if (format.max_value == 255) attribute("CompressionQuality", 95);
         std::vector<float> rgb = encode_rgb(image, encoding);
         // Alpha is coverage, stored linearly (POV-Ray's IntEncode without a curve).
         auto code = [&](size_t i, int c) {
@@ -287,7 +283,8 @@ void write_image(const render::Image& image, const std::string& path,
         }
     }
 
-    write_atomically(path, format.oiio_name, spec, type, data, metadata, batch);
+    spec.data = data;
+    write_atomically(path, std::move(spec), metadata, batch);
 }
 
 void write_float_exr(const render::Image& image, const std::string& path, int channels,
@@ -298,38 +295,41 @@ void write_float_exr(const render::Image& image, const std::string& path, int ch
         image.rgba.size() != static_cast<size_t>(image.width) * image.height * 4)
         throw Error(ErrorKind::Output, {}, "cannot write " + path + ": the image is empty");
     const size_t pixels = static_cast<size_t>(image.width) * image.height;
-    OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::FLOAT);
-    if (channels == 1) spec.channelnames = {"Z"};
-    spec.attribute("oiio:ColorSpace", "Linear");
+    ImageWrite spec;
+    spec.format = "openexr";
+    spec.width = image.width;
+    spec.height = image.height;
+    spec.channels = channels;
+    spec.type = PixelType::Float;
+    if (channels == 1) spec.channel_names = {"Z"};
+    spec.attributes.emplace_back("oiio:ColorSpace", std::string("Linear"));
     std::vector<float> data(pixels * channels);
     for (size_t i = 0; i < pixels; ++i)
         for (int c = 0; c < channels; ++c) data[i * channels + c] = image.rgba[i * 4 + c];
-    write_atomically(path, "openexr", spec, OIIO::TypeDesc::FLOAT, data.data(), metadata, batch);
+    spec.data = data.data();
+    write_atomically(path, std::move(spec), metadata, batch);
 }
 
 render::Image read_float_image(const std::string& path, bool* has_alpha) {
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+    std::string why;
+    std::unique_ptr<ImageReader> in = image_library().open(path, {}, &why);
     if (!in) {
-        std::string why = OIIO::geterror();
         throw Error(ErrorKind::MissingFile, {},
                     "cannot read " + path + (why.empty() ? std::string() : ": " + why));
     }
-    const OIIO::ImageSpec& spec = in->spec();
-    const OIIO::TypeDesc::BASETYPE base =
-        static_cast<OIIO::TypeDesc::BASETYPE>(spec.format.basetype);
-    if (base != OIIO::TypeDesc::FLOAT && base != OIIO::TypeDesc::HALF &&
-        base != OIIO::TypeDesc::DOUBLE)
+    const ImageHeader& spec = in->header();
+    if (!is_float_pixel(spec.type))
         throw Error(ErrorKind::Usage, {},
                     path +
                         " is not a float image: give a linear .exr or .hdr (an 8/16-bit "
                         "file is already display-encoded)");
-    const int nc = spec.nchannels;
+    const int nc = spec.channels;
     if (spec.width <= 0 || spec.height <= 0 || nc <= 0)
         throw Error(ErrorKind::MissingFile, {}, "cannot read " + path + ": the image is empty");
     const size_t pixels = static_cast<size_t>(spec.width) * spec.height;
     std::vector<float> data(pixels * nc);
-    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, data.data()))
-        throw Error(ErrorKind::MissingFile, {}, "cannot read " + path + ": " + in->geterror());
+    why = in->read(nc, data.data());
+    if (!why.empty()) throw Error(ErrorKind::MissingFile, {}, "cannot read " + path + ": " + why);
     const int alpha = spec.alpha_channel >= 0 ? spec.alpha_channel : (nc == 4 ? 3 : -1);
     if (has_alpha) *has_alpha = alpha >= 0;
     render::Image image;

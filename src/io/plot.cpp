@@ -1,20 +1,16 @@
 #include "io/plot.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 
+#include "core/image_library.h"
 #include "io/image_output.h"
 #include "render/image.h"
 
 namespace glint::io {
 namespace {
-
-namespace IBA = OIIO::ImageBufAlgo;
 
 constexpr int kFontSize = 13;
 
@@ -48,50 +44,60 @@ void decade_range(const std::vector<const std::vector<double>*>& values, int* lo
     if (*hi <= *lo) *hi = *lo + 1;
 }
 
+// Text alignment, as core/image_library.h's DrawOp takes it.
+enum class AX { Left = -1, Center = 0, Right = 1 };
+enum class AY { Top = -1, Center = 0, Bottom = 1 };
+
+// Collects the drawing, which OpenImageIO (the image module) renders when it is written.
 class Canvas {
 public:
-    Canvas(int w, int h) : buf_(OIIO::ImageSpec(w, h, 3, OIIO::TypeDesc::FLOAT)) {
-        const float white[3] = {1, 1, 1};
-        IBA::fill(buf_, white);
-    }
+    Canvas(int w, int h) : w_(w), h_(h) {}
     void line(int x0, int y0, int x1, int y1, const std::array<float, 3>& c) {
-        IBA::render_line(buf_, x0, y0, x1, y1, c);
+        add(DrawOp::Kind::Line, x0, y0, x1, y1, c);
     }
     void box(int x0, int y0, int x1, int y1, const std::array<float, 3>& c, bool fill) {
-        IBA::render_box(buf_, x0, y0, x1, y1, c, fill);
+        add(fill ? DrawOp::Kind::FilledBox : DrawOp::Kind::Box, x0, y0, x1, y1, c);
     }
-    // Returns false when the text could not be drawn (no font).
-    bool text(int x, int y, const std::string& s, IBA::TextAlignX ax, IBA::TextAlignY ay) {
-        if (!text_ok_) return false;
-        const float black[3] = {0, 0, 0};
-        if (!IBA::render_text(buf_, x, y, s, kFontSize, font_, black, ax, ay)) {
-            text_ok_ = false;
-            why_ = buf_.geterror();
-            if (why_.empty()) why_ = "OpenImageIO could not draw text";
-        }
-        return text_ok_;
+    void text(int x, int y, const std::string& s, AX ax, AY ay) {
+        DrawOp& op = add(DrawOp::Kind::Text, x, y, x, y, {0, 0, 0});
+        op.text = s;
+        op.font = font_;
+        op.font_size = kFontSize;
+        op.align_x = static_cast<int>(ax);
+        op.align_y = static_cast<int>(ay);
     }
-    const std::string& text_error() const { return why_; }
-    void write(const std::string& path) const {
-        const OIIO::ImageSpec& spec = buf_.spec();
+    // Writes the image; returns why text could not be drawn (no font), empty otherwise.
+    std::string write(const std::string& path) const {
+        std::vector<float> rgb;
+        const std::string text_error = image_library().draw(w_, h_, ops_, &rgb);
         render::Image image;
-        image.width = spec.width;
-        image.height = spec.height;
-        image.rgba.assign(static_cast<size_t>(spec.width) * spec.height * 4, 1.0f);
-        std::vector<float> rgb(static_cast<size_t>(spec.width) * spec.height * 3);
-        buf_.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, rgb.data());
+        image.width = w_;
+        image.height = h_;
+        image.rgba.assign(static_cast<size_t>(w_) * h_ * 4, 1.0f);
         for (size_t i = 0; i < rgb.size() / 3; ++i)
             for (int c = 0; c < 3; ++c) image.rgba[i * 4 + c] = rgb[i * 3 + c];
         OutputEncoding identity;  // the drawn values are the code values
         identity.transfer = OutputEncoding::Transfer::Linear;
         write_image(image, path, identity);
+        return text_error;
     }
 
 private:
-    OIIO::ImageBuf buf_;
+    DrawOp& add(DrawOp::Kind kind, int x0, int y0, int x1, int y1,
+                const std::array<float, 3>& c) {
+        DrawOp& op = ops_.emplace_back();
+        op.kind = kind;
+        op.x0 = x0;
+        op.y0 = y0;
+        op.x1 = x1;
+        op.y1 = y1;
+        for (int k = 0; k < 3; ++k) op.color[k] = c[k];
+        return op;
+    }
+
+    int w_, h_;
+    std::vector<DrawOp> ops_;
     std::string font_ = find_font();
-    bool text_ok_ = true;
-    std::string why_;
 };
 
 }  // namespace
@@ -172,8 +178,6 @@ std::string write_loglog_plot(const std::vector<PlotSeries>& series, const PlotO
         return bottom - static_cast<int>(std::lround(std::clamp(t, 0.0, 1.0) * (bottom - top)));
     };
     const std::array<float, 3> black{0, 0, 0}, grid{0.85f, 0.85f, 0.85f};
-    using AX = IBA::TextAlignX;
-    using AY = IBA::TextAlignY;
     // Decade grid, ticks (minor at 2..9) and labels; every other label past 8 decades.
     const int x_step = (x_hi - x_lo) > 8 ? 2 : 1, y_step = (y_hi - y_lo) > 8 ? 2 : 1;
     for (int e = x_lo; e <= x_hi; ++e) {
@@ -233,8 +237,7 @@ std::string write_loglog_plot(const std::vector<PlotSeries>& series, const PlotO
             canvas.text(lx + 34, y, series[i].name, AX::Left, AY::Center);
         }
     }
-    canvas.write(path);
-    return canvas.text_error();
+    return canvas.write(path);
 }
 
 }  // namespace glint::io

@@ -5,7 +5,10 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <string>
@@ -192,6 +195,65 @@ TEST(IoOutput, PngRoundTripIsExact) {
     ASSERT_EQ(codes.size(), size_t(17 * 9 * 3));
     for (size_t i = 0; i < codes.size(); ++i)
         ASSERT_EQ(codes[i], std::lround(std::floor(img.rgba[i / 3 * 4 + i % 3] * 255 + 0.5f)));
+    fs::remove_all(dir);
+}
+
+// The libraries the dynamic loader opened while glint rendered a one-sphere scene to `output`
+// (LD_DEBUG=files lists each one it opens, at start-up and by dlopen).
+std::string libraries_opened_for(const fs::path& dir, const std::string& output) {
+    {
+        std::ofstream scene(dir / "s.pov");
+        scene << "camera { location <0, 0, -3> look_at 0 }\n"
+                 "light_source { <2, 4, -3> color rgb 1 }\n"
+                 "sphere { 0, 1 pigment { rgb 1 } }\n";
+    }
+    const std::string log = (dir / "ld.txt").string();
+    const std::string cmd = "LD_DEBUG=files '" + std::string(GLINT_BINARY) + "' render '" +
+                            (dir / "s.pov").string() + "' -o '" + (dir / output).string() +
+                            "' --width 8 --height 8 > /dev/null 2> '" + log + "'";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    std::ifstream in(log);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// A PNG without alpha is libpng's (io/png_writer.h): a render that writes one never opens
+// OpenImageIO's module nor OpenImageIO; an EXR does (the check can see a load).
+TEST(IoOutput, PlainPngDoesNotLoadOpenImageIo) {
+    fs::path dir = temp_dir("plainpng");
+    const std::string png = libraries_opened_for(dir, "a.png");
+    EXPECT_TRUE(fs::exists(dir / "a.png"));
+    EXPECT_NE(png.find("libpng16"), std::string::npos) << png;
+    EXPECT_EQ(png.find("libglint_oiio"), std::string::npos);
+    EXPECT_EQ(png.find("libOpenImageIO"), std::string::npos);
+    const std::string exr = libraries_opened_for(dir, "a.exr");
+    EXPECT_TRUE(fs::exists(dir / "a.exr"));
+    EXPECT_NE(exr.find("libglint_oiio"), std::string::npos);
+    EXPECT_NE(exr.find("libOpenImageIO"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+// OpenImageIO reads back the colour space, the gamma and the text that libpng was given.
+TEST(IoOutput, PlainPngCarriesColorSpaceAndText) {
+    fs::path dir = temp_dir("pngtext");
+    glint::render::Image img = ramp(5, 3);
+    const std::string a = (dir / "a.png").string(), g = (dir / "g.png").string();
+    glint::io::write_image(img, a, OutputEncoding(),
+                           {{"ImageDescription", "a ramp"}, {"glint:partial", "tiles 1/2"}});
+    OutputEncoding gamma;
+    gamma.transfer = OutputEncoding::Transfer::Gamma;
+    gamma.gamma = 2.0;
+    glint::io::write_image(img, g, gamma);
+
+    auto in = OIIO::ImageInput::open(a);
+    ASSERT_TRUE(in) << OIIO::geterror();
+    EXPECT_EQ(in->spec().get_string_attribute("oiio:ColorSpace"), "sRGB");
+    EXPECT_EQ(in->spec().get_string_attribute("ImageDescription"), "a ramp");
+    EXPECT_EQ(in->spec().get_string_attribute("glint:partial"), "tiles 1/2");
+    in->close();
+    in = OIIO::ImageInput::open(g);
+    ASSERT_TRUE(in) << OIIO::geterror();
+    EXPECT_NEAR(in->spec().get_float_attribute("oiio:Gamma"), 2.0f, 1e-3);
+    in->close();
     fs::remove_all(dir);
 }
 

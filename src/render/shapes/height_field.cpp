@@ -5,7 +5,6 @@
 // grey images 65535 * grey, 8-bit colour images 256 * red + green, palette images 256 * index.
 // Intersection walks the grid cells along the ray (2D DDA) in grid space (x, z in cells,
 // y in 1/65536 units) inside the box between water_level and the highest point.
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <array>
@@ -16,6 +15,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/image_library.h"
 #include "core/image_limits.h"
 #include "core/quiet_stderr.h"
 #include "render/shapes/shapes.h"
@@ -279,29 +279,29 @@ std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const 
     const std::string& path = s.resolved_path.empty() ? s.file : s.resolved_path;
     FileLoc at = s.file_loc.line > 0 ? s.file_loc : loc;
     QuietStderr quiet;  // libpng's own lines: glint's error says what went wrong
-    auto in = OIIO::ImageInput::open(path);
+    std::string err;
+    std::unique_ptr<ImageReader> in = image_library().open(path, {}, &err);
     if (!in)
         throw Error(ErrorKind::MissingFile, at,
-                    "cannot read height_field image '" + s.file + "': " +
-                        first_line_of(OIIO::geterror()));
-    const OIIO::ImageSpec& spec = in->spec();
-    int w = spec.width, h = spec.height, nc = spec.nchannels;
+                    "cannot read height_field image '" + s.file + "': " + first_line_of(err));
+    const ImageHeader& spec = in->header();
+    int w = spec.width, h = spec.height, nc = spec.channels;
     if (w < 2 || h < 2 || nc <= 0) {
         *why = "height_field image smaller than 2x2";
         return nullptr;
     }
     check_image_size(w, h, nc, s.file, at);
     std::vector<float> raw(static_cast<size_t>(w) * h * nc);
-    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, raw.data()))
+    err = in->read(nc, raw.data());
+    if (!err.empty())
         throw Error(ErrorKind::MissingFile, at,
-                    "cannot decode height_field image '" + s.file + "': " +
-                        first_line_of(in->geterror()));
-    const std::string format = in->format_name();
-    const bool high_depth = spec.format.size() > 1;
+                    "cannot decode height_field image '" + s.file + "': " + first_line_of(err));
+    const bool png_format = spec.format == "png";
+    const bool high_depth = spec.type != PixelType::UInt8;
+    in.reset();
     const std::vector<std::array<uint8_t, 3>> palette_colors = read_palette(path);
     const bool palette = !palette_colors.empty();
-    const bool png_grey8 = format == "png" && !high_depth && !palette;
-    in->close();
+    const bool png_grey8 = png_format && !high_depth && !palette;
     const int colors = nc >= 3 ? 3 : 1;
     std::vector<uint16_t> map(static_cast<size_t>(w) * h);
     for (int z = 0; z < h; ++z) {

@@ -1,10 +1,10 @@
 #include "render/textures/image_texture.h"
 
-#include <OpenImageIO/imageio.h>
 
 #include <cmath>
 
 #include "core/error.h"
+#include "core/image_library.h"
 #include "core/image_limits.h"
 #include "core/quiet_stderr.h"
 
@@ -59,35 +59,35 @@ ImageGamma image_gamma(const scene::Scene& scene) {
 std::shared_ptr<const ImageTexture> ImageTexture::load(const scene::ImageMap& map,
                                                        const ImageGamma& gamma) {
     const std::string& path = map.resolved_path.empty() ? map.file : map.resolved_path;
-    OIIO::ImageSpec config;
-    // POV-Ray works with unassociated alpha for PNG and friends.
-    config.attribute("oiio:UnassociatedAlpha", 1);
+    std::string why;
     QuietStderr quiet;  // libpng's own lines: glint's error says what went wrong
-    auto in = OIIO::ImageInput::open(path, &config);
+    // POV-Ray works with unassociated alpha for PNG and friends.
+    std::unique_ptr<ImageReader> in =
+        image_library().open(path, {{"oiio:UnassociatedAlpha", 1}}, &why);
     if (!in) {
         throw Error(ErrorKind::MissingFile, map.loc,
-                    "cannot read image '" + map.file + "': " + first_line_of(OIIO::geterror()));
+                    "cannot read image '" + map.file + "': " + first_line_of(why));
     }
-    const OIIO::ImageSpec& spec = in->spec();
-    int w = spec.width, h = spec.height, nc = spec.nchannels;
+    const ImageHeader& spec = in->header();
+    int w = spec.width, h = spec.height, nc = spec.channels;
     if (w <= 0 || h <= 0 || nc <= 0) {
         throw Error(ErrorKind::MissingFile, map.loc, "image '" + map.file + "' is empty");
     }
     check_image_size(w, h, nc, map.file, map.loc);
     std::vector<float> raw(static_cast<size_t>(w) * h * nc);
-    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, raw.data())) {
+    why = in->read(nc, raw.data());
+    if (!why.empty()) {
         throw Error(ErrorKind::MissingFile, map.loc,
-                    "cannot decode image '" + map.file + "': " + first_line_of(in->geterror()));
+                    "cannot decode image '" + map.file + "': " + first_line_of(why));
     }
-    bool is_float = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
-                    spec.format.basetype == OIIO::TypeDesc::HALF ||
-                    spec.format.basetype == OIIO::TypeDesc::DOUBLE;
+    bool is_float = is_float_pixel(spec.type);
     int alpha_channel = spec.alpha_channel;
     if (alpha_channel < 0 && (nc == 2 || nc == 4)) alpha_channel = nc - 1;
     int color_channels = nc >= 3 ? 3 : 1;
-    std::string colorspace = spec.get_string_attribute("oiio:ColorSpace");
-    float file_gamma = spec.get_float_attribute("oiio:Gamma", 0.0f);
-    in->close();
+    std::string colorspace = spec.colorspace;
+    float file_gamma = spec.gamma;
+    const bool tabulate = spec.type == PixelType::UInt8;
+    in.reset();
 
     // Transfer function from file values to the working space (POV-Ray 3.7 parstxtr.cpp,
     // Parse_Image: defaultGamma / workingGamma per gamma mode; `gamma G` overrides).
@@ -119,7 +119,6 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const scene::ImageMap& ma
     };
     // 8-bit images have 256 distinct values: tabulate the transfer function.
     float table[256];
-    bool tabulate = spec.format.basetype == OIIO::TypeDesc::UINT8;
     if (tabulate)
         for (int i = 0; i < 256; ++i) table[i] = static_cast<float>(decode(i / 255.0));
     auto convert = [&](float v) -> float {
