@@ -69,6 +69,23 @@ public:
         return false;
     }
 
+    bool occluded(const Ray& ray, int* hint) const override {
+        if (!valid(ray)) return false;
+        const int h = *hint;
+        if (h >= 0 && h < static_cast<int>(nodes_.size()) && nodes_[h]->occludes(ray, ray.tmax))
+            return true;
+        auto visit = [&](int i, double&) {
+            if (i == h || !nodes_[i]->occludes(ray, ray.tmax)) return false;
+            *hint = i;
+            return true;
+        };
+        double tmax = ray.tmax;
+        if (bvh_.traverse(ray, tmax, visit)) return true;
+        for (int i : unbounded_)
+            if (visit(i, tmax)) return true;
+        return false;
+    }
+
     Bounds3 bounds() const override { return bounds_; }
 
 private:

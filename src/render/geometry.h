@@ -20,6 +20,14 @@ public:
     virtual bool intersect(const Ray& ray, Hit* hit) const = 0;
     // Any hit with 0 < t < ray.tmax by an object without kNoShadow.
     virtual bool occluded(const Ray& ray) const = 0;
+    // The same answer, testing first the object *hint names (what blocked the previous
+    // shadow ray towards the same light, POV-Ray's shadow cache) and leaving there the one
+    // that blocks this ray. Any value of *hint is valid; -1 names none. Only the speed depends
+    // on it, never the result.
+    virtual bool occluded(const Ray& ray, int* hint) const {
+        (void)hint;
+        return occluded(ray);
+    }
     virtual Bounds3 bounds() const = 0;  // may be infinite (planes)
 };
 

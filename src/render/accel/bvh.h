@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -20,16 +21,28 @@
 namespace glint::render {
 
 // Nearest floats below / above a double: float boxes that enclose double ones, float ray data
-// that errs on the safe side.
+// that errs on the safe side. Per ray, so stepping is done on the bits (std::nextafter is a
+// library call).
+inline float float_step(float f, bool up) {
+    if (f == 0) return up ? std::numeric_limits<float>::denorm_min()
+                          : -std::numeric_limits<float>::denorm_min();
+    if (std::isnan(f)) return f;
+    if (std::isinf(f))  // beyond the largest float, or back to it
+        return (f > 0) == up ? f : std::copysign(std::numeric_limits<float>::max(), f);
+    uint32_t bits;
+    std::memcpy(&bits, &f, sizeof bits);
+    // Away from zero when the step goes the way of the sign, towards it otherwise.
+    bits = ((f > 0) == up) ? bits + 1 : bits - 1;
+    std::memcpy(&f, &bits, sizeof f);
+    return f;
+}
 inline float float_down(double v) {
     const float f = static_cast<float>(v);
-    return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity())
-                                      : f;
+    return static_cast<double>(f) > v ? float_step(f, false) : f;
 }
 inline float float_up(double v) {
     const float f = static_cast<float>(v);
-    return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity())
-                                      : f;
+    return static_cast<double>(f) < v ? float_step(f, true) : f;
 }
 
 struct BvhBinaryNode;  // the build's binary tree (bvh.cpp)

@@ -1,6 +1,7 @@
 #include "render/integrators/whitted.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "core/float.h"
@@ -10,6 +11,18 @@
 
 namespace glint::render {
 namespace {
+
+// The shadow cache of one thread: what blocked the last shadow ray towards each light, for
+// the integrator whose serial it holds.
+struct ShadowCache {
+    uint64_t serial = 0;
+    std::vector<int> blocker;
+};
+
+uint64_t next_serial() {
+    static std::atomic<uint64_t> counter{0};
+    return ++counter;
+}
 
 // Shadow rays end this fraction short of the light so the light's own position never counts.
 constexpr double kShadowEnd = 1.0 - 1.0e-9;
@@ -102,7 +115,8 @@ Whitted::Whitted(const scene::Scene& scene, const scene::Features& features,
       lights_(prepare_lights(whitted_lights(scene.lights))),
       max_level_(scene.global.max_trace_level),
       adc_bailout_(scene.global.adc_bailout),
-      legacy_(scene.version < 3.7) {
+      legacy_(scene.version < 3.7),
+      serial_(next_serial()) {
     finishes_.reserve(scene.materials.size());
     for (const scene::Material& m : scene.materials) {
         finishes_.emplace_back(m.texture.finish);
@@ -346,7 +360,8 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
         Color tmp = pig.rgb * f.ambient * scene_.global.ambient_light * att;
         tmp += pig.rgb * f.emission * att;
         if (features_.lights && (f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0)) {
-            for (const PreparedLight& light : lights_) {
+            for (size_t light_index = 0; light_index < lights_.size(); ++light_index) {
+                const PreparedLight& light = lights_[light_index];
                 LightSample ls;
                 if (!light.sample(hit.p, &ls)) continue;
                 // Blender lights: Cycles' falloff, from the centre (blender_lights.h).
@@ -361,10 +376,10 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
                         lc = area_light_shadow(
                             light, hit.p, lc, [&](const Vec3& d, double depth, const Color& c) {
                                 return c * shadow_filter(hit.p, hit, LightSample{d, depth, c},
-                                                         state);
+                                                         state, light_index);
                             });
                     } else {
-                        lc = lc * shadow_filter(hit.p, hit, ls, state);
+                        lc = lc * shadow_filter(hit.p, hit, ls, state, light_index);
                     }
                     if (!(std::fabs(lc.r) > kPovEpsilon || std::fabs(lc.g) > kPovEpsilon ||
                           std::fabs(lc.b) > kPovEpsilon))
@@ -506,13 +521,23 @@ bool Whitted::refract(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3&
 }
 
 Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls,
-                             const RayState& eye) const {
+                             const RayState& eye, size_t light) const {
     const Vec3 target = p + ls.dir * ls.distance;
     Ray r;
     r.origin = offset_ray_origin(p, at.p_error, at.ng, ls.dir);
     r.dir = target - r.origin;
     r.tmax = kShadowEnd;
-    if (!features_.transparency) return geometry_.occluded(r) ? Color() : Color(1.0);
+    if (!features_.transparency) {
+        // Per thread, per light: the object that blocked the last shadow ray, tried first
+        // (neighbouring pixels and an area light's samples are mostly blocked by the same
+        // one). The answer does not depend on it, so neither does the image.
+        thread_local ShadowCache cache;
+        if (cache.serial != serial_) {
+            cache.serial = serial_;
+            cache.blocker.assign(lights_.size(), -1);
+        }
+        return geometry_.occluded(r, &cache.blocker[light]) ? Color() : Color(1.0);
+    }
 
     // TracePointLightShadowRay: walk through transparent objects, filtering the light. The
     // shadow ray starts with the eye ray's interiors and toggles each object it crosses

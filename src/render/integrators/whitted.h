@@ -74,8 +74,9 @@ private:
     Color shadow_texture(const scene::Texture& tex, const PatternPoint& at, double caustics,
                          const Vec3& raw_normal, const Vec3& dir) const;
     const ClassicFinish& finish_for(const scene::Finish& f, int material) const;
+    // `light` indexes lights_ (its shadow cache slot).
     Color shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls,
-                        const RayState& eye) const;
+                        const RayState& eye, size_t light) const;
     // `n` is the (perturbed) normal, `raw_n` the surface normal facing the ray.
     Color reflect(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3& raw_n, double weight,
                   const RayState& state) const;
@@ -101,6 +102,8 @@ private:
     double adc_bailout_;
     bool legacy_;  // #version < 3.7: POV-Ray's 3.6 transparency and sky formulas
     Interiors camera_interiors_;
+    // Names this integrator's slots in each thread's shadow cache (whitted.cpp).
+    uint64_t serial_;
 };
 
 }  // namespace glint::render
