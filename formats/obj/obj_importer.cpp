@@ -1,15 +1,16 @@
 #include "formats/obj/obj_importer.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <map>
-#include <regex>
 #include <set>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <tuple>
 
@@ -31,12 +32,24 @@ FileLoc file_loc(const std::shared_ptr<const std::string>& file, int line, int c
     return l;
 }
 
-// tinyobjloader reports lines as "... line 12.)" or "(line 12.)"; the first such number.
+// tinyobjloader reports lines as "(line 12.)", "... line 12.)" or "line: 12", after any text it
+// quotes from the file (a material name may read "line4444..."): the last such number, 0 when
+// there is none or it does not fit an int.
 int reported_line(const std::string& message) {
-    static const std::regex kLine(R"(line:?\s*(\d+))");
-    std::smatch m;
-    if (std::regex_search(message, m, kLine)) return std::stoi(m[1]);
-    return 0;
+    int found = 0;
+    for (size_t at = message.find("line"); at != std::string::npos;
+         at = message.find("line", at + 1)) {
+        size_t i = at + 4;
+        if (i < message.size() && message[i] == ':') ++i;
+        while (i < message.size() && message[i] == ' ') ++i;
+        const size_t digits = i;
+        long long value = 0;
+        for (; i < message.size() && std::isdigit(static_cast<unsigned char>(message[i])); ++i)
+            value = std::min(value * 10 + (message[i] - '0'), 1LL << 40);
+        if (i == digits) continue;
+        found = value <= std::numeric_limits<int>::max() ? static_cast<int>(value) : 0;
+    }
+    return found;
 }
 
 std::string first_line(const std::string& s) {
