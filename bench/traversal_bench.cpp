@@ -191,6 +191,27 @@ const GlintScene& glint_scene() {
 
 const char* set_name(int which) { return which == 0 ? "coherent" : "incoherent"; }
 
+// Rays per second (items) and the fraction of rays that hit, for a benchmark that traced every
+// ray of `rays` per iteration.
+void report(benchmark::State& state, const RaySet& rays, const char* label, size_t hits) {
+    state.SetLabel(label);
+    state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * rays.size()));
+    state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(rays.size());
+}
+
+// Traces ray set state.range(0) one ray at a time: hit(i) says whether ray i hit.
+template <class Hit>
+void trace_one_by_one(benchmark::State& state, Hit&& hit) {
+    const int which = static_cast<int>(state.range(0));
+    const RaySet& rays = ray_set(which);
+    size_t hits = 0;
+    for (auto _ : state) {
+        hits = 0;
+        for (size_t i = 0; i < rays.size(); ++i) hits += hit(rays, i);
+    }
+    report(state, rays, set_name(which), hits);
+}
+
 void BM_GlintBuild(benchmark::State& state) {
     const glint::scene::Mesh mesh = glint_mesh(test_mesh());
     size_t bytes = 0;
@@ -206,35 +227,19 @@ void BM_GlintBuild(benchmark::State& state) {
 BENCHMARK(BM_GlintBuild)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_GlintClosest(benchmark::State& state) {
-    const int which = static_cast<int>(state.range(0));
-    const RaySet& rays = ray_set(which);
     const auto& prim = *glint_scene().prim;
-    size_t hits = 0;
-    for (auto _ : state) {
-        hits = 0;
-        glint::render::LocalHit h;
-        for (size_t i = 0; i < rays.size(); ++i)
-            hits += prim.intersect(glint_ray(rays, i), glint::kInfinity, &h);
-    }
-    state.SetLabel(set_name(which));
-    state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * rays.size()));
-    state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(rays.size());
+    glint::render::LocalHit h;
+    trace_one_by_one(state, [&](const RaySet& rays, size_t i) {
+        return prim.intersect(glint_ray(rays, i), glint::kInfinity, &h);
+    });
 }
 BENCHMARK(BM_GlintClosest)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_GlintOccluded(benchmark::State& state) {
-    const int which = static_cast<int>(state.range(0));
-    const RaySet& rays = ray_set(which);
     const auto& prim = *glint_scene().prim;
-    size_t hits = 0;
-    for (auto _ : state) {
-        hits = 0;
-        for (size_t i = 0; i < rays.size(); ++i)
-            hits += prim.occludes(glint_ray(rays, i), glint::kInfinity);
-    }
-    state.SetLabel(set_name(which));
-    state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * rays.size()));
-    state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(rays.size());
+    trace_one_by_one(state, [&](const RaySet& rays, size_t i) {
+        return prim.occludes(glint_ray(rays, i), glint::kInfinity);
+    });
 }
 BENCHMARK(BM_GlintOccluded)->Arg(1)->Unit(benchmark::kMillisecond);
 
@@ -312,23 +317,14 @@ void BM_EmbreeBuild(benchmark::State& state) {
 BENCHMARK(BM_EmbreeBuild)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_EmbreeClosest(benchmark::State& state) {
-    const int which = static_cast<int>(state.range(0));
-    const RaySet& rays = ray_set(which);
     RTCScene scene = embree_scene().scene;
-    size_t hits = 0;
-    for (auto _ : state) {
-        hits = 0;
-        RTCIntersectContext ctx;
-        rtcInitIntersectContext(&ctx);
-        for (size_t i = 0; i < rays.size(); ++i) {
-            RTCRayHit rh = embree_ray(rays, i);
-            rtcIntersect1(scene, &ctx, &rh);
-            hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-        }
-    }
-    state.SetLabel(set_name(which));
-    state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * rays.size()));
-    state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(rays.size());
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    trace_one_by_one(state, [&](const RaySet& rays, size_t i) {
+        RTCRayHit rh = embree_ray(rays, i);
+        rtcIntersect1(scene, &ctx, &rh);
+        return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    });
 }
 BENCHMARK(BM_EmbreeClosest)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
@@ -365,30 +361,19 @@ void BM_EmbreeClosest16(benchmark::State& state) {
             for (int k = 0; k < 16; ++k) hits += p.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID;
         }
     }
-    state.SetLabel("coherent");
-    state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * rays.size()));
-    state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(rays.size());
+    report(state, rays, "coherent", hits);
 }
 BENCHMARK(BM_EmbreeClosest16)->Unit(benchmark::kMillisecond);
 
 void BM_EmbreeOccluded(benchmark::State& state) {
-    const int which = static_cast<int>(state.range(0));
-    const RaySet& rays = ray_set(which);
     RTCScene scene = embree_scene().scene;
-    size_t hits = 0;
-    for (auto _ : state) {
-        hits = 0;
-        RTCIntersectContext ctx;
-        rtcInitIntersectContext(&ctx);
-        for (size_t i = 0; i < rays.size(); ++i) {
-            RTCRay r = embree_ray(rays, i).ray;
-            rtcOccluded1(scene, &ctx, &r);
-            hits += r.tfar < 0;
-        }
-    }
-    state.SetLabel(set_name(which));
-    state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * rays.size()));
-    state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(rays.size());
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    trace_one_by_one(state, [&](const RaySet& rays, size_t i) {
+        RTCRay r = embree_ray(rays, i).ray;
+        rtcOccluded1(scene, &ctx, &r);
+        return r.tfar < 0;
+    });
 }
 BENCHMARK(BM_EmbreeOccluded)->Arg(1)->Unit(benchmark::kMillisecond);
 

@@ -139,11 +139,10 @@ std::vector<float> read_all(const std::string& path, OpenedImage& img) {
     return data;
 }
 
-// 8-bit code values of [0, 1] floats, rounded to nearest as OpenImageIO converts.
+// 8-bit code values of [0, 1] floats (clipped, rounded to nearest).
 std::vector<unsigned char> to_u8(const std::vector<float>& v) {
     std::vector<unsigned char> out(v.size());
-    for (size_t i = 0; i < v.size(); ++i)
-        out[i] = static_cast<unsigned char>(std::clamp(v[i], 0.0f, 1.0f) * 255.0f + 0.5f);
+    for (size_t i = 0; i < v.size(); ++i) out[i] = static_cast<unsigned char>(quantize(v[i], 255));
     return out;
 }
 

@@ -15,7 +15,7 @@ namespace glint::render {
 namespace {
 
 // Memory per triangle (bench/traversal_bench.cpp measures it): the vertex positions (shared by
-// about two triangles each), 12 bytes of vertex indices, 4 of face index and the 4-wide BVH's
+// about two triangles each), 12 bytes of vertex indices, 4 of face index and the BVH's
 // share; normal, uv and material indices only for meshes that have them, and none where they
 // repeat the vertex indices (mesh2 without normal_indices, OBJ written per vertex).
 class MeshPrim final : public Primitive {
