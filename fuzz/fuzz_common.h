@@ -40,6 +40,12 @@ inline pov::ParseOptions fuzz_options() {
     // the throughput: on the same loaded 2-core machine fuzz_pov made ~730 executions a
     // second at 100 000 tokens and ~1200 at 10 000.
     o.max_tokens = 10'000;
+    // Strings and arrays low too: `S = concat(S, S)` in a loop reaches the default 100 MB
+    // in 23 passes, which took 1.3 s of page faults under ASan (0.5 s in a release build)
+    // and ran past -timeout on a loaded machine. glint's own limit is tested by the error
+    // case limit_string_length.
+    o.max_string_length = 1'000'000;
+    o.max_array_elements = 100'000;
     // On libFuzzer's thread (8 MiB of stack): half of it for the parser's nesting.
     o.parse_on_calling_thread = true;
     o.max_parse_stack_mib = 4;
