@@ -33,19 +33,23 @@ public:
         // A non-finite ray (a bug upstream) hits nothing rather than spreading NaN.
         if (!valid(ray)) return false;
         // Two hits, the best so far and the candidate, swapped rather than copied (a node
-        // writes the whole hit when it reports one, ObjectNode::intersect).
+        // writes the whole hit when it reports one, ObjectNode::intersect). Each stays in its
+        // object's space until it is known to be the nearest (intersect_deferred).
         LocalHit hits[2];
         LocalHit* best = &hits[0];
         LocalHit* cand = &hits[1];
+        bool best_deferred = false;
         int best_i = INT_MAX;
         // Equal t: the lower object index wins, so the result does not depend on the order in
         // which the BVH visits objects.
         auto visit = [&](int i, double& tmax) {
             bool found = best_i != INT_MAX;
             double limit = found ? next_up(best->t) : tmax;
-            if (nodes_[i]->intersect(ray, limit, false, cand) &&
+            bool deferred = false;
+            if (nodes_[i]->intersect_deferred(ray, limit, cand, &deferred) &&
                 (!found || cand->t < best->t || i < best_i)) {
                 std::swap(best, cand);
+                best_deferred = deferred;
                 best_i = i;
                 tmax = best->t;
             }
@@ -55,6 +59,7 @@ public:
         bvh_.traverse(ray, tmax, visit);
         for (int i : unbounded_) visit(i, tmax);
         if (best_i == INT_MAX) return false;
+        if (best_deferred) nodes_[best_i]->finish_deferred(best);
         to_hit(*best, ids_[best_i], hit);
         return true;
     }

@@ -37,6 +37,13 @@ public:
         if (s.t1 > 0 && s.t1 < tmax) fill(ray, s.t1, s.axis1, s.side1, &hits->emplace_back());
     }
 
+    void intersect_all_points(const Ray& ray, double tmax, HitList* hits) const override {
+        Slab s;
+        if (!slabs(ray, &s)) return;
+        if (s.t0 > 0 && s.t0 < tmax) fill_point(ray, s.t0, s.axis0, s.side0, &hits->emplace_back());
+        if (s.t1 > 0 && s.t1 < tmax) fill_point(ray, s.t1, s.axis1, s.side1, &hits->emplace_back());
+    }
+
     bool inside(const Vec3& p) const override {
         return p.x >= lo_.x && p.x <= hi_.x && p.y >= lo_.y && p.y <= hi_.y && p.z >= lo_.z &&
                p.z <= hi_.z;
@@ -77,12 +84,17 @@ private:
         return s->axis0 >= 0 && s->axis1 >= 0 && s->t0 <= s->t1;
     }
 
-    void fill(const Ray& ray, double t, int axis, int side, LocalHit* h) const {
+    void fill_point(const Ray& ray, double t, int axis, int side, LocalHit* h) const {
         Vec3 p = ray.origin + ray.dir * t;
         p = min(max(p, lo_), hi_);
         p[axis] = side ? hi_[axis] : lo_[axis];
         h->t = t;
         h->p = p;
+    }
+
+    void fill(const Ray& ray, double t, int axis, int side, LocalHit* h) const {
+        fill_point(ray, t, axis, side, h);
+        const Vec3& p = h->p;
         h->p_error = rounding_error(p, 1);
         Vec3 n(0, 0, 0);
         n[axis] = side ? 1 : -1;

@@ -241,6 +241,11 @@ bool ObjectNode::union_intersect(const Ray& ray, double tmax, bool shadow, Local
     return best >= 0;
 }
 
+void ObjectNode::finish_point(LocalHit* h) const {
+    if (!identity_) h->p = xf_.point(h->p);
+    h->flags |= flags_;
+}
+
 void ObjectNode::finish(LocalHit* h) const {
     if (!identity_) transform_hit(xf_, h);
     if (inverse_) {
@@ -277,7 +282,7 @@ bool ObjectNode::intersect(const Ray& ray, double tmax, bool shadow, LocalHit* h
     if (!bounded_by_.empty() && !passes_bound(ray)) return false;
     if (clipped_by_.empty()) return intersect_unclipped(ray, tmax, shadow, hit);
     HitList all;
-    intersect_all_unclipped(ray, tmax, &all);
+    intersect_all_unclipped(ray, tmax, &all, false);
     bool found = false;
     for (auto& h : all) {
         if (h.t >= tmax || (found && h.t >= hit->t)) continue;
@@ -287,6 +292,13 @@ bool ObjectNode::intersect(const Ray& ray, double tmax, bool shadow, LocalHit* h
         found = true;
     }
     return found;
+}
+
+bool ObjectNode::intersect_deferred(const Ray& ray, double tmax, LocalHit* hit,
+                                    bool* deferred) const {
+    *deferred = clipped_by_.empty() && bounded_by_.empty();
+    if (!*deferred) return intersect(ray, tmax, false, hit);
+    return intersect_local(to_local(xf_, identity_, ray), tmax, false, hit);
 }
 
 bool ObjectNode::occludes(const Ray& ray, double tmax) const {
@@ -306,18 +318,35 @@ bool ObjectNode::occludes(const Ray& ray, double tmax) const {
             if (children_[i]->occludes(local, tmax)) return true;
         return false;
     }
+    if (is_csg_ && clipped_by_.empty() && bounded_by_.empty())
+        return csg_occludes(to_local(xf_, identity_, ray), tmax);
     LocalHit h;
     return intersect(ray, tmax, true, &h);
 }
 
-void ObjectNode::intersect_all(const Ray& ray, double tmax, HitList* hits) const {
+// The same answer as intersect(..., shadow = true) finding a hit, without its cost: no sort,
+// no normals or error bounds carried through transforms, and no further child once one
+// surface is kept. (A union never comes here: occludes() asks its children directly.)
+bool ObjectNode::csg_occludes(const Ray& ray, double tmax) const {
+    HitList hits;
+    for (size_t i = 0; i < children_.size(); ++i) {
+        hits.clear();
+        children_[i]->intersect_all(ray, tmax, &hits, true);
+        for (const LocalHit& h : hits)
+            if (!(h.flags & kNoShadow) && csg_keeps(i, h.p)) return true;
+    }
+    return false;
+}
+
+void ObjectNode::intersect_all(const Ray& ray, double tmax, HitList* hits,
+                               bool points_only) const {
     if (!bounded_by_.empty() && !passes_bound(ray)) return;
     if (clipped_by_.empty()) {
-        intersect_all_unclipped(ray, tmax, hits);
+        intersect_all_unclipped(ray, tmax, hits, points_only);
         return;
     }
     size_t first = hits->size();
-    intersect_all_unclipped(ray, tmax, hits);
+    intersect_all_unclipped(ray, tmax, hits, points_only);
     auto keep = std::remove_if(hits->begin() + first, hits->end(),
                                [&](const LocalHit& h) { return !passes_clip(h.p); });
     hits->truncate(static_cast<size_t>(keep - hits->begin()));
@@ -336,11 +365,16 @@ bool ObjectNode::intersect_unclipped(const Ray& ray, double tmax, bool shadow,
     return true;
 }
 
-void ObjectNode::intersect_all_unclipped(const Ray& ray, double tmax,
-                                         HitList* hits) const {
+void ObjectNode::intersect_all_unclipped(const Ray& ray, double tmax, HitList* hits,
+                                         bool points_only) const {
     size_t first = hits->size();
-    intersect_all_local(to_local(xf_, identity_, ray), tmax, hits);
-    for (size_t i = first; i < hits->size(); ++i) finish(&(*hits)[i]);
+    intersect_all_local(to_local(xf_, identity_, ray), tmax, hits, points_only);
+    for (size_t i = first; i < hits->size(); ++i) {
+        if (points_only)
+            finish_point(&(*hits)[i]);
+        else
+            finish(&(*hits)[i]);
+    }
 }
 
 bool ObjectNode::csg_keeps(size_t i, const Vec3& p) const {
@@ -399,25 +433,28 @@ bool ObjectNode::intersect_local(const Ray& ray, double tmax, bool shadow, Local
     return found;
 }
 
-void ObjectNode::intersect_all_local(const Ray& ray, double tmax,
-                                     HitList* hits) const {
+void ObjectNode::intersect_all_local(const Ray& ray, double tmax, HitList* hits,
+                                     bool points_only) const {
     if (prim_) {
-        prim_->intersect_all(ray, tmax, hits);
+        if (points_only)
+            prim_->intersect_all_points(ray, tmax, hits);
+        else
+            prim_->intersect_all(ray, tmax, hits);
         return;
     }
     for (size_t i = 0; i < children_.size(); ++i) {
         size_t first = hits->size();
-        children_[i]->intersect_all(ray, tmax, hits);
+        children_[i]->intersect_all(ray, tmax, hits, points_only);
         if (op_ == scene::CsgOp::Union) continue;
         size_t w = first;
         for (size_t k = first; k < hits->size(); ++k) {
-            LocalHit h = (*hits)[k];
-            if (!csg_keeps(i, h.p)) continue;
+            if (!csg_keeps(i, (*hits)[k].p)) continue;
+            if (w != k) (*hits)[w] = (*hits)[k];
+            LocalHit& h = (*hits)[w++];
             if (op_ == scene::CsgOp::Difference && i > 0) {
                 h.ng = -h.ng;
                 h.n = -h.n;
             }
-            (*hits)[w++] = h;
         }
         hits->truncate(w);
     }

@@ -25,10 +25,19 @@ public:
     // Closest hit with 0 < t < tmax. With `shadow`, surfaces of no_shadow objects are ignored
     // (they still shape CSG results). A hit writes all of *hit; a miss leaves it alone.
     bool intersect(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
+    // intersect() without the last step when it can be left out: *deferred says whether the
+    // hit is still in this node's object space, to be carried out by finish_deferred(). The
+    // scene's BVH asks every candidate object and keeps one hit, so only that one pays for
+    // the transform of its normals and error bound. (t is the same in both spaces.)
+    bool intersect_deferred(const Ray& ray, double tmax, LocalHit* hit, bool* deferred) const;
+    void finish_deferred(LocalHit* hit) const { finish(hit); }
     // Whether any shadow-casting surface lies at 0 < t < tmax.
     bool occludes(const Ray& ray, double tmax) const;
-    // Every surviving hit with 0 < t < tmax, unsorted.
-    void intersect_all(const Ray& ray, double tmax, HitList* hits) const;
+    // Every surviving hit with 0 < t < tmax, unsorted. With `points_only`, each hit's point is
+    // carried into parent space but its normals and error bound are not (what shadow rays
+    // through CSG need: where the surface is, to test it against the other children).
+    void intersect_all(const Ray& ray, double tmax, HitList* hits,
+                       bool points_only = false) const;
     bool inside(const Vec3& p) const;
     const Bounds3& bounds() const { return bounds_; }  // parent space; may be infinite
     uint32_t flags() const { return flags_; }
@@ -37,16 +46,21 @@ private:
     ObjectNode() = default;
     // The node's own surfaces before clipping, in parent space.
     bool intersect_unclipped(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
-    void intersect_all_unclipped(const Ray& ray, double tmax, HitList* hits) const;
+    void intersect_all_unclipped(const Ray& ray, double tmax, HitList* hits,
+                                 bool points_only) const;
     // In object space (the ray already transformed).
     bool intersect_local(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
-    void intersect_all_local(const Ray& ray, double tmax, HitList* hits) const;
+    void intersect_all_local(const Ray& ray, double tmax, HitList* hits, bool points_only) const;
+    // Whether a shadow-casting surface of this CSG (not a union) lies at 0 < t < tmax, in
+    // object space: stops at the first surface the operation keeps.
+    bool csg_occludes(const Ray& ray, double tmax) const;
     bool inside_local(const Vec3& p) const;
     bool csg_keeps(size_t child, const Vec3& p) const;
     bool passes_bound(const Ray& ray) const;
     bool passes_clip(const Vec3& p) const;
     // Object space -> parent space, with inverse/material/flags applied.
     void finish(LocalHit* h) const;
+    void finish_point(LocalHit* h) const;
     void compute_bounds();
     void build_child_bvh();
     bool union_intersect(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;

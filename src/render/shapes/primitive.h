@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <memory>
+#include <new>
+#include <type_traits>
 #include <vector>
 
 #include "core/float.h"
@@ -42,12 +44,9 @@ public:
     HitList& operator=(const HitList&) = delete;
 
     LocalHit& emplace_back() {
-        if (!spilled_ && n_ < kInline) {
-            inline_[n_] = LocalHit();
-            return inline_[n_++];
-        }
+        if (!spilled_ && n_ < kInline) return *new (inline_ + n_++ * sizeof(LocalHit)) LocalHit();
         if (!spilled_) {
-            heap_.assign(inline_, inline_ + n_);
+            heap_.assign(begin(), end());
             spilled_ = true;
         }
         ++n_;
@@ -56,9 +55,14 @@ public:
     void push_back(const LocalHit& h) { emplace_back() = h; }
     size_t size() const { return n_; }
     bool empty() const { return n_ == 0; }
-    LocalHit* begin() { return spilled_ ? heap_.data() : inline_; }
+    LocalHit* begin() {
+        return spilled_ ? heap_.data() : std::launder(reinterpret_cast<LocalHit*>(inline_));
+    }
     LocalHit* end() { return begin() + n_; }
-    const LocalHit* begin() const { return spilled_ ? heap_.data() : inline_; }
+    const LocalHit* begin() const {
+        return spilled_ ? heap_.data()
+                        : std::launder(reinterpret_cast<const LocalHit*>(inline_));
+    }
     const LocalHit* end() const { return begin() + n_; }
     LocalHit& operator[](size_t i) { return begin()[i]; }
     const LocalHit& operator[](size_t i) const { return begin()[i]; }
@@ -71,7 +75,10 @@ public:
     void clear() { truncate(0); }
 
 private:
-    LocalHit inline_[kInline];
+    // Raw storage, made into hits only as they are added: a HitList is made per CSG query, and
+    // constructing all eight 240-byte hits up front cost more than most queries.
+    static_assert(std::is_trivially_destructible_v<LocalHit>);
+    alignas(LocalHit) unsigned char inline_[kInline * sizeof(LocalHit)];
     std::vector<LocalHit> heap_;
     size_t n_ = 0;
     bool spilled_ = false;
@@ -86,6 +93,11 @@ public:
     virtual bool intersect(const Ray& ray, double tmax, LocalHit* hit) const = 0;
     // Appends every hit with 0 < t < tmax, in any order.
     virtual void intersect_all(const Ray& ray, double tmax, HitList* hits) const = 0;
+    // intersect_all() for shadow rays through CSG, which read only each hit's t and p: shapes
+    // whose normals or uv cost something may leave them out.
+    virtual void intersect_all_points(const Ray& ray, double tmax, HitList* hits) const {
+        intersect_all(ray, tmax, hits);
+    }
     // Any hit with 0 < t < tmax (shadow rays); shapes with many surfaces stop at the first.
     virtual bool occludes(const Ray& ray, double tmax) const {
         LocalHit h;
