@@ -31,7 +31,8 @@ double half_area(const Bounds3& b) {
 
 }  // namespace
 
-Bvh::Bvh(const std::vector<Bounds3>& prim_bounds, int max_leaf) {
+Bvh::Bvh(const std::vector<Bounds3>& prim_bounds, int max_leaf, int block)
+    : block_(std::max(block, 1)) {
     std::vector<int> ids;
     std::vector<Vec3> centroids(prim_bounds.size());
     for (size_t i = 0; i < prim_bounds.size(); ++i) {
@@ -77,6 +78,7 @@ int Bvh::build(std::vector<int>& ids, int begin, int end, const std::vector<Boun
         nodes_[self].box[0][a] = float_down(box.lo[a]);
         nodes_[self].box[1][a] = float_up(box.hi[a]);
     }
+    auto blocks = [this](int n) { return (n + block_ - 1) / block_; };
     int count = end - begin;
     if (count <= max_leaf) {
         set_leaf();
@@ -121,13 +123,13 @@ int Bvh::build(std::vector<int>& ids, int begin, int end, const std::vector<Boun
         for (int k = kBins - 1; k > 0; --k) {
             acc.extend(bins[k].b);
             n += bins[k].n;
-            double cost = left_area[k - 1] * left_n[k - 1] + half_area(acc) * n;
+            double cost = left_area[k - 1] * blocks(left_n[k - 1]) + half_area(acc) * blocks(n);
             if (cost < best) {
                 best = cost;
                 best_k = k;
             }
         }
-        double leaf_cost = half_area(box) * count;
+        double leaf_cost = half_area(box) * blocks(count);
         // Traversal costs about one primitive test per node (relative cost 1).
         if (count <= max_leaf * 4 && count <= 255 && leaf_cost <= best + half_area(box)) {
             set_leaf();

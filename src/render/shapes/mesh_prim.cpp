@@ -3,168 +3,171 @@
 #include "render/shapes/mesh_prim.h"
 
 #include <array>
+#include <cstring>
 #include <cmath>
 #include <optional>
 #include <string>
 
 #include "render/accel/bvh.h"
 #include "render/shapes/object_node.h"
+#include "render/accel/wide_bvh.h"
+#include "render/shapes/mesh_kernels.h"
 #include "render/shapes/triangle.h"
 
 namespace glint::render {
 namespace {
 
-// Memory per triangle (bench/traversal_bench.cpp measures it): the vertex positions (shared by
-// about two triangles each), 12 bytes of vertex indices, 4 of face index and the BVH's
-// share; normal, uv and material indices only for meshes that have them, and none where they
-// repeat the vertex indices (mesh2 without normal_indices, OBJ written per vertex).
+// Memory per triangle (bench/traversal_bench.cpp measures it): 36 bytes of float vertices and
+// 4 of face index in the kernels' leaf layout (mesh_kernels.h), and the four-wide BVH's share;
+// normal, uv and material indices only for meshes that have them.
+//
+// The vertices are floats relative to the centre of the mesh's box (POV-Ray keeps mesh vertices
+// in single precision too, mesh.h): a triangle's corners are origin + float offset exactly, the
+// ray is moved into that frame once, and the watertight test runs in double on the widened
+// floats. Precision follows the mesh's size, not its distance from the scene's origin, so a
+// mesh 1e5 units away keeps the detail of one at the origin.
 class MeshPrim final : public Primitive {
 public:
-    MeshPrim(const scene::Mesh& mesh, const std::vector<int>& faces, const Transform* baked)
-        : pos_(mesh.positions) {
+    MeshPrim(const scene::Mesh& mesh, const std::vector<int>& faces, const Transform* baked) {
         if (baked) {
             baked_ = true;
             xf_ = *baked;
             const auto& m = xf_.matrix().m;
             for (int a = 0; a < 3; ++a) flip_[a] = m[a][a] < 0;
         }
-        std::vector<Bounds3> boxes(faces.size());
-        for (size_t i = 0; i < faces.size(); ++i)
-            for (int k = 0; k < 3; ++k) boxes[i].extend(pos_[mesh.faces[faces[i]].v[k]]);
-        bvh_ = Bvh(boxes, 4);
-        // Faces in leaf order: a leaf's triangles sit side by side.
-        const std::vector<int>& order = bvh_.order();
-        const size_t n = order.size();
-        bool has_normals = false, normals_like_v = true, has_uvs = false, uvs_like_v = true,
-             has_material = false;
-        for (int i : order) {
-            const scene::MeshFace& f = mesh.faces[faces[i]];
-            has_normals = has_normals || f.n[0] >= 0 || f.n[1] >= 0 || f.n[2] >= 0;
-            normals_like_v = normals_like_v && f.n == f.v;
-            has_uvs = has_uvs || f.uv[0] >= 0 || f.uv[1] >= 0 || f.uv[2] >= 0;
-            uvs_like_v = uvs_like_v && f.uv == f.v;
-            has_material = has_material || f.material >= 0;
+        Bounds3 all;
+        for (int f : faces)
+            for (int k = 0; k < 3; ++k) all.extend(mesh.positions[mesh.faces[f].v[k]]);
+        origin_ = all.centroid();
+        // Float corners; a face that rounding makes degenerate is dropped like a zero-area one.
+        std::vector<std::array<Vec3, 3>> local;
+        std::vector<int> kept;
+        local.reserve(faces.size());
+        kept.reserve(faces.size());
+        for (int f : faces) {
+            std::array<Vec3, 3> c;
+            for (int k = 0; k < 3; ++k) {
+                const Vec3 d = mesh.positions[mesh.faces[f].v[k]] - origin_;
+                c[k] = {static_cast<float>(d.x), static_cast<float>(d.y), static_cast<float>(d.z)};
+            }
+            const Vec3 n = cross(c[1] - c[0], c[2] - c[0]);
+            if (!is_finite(n) || !(length_squared(n) > 0)) {
+                ++dropped_;
+                continue;
+            }
+            local.push_back(c);
+            kept.push_back(f);
         }
-        tri_.resize(n);
-        face_.resize(n);
+        std::vector<Bounds3> boxes(local.size());
+        for (size_t i = 0; i < local.size(); ++i)
+            for (int k = 0; k < 3; ++k) boxes[i].extend(local[i][k]);
+        const Bvh bvh(boxes, 4, 4);
+        bounds_ = bvh.bounds();
+        // Faces in leaf order, each leaf's corners by component (the kernels' layout).
+        const std::vector<int>& order = bvh.order();
+        const size_t n = order.size();
+        tris_.assign(10 * n + 4, 0.0f);
+        auto lay_out_leaf = [&](int first, int count) {
+            float* leaf = tris_.data() + 10 * static_cast<size_t>(first);
+            for (int j = 0; j < count; ++j) {
+                for (int v = 0; v < 3; ++v)
+                    for (int a = 0; a < 3; ++a)
+                        leaf[(3 * v + a) * count + j] =
+                            static_cast<float>(local[order[first + j]][v][a]);
+                const int32_t face = kept[order[first + j]];
+                std::memcpy(leaf + 9 * count + j, &face, sizeof face);
+            }
+        };
+        if (bvh.single_leaf()) {
+            lay_out_leaf(0, static_cast<int>(n));
+        } else {
+            for (const Bvh::Node& node : bvh.nodes())
+                if (node.count > 0) lay_out_leaf(node.index, node.count);
+            wide_ = WideBvh(bvh);
+        }
+        bool has_normals = false, has_uvs = false, has_material = false;
+        std::vector<int> face(n);  // the scene face at each leaf position
         for (size_t i = 0; i < n; ++i) {
-            face_[i] = faces[order[i]];
-            tri_[i] = mesh.faces[face_[i]].v;
+            face[i] = kept[order[i]];
+            const scene::MeshFace& f = mesh.faces[face[i]];
+            has_normals = has_normals || f.n[0] >= 0 || f.n[1] >= 0 || f.n[2] >= 0;
+            has_uvs = has_uvs || f.uv[0] >= 0 || f.uv[1] >= 0 || f.uv[2] >= 0;
+            has_material = has_material || f.material >= 0;
         }
         if (has_normals) {
             normals_ = mesh.normals;
-            if (!normals_like_v) {
-                nidx_.resize(n);
-                for (size_t i = 0; i < n; ++i) nidx_[i] = mesh.faces[face_[i]].n;
-            }
+            nidx_.resize(n);
+            for (size_t i = 0; i < n; ++i) nidx_[i] = mesh.faces[face[i]].n;
         }
         if (has_uvs) {
             uvs_ = mesh.uvs;
-            if (!uvs_like_v) {
-                uvidx_.resize(n);
-                for (size_t i = 0; i < n; ++i) uvidx_[i] = mesh.faces[face_[i]].uv;
-            }
+            uvidx_.resize(n);
+            for (size_t i = 0; i < n; ++i) uvidx_[i] = mesh.faces[face[i]].uv;
         }
         if (has_material) {
             material_.resize(n);
-            for (size_t i = 0; i < n; ++i) material_[i] = mesh.faces[face_[i]].material;
+            for (size_t i = 0; i < n; ++i) material_[i] = mesh.faces[face[i]].material;
         }
-        bvh_.use_leaf_order();
-        single_leaf_ = bvh_.single_leaf();
+        view_.nodes = wide_.nodes().empty() ? nullptr : wide_.nodes().data();
+        view_.tris = tris_.data();
+        view_.count = static_cast<int>(n);
         if (mesh.has_inside_vector && length_squared(mesh.inside_vector) > 0)
             inside_dir_ = mesh.inside_vector;
     }
 
-    // Baked: the object-space box mirrored into the parent space (exact).
+    bool empty() const { return view_.count == 0; }
+    int dropped() const { return dropped_; }
+
+    // The local box about the origin, conservatively in the object (baked: parent) space.
     Bounds3 bounds() const override {
-        Bounds3 b = bvh_.bounds();
-        for (int a = 0; a < 3; ++a)
+        Bounds3 b;
+        for (int a = 0; a < 3; ++a) {
+            b.lo[a] = next_down(origin_[a] + bounds_.lo[a]);
+            b.hi[a] = next_up(origin_[a] + bounds_.hi[a]);
             if (flip_[a]) {
                 const double lo = b.lo[a];
                 b.lo[a] = -b.hi[a];
                 b.hi[a] = -lo;
             }
+        }
         return b;
     }
     bool writes_whole_hit() const override { return true; }
 
     bool intersect(const Ray& parent_ray, double tmax, LocalHit* hit) const override {
-        const Ray ray = to_object(parent_ray);
-        RayShear shear(ray);
-        TriangleHit best;
-        int best_i = -1;
-        double t = tmax;
-        candidates(ray, t, [&](int i, double& tm) {
-            TriangleHit th;
-            // Equal t: the lower face index wins, whatever the traversal order.
-            double limit = best_i < 0 ? tm : next_up(tm);
-            if (test(shear, i, limit, &th) &&
-                (best_i < 0 || th.t < best.t || face_[i] < face_[best_i])) {
-                best = th;
-                best_i = i;
-                tm = th.t;
-            }
-            return false;
-        });
-        if (best_i < 0) return false;
-        fill(best_i, best, hit);
+        MeshHit mh;
+        if (!kernels_.closest(view_, to_local(parent_ray), tmax, &mh)) return false;
+        fill(mh, hit);
         return true;
     }
 
     bool occludes(const Ray& parent_ray, double tmax) const override {
-        const Ray ray = to_object(parent_ray);
-        RayShear shear(ray);
-        double t = tmax;
-        return candidates(ray, t, [&](int i, double&) {
-            TriangleHit th;
-            return test(shear, i, tmax, &th);
-        });
+        return kernels_.any(view_, to_local(parent_ray), tmax);
     }
 
     void intersect_all(const Ray& parent_ray, double tmax, HitList* hits) const override {
-        const Ray ray = to_object(parent_ray);
-        RayShear shear(ray);
-        double t = tmax;
-        candidates(ray, t, [&](int i, double&) {
-            TriangleHit th;
-            if (test(shear, i, tmax, &th)) fill(i, th, &hits->emplace_back());
-            return false;
-        });
+        struct Ctx {
+            const MeshPrim* self;
+            HitList* hits;
+        } ctx{this, hits};
+        kernels_.all(view_, to_local(parent_ray), tmax, [](void* c, const MeshHit& mh) {
+            auto* x = static_cast<Ctx*>(c);
+            x->self->fill(mh, &x->hits->emplace_back());
+        }, &ctx);
     }
 
     // POV-Ray (mesh.cpp, Mesh::Inside): a point is inside when a ray from it along
     // inside_vector crosses the surface an odd number of times. Without one, never inside.
     bool inside(const Vec3& parent_p) const override {
         if (!inside_dir_) return false;
-        const Ray ray{mirrored(parent_p), *inside_dir_, kInfinity};
-        RayShear shear(ray);
+        const Ray ray{mirrored(parent_p) - origin_, *inside_dir_, kInfinity};
         int crossings = 0;
-        double t = kInfinity;
-        bvh_.traverse(ray, t, [&](int i, double&) {
-            TriangleHit th;
-            if (test(shear, i, kInfinity, &th)) ++crossings;
-            return false;
-        });
+        kernels_.all(view_, ray, kInfinity,
+                     [](void* c, const MeshHit&) { ++*static_cast<int*>(c); }, &crossings);
         return crossings % 2 == 1;
     }
 
 private:
-    // The triangles a ray may hit, as Bvh::traverse passes them. A mesh that is one BVH leaf
-    // (a wall, a quad: many OBJ groups) skips the box test: its owner's bounds have already
-    // been tested, and the triangle test alone decides, so the results are the same.
-    template <class Visit>
-    bool candidates(const Ray& ray, double& tmax, Visit&& visit) const {
-        if (!single_leaf_) return bvh_.traverse(ray, tmax, visit);
-        for (int i = 0; i < static_cast<int>(tri_.size()); ++i)
-            if (visit(i, tmax)) return true;
-        return false;
-    }
-
-    bool test(const RayShear& shear, int i, double tmax, TriangleHit* th) const {
-        const auto& v = tri_[static_cast<size_t>(i)];
-        return intersect_triangle(shear, pos_[v[0]], pos_[v[1]], pos_[v[2]], tmax, th);
-    }
-
     // Baked (a pure mirror, bake_exact): the ray in object space is the parent-space ray with
     // the mirrored components negated, exactly what the transform's matrix computes.
     Vec3 mirrored(Vec3 v) const {
@@ -172,23 +175,25 @@ private:
             if (flip_[a]) v[a] = -v[a];
         return v;
     }
-    Ray to_object(const Ray& r) const {
-        if (!baked_) return r;
-        return {mirrored(r.origin), mirrored(r.dir), r.tmax};
+    // Into the frame of the float vertices: mirrored if baked, then relative to origin_.
+    Ray to_local(const Ray& r) const {
+        return {mirrored(r.origin) - origin_, mirrored(r.dir), r.tmax};
     }
 
-    // Writes all of *h (writes_whole_hit), for the triangle at leaf position i.
-    void fill(int i, const TriangleHit& th, LocalHit* h) const {
+    // Writes all of *h (writes_whole_hit), for a kernel hit.
+    void fill(const MeshHit& mh, LocalHit* h) const {
         *h = LocalHit();
-        const size_t at = static_cast<size_t>(i);
-        const auto& v = tri_[at];
-        const Vec3 &p0 = pos_[v[0]], &p1 = pos_[v[1]], &p2 = pos_[v[2]];
+        const size_t at = static_cast<size_t>(mh.index);
+        const TriangleHit& th = mh.th;
+        const Vec3 &p0 = mh.p[0], &p1 = mh.p[1], &p2 = mh.p[2];
         h->t = th.t;
-        h->p = triangle_point(p0, p1, p2, th.b, &h->p_error);
+        // The point in the local frame with its bound, then moved back: one more rounding.
+        h->p = triangle_point(p0, p1, p2, th.b, &h->p_error) + origin_;
+        h->p_error += rounding_error(h->p, 1);
         h->ng = normalize(cross(p1 - p0, p2 - p0));
         h->n = h->ng;
         if (!normals_.empty()) {
-            const auto& ni = nidx_.empty() ? v : nidx_[at];
+            const auto& ni = nidx_[at];
             if (ni[0] >= 0 && ni[1] >= 0 && ni[2] >= 0) {
                 Vec3 n = normals_[ni[0]] * th.b[0] + normals_[ni[1]] * th.b[1] +
                          normals_[ni[2]] * th.b[2];
@@ -200,7 +205,7 @@ private:
             }
         }
         if (!uvs_.empty()) {
-            const auto& ui = uvidx_.empty() ? v : uvidx_[at];
+            const auto& ui = uvidx_[at];
             h->has_uv = ui[0] >= 0 && ui[1] >= 0 && ui[2] >= 0;
             if (h->has_uv) {
                 const Vec2 &t0 = uvs_[ui[0]], &t1 = uvs_[ui[1]], &t2 = uvs_[ui[2]];
@@ -224,19 +229,21 @@ private:
     }
 
     using Index3 = std::array<int, 3>;
-    std::vector<Vec3> pos_;      // object space; copies: the scene need not outlive the geometry
-    std::vector<Index3> tri_;    // vertex indices, in BVH leaf order
-    std::vector<int> face_;      // the scene mesh's face index, in leaf order (ties break by it)
+    Vec3 origin_;                // the float vertices are offsets from here
+    Bounds3 bounds_;             // of the float vertices, about origin_
+    std::vector<float> tris_;    // corners in leaf order, the kernels' layout (mesh_kernels.h)
+    WideBvh wide_;               // empty: the mesh is one leaf
+    MeshView view_;
+    const MeshKernels& kernels_ = mesh_kernels();
     std::vector<Vec3> normals_;  // empty: flat
-    std::vector<Index3> nidx_;   // empty: the vertex indices
+    std::vector<Index3> nidx_;   // normal indices, in leaf order
     std::vector<Vec2> uvs_;      // empty: no uvs
-    std::vector<Index3> uvidx_;  // empty: the vertex indices
+    std::vector<Index3> uvidx_;  // uv indices, in leaf order
     std::vector<int> material_;  // empty: every face -1
-    Bvh bvh_;
     std::optional<Vec3> inside_dir_;  // object space
+    int dropped_ = 0;                 // faces that became degenerate as floats
     bool baked_ = false;
     bool flip_[3] = {false, false, false};
-    bool single_leaf_ = false;  // the whole mesh is one BVH leaf
     Transform xf_;  // the baked transform
 };
 
@@ -254,8 +261,11 @@ bool bake_exact(const Transform& xf) {
     return xf.inverse_matrix() == xf.matrix();
 }
 
-std::unique_ptr<Primitive> make_mesh(const scene::Mesh& mesh, Diagnostics& diag,
-                                     const Transform* baked) {
+namespace {
+
+// The faces of `mesh` a ray can hit: indices in range, finite, non-zero area. The others are
+// counted in warnings at the mesh's location.
+std::vector<int> usable_faces(const scene::Mesh& mesh, Diagnostics& diag) {
     std::vector<int> usable;
     int degenerate = 0, bad_index = 0;
     int np = static_cast<int>(mesh.positions.size());
@@ -296,8 +306,53 @@ std::unique_ptr<Primitive> make_mesh(const scene::Mesh& mesh, Diagnostics& diag,
     if (bad_index > 0)
         diag.warning(mesh.loc,
                      std::to_string(bad_index) + " mesh triangle(s) with invalid indices skipped");
+    return usable;
+}
+
+std::unique_ptr<Primitive> make_prim(const scene::Mesh& mesh, const std::vector<int>& usable,
+                                     Diagnostics& diag, const Transform* baked) {
     if (usable.empty()) return nullptr;
-    return std::make_unique<MeshPrim>(mesh, usable, baked);
+    auto prim = std::make_unique<MeshPrim>(mesh, usable, baked);
+    if (prim->dropped() > 0)
+        diag.warning(mesh.loc, std::to_string(prim->dropped()) +
+                                   " mesh triangle(s) too small for single precision skipped");
+    if (prim->empty()) return nullptr;
+    return prim;
+}
+
+}  // namespace
+
+std::unique_ptr<Primitive> make_mesh(const scene::Mesh& mesh, Diagnostics& diag,
+                                     const Transform* baked) {
+    return make_prim(mesh, usable_faces(mesh, diag), diag, baked);
+}
+
+std::unique_ptr<Primitive> make_merged_mesh(const std::vector<MeshPart>& parts,
+                                            Diagnostics& diag, const Transform* baked) {
+    scene::Mesh all;
+    if (!parts.empty()) all.loc = parts[0].mesh->loc;
+    std::vector<int> usable;
+    for (const MeshPart& part : parts) {
+        const scene::Mesh& m = *part.mesh;
+        const int v0 = static_cast<int>(all.positions.size()),
+                  n0 = static_cast<int>(all.normals.size()),
+                  uv0 = static_cast<int>(all.uvs.size());
+        for (int f : usable_faces(m, diag)) {
+            scene::MeshFace face = m.faces[f];
+            for (int k = 0; k < 3; ++k) {
+                face.v[k] += v0;
+                if (face.n[k] >= 0) face.n[k] += n0;
+                if (face.uv[k] >= 0) face.uv[k] += uv0;
+            }
+            if (face.material < 0) face.material = part.material;
+            usable.push_back(static_cast<int>(all.faces.size()));
+            all.faces.push_back(face);
+        }
+        all.positions.insert(all.positions.end(), m.positions.begin(), m.positions.end());
+        all.normals.insert(all.normals.end(), m.normals.begin(), m.normals.end());
+        all.uvs.insert(all.uvs.end(), m.uvs.begin(), m.uvs.end());
+    }
+    return make_prim(all, usable, diag, baked);
 }
 
 }  // namespace glint::render

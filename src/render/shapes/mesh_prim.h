@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "core/log.h"
 #include "core/transform.h"
@@ -17,6 +18,17 @@ namespace glint::render {
 // transform_hit(baked) of the object-space hit. Only for transforms that bake_exact() accepts.
 std::unique_ptr<Primitive> make_mesh(const scene::Mesh& mesh, Diagnostics& diag,
                                      const Transform* baked = nullptr);
+
+// Consecutive meshes of one plain union (an OBJ's groups and objects) as one primitive: one BVH
+// and one query for all, instead of a scene BVH leaf and a query each. Faces keep their order
+// (part by part), so equal-t ties still go to the earlier part; a face without a material gets
+// its part's. Each part's unusable faces are warned about at its own location.
+struct MeshPart {
+    const scene::Mesh* mesh;
+    int material;
+};
+std::unique_ptr<Primitive> make_merged_mesh(const std::vector<MeshPart>& parts,
+                                            Diagnostics& diag, const Transform* baked = nullptr);
 
 // Whether a mesh behind `xf` can be baked with results identical bit for bit to transforming
 // each ray: xf must be a pure mirror (a diagonal of +-1, no translation; obj_file's z-mirror is

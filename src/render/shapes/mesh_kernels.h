@@ -1,0 +1,51 @@
+// The inner loops of mesh intersection: the four-wide BVH's slab tests and the watertight
+// triangle test, four at a time in double precision. Built twice from mesh_kernels.inc, for
+// AVX2 and for any x86-64, with the same operations in the same order, so both give the same
+// hits bit for bit; mesh_kernels() picks one for this CPU once. Used by MeshPrim
+// (mesh_prim.cpp) and measured by bench/traversal_bench.
+#pragma once
+
+#include "render/accel/wide_bvh.h"
+#include "render/ray.h"
+#include "render/shapes/triangle.h"
+
+namespace glint::render {
+
+// A mesh as the kernels see it: triangles in BVH leaf order, each leaf's laid out by component
+// so that four neighbours load as one vector. For a leaf of n triangles from position f,
+// tris[10f + k n + j] is component k (= 3 vertex + axis) of triangle f + j for k < 9, and for
+// k = 9 the bits of its face index as an int32 (what breaks equal-t ties: the lower wins; kept
+// beside the corners, not in an array of its own, to save a cache miss per hit). Then 4 floats
+// of padding that partial loads may read.
+struct MeshView {
+    const WideNode* nodes = nullptr;  // null: the whole mesh is one leaf
+    const float* tris = nullptr;
+    int count = 0;  // triangles
+};
+
+struct MeshHit {
+    int index = -1;  // position in leaf order
+    TriangleHit th;
+    Vec3 p[3];       // the triangle's vertices
+};
+
+// Receives each hit of all(): position, hit and vertices.
+using MeshHitSink = void (*)(void* ctx, const MeshHit& hit);
+
+struct MeshKernels {
+    // Nearest hit with 0 < t < tmax; equal t goes to the lower face.
+    bool (*closest)(const MeshView& mesh, const Ray& ray, double tmax, MeshHit* hit);
+    // Any hit with 0 < t < tmax.
+    bool (*any)(const MeshView& mesh, const Ray& ray, double tmax);
+    // Every hit with 0 < t < tmax, in no particular order.
+    void (*all)(const MeshView& mesh, const Ray& ray, double tmax, MeshHitSink sink, void* ctx);
+    const char* name;
+};
+
+// The kernels for this CPU: AVX2 where it has it.
+const MeshKernels& mesh_kernels();
+// Each build by name (tests compare them); avx2 is null on a CPU without AVX2.
+const MeshKernels& mesh_kernels_base();
+const MeshKernels* mesh_kernels_avx2();
+
+}  // namespace glint::render
