@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render/accel/bvh.h"
+#include "render/shapes/mesh_prim.h"
 #include "render/shapes/object_node.h"
 
 namespace glint::render {
@@ -151,6 +152,22 @@ void flatten(const scene::Object& o, std::vector<scene::Object>* out) {
     }
 }
 
+// Parts that can share one mesh primitive with their neighbours: a mesh (without the
+// inside_vector that CSG asks) and nothing else about the object that makes it differ.
+bool mergeable_mesh(const scene::Object& o, const scene::Scene& scene) {
+    const auto* ref = std::get_if<scene::MeshRef>(&o.shape);
+    return ref && ref->mesh >= 0 && ref->mesh < static_cast<int>(scene.meshes.size()) &&
+           !scene.meshes[ref->mesh].has_inside_vector && !o.inverse && o.clipped_by.empty() &&
+           o.bounded_by.empty();
+}
+
+bool same_frame(const scene::Object& a, const scene::Object& b) {
+    return a.transform.matrix() == b.transform.matrix() &&
+           a.transform.inverse_matrix() == b.transform.inverse_matrix() &&
+           a.no_shadow == b.no_shadow && a.no_image == b.no_image &&
+           a.no_reflection == b.no_reflection && a.double_illuminate == b.double_illuminate;
+}
+
 }  // namespace
 
 std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene, const scene::Features&,
@@ -171,7 +188,34 @@ std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene, const scene:
         }
         std::vector<scene::Object> parts;
         flatten(o, &parts);
-        for (const scene::Object& part : parts) add(part, static_cast<int>(i));
+        // Runs of meshes with one transform (an OBJ's groups) become one primitive; the order
+        // of the parts, and so every tie, is kept.
+        for (size_t k = 0; k < parts.size();) {
+            size_t end = k + 1;
+            if (mergeable_mesh(parts[k], scene))
+                while (end < parts.size() && mergeable_mesh(parts[end], scene) &&
+                       same_frame(parts[k], parts[end]))
+                    ++end;
+            if (end - k == 1) {
+                add(parts[k], static_cast<int>(i));
+                ++k;
+                continue;
+            }
+            std::vector<MeshPart> meshes;
+            for (size_t j = k; j < end; ++j)
+                meshes.push_back({&scene.meshes[std::get<scene::MeshRef>(parts[j].shape).mesh],
+                                  parts[j].material});
+            const bool baked = bake_exact(parts[k].transform);
+            scene::Object like = parts[k];
+            like.material = -1;  // each face has its part's
+            auto node = ObjectNode::wrap(
+                make_merged_mesh(meshes, diag, baked ? &parts[k].transform : nullptr), like, baked);
+            if (node && !node->bounds().empty()) {
+                nodes.push_back(std::move(node));
+                ids.push_back(static_cast<int>(i));
+            }
+            k = end;
+        }
     }
     return std::make_unique<SceneGeometry>(std::move(nodes), std::move(ids));
 }

@@ -26,12 +26,12 @@ constexpr uint32_t hash_combine(uint32_t seed, uint32_t v) {
     return hash_u32(seed ^ (v + 0x9e3779b9U + (seed << 6) + (seed >> 2)));
 }
 
+// The bytes reversed in one instruction, then the bits within each byte.
 inline uint32_t reverse_bits32(uint32_t x) {
+    x = __builtin_bswap32(x);
     x = ((x >> 1) & 0x55555555U) | ((x & 0x55555555U) << 1);
     x = ((x >> 2) & 0x33333333U) | ((x & 0x33333333U) << 2);
-    x = ((x >> 4) & 0x0f0f0f0fU) | ((x & 0x0f0f0f0fU) << 4);
-    x = ((x >> 8) & 0x00ff00ffU) | ((x & 0x00ff00ffU) << 8);
-    return (x >> 16) | (x << 16);
+    return ((x >> 4) & 0x0f0f0f0fU) | ((x & 0x0f0f0f0fU) << 4);
 }
 
 // Laine-Karras style permutation: each bit is flipped depending only on the bits below it,
@@ -95,18 +95,19 @@ public:
                                    0x5bd1e995U)),
           index_(sample) {}
 
-    // The pair of dimensions (2 * pair, 2 * pair + 1).
+    // The pair of dimensions (2 * pair, 2 * pair + 1). Dimension 0 is owen_scramble(sobol0(i))
+    // = reverse(lk_permute(reverse(reverse(i)))): the two inner reversals cancel.
     Sample2 get2(uint32_t pair) const {
         const uint32_t s = hash_combine(pixel_seed_, pair);
         const uint32_t i = owen_scramble(index_, s);
-        return {to_unit(owen_scramble(sobol0(i), hash_combine(s, 1))),
+        return {to_unit(reverse_bits32(lk_permute(i, hash_combine(s, 1)))),
                 to_unit(owen_scramble(sobol1(i), hash_combine(s, 2)))};
     }
     // One dimension: the first of a pair.
     double get1(uint32_t pair) const {
         const uint32_t s = hash_combine(pixel_seed_, pair);
         const uint32_t i = owen_scramble(index_, s);
-        return to_unit(owen_scramble(sobol0(i), hash_combine(s, 1)));
+        return to_unit(reverse_bits32(lk_permute(i, hash_combine(s, 1))));
     }
 
 private:

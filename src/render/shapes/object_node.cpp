@@ -185,6 +185,20 @@ std::unique_ptr<ObjectNode> ObjectNode::build(const scene::Object& obj,
     return node;
 }
 
+std::unique_ptr<ObjectNode> ObjectNode::wrap(std::unique_ptr<Primitive> prim,
+                                             const scene::Object& like, bool baked) {
+    if (!prim) return nullptr;
+    std::unique_ptr<ObjectNode> node(new ObjectNode());
+    node->material_ = like.material;
+    node->flags_ = object_flags(like);
+    node->prim_ = std::move(prim);
+    node->whole_hit_ = node->prim_->writes_whole_hit();
+    node->xf_ = baked ? Transform() : like.transform;
+    node->identity_ = node->xf_.is_identity();
+    node->compute_bounds();
+    return node;
+}
+
 void ObjectNode::compute_bounds() {
     Bounds3 local;
     if (prim_) {

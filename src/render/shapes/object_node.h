@@ -22,6 +22,12 @@ public:
     static std::unique_ptr<ObjectNode> build(const scene::Object& obj, const scene::Scene& scene,
                                              Diagnostics& diag);
 
+    // A node around a primitive made outside build() (merged meshes, geometry.cpp): `like`
+    // gives the transform, material and flags (no inverse, clipping or bounding); with
+    // `baked` the primitive has taken like.transform in.
+    static std::unique_ptr<ObjectNode> wrap(std::unique_ptr<Primitive> prim,
+                                            const scene::Object& like, bool baked);
+
     // Closest hit with 0 < t < tmax. With `shadow`, surfaces of no_shadow objects are ignored
     // (they still shape CSG results). A hit writes all of *hit; a miss leaves it alone.
     bool intersect(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
