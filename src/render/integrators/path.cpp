@@ -1,6 +1,9 @@
 #include "render/integrators/path.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include <tbb/task_arena.h>
 
 #include "core/float.h"
 #include "render/bsdf/bsdf.h"
@@ -33,7 +36,8 @@ PathIntegrator::PathIntegrator(const scene::Scene& scene, const Geometry& geomet
     : scene_(scene),
       geometry_(geometry),
       pigments_(textures, PatternContext{scene.global.noise_generator, 10, &scene.functions}),
-      settings_(settings) {
+      settings_(settings),
+      rays_(64) {
     const size_t n = scene.materials.size();
     constant_.resize(n);
     emission_.assign(n, Color());
@@ -153,6 +157,12 @@ Color PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dis
         if (!(r.tmax > 0)) return t;
     }
     return Color();
+}
+
+uint64_t PathIntegrator::rays() const {
+    uint64_t sum = 0;
+    for (const RayCount& c : rays_) sum += c.n.load(std::memory_order_relaxed);
+    return sum;
 }
 
 Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
@@ -289,7 +299,9 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         seg_dist = 0;
         prev_p = hit.p;
     }
-    rays_.fetch_add(rays, std::memory_order_relaxed);
+    // current_thread_index() is the worker's slot in its arena (0 outside one, as in tests).
+    const int slot = std::max(0, tbb::this_task_arena::current_thread_index());
+    rays_[static_cast<size_t>(slot) % rays_.size()].n.fetch_add(rays, std::memory_order_relaxed);
     if (!finite(L)) {
         nonfinite_.fetch_add(1, std::memory_order_relaxed);
         return Color();

@@ -41,7 +41,7 @@ public:
     // Paths whose radiance was NaN or infinite (dropped, counted).
     uint64_t nonfinite() const { return nonfinite_.load(std::memory_order_relaxed); }
     // Rays traced so far (camera, continuation and shadow rays), for -v's Mrays/s.
-    uint64_t rays() const { return rays_.load(std::memory_order_relaxed); }
+    uint64_t rays() const;
 
 private:
     // The surface at a hit. Bump and normal maps (OBJ/MTL map_Bump) bend hit.n in place.
@@ -67,7 +67,12 @@ private:
     bool any_alpha_ = false;
     std::optional<PathLights> lights_;
     mutable std::atomic<uint64_t> nonfinite_{0};
-    mutable std::atomic<uint64_t> rays_{0};
+    // One counter per worker thread, each on its own cache line: a shared one, added to after
+    // every sample by every thread, bounced its line between the cores.
+    struct alignas(64) RayCount {
+        std::atomic<uint64_t> n{0};
+    };
+    mutable std::vector<RayCount> rays_;
 };
 
 }  // namespace glint::render

@@ -31,8 +31,7 @@ public:
     MeshPrim(const scene::Mesh& mesh, const std::vector<int>& faces, const Transform* baked) {
         if (baked) {
             baked_ = true;
-            xf_ = *baked;
-            const auto& m = xf_.matrix().m;
+            const auto& m = baked->matrix().m;
             for (int a = 0; a < 3; ++a) flip_[a] = m[a][a] < 0;
         }
         Bounds3 all;
@@ -223,9 +222,15 @@ private:
             }
         }
         h->material = material_.empty() ? -1 : material_[at];
-        // Baked: the hit was computed in object space, so carry it out exactly as ObjectNode
-        // would.
-        if (baked_) transform_hit(xf_, h);
+        // Baked: the hit was computed in object space; the mirror takes it out without
+        // rounding, so the point keeps its bound.
+        if (baked_) {
+            h->p = mirrored(h->p);
+            h->ng = mirrored(h->ng);
+            h->n = mirrored(h->n);
+            h->dpdu = mirrored(h->dpdu);
+            h->dpdv = mirrored(h->dpdv);
+        }
     }
 
     using Index3 = std::array<int, 3>;
@@ -243,8 +248,7 @@ private:
     std::optional<Vec3> inside_dir_;  // object space
     int dropped_ = 0;                 // faces that became degenerate as floats
     bool baked_ = false;
-    bool flip_[3] = {false, false, false};
-    Transform xf_;  // the baked transform
+    bool flip_[3] = {false, false, false};  // baked: the axes the mirror negates
 };
 
 }  // namespace
