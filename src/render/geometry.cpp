@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render/accel/bvh.h"
+#include "render/materials/opacity.h"
 #include "render/shapes/mesh_prim.h"
 #include "render/shapes/object_node.h"
 
@@ -18,8 +19,11 @@ namespace {
 
 class SceneGeometry final : public Geometry {
 public:
-    SceneGeometry(std::vector<std::unique_ptr<ObjectNode>> nodes, std::vector<int> ids)
-        : nodes_(std::move(nodes)), ids_(std::move(ids)) {
+    // opaque: per node, whether all its surfaces are opaque (empty: not known).
+    SceneGeometry(std::vector<std::unique_ptr<ObjectNode>> nodes, std::vector<int> ids,
+                  std::vector<char> opaque)
+        : nodes_(std::move(nodes)), ids_(std::move(ids)), opaque_(std::move(opaque)) {
+        for (char o : opaque_) any_opaque_ = any_opaque_ || o;
         std::vector<Bounds3> boxes;
         for (size_t i = 0; i < nodes_.size(); ++i) {
             const Bounds3& b = nodes_[i]->bounds();
@@ -92,6 +96,33 @@ public:
         return false;
     }
 
+    Blocker shadow_blocker(const Ray& ray, int* hint) const override {
+        if (!occluded(ray, hint)) return Blocker::None;
+        if (!any_opaque_) return Blocker::Other;
+        // The object found is usually the answer (and the shadow cache's next guess).
+        if (opaque_[*hint]) return Blocker::Opaque;
+        int h = -1;
+        return occluded_by_opaque(ray, &h) ? Blocker::Opaque : Blocker::Other;
+    }
+
+    // Any hit among the opaque objects.
+    bool occluded_by_opaque(const Ray& ray, int* hint) const {
+        const int h = *hint;
+        if (h >= 0 && h < static_cast<int>(nodes_.size()) && opaque_[h] &&
+            nodes_[h]->occludes(ray, ray.tmax))
+            return true;
+        auto visit = [&](int i, double&) {
+            if (i == h || !opaque_[i] || !nodes_[i]->occludes(ray, ray.tmax)) return false;
+            *hint = i;
+            return true;
+        };
+        double tmax = ray.tmax;
+        if (bvh_.traverse(ray, tmax, visit)) return true;
+        for (int i : unbounded_)
+            if (visit(i, tmax)) return true;
+        return false;
+    }
+
     Bounds3 bounds() const override { return bounds_; }
 
 private:
@@ -117,6 +148,8 @@ private:
 
     std::vector<std::unique_ptr<ObjectNode>> nodes_;
     std::vector<int> ids_;  // scene object index of each node
+    std::vector<char> opaque_;  // per node: no surface of it lets light through
+    bool any_opaque_ = false;
     std::vector<int> unbounded_;
     Bvh bvh_;
     Bounds3 bounds_;
@@ -161,6 +194,26 @@ bool mergeable_mesh(const scene::Object& o, const scene::Scene& scene) {
            o.bounded_by.empty();
 }
 
+// Whether every surface of `o` has an opaque material: its own or the one it inherits, its CSG
+// children's, its mesh faces'. A surface without a material counts as opaque, as in the
+// shadow walk. (clipped_by and bounded_by shapes show no surface.)
+bool all_opaque(const scene::Object& o, int inherited, const scene::Scene& scene,
+                const std::vector<char>& opaque) {
+    const int m = o.material >= 0 ? o.material : inherited;
+    auto ok = [&](int id) { return id < 0 || id >= static_cast<int>(opaque.size()) || opaque[id]; };
+    if (const auto* csg = std::get_if<scene::Csg>(&o.shape)) {
+        for (const scene::Object& c : csg->children)
+            if (!all_opaque(c, m, scene, opaque)) return false;
+        return true;
+    }
+    if (const auto* ref = std::get_if<scene::MeshRef>(&o.shape)) {
+        if (ref->mesh >= 0 && ref->mesh < static_cast<int>(scene.meshes.size()))
+            for (const scene::MeshFace& f : scene.meshes[ref->mesh].faces)
+                if (!ok(f.material >= 0 ? f.material : m)) return false;
+    }
+    return ok(m);
+}
+
 bool same_frame(const scene::Object& a, const scene::Object& b) {
     return a.transform.matrix() == b.transform.matrix() &&
            a.transform.inverse_matrix() == b.transform.inverse_matrix() &&
@@ -170,15 +223,21 @@ bool same_frame(const scene::Object& a, const scene::Object& b) {
 
 }  // namespace
 
-std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene, const scene::Features&,
-                                         Diagnostics& diag) {
+std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,
+                                         const scene::Features& features, Diagnostics& diag) {
     std::vector<std::unique_ptr<ObjectNode>> nodes;
     std::vector<int> ids;
+    // Which nodes are opaque all over, for the shadow walk (only scenes with transparency walk).
+    std::vector<char> material_opaque, node_opaque;
+    if (features.transparency)
+        for (const scene::Material& m : scene.materials)
+            material_opaque.push_back(!texture_can_be_transparent(m.texture));
     auto add = [&](const scene::Object& o, int id) {
         auto node = ObjectNode::build(o, scene, diag);
         if (!node || node->bounds().empty()) return;
         nodes.push_back(std::move(node));
         ids.push_back(id);
+        if (features.transparency) node_opaque.push_back(all_opaque(o, -1, scene, material_opaque));
     };
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const scene::Object& o = scene.objects[i];
@@ -213,11 +272,18 @@ std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene, const scene:
             if (node && !node->bounds().empty()) {
                 nodes.push_back(std::move(node));
                 ids.push_back(static_cast<int>(i));
+                if (features.transparency) {
+                    bool all = true;
+                    for (size_t j = k; j < end; ++j)
+                        all = all && all_opaque(parts[j], -1, scene, material_opaque);
+                    node_opaque.push_back(all);
+                }
             }
             k = end;
         }
     }
-    return std::make_unique<SceneGeometry>(std::move(nodes), std::move(ids));
+    return std::make_unique<SceneGeometry>(std::move(nodes), std::move(ids),
+                                           std::move(node_opaque));
 }
 
 }  // namespace glint::render

@@ -28,6 +28,15 @@ public:
         (void)hint;
         return occluded(ray);
     }
+    // What a shadow ray meets, for the Whitted shadow walk through filtering objects: nothing
+    // (the light arrives whole), an object none of whose surfaces can let light through
+    // (materials/opacity.h: the light is blocked whatever else is there), or only objects that
+    // may (the walk must look). Any-hit queries, so cheaper than the walk's closest hits.
+    // Geometries that cannot tell opaque objects apart answer Other for every blocked ray.
+    enum class Blocker { None, Opaque, Other };
+    virtual Blocker shadow_blocker(const Ray& ray, int* hint) const {
+        return occluded(ray, hint) ? Blocker::Other : Blocker::None;
+    }
     virtual Bounds3 bounds() const = 0;  // may be infinite (planes)
 };
 

@@ -7,6 +7,7 @@
 #include "core/float.h"
 #include "render/integrators/blender_lights.h"
 #include "render/lights/area_light.h"
+#include "render/materials/opacity.h"
 #include "render/textures/normal.h"
 
 namespace glint::render {
@@ -36,33 +37,6 @@ double greyscale(const Color& c) { return 0.297 * c.r + 0.589 * c.g + 0.114 * c.
 Color rgb_transm(const ColorFT& c) {
     return Color(c.rgb.r * c.filter + c.transmit, c.rgb.g * c.filter + c.transmit,
                  c.rgb.b * c.filter + c.transmit);
-}
-
-bool pigment_can_be_transparent(const scene::Pigment& p) {
-    if (p.kind == scene::PatternKind::Plain) return !p.color.opaque();
-    if (p.kind == scene::PatternKind::ImageMap) return true;  // alpha, filter/transmit all
-    for (const scene::ColorMapEntry& e : p.color_map)
-        if (!e.color.opaque()) return true;
-    for (const scene::PigmentMapEntry& e : p.pigment_map)
-        if (pigment_can_be_transparent(e.pigment[0])) return true;
-    for (const scene::Pigment& e : p.entries)
-        if (pigment_can_be_transparent(e)) return true;
-    return false;
-}
-
-bool texture_can_be_transparent(const scene::Texture& t) {
-    if (t.kind == scene::PatternKind::Plain) {
-        // Layers filter only what the bottom lets through: all must be see-through.
-        if (!pigment_can_be_transparent(t.pigment)) return false;
-        for (const scene::Texture& l : t.layers)
-            if (!pigment_can_be_transparent(l.pigment)) return false;
-        return true;
-    }
-    for (const scene::TextureMapEntry& e : t.texture_map)
-        if (texture_can_be_transparent(e.texture[0])) return true;
-    for (const scene::Texture& e : t.entries)
-        if (texture_can_be_transparent(e)) return true;
-    return false;
 }
 
 // Every finish a texture can show, for ClassicFinish preparation.
@@ -527,16 +501,22 @@ Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls
     r.origin = offset_ray_origin(p, at.p_error, at.ng, ls.dir);
     r.dir = target - r.origin;
     r.tmax = kShadowEnd;
-    if (!features_.transparency) {
-        // Per thread, per light: the object that blocked the last shadow ray, tried first
-        // (neighbouring pixels and an area light's samples are mostly blocked by the same
-        // one). The answer does not depend on it, so neither does the image.
-        thread_local ShadowCache cache;
-        if (cache.serial != serial_) {
-            cache.serial = serial_;
-            cache.blocker.assign(lights_.size(), -1);
-        }
+    // Per thread, per light: the object that blocked the last shadow ray, tried first
+    // (neighbouring pixels and an area light's samples are mostly blocked by the same
+    // one). The answer does not depend on it, so neither does the image.
+    thread_local ShadowCache cache;
+    if (cache.serial != serial_) {
+        cache.serial = serial_;
+        cache.blocker.assign(lights_.size(), -1);
+    }
+    if (!features_.transparency)
         return geometry_.occluded(r, &cache.blocker[light]) ? Color() : Color(1.0);
+    // Nothing on the way: the walk below would find no surface either. An opaque object
+    // anywhere on the way: it would end in black. Only the rest needs the walk.
+    switch (geometry_.shadow_blocker(r, &cache.blocker[light])) {
+        case Geometry::Blocker::None: return Color(1.0);
+        case Geometry::Blocker::Opaque: return Color();
+        case Geometry::Blocker::Other: break;
     }
 
     // TracePointLightShadowRay: walk through transparent objects, filtering the light. The
