@@ -224,14 +224,15 @@ bool same_frame(const scene::Object& a, const scene::Object& b) {
 }  // namespace
 
 std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,
-                                         const scene::Features& features, Diagnostics& diag) {
+                                         const scene::Features& features, Diagnostics& diag,
+                                         const TextureCache* textures) {
     std::vector<std::unique_ptr<ObjectNode>> nodes;
     std::vector<int> ids;
     // Which nodes are opaque all over, for the shadow walk (only scenes with transparency walk).
     std::vector<char> material_opaque, node_opaque;
     if (features.transparency)
         for (const scene::Material& m : scene.materials)
-            material_opaque.push_back(!texture_can_be_transparent(m.texture));
+            material_opaque.push_back(!texture_can_be_transparent(m.texture, textures));
     auto add = [&](const scene::Object& o, int id) {
         auto node = ObjectNode::build(o, scene, diag);
         if (!node || node->bounds().empty()) return;

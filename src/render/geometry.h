@@ -12,6 +12,8 @@
 
 namespace glint::render {
 
+class TextureCache;
+
 class Geometry {
 public:
     virtual ~Geometry() = default;
@@ -42,7 +44,9 @@ public:
 
 // Degenerate input (zero-area triangles, non-finite vertices, empty meshes) is skipped with a
 // warning; invalid input throws glint::Error.
+// `textures` (may be null) tell which image maps have an alpha channel, for shadow_blocker.
 std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,
-                                         const scene::Features& features, Diagnostics& diag);
+                                         const scene::Features& features, Diagnostics& diag,
+                                         const TextureCache* textures = nullptr);
 
 }  // namespace glint::render

@@ -27,13 +27,13 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
     result.features = scene::analyze(scene);
     const scene::Features& features = result.features;
 
-    std::unique_ptr<Geometry> geometry = build_geometry(scene, features, diag);
     // The texture system is opened only for scenes with image maps.
     std::unique_ptr<TextureCache> textures;
     if (features.image_textures) {
         textures = std::make_unique<TextureCache>(image_gamma(scene));
         textures->preload(scene);
     }
+    std::unique_ptr<Geometry> geometry = build_geometry(scene, features, diag, textures.get());
     Camera camera(scene.camera, options.width, options.height);
     if (options.integrator == IntegratorKind::Path) {
         PathSettings ps;

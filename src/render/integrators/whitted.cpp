@@ -94,7 +94,7 @@ Whitted::Whitted(const scene::Scene& scene, const scene::Features& features,
     finishes_.reserve(scene.materials.size());
     for (const scene::Material& m : scene.materials) {
         finishes_.emplace_back(m.texture.finish);
-        opaque_.push_back(!texture_can_be_transparent(m.texture));
+        opaque_.push_back(!texture_can_be_transparent(m.texture, textures));
         std::vector<const scene::Finish*> all;
         collect_finishes(m.texture, &all);
         for (const scene::Finish* f : all) layer_finishes_.emplace(f, ClassicFinish(*f));

@@ -7,8 +7,12 @@
 
 namespace glint::render {
 
-bool pigment_can_be_transparent(const scene::Pigment& p);
+class TextureCache;
+
+// An image map lets light through where it has filter all, transmit all or an alpha channel;
+// which images have one the loaded `textures` tell (without them every image map may).
+bool pigment_can_be_transparent(const scene::Pigment& p, const TextureCache* textures);
 // A plain texture's layers filter only what the bottom lets through: all must be see-through.
-bool texture_can_be_transparent(const scene::Texture& t);
+bool texture_can_be_transparent(const scene::Texture& t, const TextureCache* textures);
 
 }  // namespace glint::render

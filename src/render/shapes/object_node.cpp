@@ -271,9 +271,19 @@ void ObjectNode::finish(LocalHit* h) const {
 }
 
 namespace {
+// Transform::inverse_point and inverse_vector written out here, operation for operation (the
+// same results), so that this, done for every candidate object of every ray, is not two calls.
 Ray to_local(const Transform& xf, bool identity, const Ray& ray) {
     if (identity) return ray;
-    return {xf.inverse_point(ray.origin), xf.inverse_vector(ray.dir), ray.tmax};
+    const auto& a = xf.inverse_matrix().m;
+    const Vec3 &p = ray.origin, &v = ray.dir;
+    return {{a[0][0] * p.x + a[0][1] * p.y + a[0][2] * p.z + a[0][3],
+             a[1][0] * p.x + a[1][1] * p.y + a[1][2] * p.z + a[1][3],
+             a[2][0] * p.x + a[2][1] * p.y + a[2][2] * p.z + a[2][3]},
+            {a[0][0] * v.x + a[0][1] * v.y + a[0][2] * v.z,
+             a[1][0] * v.x + a[1][1] * v.y + a[1][2] * v.z,
+             a[2][0] * v.x + a[2][1] * v.y + a[2][2] * v.z},
+            ray.tmax};
 }
 }  // namespace
 

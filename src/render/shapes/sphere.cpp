@@ -25,6 +25,7 @@ public:
     }
 
     bool intersect(const Ray& ray, double tmax, LocalHit* hit) const override {
+        if (!reachable(ray, tmax)) return false;
         double t[2];
         int n = roots(ray, t);
         for (int i = 0; i < n; ++i)
@@ -35,7 +36,15 @@ public:
         return false;
     }
 
+    bool occludes(const Ray& ray, double tmax) const override {
+        if (!reachable(ray, tmax)) return false;
+        double t[2];
+        int n = roots(ray, t);
+        return (n > 0 && t[0] < tmax) || (n > 1 && t[1] < tmax);
+    }
+
     void intersect_all(const Ray& ray, double tmax, HitList* hits) const override {
+        if (!reachable(ray, tmax)) return;
         double t[2];
         int n = roots(ray, t);
         for (int i = 0; i < n; ++i)
@@ -45,6 +54,17 @@ public:
     bool inside(const Vec3& p) const override { return length_squared(p - c_) < r_ * r_; }
 
 private:
+    // Whether the ray can reach the surface before tmax. Shadow rays and rays behind a nearer
+    // hit mostly end short of it (a sky sphere around the scene is tested by every ray): the
+    // surface is |fl - r| from the origin, the ray goes no farther than tmax |d|. The margin
+    // covers the rounding of both sides many times over, so the roots still decide every ray
+    // that could hit.
+    bool reachable(const Ray& ray, double tmax) const {
+        if (!std::isfinite(tmax)) return true;
+        const double fl = length(ray.origin - c_), reach = tmax * length(ray.dir);
+        return !(std::fabs(fl - r_) > reach + gamma(16) * (fl + r_ + reach));
+    }
+
     // Roots with 0 < t, ascending. A root whose error interval reaches 0 is dropped: that is
     // the surface a (properly offset) secondary ray leaves from.
     int roots(const Ray& ray, double out[2]) const {
