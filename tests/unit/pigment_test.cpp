@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "render/materials/opacity.h"
 #include "render/textures/pigment.h"
 
 namespace glint::render {
@@ -201,6 +202,42 @@ TEST_F(ImageMapTest, OnceLeavesTheOutsideClear) {
     ColorFT c;
     EXPECT_FALSE(e.evaluate(p, {Vec3(1.25, 0.5, 0), {}, false}, &c));
     EXPECT_EQ(c.transmit, 1.0);
+}
+
+// What the shadow walk and the scene's opaque-object query (materials/opacity.h) take as able
+// to let light through: an image with alpha, or any image with once, filter all or transmit
+// all; an opaque RGB image is opaque once its file is known, and unknown files may be clear.
+TEST_F(ImageMapTest, OpacityFollowsAlphaOnceAndFilter) {
+    const std::string rgba = path_;
+    const std::string rgb = path_ + ".rgb.png";
+    const unsigned char px[12] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
+    auto out = OIIO::ImageOutput::create(rgb);
+    OIIO::ImageSpec spec(2, 2, 3, OIIO::TypeDesc::UINT8);
+    ASSERT_TRUE(out->open(rgb, spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, px));
+    out->close();
+    auto pig = [&](const std::string& file) {
+        Pigment p = image_pigment();
+        p.params.image.file = p.params.image.resolved_path = file;
+        return p;
+    };
+    scene::Scene s;
+    s.materials.resize(2);
+    s.materials[0].texture.pigment = pig(rgba);
+    s.materials[1].texture.pigment = pig(rgb);
+    TextureCache cache(image_gamma(s));
+    cache.preload(s);
+    EXPECT_TRUE(render::pigment_can_be_transparent(pig(rgba), &cache));
+    EXPECT_FALSE(render::pigment_can_be_transparent(pig(rgb), &cache));
+    EXPECT_TRUE(render::pigment_can_be_transparent(pig(rgb), nullptr));
+    Pigment once = pig(rgb), filtered = pig(rgb), transmitted = pig(rgb);
+    once.params.image.once = true;
+    filtered.params.image.filter_all = 0.2;
+    transmitted.params.image.transmit_all = 0.2;
+    EXPECT_TRUE(render::pigment_can_be_transparent(once, &cache));
+    EXPECT_TRUE(render::pigment_can_be_transparent(filtered, &cache));
+    EXPECT_TRUE(render::pigment_can_be_transparent(transmitted, &cache));
+    std::remove(rgb.c_str());
 }
 
 TEST_F(ImageMapTest, GammaDecodingFollowsTheSceneVersion) {

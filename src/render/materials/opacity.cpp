@@ -8,7 +8,8 @@ bool pigment_can_be_transparent(const scene::Pigment& p, const TextureCache* tex
     if (p.kind == scene::PatternKind::Plain) return !p.color.opaque();
     if (p.kind == scene::PatternKind::ImageMap) {
         const scene::ImageMap& im = p.params.image;
-        if (im.filter_all != 0 || im.transmit_all != 0 || !textures) return true;
+        // `once`: clear beyond the image.
+        if (im.once || im.filter_all != 0 || im.transmit_all != 0 || !textures) return true;
         const ImageTexture* image = textures->find(im);
         return !image || image->has_alpha();
     }

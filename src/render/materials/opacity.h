@@ -9,7 +9,8 @@ namespace glint::render {
 
 class TextureCache;
 
-// An image map lets light through where it has filter all, transmit all or an alpha channel;
+// An image map lets light through where it has filter all, transmit all or an alpha channel,
+// and beyond the image with `once`;
 // which images have one the loaded `textures` tell (without them every image map may).
 bool pigment_can_be_transparent(const scene::Pigment& p, const TextureCache* textures);
 // A plain texture's layers filter only what the bottom lets through: all must be see-through.
