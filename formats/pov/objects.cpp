@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "formats/obj/obj_importer.h"
+#include "formats/pov/literal_list.h"
 #include "formats/pov/parser_impl.h"
 #include "formats/pov/solids.h"
 
@@ -117,11 +118,23 @@ static void parse_mesh_triangle(Parser& p, scene::Mesh& mesh, bool smooth) {
     mesh.faces.push_back(f);
 }
 
-// mesh2 sections: `name { count, item, item, ... }`.
-template <typename F>
-static void parse_counted(Parser& p, const char* name, F item) {
+// mesh2 sections: `name { count, item, item, ... }`. A list written as literal vectors of
+// `dims` numbers (literal_list.h) is checked by ok(list) and, if it passes and the token limit
+// allows, given to take(list) whole. Otherwise its items are read one by one, as if the fast
+// path did not exist, and say what is wrong with them.
+template <typename F, typename Ok, typename Take>
+static void parse_counted(Parser& p, const char* name, F item, int dims, Ok ok, Take take) {
     p.expect_open(name);
     FileLoc o = p.loc();
+    if (const Token* list = dims > 0 ? p.take_number_list() : nullptr) {
+        LiteralList l;
+        if (read_literal_list(list->text, dims, &l) && ok(l) && p.count_tokens(l.tokens, p.loc())) {
+            take(l);
+            p.expect_close(name, o);
+            return;
+        }
+        p.give_back_number_list(*list);
+    }
     int n = to_int(parse_float_before_points(p));
     if (n < 0) p.fail(std::string("negative count in ") + name);
     for (int i = 0; i < n; ++i) {
@@ -132,7 +145,30 @@ static void parse_counted(Parser& p, const char* name, F item) {
     p.expect_close(name, o);
 }
 
+template <typename F>
+static void parse_counted(Parser& p, const char* name, F item) {
+    auto none = [](const LiteralList&) { return false; };
+    parse_counted(p, name, item, 0, none, none);
+}
+
+// The fast path's checks and copies (parse_counted): indices as idx3 would take them, or not
+// at all (then idx3 says which is out of range, and where).
+static bool in_range(const LiteralList& l, int limit) {
+    for (double v : l.values) {
+        const int r = to_int(v);
+        if (r < 0 || r >= limit) return false;
+    }
+    return true;
+}
+
+static void append_vectors(const LiteralList& l, std::vector<Vec3>* out) {
+    out->reserve(out->size() + l.values.size() / 3);
+    for (size_t k = 0; k + 2 < l.values.size(); k += 3)
+        out->push_back(Vec3(l.values[k], l.values[k + 1], l.values[k + 2]));
+}
+
 static void parse_mesh2(Parser& p, scene::Mesh& mesh) {
+    auto any_list = [](const LiteralList&) { return true; };
     std::vector<int> textures;
     auto idx3 = [&](const char* what, int limit) {
         p.peek();
@@ -151,13 +187,18 @@ static void parse_mesh2(Parser& p, scene::Mesh& mesh) {
     };
     for (;;) {
         if (p.accept("vertex_vectors")) {
-            parse_counted(p, "vertex_vectors", [&](int) { mesh.positions.push_back(p.parse_vector()); });
+            parse_counted(p, "vertex_vectors", [&](int) { mesh.positions.push_back(p.parse_vector()); },
+                          3, any_list, [&](const LiteralList& l) { append_vectors(l, &mesh.positions); });
         } else if (p.accept("normal_vectors")) {
-            parse_counted(p, "normal_vectors", [&](int) { mesh.normals.push_back(p.parse_vector()); });
+            parse_counted(p, "normal_vectors", [&](int) { mesh.normals.push_back(p.parse_vector()); },
+                          3, any_list, [&](const LiteralList& l) { append_vectors(l, &mesh.normals); });
         } else if (p.accept("uv_vectors")) {
             parse_counted(p, "uv_vectors", [&](int) {
                 Num n = p.parse_num(2);
                 mesh.uvs.push_back({n.v[0], n.v[1]});
+            }, 2, any_list, [&](const LiteralList& l) {
+                for (size_t k = 0; k + 1 < l.values.size(); k += 2)
+                    mesh.uvs.push_back({l.values[k], l.values[k + 1]});
             });
         } else if (p.accept("texture_list")) {
             parse_counted(p, "texture_list", [&](int) {
@@ -170,6 +211,15 @@ static void parse_mesh2(Parser& p, scene::Mesh& mesh) {
             });
         } else if (p.accept("face_indices")) {
             int nv = static_cast<int>(mesh.positions.size());
+            // With a texture_list a face may name textures after its vector: token by token.
+            auto faces_ok = [&](const LiteralList& l) { return textures.empty() && in_range(l, nv); };
+            auto take_faces = [&](const LiteralList& l) {
+                for (size_t k = 0; k + 2 < l.values.size(); k += 3) {
+                    scene::MeshFace f;
+                    f.v = {to_int(l.values[k]), to_int(l.values[k + 1]), to_int(l.values[k + 2])};
+                    mesh.faces.push_back(f);
+                }
+            };
             parse_counted(p, "face_indices", [&](int) {
                 scene::MeshFace f;
                 f.v = idx3("vertex", nv);
@@ -192,7 +242,7 @@ static void parse_mesh2(Parser& p, scene::Mesh& mesh) {
                     }
                 }
                 mesh.faces.push_back(f);
-            });
+            }, 3, faces_ok, take_faces);
         } else if (p.accept("normal_indices")) {
             int nn = static_cast<int>(mesh.normals.size());
             size_t i = 0;
@@ -200,6 +250,12 @@ static void parse_mesh2(Parser& p, scene::Mesh& mesh) {
                 auto r = idx3("normal", nn);
                 if (i < mesh.faces.size()) mesh.faces[i].n = r;
                 ++i;
+            }, 3, [&](const LiteralList& l) { return in_range(l, nn); },
+               [&](const LiteralList& l) {
+                for (size_t k = 0; k + 2 < l.values.size(); k += 3, ++i)
+                    if (i < mesh.faces.size())
+                        mesh.faces[i].n = {to_int(l.values[k]), to_int(l.values[k + 1]),
+                                           to_int(l.values[k + 2])};
             });
         } else if (p.accept("uv_indices")) {
             int nu = static_cast<int>(mesh.uvs.size());
@@ -208,6 +264,12 @@ static void parse_mesh2(Parser& p, scene::Mesh& mesh) {
                 auto r = idx3("uv", nu);
                 if (i < mesh.faces.size()) mesh.faces[i].uv = r;
                 ++i;
+            }, 3, [&](const LiteralList& l) { return in_range(l, nu); },
+               [&](const LiteralList& l) {
+                for (size_t k = 0; k + 2 < l.values.size(); k += 3, ++i)
+                    if (i < mesh.faces.size())
+                        mesh.faces[i].uv = {to_int(l.values[k]), to_int(l.values[k + 1]),
+                                            to_int(l.values[k + 2])};
             });
         } else {
             break;

@@ -154,6 +154,14 @@ public:
     bool float_constant(const std::string& name, double& out) const;
     double allow_float(double fallback);  // an optional float (POV-Ray's Allow_Float)
     void skip_comma() { accept(","); }
+    // The NumberList token next in the raw stream, consumed, or null (then nothing changes).
+    const Token* take_number_list();
+    // A taken NumberList the fast path refused: its tokens come next.
+    void give_back_number_list(const Token& list) { expand_number_list(list, cur_file_); }
+    // Counts `tokens` read by a fast path against --max-tokens and the checks next() makes
+    // (interruption, --max-memory); false, with nothing counted, when they would exceed the
+    // token limit (the caller then reads them token by token, which reports it).
+    bool count_tokens(long long tokens, const FileLoc& at);
 
     // ---- functions and splines (functions.cpp)
     // After `function`: parameters and body; returns the index into scene.functions.
@@ -270,6 +278,10 @@ private:
     int load_file(const std::string& path, bool system, const FileLoc& from);
     int add_source(const std::string& text, const std::string& name, bool system);
     const Token& raw();        // next token of the top frame, no processing
+    // A NumberList met by raw(): its body scanned into tokens (cached per token) and read as
+    // a frame of its own, as though written in place.
+    void expand_number_list(const Token& list, int file);
+    std::unordered_map<const Token*, int> number_list_files_;
     bool handle_directive(const Token& d, int file);
     void handle_declare(bool local, const FileLoc& dloc);
     void handle_include(const FileLoc& dloc);

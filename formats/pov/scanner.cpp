@@ -1,6 +1,7 @@
 #include "formats/pov/scanner.h"
 
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 
@@ -12,10 +13,38 @@ bool is_word_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) 
 bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
+// One of { } ( ) [ ] < > , ; = + - * / . ? : ! & |
+bool is_single_symbol(char c) {
+    switch (c) {
+        case '{': case '}': case '(': case ')': case '[': case ']': case '<': case '>':
+        case ',': case ';': case '=': case '+': case '-': case '*': case '/': case '.':
+        case '?': case ':': case '!': case '&': case '|':
+            return true;
+        default:
+            return false;
+    }
+}
+
+// The mesh2 lists whose bodies may become one NumberList token.
+bool is_list_keyword(const std::string& w) {
+    return w == "vertex_vectors" || w == "normal_vectors" || w == "uv_vectors" ||
+           w == "face_indices" || w == "normal_indices" || w == "uv_indices";
+}
+
+bool is_list_char(char c) {
+    return is_digit(c) || c == '.' || c == 'e' || c == 'E' || c == '+' || c == '-' || c == ',' ||
+           c == '<' || c == '>' || c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
+
 class Scanner {
 public:
-    Scanner(const std::string& text, const std::shared_ptr<const std::string>& file)
-        : s_(text), file_(file) {}
+    Scanner(const std::string& text, const std::shared_ptr<const std::string>& file, int line,
+            int column, bool lists)
+        : s_(text), file_(file), line_(line), lists_(lists) {
+        // The first line starts column - 1 characters before the text does.
+        line_start_ = 0;
+        first_line_offset_ = column - 1;
+    }
 
     std::vector<Token> run() {
         std::vector<Token> out;
@@ -36,6 +65,11 @@ public:
                 while (i_ < s_.size() && is_word_char(s_[i_])) ++i_;
                 t.kind = TokKind::Word;
                 t.text.assign(s_, b, i_ - b);
+                if (lists_ && is_list_keyword(t.text)) {
+                    out.push_back(std::move(t));
+                    number_list(out);
+                    continue;
+                }
             } else if (is_digit(c) || (c == '.' && i_ + 1 < s_.size() && is_digit(s_[i_ + 1]))) {
                 scan_number(t);
             } else if (c == '"') {
@@ -60,7 +94,39 @@ public:
     }
 
 private:
-    int col() const { return static_cast<int>(i_ - line_start_) + 1; }
+    int col() const {
+        return static_cast<int>(i_ - line_start_) + 1 + (line_start_ == 0 ? first_line_offset_ : 0);
+    }
+
+    // After a list keyword: `{`, a body of list characters only, `}` becomes three tokens, the
+    // body one NumberList. Anything else is left for the ordinary scan (nothing is consumed).
+    void number_list(std::vector<Token>& out) {
+        size_t j = i_;
+        while (j < s_.size() && (s_[j] == ' ' || s_[j] == '\t' || s_[j] == '\r' || s_[j] == '\n'))
+            ++j;
+        if (j >= s_.size() || s_[j] != '{') return;
+        const size_t body = j + 1;
+        size_t k = body;
+        while (k < s_.size() && is_list_char(s_[k])) ++k;
+        if (k >= s_.size() || s_[k] != '}') return;
+        skip_space_and_comments();  // to the '{', counting lines
+        Token open;
+        open.kind = TokKind::Symbol;
+        open.text = "{";
+        open.line = line_;
+        open.column = col();
+        out.push_back(std::move(open));
+        ++i_;
+        Token list;
+        list.kind = TokKind::NumberList;
+        list.line = line_;
+        list.column = col();
+        list.text.assign(s_, body, k - body);
+        out.push_back(std::move(list));
+        for (; i_ < k; ++i_)
+            if (s_[i_] == '\n') newline();
+        // The '}' is scanned next, as usual.
+    }
 
     [[noreturn]] void fail(int line, int column, const std::string& msg) const {
         throw Error(ErrorKind::Scene, FileLoc{file_, line, column}, msg);
@@ -130,7 +196,13 @@ private:
         }
         t.kind = TokKind::Number;
         t.text.assign(s_, b, i_ - b);
-        t.number = std::strtod(t.text.c_str(), nullptr);
+        // from_chars rounds as strtod does (correctly), several times faster; out of its range
+        // it leaves the value alone, and strtod says what that range end is (0 or a
+        // subnormal below, infinity above).
+        const char* first = s_.data() + b;
+        const char* last = s_.data() + i_;
+        const auto r = std::from_chars(first, last, t.number);
+        if (r.ec != std::errc() || r.ptr != last) t.number = std::strtod(t.text.c_str(), nullptr);
         // strtod turns a too-large literal into infinity; letting that through would poison
         // every value computed from it (and the image), so the literal itself is the error.
         if (!std::isfinite(t.number))
@@ -178,8 +250,7 @@ private:
             i_ += 2;
             return;
         }
-        static const std::string kSingles = "{}()[]<>,;=+-*/.?:!&|";
-        if (kSingles.find(c) == std::string::npos) {
+        if (!is_single_symbol(c)) {
             std::string shown = std::isprint(static_cast<unsigned char>(c))
                                     ? std::string("'") + c + "'"
                                     : "byte " + std::to_string(static_cast<unsigned char>(c));
@@ -194,12 +265,15 @@ private:
     size_t i_ = 0;
     size_t line_start_ = 0;
     int line_ = 1;
+    int first_line_offset_ = 0;  // columns before the text on its first line
+    bool lists_ = true;
 };
 
 }  // namespace
 
-std::vector<Token> scan(const std::string& text, const std::shared_ptr<const std::string>& file) {
-    return Scanner(text, file).run();
+std::vector<Token> scan(const std::string& text, const std::shared_ptr<const std::string>& file,
+                        int line, int column, bool lists) {
+    return Scanner(text, file, line, column, lists).run();
 }
 
 std::string describe(const Token& t) {
@@ -209,6 +283,7 @@ std::string describe(const Token& t) {
         case TokKind::String: return "the string \"" + t.text + "\"";
         case TokKind::Symbol: return "'" + t.text + "'";
         case TokKind::Directive: return "'#" + t.text + "'";
+        case TokKind::NumberList: return "a list of numbers";
         case TokKind::End: return "the end of the file";
     }
     return "?";

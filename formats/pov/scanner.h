@@ -17,6 +17,12 @@ enum class TokKind : unsigned char {
     String,     // text (escapes resolved)
     Symbol,     // text: one of { } ( ) [ ] < > , ; = + - * / . ? : ! & | <= >= !=
     Directive,  // text: the word after '#'
+    // text: the body of a mesh2 list (vertex_vectors { ... } and the like) that holds nothing
+    // but numbers, '<', '>', ',', '+', '-' and white space, read as a whole by the parser's
+    // fast path (literal_list.h) or scanned into tokens where it is met otherwise. line and
+    // column: where the body begins. A million-triangle mesh is one token instead of
+    // sixteen million.
+    NumberList,
     End,        // end of the file
 };
 
@@ -41,7 +47,10 @@ struct Token {
 
 // Throws glint::Error (ErrorKind::Scene) for an unterminated comment or string or a stray
 // character, at its location in `file`.
-std::vector<Token> scan(const std::string& text, const std::shared_ptr<const std::string>& file);
+// `line` and `column` say where `text` begins in the file (a NumberList's body scanned on its
+// own); `lists`: whether to make NumberList tokens at all.
+std::vector<Token> scan(const std::string& text, const std::shared_ptr<const std::string>& file,
+                        int line = 1, int column = 1, bool lists = true);
 
 // A human-readable description of a token for messages: "'sphere'", "the number 3", ...
 std::string describe(const Token& t);

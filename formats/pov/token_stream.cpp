@@ -103,10 +103,60 @@ void Parser::unsupported(const std::string& what) const {
 
 // ---------------------------------------------------------------- raw tokens
 
+void Parser::expand_number_list(const Token& list, int file) {
+    auto it = number_list_files_.find(&list);
+    int idx;
+    if (it != number_list_files_.end()) {
+        idx = it->second;
+    } else {
+        const SourceFile& from = *files_[file];
+        auto sf = std::make_unique<SourceFile>();
+        sf->name = from.name;
+        sf->dir = from.dir;
+        sf->system = from.system;
+        sf->tokens = scan(list.text, from.name, list.line, list.column, false);
+        files_.push_back(std::move(sf));
+        idx = static_cast<int>(files_.size()) - 1;
+        number_list_files_[&list] = idx;
+    }
+    frames_.push_back(Frame{idx, 0});
+}
+
+const Token* Parser::take_number_list() {
+    if (ungot_ || frames_.empty()) return nullptr;
+    Frame& f = frames_.back();
+    const Token& t = files_[f.file]->tokens[f.pos];
+    if (t.kind != TokKind::NumberList) return nullptr;
+    ++f.pos;
+    cur_ = &t;
+    cur_file_ = f.file;
+    return &t;
+}
+
+bool Parser::count_tokens(long long tokens, const FileLoc& at) {
+    if (tokens > options.max_tokens - token_count_) return false;
+    token_count_ += tokens;
+    if (options.cancel && options.cancel->load(std::memory_order_relaxed))
+        throw Error(ErrorKind::Cancelled, {}, "interrupted while parsing");
+    if (options.max_memory_mib > 0 &&
+        static_cast<long long>(resident_bytes() >> 20) > options.max_memory_mib)
+        fail_limit(at,
+                   "the scene holds more than " + std::to_string(options.max_memory_mib) +
+                       " MiB of memory while it is parsed",
+                   "--max-memory");
+    return true;
+}
+
 const Token& Parser::raw() {
     for (;;) {
         Frame& f = frames_.back();
         const Token& t = files_[f.file]->tokens[f.pos];
+        if (t.kind == TokKind::NumberList) {
+            // Not taken by a fast path: its tokens, in place.
+            ++f.pos;
+            expand_number_list(t, f.file);
+            continue;
+        }
         if (t.kind != TokKind::End) {
             ++f.pos;
             cur_ = &t;
