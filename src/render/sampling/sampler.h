@@ -73,6 +73,25 @@ inline uint32_t sobol1(uint32_t i) {
     return kSobol1.t[0][i & 0xffU] ^ kSobol1.t[1][(i >> 8) & 0xffU] ^
            kSobol1.t[2][(i >> 16) & 0xffU] ^ kSobol1.t[3][i >> 24];
 }
+// reverse_bits32(sobol1(i)), linear too, so the same four lookups in tables of reversed
+// values: what the Owen scramble of dimension 1 starts from.
+struct ReversedSobol1Tables {
+    uint32_t t[4][256];
+    constexpr ReversedSobol1Tables() : t() {
+        for (int b = 0; b < 4; ++b)
+            for (int x = 0; x < 256; ++x) {
+                uint32_t v = kSobol1.t[b][x], r = 0;
+                for (int k = 0; k < 32; ++k)
+                    if (v & (1U << k)) r |= 1U << (31 - k);
+                t[b][x] = r;
+            }
+    }
+};
+inline constexpr ReversedSobol1Tables kReversedSobol1{};
+inline uint32_t reversed_sobol1(uint32_t i) {
+    return kReversedSobol1.t[0][i & 0xffU] ^ kReversedSobol1.t[1][(i >> 8) & 0xffU] ^
+           kReversedSobol1.t[2][(i >> 16) & 0xffU] ^ kReversedSobol1.t[3][i >> 24];
+}
 
 // Largest double below 1, so samples stay in [0, 1).
 constexpr double kOneMinusEpsilon = 0x1.fffffffffffffp-1;
@@ -93,26 +112,29 @@ public:
         : pixel_seed_(hash_combine(hash_combine(hash_combine(seed, static_cast<uint32_t>(x)),
                                                 static_cast<uint32_t>(y)),
                                    0x5bd1e995U)),
-          index_(sample) {}
+          reversed_index_(reverse_bits32(sample)) {}
 
-    // The pair of dimensions (2 * pair, 2 * pair + 1). Dimension 0 is owen_scramble(sobol0(i))
-    // = reverse(lk_permute(reverse(reverse(i)))): the two inner reversals cancel.
+    // The pair of dimensions (2 * pair, 2 * pair + 1): with the shuffled index
+    // i = owen_scramble(index, s) = reverse(lk_permute(reverse(index))), dimension 0 is
+    // owen_scramble(sobol0(i)) = reverse(lk_permute(reverse(reverse(i)))) and dimension 1
+    // owen_scramble(sobol1(i)) = reverse(lk_permute(reversed_sobol1(i))). The same numbers
+    // with four bit reversals fewer: reverse(index) is made once, the others cancel.
     Sample2 get2(uint32_t pair) const {
         const uint32_t s = hash_combine(pixel_seed_, pair);
-        const uint32_t i = owen_scramble(index_, s);
+        const uint32_t i = reverse_bits32(lk_permute(reversed_index_, s));
         return {to_unit(reverse_bits32(lk_permute(i, hash_combine(s, 1)))),
-                to_unit(owen_scramble(sobol1(i), hash_combine(s, 2)))};
+                to_unit(reverse_bits32(lk_permute(reversed_sobol1(i), hash_combine(s, 2))))};
     }
     // One dimension: the first of a pair.
     double get1(uint32_t pair) const {
         const uint32_t s = hash_combine(pixel_seed_, pair);
-        const uint32_t i = owen_scramble(index_, s);
+        const uint32_t i = reverse_bits32(lk_permute(reversed_index_, s));
         return to_unit(reverse_bits32(lk_permute(i, hash_combine(s, 1))));
     }
 
 private:
     uint32_t pixel_seed_ = 0;
-    uint32_t index_ = 0;
+    uint32_t reversed_index_ = 0;  // reverse_bits32 of the sample index
 };
 
 }  // namespace glint::render
