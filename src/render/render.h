@@ -25,9 +25,24 @@ enum class IntegratorKind {
     Path,     // Monte Carlo path tracer (spp samples per pixel, averaged)
 };
 
+// A rectangle of pixels, [x0, x1) x [y0, y1), row 0 at the top.
+struct Region {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool empty() const { return x1 <= x0 || y1 <= y0; }
+    int width() const { return x1 - x0; }
+    int height() const { return y1 - y0; }
+    bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+    bool operator==(const Region&) const = default;
+};
+
 struct RenderOptions {
     int width = 320;
     int height = 240;
+    // Only these pixels of the width x height image (empty: all of them); the result is that
+    // rectangle, each pixel bit for bit as the whole image's render has it (the driver's
+    // tiles are blocks of the whole image, so adaptive AA compares the same neighbours, and
+    // the path tracer's random numbers depend on the pixel alone).
+    Region region;
     AaMode aa = AaMode::None;
     double aa_threshold = 0.3;  // POV-Ray's +A default
     int aa_depth = 3;           // POV-Ray's +R default

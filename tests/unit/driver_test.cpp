@@ -167,3 +167,94 @@ TEST(Driver, AdaptiveSupersamplesOnlyEdges) {
 
 }  // namespace
 }  // namespace glint::render
+
+namespace glint::render {
+namespace {
+
+// Region (x0, y0)-(x1, y1) of `full` equals `part` bit for bit.
+void expect_crop(const Image& full, const Image& part, const Region& r, const char* what) {
+    ASSERT_EQ(part.width, r.width()) << what;
+    ASSERT_EQ(part.height, r.height()) << what;
+    int differ = 0;
+    for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x)
+            for (int c = 0; c < 4; ++c)
+                differ += full.pixel(x, y)[c] != part.pixel(x - r.x0, y - r.y0)[c];
+    EXPECT_EQ(differ, 0) << what << " region " << r.x0 << "," << r.y0 << "," << r.x1 << ","
+                         << r.y1;
+}
+
+// Regions that cut blocks anywhere (adaptive AA compares neighbours within 32x32 blocks), the
+// whole image, one pixel, and a corner: each is the same pixels as the whole render.
+TEST(Driver, RegionsAreTheWholeRendersPixels) {
+    Camera cam(test_camera(), 97, 61);
+    const Region regions[] = {{0, 0, 97, 61}, {13, 5, 71, 40}, {31, 31, 33, 33},
+                              {96, 60, 97, 61}, {0, 32, 64, 61}, {50, 0, 51, 61}};
+    for (AaMode aa : {AaMode::None, AaMode::Adaptive, AaMode::Grid}) {
+        RenderOptions o;
+        o.width = 97;
+        o.height = 61;
+        o.aa = aa;
+        o.threads = 2;
+        const Image full = run_tiles(cam, o, {}, busy);
+        for (const Region& r : regions) {
+            o.region = r;
+            expect_crop(full, run_tiles(cam, o, {}, busy), r,
+                        aa == AaMode::None ? "none" : aa == AaMode::Adaptive ? "adaptive" : "grid");
+        }
+        o.region = {};
+    }
+}
+
+TEST(Driver, PathRegionsAreTheWholeRendersPixels) {
+    Camera cam(test_camera(), 70, 45);
+    // Radiance that depends on the sample's pixel and index, as the path tracer's does.
+    PathRadianceFn f = [](const Ray& r, const SampleId& id, FirstHit* first) {
+        if (first) {
+            first->hit = true;
+            first->albedo = Color(0.25, 0.5, id.index * 0.01);
+            first->depth = 2 + r.dir.x;
+        }
+        return busy(r) * (1 + 0.1 * (id.index % 3));
+    };
+    RenderOptions o;
+    o.width = 70;
+    o.height = 45;
+    o.spp = 7;
+    o.seed = 5;
+    o.aovs = true;
+    o.variance = true;
+    PathFilm full;
+    run_path_tiles(cam, o, f, &full);
+    for (const Region& r : {Region{3, 4, 41, 37}, Region{33, 0, 70, 45}, Region{0, 44, 1, 45}}) {
+        o.region = r;
+        PathFilm part;
+        run_path_tiles(cam, o, f, &part);
+        expect_crop(full.image, part.image, r, "image");
+        expect_crop(full.albedo, part.albedo, r, "albedo");
+        expect_crop(full.depth, part.depth, r, "depth");
+        expect_crop(full.variance, part.variance, r, "variance");
+    }
+}
+
+TEST(Driver, RegionsOutsideTheImageAreRefused) {
+    Camera cam(test_camera(), 40, 30);
+    RenderOptions o;
+    o.width = 40;
+    o.height = 30;
+    for (const Region& r : {Region{0, 0, 41, 30}, Region{-1, 0, 10, 10}, Region{5, 5, 5, 9},
+                            Region{10, 10, 4, 20}}) {
+        o.region = r;
+        try {
+            run_tiles(cam, o, {}, busy);
+            ADD_FAILURE() << "accepted " << r.x0 << "," << r.y0 << "," << r.x1 << "," << r.y1;
+        } catch (const Error& e) {
+            EXPECT_EQ(e.kind(), ErrorKind::Usage);
+            EXPECT_NE(std::string(e.what()).find("inside the 40x30 image"), std::string::npos)
+                << e.what();
+        }
+    }
+}
+
+}  // namespace
+}  // namespace glint::render

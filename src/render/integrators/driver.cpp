@@ -29,12 +29,24 @@ struct Tile {
     int x0, y0, x1, y1;  // [x0, x1) x [y0, y1)
 };
 
+// The pixels to render: the options' region, or the whole image.
+Region film_region(const RenderOptions& o) {
+    return o.region.empty() ? Region{0, 0, o.width, o.height} : o.region;
+}
+
+// The part of a tile inside the region (empty when they do not meet).
+Tile clip(const Tile& t, const Region& r) {
+    return {std::max(t.x0, r.x0), std::max(t.y0, r.y0), std::min(t.x1, r.x1),
+            std::min(t.y1, r.y1)};
+}
+
 class TileRenderer {
 public:
+    // `image` holds the region's pixels only.
     TileRenderer(const Camera& camera, const RenderOptions& options,
                  const DriverSettings& settings, const RadianceFn& radiance, Image* image)
         : camera_(camera), opt_(options), settings_(settings), radiance_(radiance),
-          image_(image) {}
+          image_(image), region_(film_region(options)) {}
 
     // False when cancelled before the tile was finished (its pixels are then incomplete).
     bool render(const Tile& t) const {
@@ -58,15 +70,17 @@ private:
     }
     Color sample(int px, int py) const { return sample(px, py, px, py, 0); }
 
+    // Pixel (x, y) of the whole image, which must lie in the region.
     void store(int x, int y, const Color& c) const {
-        float* p = image_->pixel(x, y);
+        float* p = image_->pixel(x - region_.x0, y - region_.y0);
         p[0] = sanitize(c.r);
         p[1] = sanitize(c.g);
         p[2] = sanitize(c.b);
         p[3] = 1.0f;
     }
 
-    bool none(const Tile& t) const {
+    bool none(const Tile& tile) const {
+        const Tile t = clip(tile, region_);
         for (int y = t.y0; y < t.y1; ++y) {
             if (cancelled()) return false;
             for (int x = t.x0; x < t.x1; ++x) store(x, y, sample(x, y));
@@ -74,7 +88,8 @@ private:
         return true;
     }
 
-    bool grid(const Tile& t) const {
+    bool grid(const Tile& tile) const {
+        const Tile t = clip(tile, region_);
         int n = std::max(1, opt_.grid_n);
         for (int y = t.y0; y < t.y1; ++y) {
             for (int x = t.x0; x < t.x1; ++x) {
@@ -151,8 +166,11 @@ private:
                 if (sample_cur) done[at(x, y)] = 1;
             }
         }
-        for (int y = t.y0; y < t.y1; ++y)
-            for (int x = t.x0; x < t.x1; ++x) store(x, y, px[at(x, y)]);
+        // The whole block was traced (its pixels depend on their neighbours in it); the
+        // region keeps its own.
+        const Tile kept = clip(t, region_);
+        for (int y = kept.y0; y < kept.y1; ++y)
+            for (int x = kept.x0; x < kept.x1; ++x) store(x, y, px[at(x, y)]);
         return true;
     }
 
@@ -161,41 +179,58 @@ private:
     const DriverSettings& settings_;
     const RadianceFn& radiance_;
     Image* image_;
+    Region region_;
 };
 
-std::vector<Tile> make_tiles(int width, int height) {
+// The blocks of the whole width x height image that meet the region, in image order.
+std::vector<Tile> make_tiles(int width, int height, const Region& region) {
     std::vector<Tile> tiles;
     for (int y = 0; y < height; y += kBlockSize)
-        for (int x = 0; x < width; x += kBlockSize)
-            tiles.push_back({x, y, std::min(x + kBlockSize, width), std::min(y + kBlockSize, height)});
+        for (int x = 0; x < width; x += kBlockSize) {
+            const Tile t{x, y, std::min(x + kBlockSize, width), std::min(y + kBlockSize, height)};
+            const Tile c = clip(t, region);
+            if (c.x0 < c.x1 && c.y0 < c.y1) tiles.push_back(t);
+        }
     return tiles;
 }
 
-// Sets every pixel of the tiles not marked done to transparent black (RGBA 0).
+// Sets every region pixel of the tiles not marked done to transparent black (RGBA 0).
 void clear_unfinished(Image* image, const std::vector<Tile>& tiles,
-                      const std::vector<char>& done) {
+                      const std::vector<char>& done, const Region& region) {
     if (image->rgba.empty()) return;
     for (size_t i = 0; i < tiles.size(); ++i) {
         if (done[i]) continue;
-        const Tile& t = tiles[i];
+        const Tile t = clip(tiles[i], region);
         for (int y = t.y0; y < t.y1; ++y)
-            for (int x = t.x0; x < t.x1; ++x) std::fill_n(image->pixel(x, y), 4, 0.0f);
+            for (int x = t.x0; x < t.x1; ++x)
+                std::fill_n(image->pixel(x - region.x0, y - region.y0), 4, 0.0f);
     }
+}
+
+void check_region(const RenderOptions& o) {
+    if (o.width <= 0 || o.height <= 0) throw Error(ErrorKind::Usage, {}, "image size must be positive");
+    const Region& r = o.region;
+    if (r.empty() && (r.x0 | r.y0 | r.x1 | r.y1) == 0) return;
+    if (r.empty() || r.x0 < 0 || r.y0 < 0 || r.x1 > o.width || r.y1 > o.height)
+        throw Error(ErrorKind::Usage, {},
+                    "region " + std::to_string(r.x0) + "," + std::to_string(r.y0) + "," +
+                        std::to_string(r.x1) + "," + std::to_string(r.y1) +
+                        " is not a non-empty rectangle inside the " + std::to_string(o.width) +
+                        "x" + std::to_string(o.height) + " image");
 }
 
 }  // namespace
 
 Image run_tiles(const Camera& camera, const RenderOptions& options,
                 const DriverSettings& settings, const RadianceFn& radiance) {
-    if (options.width <= 0 || options.height <= 0) {
-        throw Error(ErrorKind::Usage, {}, "image size must be positive");
-    }
+    check_region(options);
+    const Region region = film_region(options);
     Image image;
-    image.width = options.width;
-    image.height = options.height;
-    image.rgba.assign(static_cast<size_t>(options.width) * options.height * 4, 0.0f);
+    image.width = region.width();
+    image.height = region.height();
+    image.rgba.assign(static_cast<size_t>(image.width) * image.height * 4, 0.0f);
 
-    const std::vector<Tile> tiles = make_tiles(options.width, options.height);
+    const std::vector<Tile> tiles = make_tiles(options.width, options.height, region);
     std::vector<char> tile_done(tiles.size(), 0);  // each written by the one thread of its tile
 
     TileRenderer renderer(camera, options, settings, radiance, &image);
@@ -220,7 +255,7 @@ Image run_tiles(const Camera& camera, const RenderOptions& options,
     });
     if (cancelled || (options.cancel && options.cancel->load())) {
         auto partial = std::make_shared<PartialRender>();
-        clear_unfinished(&image, tiles, tile_done);
+        clear_unfinished(&image, tiles, tile_done, region);
         partial->film.image = std::move(image);
         partial->tiles_total = tiles.size();
         partial->tiles_done = static_cast<size_t>(std::count(tile_done.begin(), tile_done.end(), 1));
@@ -258,11 +293,11 @@ struct PixelAccumulators {
 
 int run_path_tiles(const Camera& camera, const RenderOptions& options,
                    const PathRadianceFn& radiance, PathFilm* film) {
-    if (options.width <= 0 || options.height <= 0) {
-        throw Error(ErrorKind::Usage, {}, "image size must be positive");
-    }
+    check_region(options);
+    const Region region = film_region(options);
+    const int fw = region.width(), fh = region.height();  // the film: the region
     const auto start = std::chrono::steady_clock::now();
-    const size_t pixels = static_cast<size_t>(options.width) * options.height;
+    const size_t pixels = static_cast<size_t>(fw) * fh;
     std::vector<double> sum(pixels * 3, 0.0);
     PixelAccumulators extra;
     if (options.aovs) extra.aov.assign(pixels * 7, 0.0);
@@ -270,7 +305,7 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
         extra.mean.assign(pixels * 3, 0.0);
         extra.m2.assign(pixels * 3, 0.0);
     }
-    const std::vector<Tile> tiles = make_tiles(options.width, options.height);
+    const std::vector<Tile> tiles = make_tiles(options.width, options.height, region);
     const int total = std::max(1, options.spp);
     int done = 0;
     std::atomic<bool> cancelled{false};
@@ -280,14 +315,14 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
     // The outputs at n samples per pixel from the sums; after every finished pass, so an
     // interruption finds the last pass's film ready (and the last one is the result).
     auto resolve = [&](int n, PathFilm* out) {
-        out->image = blank_image(options.width, options.height);
+        out->image = blank_image(fw, fh);
         const double inv = 1.0 / n;
         for (size_t i = 0; i < pixels; ++i)
             for (int c = 0; c < 3; ++c) out->image.rgba[i * 4 + c] = sanitize(sum[i * 3 + c] * inv);
         if (!extra.aov.empty()) {
-            out->albedo = blank_image(options.width, options.height);
-            out->normal = blank_image(options.width, options.height);
-            out->depth = blank_image(options.width, options.height);
+            out->albedo = blank_image(fw, fh);
+            out->normal = blank_image(fw, fh);
+            out->depth = blank_image(fw, fh);
             for (size_t i = 0; i < pixels; ++i) {
                 const double* a = &extra.aov[i * 7];
                 for (int c = 0; c < 3; ++c) {
@@ -298,7 +333,7 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
             }
         }
         if (!extra.mean.empty()) {
-            out->variance = blank_image(options.width, options.height);
+            out->variance = blank_image(fw, fh);
             if (n >= 2) {
                 const double scale = 1.0 / (static_cast<double>(n) * (n - 1));
                 for (size_t i = 0; i < pixels; ++i)
@@ -316,10 +351,11 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
         std::vector<char> tile_done(tiles.size(), 0);
         auto body = [&](const tbb::blocked_range<size_t>& range) {
             for (size_t i = range.begin(); i != range.end(); ++i) {
-                const Tile& t = tiles[i];
+                const Tile t = clip(tiles[i], region);
                 for (int y = t.y0; y < t.y1; ++y) {
                     for (int x = t.x0; x < t.x1; ++x) {
-                        const size_t p = static_cast<size_t>(y) * options.width + x;
+                        const size_t p =
+                            static_cast<size_t>(y - region.y0) * fw + (x - region.x0);
                         double* acc = &sum[p * 3];
                         for (int s = s0; s < s1; ++s) {
                             if (cancel_requested()) {
@@ -389,7 +425,7 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
                 for (Image* image : {&partial->film.image, &partial->film.albedo,
                                      &partial->film.normal, &partial->film.depth,
                                      &partial->film.variance})
-                    clear_unfinished(image, tiles, tile_done);
+                    clear_unfinished(image, tiles, tile_done, region);
                 partial->tiles_done =
                     static_cast<size_t>(std::count(tile_done.begin(), tile_done.end(), 1));
             }
