@@ -34,6 +34,14 @@ struct RenderArgs {
     bool variance = false;
     // --save-partial: on SIGINT/SIGTERM write what was rendered (render_command.cpp).
     bool save_partial = false;
+    // Parts of a render (parts.h): --region x0,y0,x1,y1; --frames A-B (the animation, or a
+    // subset of the one POV-Ray's options define); --frame K (one frame of it);
+    // --skip-existing (leave an output that is already this job's complete part alone).
+    std::string region;
+    std::string frames;
+    int frame = -1;
+    bool skip_existing = false;
+    bool animation_frame = false;  // set by run_render for each frame of an animation
     // --view/--look/--exposure/--gamma/--ocio-config: Blender's color management for 8-bit
     // output (convert_command.cpp: add_view_options).
     io::ViewSettings view;
@@ -43,6 +51,28 @@ struct RenderArgs {
     struct {
         bool width = false, height = false, aa = false, threads = false, clock = false;
     } given;
+};
+
+// `glint merge PART... -o OUT` (merge_command.cpp).
+struct MergeArgs {
+    std::vector<std::string> parts;
+    std::string output;
+    bool verify = false;  // --verify: check the parts (frames), write nothing
+};
+
+// `glint farm submit SCENE -o OUT --tiles N | --frames A-B` (farm_command.cpp).
+struct FarmArgs {
+    std::string scene;
+    std::string output;
+    int tiles = 0;
+    std::string frames;
+    std::string partition;
+    std::string dir;        // the job's folder; default OUT-stem.farm beside OUT
+    int cpus = 0;           // --cpus-per-task (0: Slurm's default)
+    int retries = 2;        // attempts after a failed one, inside the task
+    bool dry_run = false;
+    bool no_submit = false;  // write the job's files, submit nothing (other schedulers)
+    std::vector<std::string> render_args;  // passed to every `glint render`
 };
 
 struct IrArgs {
@@ -94,6 +124,9 @@ CLI::App* add_compare_command(CLI::App& app, CompareArgs& args);
 CLI::App* add_report_command(CLI::App& app, ReportArgs& args);
 
 int run_render(const RenderArgs& args);
+// The settings a render of `args` uses: glint's flags with POV-Ray's switches and .ini files
+// merged in (image size, output name, ...), as run_render merges them.
+RenderArgs effective_render_args(const RenderArgs& args);
 // Where --aov NAME (and --variance) writes for OUTPUT: OUT's folder/<OUT's stem>.NAME.exr.
 std::string aov_output_path(const std::string& output, const std::string& name);
 // Where POV-Ray arguments may appear: argv with the POV-Ray ones of `glint render` taken out
@@ -103,5 +136,9 @@ std::vector<std::string> take_pov_arguments(const std::vector<std::string>& argv
 int run_ir(const IrArgs& args);
 int run_compare(const CompareArgs& args);
 int run_report(const ReportArgs& args);
+CLI::App* add_merge_command(CLI::App& app, MergeArgs& args);
+int run_merge(const MergeArgs& args);
+CLI::App* add_farm_command(CLI::App& app, FarmArgs& args);
+int run_farm(const FarmArgs& args);
 
 }  // namespace glint::app

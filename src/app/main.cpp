@@ -1,6 +1,6 @@
 // glint: the command-line front end. It only parses flags and dispatches; each subcommand
 // lives in its own file (render_command.cpp, ir_command.cpp, compare_command.cpp,
-// report_command.cpp, convert_command.cpp).
+// report_command.cpp, convert_command.cpp, merge_command.cpp, farm_command.cpp).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
@@ -21,11 +21,15 @@ int main(int argc, char** argv) {
     CompareArgs compare_args;
     ReportArgs report_args;
     ConvertArgs convert_args;
+    MergeArgs merge_args;
+    FarmArgs farm_args;
     CLI::App* render = add_render_command(app, render_args);
     CLI::App* ir = add_ir_command(app, ir_args);
     CLI::App* compare = add_compare_command(app, compare_args);
     CLI::App* report = add_report_command(app, report_args);
     CLI::App* convert = add_convert_command(app, convert_args);
+    CLI::App* merge = add_merge_command(app, merge_args);
+    CLI::App* farm = add_farm_command(app, farm_args);
 
     // POV-Ray's switches and .ini files (`glint render +W640 scene.ini`) are not CLI11 flags:
     // they are taken out first and read in order by run_render.
@@ -53,6 +57,8 @@ int main(int argc, char** argv) {
         if (compare->parsed()) return run_compare(compare_args);
         if (report->parsed()) return run_report(report_args);
         if (convert->parsed()) return run_convert(convert_args);
+        if (merge->parsed()) return run_merge(merge_args);
+        if (farm->parsed()) return run_farm(farm_args);
     } catch (const glint::Error& e) {
         return report_error(e);
     } catch (const std::bad_alloc&) {

@@ -12,8 +12,10 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/parts.h"
 #include "app/pov_options.h"
 #include "app/scene_loading.h"
+#include "core/image_library.h"
 #include "io/color_encoding.h"
 #include "io/image_output.h"
 #include "io/progress.h"
@@ -165,6 +167,23 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                   "Path tracer: also write OUT-stem.variance.exr, per pixel and channel the "
                   "variance of the pixel's mean (sample variance / n; 0 with fewer than 2 "
                   "samples)");
+    cmd->add_option("--region", args.region,
+                    "Render only the pixels x0..x1-1, y0..y1-1 (x0,y0,x1,y1; 0 at the top left) "
+                    "of the image, each as the whole render has it, bit for bit; the file is "
+                    "that rectangle, its metadata says where it belongs (glint merge joins "
+                    "them)");
+    cmd->add_option("--frames", args.frames,
+                    "Render frames A to B of an animation (A-B): POV-Ray's Initial_Frame and "
+                    "Final_Frame, the clock running from 0 (+KI) to 1 (+KF) over them; where "
+                    "POV-Ray options define the animation, the frames of it to render (+SF, "
+                    "+EF). Output names get the frame number, as POV-Ray's do");
+    cmd->add_option("--frame", args.frame,
+                    "Render only frame K of the animation (--frames or POV-Ray's options)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_flag("--skip-existing", args.skip_existing,
+                  "Leave the output alone when it is already this render's complete result "
+                  "(read back in full, its job signature and region those of this command): "
+                  "reruns of a farm job render only what is missing");
     add_view_options(*cmd, args.view);
     cmd->add_flag("-v,--verbose", args.verbose, "Print features used and skipped, and timings");
     cmd->add_option("--progress", args.progress,
@@ -344,9 +363,15 @@ int save_partial(const RenderArgs& args, const std::vector<std::string>& aovs,
 
 }  // namespace
 
+RenderArgs effective_render_args(const RenderArgs& args) {
+    if (args.pov_args.empty()) return args;
+    return merge_pov_settings(args, read_pov_arguments(args.pov_args));
+}
+
 int run_render(const RenderArgs& args) {
     install_signal_handlers();
-    if (args.pov_args.empty()) {
+    const bool frame_flags = !args.frames.empty() || args.frame >= 0;
+    if (args.pov_args.empty() && !frame_flags) {
         if (args.scene.path.empty())
             throw Error(ErrorKind::Usage, {}, "no scene to render: give SCENE.pov");
         if (args.output.empty())
@@ -355,12 +380,43 @@ int run_render(const RenderArgs& args) {
         a.scene.clock_on = args.given.clock;
         return render_frame(a);
     }
+    if (args.pov_args.empty() && args.output.empty())
+        throw Error(ErrorKind::Usage, {}, "no output: give -o OUT.png (or POV-Ray's +O)");
     PovSettings pov = read_pov_arguments(args.pov_args);
+    const bool pov_animation = pov.initial_frame || pov.final_frame;
+    if (!args.frames.empty()) {
+        const FrameRange r = parse_frame_range(args.frames, "--frames");
+        if (pov_animation) {
+            pov.subset_start = r.first;
+            pov.subset_end = r.last;
+        } else {
+            pov.initial_frame = r.first;
+            pov.final_frame = r.last;
+        }
+    }
+    if (args.frame >= 0) {
+        pov.subset_start = args.frame;
+        pov.subset_end = args.frame;
+    }
     RenderArgs a = merge_pov_settings(args, pov);
     AnimationPlan plan = plan_animation(pov);
-    if (!plan.animated) return render_frame(a);
+    if (!plan.animated) {
+        if (args.frame >= 0)
+            throw Error(ErrorKind::Usage, {},
+                        "--frame " + std::to_string(args.frame) +
+                            ": no animation to take it from (give --frames A-B, or POV-Ray's "
+                            "+KFI and +KFF)");
+        return render_frame(a);
+    }
     if (args.given.clock) warn("--clock is ignored: the animation sets the clock of each frame");
-    if (plan.frames.empty()) throw Error(ErrorKind::Usage, {}, "the frame subset is empty");
+    if (plan.frames.empty()) {
+        if (args.frame >= 0)
+            throw Error(ErrorKind::Usage, {},
+                        "--frame " + std::to_string(args.frame) + " is not a frame of the "
+                        "animation (" + std::to_string(plan.initial_frame) + " to " +
+                            std::to_string(plan.final_frame) + ")");
+        throw Error(ErrorKind::Usage, {}, "the frame subset is empty");
+    }
     for (const PovFrame& f : plan.frames) {
         RenderArgs fa = a;
         fa.scene.clock = f.clock;
@@ -371,6 +427,7 @@ int run_render(const RenderArgs& args) {
         fa.scene.initial_frame = plan.initial_frame;
         fa.scene.final_frame = plan.final_frame;
         fa.scene.frame_number = f.number;
+        fa.animation_frame = true;
         fa.output = frame_output_name(a.output, f.number, plan.digits);
         if (args.verbose)
             std::fprintf(stderr, "frame %d (%d..%d), clock %g: %s\n", f.number,
@@ -383,6 +440,71 @@ int run_render(const RenderArgs& args) {
 }
 
 namespace {
+
+// Everything about this render that changes its pixels, for the job signature (parts.h): the
+// region, the output's name and, in an animation, the frame are not in it (parts and frames
+// of one job share it; their metadata says which they are).
+std::string job_settings(const RenderArgs& a) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    char buf[64];
+    auto num = [&](double v) {
+        std::snprintf(buf, sizeof buf, "%.17g", v);
+        return std::string(buf);
+    };
+    std::string s = "scene=" + fs::weakly_canonical(a.scene.path, ec).string();
+    for (const std::string& d : a.scene.include_dirs) s += ";I=" + d;
+    for (const auto& [name, value] : a.scene.declares) s += ";declare " + name + "=" + num(value);
+    s += ";size=" + std::to_string(a.scene.width) + "x" + std::to_string(a.scene.height);
+    s += ";aa=" + a.aa + ";aa_depth=" + std::to_string(a.aa_depth);
+    s += ";integrator=" + a.integrator;
+    if (a.integrator == "path")
+        s += ";spp=" + std::to_string(a.spp) + ";max_depth=" + std::to_string(a.max_depth) +
+             ";seed=" + std::to_string(a.seed) + ";time_limit=" + num(a.time_limit) +
+             ";aov=" + a.aov + ";variance=" + std::to_string(a.variance);
+    if (a.animation_frame)
+        s += ";frames=" + std::to_string(a.scene.initial_frame) + "-" +
+             std::to_string(a.scene.final_frame) + ";clock=" +
+             num(a.scene.initial_clock.value_or(0)) + ".." + num(a.scene.final_clock.value_or(1));
+    else
+        s += ";clock=" + num(a.scene.clock) + ";clock_on=" + std::to_string(a.scene.clock_on);
+    s += ";view=" + a.view.view + "|" + a.view.look + "|" + num(a.view.exposure) + "|" +
+         num(a.view.gamma) + "|" + a.view.display + "|" + a.view.config_path;
+    s += ";format=" + fs::path(a.output).extension().string();
+    return s;
+}
+
+// The metadata of every output: the job, the whole image's size, and the region and frame
+// that this one is.
+io::ImageMetadata part_metadata(const RenderArgs& a, const render::Region& region) {
+    io::ImageMetadata m = {
+        {kJobKey, job_signature(job_settings(a), a.scene.path)},
+        {kSizeKey, std::to_string(a.scene.width) + "x" + std::to_string(a.scene.height)},
+    };
+    if (!region.empty()) m.emplace_back(kRegionKey, region_string(region));
+    if (a.animation_frame) m.emplace_back(kFrameKey, std::to_string(a.scene.frame_number));
+    return m;
+}
+
+// --skip-existing: whether `path` is already a complete output with this metadata: it reads
+// back in full, at the right size, and its header carries the same job, region and frame.
+bool complete_output(const std::string& path, const io::ImageMetadata& want, int width,
+                     int height) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return false;
+    std::string error;
+    auto reader = image_library().open(path, {}, &error);
+    if (!reader) return false;
+    const ImageHeader& h = reader->header();
+    if (h.width != width || h.height != height || h.channels < 1) return false;
+    for (const auto& [key, value] : want) {
+        bool found = false;
+        for (const auto& [k, v] : h.text) found = found || (k == key && v == value);
+        if (!found) return false;
+    }
+    std::vector<float> pixels(static_cast<size_t>(width) * height * h.channels);
+    return reader->read(h.channels, pixels.data()).empty();
+}
 
 int render_frame(const RenderArgs& args) {
     Clock::time_point start = Clock::now();
@@ -407,9 +529,34 @@ int render_frame(const RenderArgs& args) {
                         " needs --integrator path (the Whitted integrator has no AOVs)");
     options.aovs = !aovs.empty();
     options.variance = args.variance;
+    if (!args.region.empty()) {
+        options.region = parse_region(args.region, "--region");
+        const render::Region& r = options.region;
+        if (r.x1 > options.width || r.y1 > options.height)
+            throw Error(ErrorKind::Usage, {},
+                        "--region " + args.region + " reaches past the " +
+                            std::to_string(options.width) + "x" + std::to_string(options.height) +
+                            " image");
+    }
     check_output_path(args.output);
     for (const std::string& name : aovs) io::check_writable(aov_output_path(args.output, name));
     if (args.variance) io::check_writable(aov_output_path(args.output, "variance"));
+    const io::ImageMetadata metadata = part_metadata(args, options.region);
+    if (args.skip_existing) {
+        const int w = options.region.empty() ? options.width : options.region.width();
+        const int h = options.region.empty() ? options.height : options.region.height();
+        bool complete = complete_output(args.output, metadata, w, h);
+        for (const std::string& name : aovs)
+            complete = complete && complete_output(aov_output_path(args.output, name), metadata, w, h);
+        if (args.variance)
+            complete = complete &&
+                       complete_output(aov_output_path(args.output, "variance"), metadata, w, h);
+        if (complete) {
+            std::fprintf(stderr, "glint: %s is already complete (job %s), skipped\n",
+                         args.output.c_str(), metadata[0].second.c_str());
+            return kExitOk;
+        }
+    }
     // A bad view, look or missing config fails before the render, not after it.
     const io::ViewSettings view = checked_view_settings(args.view);
     if (view.active() && io::is_float_format(args.output))
@@ -452,7 +599,7 @@ int render_frame(const RenderArgs& args) {
              " sample per pixel, the variance image is 0");
     write_outputs(args, aovs, encoding,
                   {&result.image, &result.albedo, &result.normal, &result.depth, &result.variance},
-                  {});
+                  metadata);
     double write_seconds = seconds_since(write_start);
     if (interrupted) {
         std::fprintf(stderr, "glint: interrupted after the render finished; the image written "

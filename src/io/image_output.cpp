@@ -310,6 +310,10 @@ void write_float_exr(const render::Image& image, const std::string& path, int ch
     write_atomically(path, std::move(spec), metadata, batch);
 }
 
+void write_pixels(const std::string& path, ImageWrite w, const ImageMetadata& metadata) {
+    write_atomically(path, std::move(w), metadata, nullptr);
+}
+
 render::Image read_float_image(const std::string& path, bool* has_alpha) {
     std::string why;
     std::unique_ptr<ImageReader> in = image_library().open(path, {}, &why);

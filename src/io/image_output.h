@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/image_library.h"
 #include "render/image.h"
 
 namespace glint::io {
@@ -93,6 +94,11 @@ void write_image(const render::Image& image, const std::string& path,
 // (OpenEXR's depth channel), three R, G, B. Atomic like write_image; throws Error(Output).
 void write_float_exr(const render::Image& image, const std::string& path, int channels = 3,
                      const ImageMetadata& metadata = {}, OutputBatch* batch = nullptr);
+
+// Writes pixels that are already in the file's own type and encoding (w.data, w.type: glint
+// merge joins parts without decoding or encoding them again), atomically like write_image.
+// w.path is ignored; w.format must be an OpenImageIO writer name. Throws Error(Output).
+void write_pixels(const std::string& path, ImageWrite w, const ImageMetadata& metadata);
 
 // Reads a float image (OpenEXR, Radiance HDR) as linear RGBA: one channel becomes gray, a
 // missing alpha 1; `has_alpha` tells whether the file had one. Throws Error(MissingFile) when
