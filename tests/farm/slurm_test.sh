@@ -8,6 +8,12 @@
 # render. Needs root (slurmd runs the jobs) and Debian's slurm-wlm and munge.
 # Usage: slurm_test.sh GLINT SCENE ANIMATED_SCENE WORK_DIR
 set -euo pipefail
+# slurmd starts the jobs, and only root may start them: as another user, the whole test runs
+# under sudo (as .ci/run's apt-get does).
+if [[ $EUID != 0 ]]; then
+    sudo -n true 2> /dev/null || { echo "FAIL: slurm_test.sh needs root, or sudo without a password" >&2; exit 1; }
+    exec sudo -n -E "$0" "$@"
+fi
 glint=$1 scene=$2 anim=$3 work=$4
 fail() {
     echo "FAIL: $*" >&2
