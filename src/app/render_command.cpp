@@ -465,7 +465,8 @@ std::string job_settings(const RenderArgs& a) {
     if (a.animation_frame)
         s += ";frames=" + std::to_string(a.scene.initial_frame) + "-" +
              std::to_string(a.scene.final_frame) + ";clock=" +
-             num(a.scene.initial_clock.value_or(0)) + ".." + num(a.scene.final_clock.value_or(1));
+             num(a.scene.initial_clock.value_or(0)) + ".." + num(a.scene.final_clock.value_or(1)) +
+             ";clock_delta=" + num(a.scene.clock_delta);
     else
         s += ";clock=" + num(a.scene.clock) + ";clock_on=" + std::to_string(a.scene.clock_on);
     s += ";view=" + a.view.view + "|" + a.view.look + "|" + num(a.view.exposure) + "|" +

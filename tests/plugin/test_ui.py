@@ -392,7 +392,10 @@ def steps(glint):
         check(time.monotonic() - sent < 10.0, "Esc: glint (pid %d) still runs 10 s after Esc"
               % pid)
         yield 0.01
+    # The watcher may still be in its 5 ms sleep when the main thread sees the pid gone.
+    watcher.join(timeout=5)
     gone = watcher.gone_at
+    check(gone is not None, "Esc: the watcher thread never saw glint (pid %d) end" % pid)
     yield from wait_render_end("Esc", n_complete + n_cancel)
     ended_s = time.monotonic() - sent
     brk = STATE["break_at"]
