@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "render/accel/bvh.h"
+#include "render/accel/wide_bvh.h"
 #include "render/materials/opacity.h"
+#include "render/shapes/mesh_kernels.h"
 #include "render/shapes/mesh_prim.h"
 #include "render/shapes/object_node.h"
 
@@ -32,6 +34,11 @@ public:
             if (b.is_infinite()) unbounded_.push_back(static_cast<int>(i));
         }
         bvh_ = Bvh(boxes, 2);
+        // The four-wide walk pays where the tree is deep: sombrero's 66,049 spheres render in
+        // 0.68 s with it against 0.75 s, while 1,024 spheres (0.157 s against 0.150) and
+        // drums' few hundred parts are a little slower, its per-leaf call costing more than
+        // the levels it saves.
+        if (bvh_.nodes().size() > kWideFrom) wide_ = WideBvh(bvh_);
     }
 
     bool intersect(const Ray& ray, Hit* hit) const override {
@@ -61,7 +68,7 @@ public:
             return false;
         };
         double tmax = ray.tmax;
-        bvh_.traverse(ray, tmax, visit);
+        traverse(ray, tmax, visit);
         for (int i : unbounded_) visit(i, tmax);
         if (best_i == INT_MAX) return false;
         if (best_deferred) nodes_[best_i]->finish_deferred(best);
@@ -73,7 +80,7 @@ public:
         if (!valid(ray)) return false;
         auto visit = [&](int i, double&) { return nodes_[i]->occludes(ray, ray.tmax); };
         double tmax = ray.tmax;
-        if (bvh_.traverse(ray, tmax, visit)) return true;
+        if (traverse(ray, tmax, visit)) return true;
         for (int i : unbounded_)
             if (visit(i, tmax)) return true;
         return false;
@@ -90,7 +97,7 @@ public:
             return true;
         };
         double tmax = ray.tmax;
-        if (bvh_.traverse(ray, tmax, visit)) return true;
+        if (traverse(ray, tmax, visit)) return true;
         for (int i : unbounded_)
             if (visit(i, tmax)) return true;
         return false;
@@ -117,7 +124,7 @@ public:
             return true;
         };
         double tmax = ray.tmax;
-        if (bvh_.traverse(ray, tmax, visit)) return true;
+        if (traverse(ray, tmax, visit)) return true;
         for (int i : unbounded_)
             if (visit(i, tmax)) return true;
         return false;
@@ -151,7 +158,32 @@ private:
     std::vector<char> opaque_;  // per node: no surface of it lets light through
     bool any_opaque_ = false;
     std::vector<int> unbounded_;
+    static constexpr size_t kWideFrom = 8192;  // binary nodes
+
+    // The walk over the objects' BVH: visit(i, tmax) for every object whose box the ray enters
+    // within tmax, nearest box first (in big scenes the four-wide tree, through the mesh
+    // kernels' SIMD box test); true when visit said so (Bvh::traverse's contract).
+    template <class Visit>
+    bool traverse(const Ray& ray, double& tmax, Visit& visit) const {
+        if (wide_.nodes().empty()) return bvh_.traverse(ray, tmax, visit);
+        struct Ctx {
+            const std::vector<int>* order;
+            Visit* visit;
+        } ctx{&bvh_.order(), &visit};
+        return kernels_.walk(
+            wide_.nodes().data(), static_cast<int>(bvh_.order().size()), ray, &tmax,
+            [](void* c, int first, int n, double* t) {
+                auto* x = static_cast<Ctx*>(c);
+                for (int k = first; k < first + n; ++k)
+                    if ((*x->visit)((*x->order)[static_cast<size_t>(k)], *t)) return true;
+                return false;
+            },
+            &ctx);
+    }
+
     Bvh bvh_;
+    WideBvh wide_;  // empty below kWideFrom
+    const MeshKernels& kernels_ = mesh_kernels();
     Bounds3 bounds_;
 };
 

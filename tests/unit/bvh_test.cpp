@@ -65,16 +65,16 @@ bool brute_force(const std::vector<std::unique_ptr<render::Geometry>>& singles,
     return found;
 }
 
-TEST(Bvh, IdenticalToBruteForce) {
-    std::mt19937_64 rng(11);
-    scene::Scene s = random_scene(rng, 300);
+void check_against_brute_force(int objects, uint64_t seed, int rays, int min_hits) {
+    std::mt19937_64 rng(seed);
+    scene::Scene s = random_scene(rng, objects);
     auto g = test::build(s);
     std::vector<std::unique_ptr<render::Geometry>> singles;
     for (const auto& o : s.objects) singles.push_back(test::build(test::scene_of({o})));
     std::uniform_real_distribution<double> u(-15, 15);
     std::normal_distribution<double> nd;
     int hits = 0, mismatches = 0, occl_mismatch = 0;
-    for (int i = 0; i < 20000; ++i) {
+    for (int i = 0; i < rays; ++i) {
         render::Ray r{{u(rng), u(rng), u(rng)}, {nd(rng), nd(rng), nd(rng)}, kInfinity};
         if (i % 7 == 0) r.dir = {0, 0, 1};          // zero components
         if (i % 11 == 0) r.origin = {0, 0, -15};   // through the duplicate spheres
@@ -92,10 +92,15 @@ TEST(Bvh, IdenticalToBruteForce) {
             a.material != b.material)
             ++mismatches;
     }
-    EXPECT_EQ(mismatches, 0);
-    EXPECT_EQ(occl_mismatch, 0);
-    EXPECT_GT(hits, 5000);
+    EXPECT_EQ(mismatches, 0) << objects << " objects";
+    EXPECT_EQ(occl_mismatch, 0) << objects << " objects";
+    EXPECT_GT(hits, min_hits) << objects << " objects";
 }
+
+TEST(Bvh, IdenticalToBruteForce) { check_against_brute_force(300, 11, 20000, 5000); }
+
+// Past some 8,000 nodes the scene's objects are walked in the four-wide tree (geometry.cpp).
+TEST(Bvh, WideSceneTreeIdenticalToBruteForce) { check_against_brute_force(20000, 12, 800, 400); }
 
 // A union of many children (searched through its own BVH) gives the same hits as the same
 // children placed as separate top-level objects.

@@ -31,6 +31,9 @@ struct MeshHit {
 
 // Receives each hit of all(): position, hit and vertices.
 using MeshHitSink = void (*)(void* ctx, const MeshHit& hit);
+// Receives each leaf a walk() reaches: its first primitive (a position in the BVH's order())
+// and count; may lower *tmax; returning true ends the walk.
+using WideLeafFn = bool (*)(void* ctx, int first, int count, double* tmax);
 
 struct MeshKernels {
     // Nearest hit with 0 < t < tmax; equal t goes to the lower face.
@@ -39,6 +42,11 @@ struct MeshKernels {
     bool (*any)(const MeshView& mesh, const Ray& ray, double tmax);
     // Every hit with 0 < t < tmax, in no particular order.
     void (*all)(const MeshView& mesh, const Ray& ray, double tmax, MeshHitSink sink, void* ctx);
+    // The four-wide tree alone, nearest box first, for primitives other than triangles (the
+    // scene's objects): leaf() for every leaf the ray enters within *tmax. With no nodes, one
+    // leaf of all `count` primitives. Returns whether a leaf ended it.
+    bool (*walk)(const WideNode* nodes, int count, const Ray& ray, double* tmax, WideLeafFn leaf,
+                 void* ctx);
     const char* name;
 };
 
