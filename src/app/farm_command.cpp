@@ -233,14 +233,7 @@ int run_farm(const FarmArgs& f) {
         const FrameRange range = parse_frame_range(f.frames, "--frames");
         // The frames' file names, as glint render names them (POV-Ray's rule).
         PovSettings pov = read_pov_arguments(ra.pov_args);
-        const bool pov_animation = pov.initial_frame || pov.final_frame;
-        if (pov_animation) {
-            pov.subset_start = range.first;
-            pov.subset_end = range.last;
-        } else {
-            pov.initial_frame = range.first;
-            pov.final_frame = range.last;
-        }
+        apply_frame_range(pov, range.first, range.last);
         const AnimationPlan plan = plan_animation(pov);
         if (!plan.animated || plan.frames.empty())
             throw Error(ErrorKind::Usage, {},

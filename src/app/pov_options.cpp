@@ -501,6 +501,16 @@ AnimationPlan plan_animation(const PovSettings& s) {
     return plan;
 }
 
+void apply_frame_range(PovSettings& s, int first, int last) {
+    if (s.initial_frame || s.final_frame) {
+        s.subset_start = first;
+        s.subset_end = last;
+    } else {
+        s.initial_frame = first;
+        s.final_frame = last;
+    }
+}
+
 std::string frame_output_name(const std::string& output, int frame, int digits) {
     namespace fs = std::filesystem;
     fs::path p(output);

@@ -82,6 +82,11 @@ struct AnimationPlan {
 };
 AnimationPlan plan_animation(const PovSettings& s);
 
+// glint's `--frames first-last` on top of POV-Ray's options: where those define the animation
+// (+KFI/+KFF, an .ini), the frames of it to render (+SF/+EF); otherwise the animation itself
+// (Initial_Frame first, Final_Frame last).
+void apply_frame_range(PovSettings& s, int first, int last);
+
 // `out.png`, frame 7 of 2 digits -> `out07.png` (the number before the extension).
 std::string frame_output_name(const std::string& output, int frame, int digits);
 

@@ -383,16 +383,9 @@ int run_render(const RenderArgs& args) {
     if (args.pov_args.empty() && args.output.empty())
         throw Error(ErrorKind::Usage, {}, "no output: give -o OUT.png (or POV-Ray's +O)");
     PovSettings pov = read_pov_arguments(args.pov_args);
-    const bool pov_animation = pov.initial_frame || pov.final_frame;
     if (!args.frames.empty()) {
         const FrameRange r = parse_frame_range(args.frames, "--frames");
-        if (pov_animation) {
-            pov.subset_start = r.first;
-            pov.subset_end = r.last;
-        } else {
-            pov.initial_frame = r.first;
-            pov.final_frame = r.last;
-        }
+        apply_frame_range(pov, r.first, r.last);
     }
     if (args.frame >= 0) {
         pov.subset_start = args.frame;

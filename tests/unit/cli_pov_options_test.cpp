@@ -272,6 +272,26 @@ TEST(PovAnimation, SubsetsByNumberAndFractionKeepTheClock) {
     EXPECT_EQ(p.frames[1].number, 4);
 }
 
+// glint's --frames: the animation itself where POV-Ray's options define none, a subset of
+// theirs where they do.
+TEST(PovAnimation, FrameRangeIsTheAnimationOrASubsetOfIt) {
+    PovSettings own;
+    apply_frame_range(own, 4, 6);
+    AnimationPlan p = plan_animation(own);
+    ASSERT_EQ(p.frames.size(), 3u);
+    EXPECT_EQ(p.frames.front().number, 4);
+    EXPECT_DOUBLE_EQ(p.frames.front().clock, 0.0);
+    EXPECT_DOUBLE_EQ(p.frames.back().clock, 1.0);
+    PovSettings theirs;
+    theirs.initial_frame = 1;
+    theirs.final_frame = 11;
+    apply_frame_range(theirs, 6, 7);
+    p = plan_animation(theirs);
+    ASSERT_EQ(p.frames.size(), 2u);
+    EXPECT_EQ(p.frames.front().number, 6);
+    EXPECT_DOUBLE_EQ(p.frames.front().clock, 0.5);  // the clock of the whole 1..11 animation
+}
+
 TEST(PovAnimation, OutputNamesAreZeroPadded) {
     EXPECT_EQ(frame_output_name("out.png", 7, 2), "out07.png");
     EXPECT_EQ(frame_output_name("dir/out.png", 12, 3), "dir/out012.png");
