@@ -535,6 +535,10 @@ int render_frame(const RenderArgs& args) {
     check_output_path(args.output);
     for (const std::string& name : aovs) io::check_writable(aov_output_path(args.output, name));
     if (args.variance) io::check_writable(aov_output_path(args.output, "variance"));
+    // Every format but PNG (which libpng writes) goes through the OpenImageIO module: load it
+    // now, so that a missing or broken one fails before the render rather than after it.
+    if (io::output_format_for(args.output) != "png" || !aovs.empty() || args.variance)
+        (void)image_library();
     const io::ImageMetadata metadata = part_metadata(args, options.region);
     if (args.skip_existing) {
         const int w = options.region.empty() ? options.width : options.region.width();

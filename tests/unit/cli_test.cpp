@@ -42,8 +42,10 @@ protected:
     }
     void TearDown() override { fs::remove_all(dir_); }
 
-    RunResult run(const std::string& args) {
-        std::string cmd = std::string("'") + GLINT_BINARY + "' " + args + " >'" +
+    RunResult run(const std::string& args) { return run_env("", args); }
+    // With `env` ("NAME=value ...") before the command.
+    RunResult run_env(const std::string& env, const std::string& args) {
+        std::string cmd = env + "'" + GLINT_BINARY + "' " + args + " >'" +
                           (dir_ / "stdout.txt").string() + "' 2>'" +
                           (dir_ / "stderr.txt").string() + "'";
         int status = std::system(cmd.c_str());
@@ -146,6 +148,23 @@ TEST_F(CliTest, RenderRejectsBadOutputBeforeRendering) {
     r = run("render '" + path("s.pov") + "' -o '" + path("no/such/folder/out.png") + "'");
     EXPECT_EQ(r.exit_code, 5) << r.err;
     EXPECT_EQ(count_files(), 1);  // only s.pov
+}
+
+// An EXR is written through the OpenImageIO module: without one the render fails before it
+// starts (the scene is not even parsed: its #debug line never prints), and leaves nothing.
+// A PNG needs no module.
+TEST_F(CliTest, MissingImageModuleFailsBeforeRendering) {
+    write_text("s.pov", "#version 3.7;\n#debug \"parsed\\n\"\nsphere { 0, 1 }\n");
+    write_text("quick.pov", "#version 3.7;\nsphere { 0, 1 pigment { rgb 1 } }\n");
+    const std::string no_module = "GLINT_IMAGE_MODULE=/nonexistent/libglint_oiio.so ";
+    RunResult r = run_env(no_module, "render '" + path("s.pov") + "' -o '" + path("out.exr") + "'");
+    EXPECT_EQ(r.exit_code, 5) << r.err;
+    EXPECT_NE(r.err.find("cannot load glint's image module"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("parsed"), std::string::npos) << r.err;
+    EXPECT_EQ(count_files(), 2);  // the two scenes
+    r = run_env(no_module, "render '" + path("quick.pov") + "' -o '" + path("out.png") + "'");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(path("out.png")));
 }
 
 TEST_F(CliTest, RenderRejectsBadFlags) {
