@@ -253,6 +253,22 @@ bool same_frame(const scene::Object& a, const scene::Object& b) {
            a.no_reflection == b.no_reflection && a.double_illuminate == b.double_illuminate;
 }
 
+// One mesh primitive for parts[first, end) (all mergeable_mesh, one frame), as a node with
+// their transform and flags.
+std::unique_ptr<ObjectNode> merged_node(const std::vector<scene::Object>& parts, size_t first,
+                                        size_t end, const scene::Scene& scene,
+                                        Diagnostics& diag) {
+    std::vector<MeshPart> meshes;
+    for (size_t j = first; j < end; ++j)
+        meshes.push_back(
+            {&scene.meshes[std::get<scene::MeshRef>(parts[j].shape).mesh], parts[j].material});
+    const bool baked = bake_exact(parts[first].transform);
+    scene::Object like = parts[first];
+    like.material = -1;  // each face has its part's
+    return ObjectNode::wrap(
+        make_merged_mesh(meshes, diag, baked ? &parts[first].transform : nullptr), like, baked);
+}
+
 }  // namespace
 
 std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,
@@ -265,17 +281,23 @@ std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,
     if (features.transparency)
         for (const scene::Material& m : scene.materials)
             material_opaque.push_back(!texture_can_be_transparent(m.texture, textures));
-    auto add = [&](const scene::Object& o, int id) {
-        auto node = ObjectNode::build(o, scene, diag);
+    // Keeps a node of scene object `id`, made of the `count` objects at objs.
+    auto push = [&](std::unique_ptr<ObjectNode> node, int id, const scene::Object* objs,
+                    size_t count) {
         if (!node || node->bounds().empty()) return;
         nodes.push_back(std::move(node));
         ids.push_back(id);
-        if (features.transparency) node_opaque.push_back(all_opaque(o, -1, scene, material_opaque));
+        if (!features.transparency) return;
+        bool all = true;
+        for (size_t j = 0; j < count; ++j)
+            all = all && all_opaque(objs[j], -1, scene, material_opaque);
+        node_opaque.push_back(all);
     };
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const scene::Object& o = scene.objects[i];
+        const int id = static_cast<int>(i);
         if (!is_plain_union(o)) {
-            add(o, static_cast<int>(i));
+            push(ObjectNode::build(o, scene, diag), id, &o, 1);
             continue;
         }
         std::vector<scene::Object> parts;
@@ -288,30 +310,9 @@ std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,
                 while (end < parts.size() && mergeable_mesh(parts[end], scene) &&
                        same_frame(parts[k], parts[end]))
                     ++end;
-            if (end - k == 1) {
-                add(parts[k], static_cast<int>(i));
-                ++k;
-                continue;
-            }
-            std::vector<MeshPart> meshes;
-            for (size_t j = k; j < end; ++j)
-                meshes.push_back({&scene.meshes[std::get<scene::MeshRef>(parts[j].shape).mesh],
-                                  parts[j].material});
-            const bool baked = bake_exact(parts[k].transform);
-            scene::Object like = parts[k];
-            like.material = -1;  // each face has its part's
-            auto node = ObjectNode::wrap(
-                make_merged_mesh(meshes, diag, baked ? &parts[k].transform : nullptr), like, baked);
-            if (node && !node->bounds().empty()) {
-                nodes.push_back(std::move(node));
-                ids.push_back(static_cast<int>(i));
-                if (features.transparency) {
-                    bool all = true;
-                    for (size_t j = k; j < end; ++j)
-                        all = all && all_opaque(parts[j], -1, scene, material_opaque);
-                    node_opaque.push_back(all);
-                }
-            }
+            push(end - k == 1 ? ObjectNode::build(parts[k], scene, diag)
+                              : merged_node(parts, k, end, scene, diag),
+                 id, &parts[k], end - k);
             k = end;
         }
     }
