@@ -4,6 +4,7 @@
 // can run it; for Slurm this writes a job array over tasks.txt and a finishing job that starts
 // after every task has ended, and submits both with sbatch. Tasks skip parts that are already
 // complete (render --skip-existing), so submitting again renders only what is missing.
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -155,9 +156,11 @@ std::string finish_script(const FarmArgs& f, const std::string& dir, const std::
     return s.str();
 }
 
-// Runs a command, returns its standard output; throws with its message when it fails.
+// Runs a command, returns the last line of its standard output (its standard error goes to
+// ours, so sbatch's warnings and errors reach the user as it writes them); throws when it
+// fails.
 std::string run_command(const std::string& command) {
-    std::FILE* p = popen((command + " 2>&1").c_str(), "r");
+    std::FILE* p = popen(command.c_str(), "r");
     if (!p) throw Error(ErrorKind::Render, {}, "cannot run " + command);
     std::string out;
     std::array<char, 4096> buf;
@@ -165,8 +168,11 @@ std::string run_command(const std::string& command) {
     while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
     const int rc = pclose(p);
     while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
-    if (rc != 0) throw Error(ErrorKind::Render, {}, command + " failed: " + out);
-    return out;
+    if (rc != 0)
+        throw Error(ErrorKind::Render, {},
+                    command + " failed (exit status " + std::to_string(WEXITSTATUS(rc)) + ")");
+    const size_t nl = out.rfind('\n');
+    return nl == std::string::npos ? out : out.substr(nl + 1);
 }
 
 void write_text(const std::string& path, const std::string& text, bool executable) {
