@@ -79,6 +79,11 @@ std::string join(const std::vector<std::string>& words) {
     return line;
 }
 
+// A value in an #SBATCH line: sbatch strips double quotes around one that has spaces.
+std::string directive(const std::string& v) {
+    return v.find_first_of(" \t") == std::string::npos ? v : "\"" + v + "\"";
+}
+
 std::string self_path() {
     std::error_code ec;
     fs::path p = fs::read_symlink("/proc/self/exe", ec);
@@ -124,8 +129,8 @@ std::string array_script(const FarmArgs& f, const std::string& dir, const Job& j
       << "#SBATCH --job-name=" << name << "\n"
       << "#SBATCH --array=0-" << job.tasks.size() - 1 << "\n"
       << "#SBATCH --requeue\n"
-      << "#SBATCH --chdir=" << fs::current_path().string() << "\n"
-      << "#SBATCH --output=" << dir << "/logs/task-%a.log\n";
+      << "#SBATCH --chdir=" << directive(fs::current_path().string()) << "\n"
+      << "#SBATCH --output=" << directive(dir + "/logs/task-%a.log") << "\n";
     if (!f.partition.empty()) s << "#SBATCH --partition=" << f.partition << "\n";
     if (f.cpus > 0) s << "#SBATCH --cpus-per-task=" << f.cpus << "\n";
     s << "set -u\n"
@@ -148,8 +153,8 @@ std::string finish_script(const FarmArgs& f, const std::string& dir, const std::
       << "# glint farm: after every task of the array has ended, join (or check) the parts.\n"
       << "# Fails, naming what is missing, if a task did not leave its part.\n"
       << "#SBATCH --job-name=" << name << "-finish\n"
-      << "#SBATCH --chdir=" << fs::current_path().string() << "\n"
-      << "#SBATCH --output=" << dir << "/logs/finish.log\n";
+      << "#SBATCH --chdir=" << directive(fs::current_path().string()) << "\n"
+      << "#SBATCH --output=" << directive(dir + "/logs/finish.log") << "\n";
     if (!f.partition.empty()) s << "#SBATCH --partition=" << f.partition << "\n";
     s << "set -u\n"
       << "eval \"$(cat " << quote(dir + "/finish.txt") << ")\"\n";

@@ -108,14 +108,16 @@ wait_jobs "$ids"
 same direct.png tiles.png
 echo "ok: 4 tiles through Slurm, merged = the single-process render"
 
-# Three frames of an animation, one task each.
-ids=$("$glint" farm submit "$anim" -o "$work/anim.png" --frames 1-3 --width 96 --height 72 | tail -1)
+# Three frames of an animation, one task each, written in a folder whose name has a space (the
+# task lines and the #SBATCH paths are quoted).
+mkdir "with space"
+ids=$("$glint" farm submit "$anim" -o "$work/with space/anim.png" --frames 1-3 --width 96 --height 72 | tail -1)
 wait_jobs "$ids"
 [[ $(state_of "${ids##* }") == COMPLETED ]] || fail "frames' finishing job: $(state_of "${ids##* }")"
-grep -q "3 parts of job .*: complete" anim.farm/logs/finish.log || fail "frames not verified"
+grep -q "3 parts of job .*: complete" "with space/anim.farm/logs/finish.log" || fail "frames not verified"
 mkdir direct_frames
 (cd direct_frames && "$glint" render "$anim" -o anim.png --frames 1-3 --width 96 --height 72)
-for k in 1 2 3; do same "direct_frames/anim$k.png" "anim$k.png"; done
+for k in 1 2 3; do same "direct_frames/anim$k.png" "with space/anim$k.png"; done
 echo "ok: 3 frames through Slurm = the single-process animation"
 
 # Submitting again: every part is complete, nothing is rendered again.
