@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/log.h"
+#include "render/accel/huge_pages.h"
 #include "render/shapes/mesh_prim.h"
 #include "scene/mesh.h"
 
@@ -167,8 +168,11 @@ glint::scene::Mesh glint_mesh(const TestMesh& m) {
     return g;
 }
 
-// Heap bytes in use (glibc), for the memory a build keeps.
-size_t heap_in_use() { return mallinfo2().uordblks + mallinfo2().hblkhd; }
+// Bytes in use, for the memory a build keeps: glibc's heap and the huge-page mappings glint
+// makes for large BVH and triangle arrays (huge_pages.h), which malloc does not see.
+size_t heap_in_use() {
+    return mallinfo2().uordblks + mallinfo2().hblkhd + glint::render::huge_page_bytes().load();
+}
 
 struct GlintScene {
     std::unique_ptr<glint::render::Primitive> prim;

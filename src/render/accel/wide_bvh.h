@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "render/accel/bvh.h"
+#include "render/accel/huge_pages.h"
 
 namespace glint::render {
 
@@ -24,11 +25,12 @@ static_assert(sizeof(WideNode) == 128);
 
 class WideBvh {
 public:
+    using Nodes = std::vector<WideNode, HugePageAllocator<WideNode>>;
     WideBvh() = default;
     // From a binary tree of more than one node; leaf primitives keep bvh.order() positions.
     explicit WideBvh(const Bvh& bvh);
 
-    const std::vector<WideNode>& nodes() const { return nodes_; }
+    const Nodes& nodes() const { return nodes_; }
     int depth() const { return depth_; }
     // Traversal stack entries the deepest path can need: three siblings wait at each level.
     static constexpr int kMaxDepth = 84;
@@ -37,7 +39,7 @@ public:
 private:
     int emit(const Bvh& bvh, int binary_node, int depth);
 
-    std::vector<WideNode> nodes_;
+    Nodes nodes_;
     int depth_ = 0;
 };
 

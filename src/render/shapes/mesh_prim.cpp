@@ -9,6 +9,7 @@
 #include <string>
 
 #include "render/accel/bvh.h"
+#include "render/accel/huge_pages.h"
 #include "render/shapes/object_node.h"
 #include "render/accel/wide_bvh.h"
 #include "render/shapes/mesh_kernels.h"
@@ -236,7 +237,7 @@ private:
     using Index3 = std::array<int, 3>;
     Vec3 origin_;                // the float vertices are offsets from here
     Bounds3 bounds_;             // of the float vertices, about origin_
-    std::vector<float> tris_;    // corners in leaf order, the kernels' layout (mesh_kernels.h)
+    std::vector<float, HugePageAllocator<float>> tris_;  // corners in leaf order, the kernels' layout (mesh_kernels.h)
     WideBvh wide_;               // empty: the mesh is one leaf
     MeshView view_;
     const MeshKernels& kernels_ = mesh_kernels();
