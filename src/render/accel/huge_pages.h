@@ -7,6 +7,7 @@
 #pragma once
 
 #include <sys/mman.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <cstddef>
@@ -25,7 +26,13 @@ inline std::atomic<size_t>& huge_page_bytes() {
     return bytes;
 }
 
-inline size_t huge_page_round(size_t bytes) { return (bytes + kHugePage - 1) & ~(kHugePage - 1); }
+// The mapping's size: whole small pages. The kernel backs each 2 MiB-aligned stretch the
+// mapping covers entirely with one huge page and the tail with small ones, so nothing is
+// wasted past the last small page (rounding to 2 MiB cost a 2.1 MiB array 90%).
+inline size_t huge_page_round(size_t bytes) {
+    static const size_t page = static_cast<size_t>(sysconf(_SC_PAGESIZE));
+    return (bytes + page - 1) / page * page;
+}
 
 template <class T>
 struct HugePageAllocator {
