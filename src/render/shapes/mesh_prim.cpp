@@ -241,7 +241,8 @@ private:
     using Index3 = std::array<int, 3>;
     Vec3 origin_;                // the float vertices are offsets from here
     Bounds3 bounds_;             // of the float vertices, about origin_
-    std::vector<float, HugePageAllocator<float>> tris_;  // corners in leaf order, the kernels' layout (mesh_kernels.h)
+    // Corners in leaf order, the kernels' layout (mesh_kernels.h).
+    std::vector<float, HugePageAllocator<float>> tris_;
     WideBvh wide_;               // empty: the mesh is one leaf
     MeshView view_;
     const MeshKernels& kernels_ = mesh_kernels();
