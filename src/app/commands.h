@@ -95,8 +95,9 @@ struct ReportArgs {
     std::string out = "report";
     int max_depth = 8;
     unsigned seed = 0;
+    int seeds = 1;  // renders per step (seeds seed, seed + 1, ...)
     int threads = 0;
-    std::string peer;        // shell command with {spp} and {out}
+    std::string peer;        // shell command with {spp}, {out}, optional {time} and {seed}
     std::string peer_steps;  // empty: spp_steps
     std::string peer_name = "peer";
     bool verbose = false;

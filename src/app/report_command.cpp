@@ -45,12 +45,22 @@ double seconds_since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
+// One renderer at one sample count: over its seeds, the mean of each error and the median of
+// the seconds.
 struct Step {
     std::string renderer;
     int spp = 0;
     double seconds = 0;
     io::LinearMetrics metrics;
     double ssim = 0;
+    int seeds = 0;
+    double relmse_min = 0, relmse_max = 0;
+};
+
+struct Run {
+    double seconds;
+    io::LinearMetrics metrics;
+    double ssim;
 };
 
 // "1,4,16" -> {1, 4, 16}, sorted and without repeats.
@@ -115,15 +125,41 @@ int run_shell(const std::string& command, const std::string& log) {
     return status;
 }
 
-Step measure(const std::string& renderer, int spp, double seconds, const io::LinearImage& image,
-             const io::LinearImage& reference) {
+Run measure(double seconds, const io::LinearImage& image, const io::LinearImage& reference) {
+    return {seconds, io::compare_linear(image, reference),
+            io::compute_ssim(io::encode_srgb8(image), io::encode_srgb8(reference))};
+}
+
+// The expected error is what a curve should show, and one seed's error is one draw of it: the
+// mean over the seeds. The seconds are the median (a slow outlier on a shared machine is noise).
+Step summarize(const std::string& renderer, int spp, const std::vector<Run>& runs) {
     Step s;
     s.renderer = renderer;
     s.spp = spp;
-    s.seconds = seconds;
-    s.metrics = io::compare_linear(image, reference);
-    s.ssim = io::compute_ssim(io::encode_srgb8(image), io::encode_srgb8(reference));
+    s.seeds = static_cast<int>(runs.size());
+    std::vector<double> seconds;
+    s.relmse_min = runs.front().metrics.relmse;
+    s.relmse_max = runs.front().metrics.relmse;
+    for (const Run& r : runs) {
+        seconds.push_back(r.seconds);
+        s.metrics.relmse += r.metrics.relmse / s.seeds;
+        s.metrics.rmse += r.metrics.rmse / s.seeds;
+        s.metrics.nonfinite = std::max(s.metrics.nonfinite, r.metrics.nonfinite);
+        s.ssim += r.ssim / s.seeds;
+        s.relmse_min = std::min(s.relmse_min, r.metrics.relmse);
+        s.relmse_max = std::max(s.relmse_max, r.metrics.relmse);
+    }
+    std::sort(seconds.begin(), seconds.end());
+    const size_t n = seconds.size();
+    s.seconds = n % 2 ? seconds[n / 2] : (seconds[n / 2 - 1] + seconds[n / 2]) / 2;
     return s;
+}
+
+// File names of one run: NAME-SPP, and -sK for the K-th seed when there are several.
+std::string run_stem(const std::string& name, int spp, int seed_index, int seeds) {
+    std::string stem = name + "-" + std::to_string(spp);
+    if (seeds > 1) stem += "-s" + std::to_string(seed_index);
+    return stem;
 }
 
 std::string format_ratio(const io::CurveReading& r, double ratio) {
@@ -154,7 +190,8 @@ CLI::App* add_report_command(CLI::App& app, ReportArgs& args) {
         "compare each with --reference (relMSE = mean((x-r)^2/(r^2+0.01)), RMSE on linear "
         "values, SSIM of the sRGB 8-bit lumas), and write DIR/report.csv (renderer, spp, "
         "seconds, relmse, rmse, ssim), DIR/report.png (log-log relMSE against seconds) and "
-        "DIR/report.txt. glint's seconds are the wall time of the in-process render (scene "
+        "DIR/report.txt; with --seeds K each step is K renders and shows their mean errors "
+        "and median seconds. glint's seconds are the wall time of the in-process render (scene "
         "preparation and path tracing) plus the scene's parse time, measured once; a peer's "
         "seconds are its whole process, or, when its command has {time}, the seconds it "
         "writes to that file (its own render time, start-up left out). With --peer, two ratios are read off the curves "
@@ -172,15 +209,27 @@ CLI::App* add_report_command(CLI::App& app, ReportArgs& args) {
     cmd->add_option("--max-depth", args.max_depth, "Path tracer: maximum bounces")
         ->capture_default_str()
         ->check(CLI::Range(0, 4096));
-    cmd->add_option("--seed", args.seed, "Path tracer: sampler seed")->capture_default_str();
+    cmd->add_option("--seed", args.seed, "Path tracer: sampler seed (the first, with --seeds)")
+        ->capture_default_str();
+    cmd->add_option("--seeds", args.seeds,
+                    "Renders per step, glint with seeds --seed, --seed + 1, ...; the step shows "
+                    "their mean relMSE, RMSE and SSIM, the median seconds and the relMSE range. "
+                    "One seed's error is one random draw (on the Cycles spheres scene at 1024 "
+                    "spp glint's relMSE spans 7.5e-5 .. 9.2e-5 over ten seeds), so comparing "
+                    "two renderers wants several. The peer command runs once per seed with "
+                    "{seed} replaced by 0 .. K-1 (it maps them to seeds of its own, none of its "
+                    "reference's); above 1 the command must have {seed}")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1024));
     cmd->add_option("--threads", args.threads, "Worker threads (0: all hardware threads)")
         ->capture_default_str()
         ->check(CLI::Range(0, 4096));
     cmd->add_option("--peer", args.peer,
                     "A peer renderer's shell command, run once per --peer-steps value with "
-                    "{spp} replaced by the value, {out} by the EXR it must write (in DIR) and "
-                    "{time} (optional) by a file it writes its render seconds to; its output "
-                    "goes to DIR/<peer-name>-<spp>.log");
+                    "{spp} replaced by the value, {out} by the EXR it must write (in DIR), "
+                    "{time} (optional) by a file it writes its render seconds to and {seed} by "
+                    "the seed's index (see --seeds); its output goes to "
+                    "DIR/<peer-name>-<spp>.log (-<spp>-s<index>.log with --seeds)");
     cmd->add_option("--peer-steps", args.peer_steps,
                     "Values for the peer's {spp}, a comma list (default: --spp-steps)");
     cmd->add_option("--peer-name", args.peer_name, "The peer's name in the CSV and the legend")
@@ -201,6 +250,11 @@ int run_report(const ReportArgs& args) {
         peer_steps = args.peer_steps.empty() ? steps : parse_steps("--peer-steps", args.peer_steps);
     else if (!args.peer_steps.empty())
         throw Error(ErrorKind::Usage, {}, "--peer-steps needs --peer");
+    if (!args.peer.empty() && args.seeds > 1 && args.peer.find("{seed}") == std::string::npos)
+        throw Error(ErrorKind::Usage, {},
+                    "--seeds " + std::to_string(args.seeds) +
+                        " needs {seed} in --peer: without it the peer would render one seed " +
+                        std::to_string(args.seeds) + " times");
 
     const io::LinearImage reference = io::read_linear(args.reference);
     SceneRequest request = args.scene;
@@ -231,92 +285,104 @@ int run_report(const ReportArgs& args) {
 
     std::vector<Step> glint_steps, peer_results;
     for (int spp : steps) {
-        render::RenderOptions options;
-        options.width = request.width;
-        options.height = request.height;
-        options.threads = args.threads;
-        options.integrator = render::IntegratorKind::Path;
-        options.spp = spp;
-        options.max_depth = args.max_depth;
-        options.seed = args.seed;
-        options.cancel = &cancel_flag();
-        Clock::time_point t = Clock::now();
-        render::RenderResult result = render::render(scene, options, diag);
-        const double seconds = seconds_since(t) + parse_seconds;
-        io::LinearImage image;
-        image.width = result.image.width;
-        image.height = result.image.height;
-        const std::vector<float> rgba = io::linear_rgba(result.image, encoding);
-        image.rgb.resize(rgba.size() / 4 * 3);
-        for (size_t i = 0; i < rgba.size() / 4; ++i)
-            for (int c = 0; c < 3; ++c) image.rgb[i * 3 + c] = rgba[i * 4 + c];
-        io::write_linear_exr(image, (dir / ("glint-" + std::to_string(spp) + ".exr")).string());
-        glint_steps.push_back(measure("glint", spp, seconds, image, reference));
-        std::fprintf(stderr, "glint %d spp: %.3f s, relMSE %.6g\n", spp, seconds,
+        std::vector<Run> runs;
+        for (int k = 0; k < args.seeds; ++k) {
+            if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
+            render::RenderOptions options;
+            options.width = request.width;
+            options.height = request.height;
+            options.threads = args.threads;
+            options.integrator = render::IntegratorKind::Path;
+            options.spp = spp;
+            options.max_depth = args.max_depth;
+            options.seed = args.seed + static_cast<unsigned>(k);
+            options.cancel = &cancel_flag();
+            Clock::time_point t = Clock::now();
+            render::RenderResult result = render::render(scene, options, diag);
+            const double seconds = seconds_since(t) + parse_seconds;
+            io::LinearImage image;
+            image.width = result.image.width;
+            image.height = result.image.height;
+            const std::vector<float> rgba = io::linear_rgba(result.image, encoding);
+            image.rgb.resize(rgba.size() / 4 * 3);
+            for (size_t i = 0; i < rgba.size() / 4; ++i)
+                for (int c = 0; c < 3; ++c) image.rgb[i * 3 + c] = rgba[i * 4 + c];
+            io::write_linear_exr(image,
+                                 (dir / (run_stem("glint", spp, k, args.seeds) + ".exr")).string());
+            runs.push_back(measure(seconds, image, reference));
+        }
+        glint_steps.push_back(summarize("glint", spp, runs));
+        std::fprintf(stderr, "glint %d spp: %.3f s, relMSE %.6g\n", spp, glint_steps.back().seconds,
                      glint_steps.back().metrics.relmse);
     }
 
     std::string peer_file = file_safe(args.peer_name);
     if (peer_file == "glint") peer_file = "peer-glint";  // glint's own renders are glint-N.exr
     for (int spp : peer_steps) {
-        if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
-        const fs::path out = dir / (peer_file + "-" + std::to_string(spp) + ".exr");
-        const fs::path log = dir / (peer_file + "-" + std::to_string(spp) + ".log");
-        const fs::path time_file = dir / (peer_file + "-" + std::to_string(spp) + ".seconds");
-        fs::remove(out, ec);
-        fs::remove(time_file, ec);
-        const bool own_time = args.peer.find("{time}") != std::string::npos;
-        const std::string command = replace_all(
-            replace_all(replace_all(args.peer, "{spp}", std::to_string(spp)), "{out}",
-                        shell_quote(out.string())),
-            "{time}", shell_quote(time_file.string()));
-        Clock::time_point t = Clock::now();
-        const int status = run_shell(command, log.string());
-        double seconds = seconds_since(t);
-        if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
-        if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-            const std::string how = WIFEXITED(status)
-                                        ? "exit status " + std::to_string(WEXITSTATUS(status))
-                                        : "signal " + std::to_string(WTERMSIG(status));
-            throw Error(ErrorKind::Render, {},
-                        "peer command failed with " + how + ": " + command + " (its output: " +
-                            log.string() + ")");
-        }
-        if (!fs::is_regular_file(out, ec))
-            throw Error(ErrorKind::Render, {},
-                        "peer command did not write " + out.string() + ": " + command +
-                            " (its output: " + log.string() + ")");
-        if (own_time) {
-            // The peer measured its own render (start-up and scene loading left out, as for
-            // glint's in-process timing) and wrote the seconds to {time}.
-            std::ifstream in(time_file);
-            double own = 0;
-            if (!(in >> own) || !(own > 0) || !std::isfinite(own))
+        std::vector<Run> runs;
+        for (int k = 0; k < args.seeds; ++k) {
+            if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
+            const std::string stem = run_stem(peer_file, spp, k, args.seeds);
+            const fs::path out = dir / (stem + ".exr");
+            const fs::path log = dir / (stem + ".log");
+            const fs::path time_file = dir / (stem + ".seconds");
+            fs::remove(out, ec);
+            fs::remove(time_file, ec);
+            const bool own_time = args.peer.find("{time}") != std::string::npos;
+            std::string command = replace_all(args.peer, "{spp}", std::to_string(spp));
+            command = replace_all(command, "{out}", shell_quote(out.string()));
+            command = replace_all(command, "{time}", shell_quote(time_file.string()));
+            command = replace_all(command, "{seed}", std::to_string(k));
+            Clock::time_point t = Clock::now();
+            const int status = run_shell(command, log.string());
+            double seconds = seconds_since(t);
+            if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
+            if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+                const std::string how = WIFEXITED(status)
+                                            ? "exit status " + std::to_string(WEXITSTATUS(status))
+                                            : "signal " + std::to_string(WTERMSIG(status));
                 throw Error(ErrorKind::Render, {},
-                            "peer command did not write its render seconds to " +
-                                time_file.string() + ": " + command + " (its output: " +
+                            "peer command failed with " + how + ": " + command + " (its output: " +
                                 log.string() + ")");
-            seconds = own;
+            }
+            if (!fs::is_regular_file(out, ec))
+                throw Error(ErrorKind::Render, {},
+                            "peer command did not write " + out.string() + ": " + command +
+                                " (its output: " + log.string() + ")");
+            if (own_time) {
+                // The peer measured its own render (start-up and scene loading left out, as for
+                // glint's in-process timing) and wrote the seconds to {time}.
+                std::ifstream in(time_file);
+                double own = 0;
+                if (!(in >> own) || !(own > 0) || !std::isfinite(own))
+                    throw Error(ErrorKind::Render, {},
+                                "peer command did not write its render seconds to " +
+                                    time_file.string() + ": " + command + " (its output: " +
+                                    log.string() + ")");
+                seconds = own;
+            }
+            const io::LinearImage image = io::read_linear(out.string());
+            if (image.width != reference.width || image.height != reference.height)
+                throw Error(ErrorKind::Render, {},
+                            "peer image " + out.string() + " is " + std::to_string(image.width) +
+                                "x" + std::to_string(image.height) + ", the reference " +
+                                std::to_string(reference.width) + "x" +
+                                std::to_string(reference.height) + ": " + command);
+            runs.push_back(measure(seconds, image, reference));
         }
-        const io::LinearImage image = io::read_linear(out.string());
-        if (image.width != reference.width || image.height != reference.height)
-            throw Error(ErrorKind::Render, {},
-                        "peer image " + out.string() + " is " + std::to_string(image.width) +
-                            "x" + std::to_string(image.height) + ", the reference " +
-                            std::to_string(reference.width) + "x" +
-                            std::to_string(reference.height) + ": " + command);
-        peer_results.push_back(measure(args.peer_name, spp, seconds, image, reference));
+        peer_results.push_back(summarize(args.peer_name, spp, runs));
         std::fprintf(stderr, "%s %d: %.3f s, relMSE %.6g\n", args.peer_name.c_str(), spp,
-                     seconds, peer_results.back().metrics.relmse);
+                     peer_results.back().seconds, peer_results.back().metrics.relmse);
     }
 
     // The CSV, glint's rows first.
-    std::string csv = "renderer,spp,seconds,relmse,rmse,ssim\n";
+    std::string csv = "renderer,spp,seconds,relmse,rmse,ssim,seeds,relmse_min,relmse_max\n";
     for (const std::vector<Step>* rows : {&glint_steps, &peer_results})
         for (const Step& s : *rows)
             csv += s.renderer + "," + std::to_string(s.spp) + "," + format_number(s.seconds) +
                    "," + format_number(s.metrics.relmse) + "," + format_number(s.metrics.rmse) +
-                   "," + format_number(s.ssim) + "\n";
+                   "," + format_number(s.ssim) + "," + std::to_string(s.seeds) + "," +
+                   format_number(s.relmse_min) + "," + format_number(s.relmse_max) + "\n";
 
     // The plot.
     auto series = [](const std::vector<Step>& rows, const std::string& name,
@@ -357,7 +423,14 @@ int run_report(const ReportArgs& args) {
                     : " seconds: wall time of the whole command: ") +
                args.peer + "\n";
     txt += "relmse = mean((x-r)^2/(r^2+0.01)), rmse on linear RGB, ssim of the sRGB 8-bit "
-           "lumas.\n\n" + csv;
+           "lumas";
+    if (args.seeds > 1)
+        txt += "; each row: the mean over " + std::to_string(args.seeds) +
+               " seeds (glint's " + std::to_string(args.seed) + " .. " +
+               std::to_string(args.seed + static_cast<unsigned>(args.seeds) - 1) +
+               ", the peer's {seed} 0 .. " + std::to_string(args.seeds - 1) +
+               "), the median seconds, and the range of relmse";
+    txt += ".\n\n" + csv;
     if (!peer_results.empty()) {
         std::vector<double> pt, pe;
         for (const Step& s : peer_results) {

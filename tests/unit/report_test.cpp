@@ -294,10 +294,13 @@ TEST_F(ReportCli, WritesCsvPlotAndSummaryWithAPeer) {
     const auto rows = read_csv(slurp(dir_ / "rep" / "report.csv"));
     ASSERT_EQ(rows.size(), 6u);
     EXPECT_EQ(rows[0], (std::vector<std::string>{"renderer", "spp", "seconds", "relmse", "rmse",
-                                                 "ssim"}));
+                                                 "ssim", "seeds", "relmse_min", "relmse_max"}));
     const int spp[] = {1, 2, 4, 1, 3};
     for (int i = 1; i <= 5; ++i) {
-        ASSERT_EQ(rows[i].size(), 6u);
+        ASSERT_EQ(rows[i].size(), 9u);
+        EXPECT_EQ(rows[i][6], "1");
+        EXPECT_EQ(rows[i][7], rows[i][3]);
+        EXPECT_EQ(rows[i][8], rows[i][3]);
         EXPECT_EQ(rows[i][0], i <= 3 ? "glint" : "copy");
         EXPECT_EQ(std::stoi(rows[i][1]), spp[i - 1]);
         EXPECT_GT(std::stod(rows[i][2]), 0.0);
@@ -337,6 +340,49 @@ TEST_F(ReportCli, PeerReportsItsOwnRenderSecondsThroughTimeFile) {
                         path("ref.exr") + "' {out}; true {time}\"");
     EXPECT_EQ(bad.exit_code, 4) << bad.err;
     EXPECT_NE(bad.err.find("did not write its render seconds"), std::string::npos) << bad.err;
+}
+
+TEST_F(ReportCli, SeedsAverageTheErrorOverRendersAndNumberThePeersSeeds) {
+    // --seeds 3: each step is three renders, glint with seeds 5, 6, 7 and the peer with {seed}
+    // 0, 1, 2; a row holds the mean relMSE, which lies inside the range of the three.
+    make_reference();
+    RunResult r = run("report '" + path("scene.pov") + "' --reference '" + path("ref.exr") +
+                      "' --spp-steps 1,4 --seed 5 --seeds 3 --threads 1 --out '" + path("rep") +
+                      "' --peer \"cp '" + path("ref.exr") + "' {out}; echo {spp}:{seed} >> '" +
+                      path("seeds.txt") + "'\" --peer-steps 2 --peer-name copy");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(slurp(dir_ / "seeds.txt"), "2:0\n2:1\n2:2\n");
+    const auto rows = read_csv(slurp(dir_ / "rep" / "report.csv"));
+    ASSERT_EQ(rows.size(), 4u);
+    for (int i = 1; i <= 3; ++i) {
+        ASSERT_EQ(rows[i].size(), 9u);
+        EXPECT_EQ(rows[i][6], "3");
+    }
+    for (int i = 1; i <= 2; ++i) {
+        const double mean = std::stod(rows[i][3]), lo = std::stod(rows[i][7]),
+                     hi = std::stod(rows[i][8]);
+        EXPECT_LT(lo, hi) << "three seeds, three different errors";
+        EXPECT_LE(lo, mean);
+        EXPECT_LE(mean, hi);
+    }
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_TRUE(fs::exists(dir_ / "rep" / ("glint-4-s" + std::to_string(k) + ".exr")));
+        EXPECT_TRUE(fs::exists(dir_ / "rep" / ("copy-2-s" + std::to_string(k) + ".exr")));
+    }
+    // The first seed's image is the one a plain render with --seed 5 makes.
+    RunResult one = run("render '" + path("scene.pov") + "' -o '" + path("s5.exr") +
+                        "' --integrator path --spp 4 --seed 5 -W 16 -H 12 --threads 1");
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    RunResult same = run("compare '" + path("s5.exr") + "' '" + path("rep/glint-4-s0.exr") + "'");
+    EXPECT_EQ(same.exit_code, 0) << same.out << same.err;
+    EXPECT_NE(same.out.find(" relmse=0 rmse_linear=0\n"), std::string::npos) << same.out;
+
+    RunResult bad = run("report '" + path("scene.pov") + "' --reference '" + path("ref.exr") +
+                        "' --spp-steps 1 --seeds 2 --threads 1 --out '" + path("rep2") +
+                        "' --peer \"cp '" + path("ref.exr") + "' {out}\"");
+    EXPECT_EQ(bad.exit_code, 1) << bad.err;
+    EXPECT_NE(bad.err.find("--seeds 2 needs {seed} in --peer"), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(dir_ / "rep2" / "report.csv"));
 }
 
 TEST_F(ReportCli, FailingPeerCommandIsAClearError) {
