@@ -189,7 +189,7 @@ CLI::App* add_report_command(CLI::App& app, ReportArgs& args) {
         "Error against run time: render SCENE with the path tracer at each --spp-steps count, "
         "compare each with --reference (relMSE = mean((x-r)^2/(r^2+0.01)), RMSE on linear "
         "values, SSIM of the sRGB 8-bit lumas), and write DIR/report.csv (renderer, spp, "
-        "seconds, relmse, rmse, ssim), DIR/report.png (log-log relMSE against seconds) and "
+        "seconds, relmse, rmse, ssim, seeds, relmse_min, relmse_max), DIR/report.png (log-log relMSE against seconds) and "
         "DIR/report.txt; with --seeds K each step is K renders and shows their mean errors "
         "and median seconds. glint's seconds are the wall time of the in-process render (scene "
         "preparation and path tracing) plus the scene's parse time, measured once; a peer's "
@@ -329,10 +329,11 @@ int run_report(const ReportArgs& args) {
             fs::remove(out, ec);
             fs::remove(time_file, ec);
             const bool own_time = args.peer.find("{time}") != std::string::npos;
+            // The numbers before the paths, so no path is searched for {spp} or {seed}.
             std::string command = replace_all(args.peer, "{spp}", std::to_string(spp));
+            command = replace_all(command, "{seed}", std::to_string(k));
             command = replace_all(command, "{out}", shell_quote(out.string()));
             command = replace_all(command, "{time}", shell_quote(time_file.string()));
-            command = replace_all(command, "{seed}", std::to_string(k));
             Clock::time_point t = Clock::now();
             const int status = run_shell(command, log.string());
             double seconds = seconds_since(t);
