@@ -189,13 +189,14 @@ CLI::App* add_report_command(CLI::App& app, ReportArgs& args) {
         "Error against run time: render SCENE with the path tracer at each --spp-steps count, "
         "compare each with --reference (relMSE = mean((x-r)^2/(r^2+0.01)), RMSE on linear "
         "values, SSIM of the sRGB 8-bit lumas), and write DIR/report.csv (renderer, spp, "
-        "seconds, relmse, rmse, ssim, seeds, relmse_min, relmse_max), DIR/report.png (log-log relMSE against seconds) and "
-        "DIR/report.txt; with --seeds K each step is K renders and shows their mean errors "
-        "and median seconds. glint's seconds are the wall time of the in-process render (scene "
-        "preparation and path tracing) plus the scene's parse time, measured once; a peer's "
-        "seconds are its whole process, or, when its command has {time}, the seconds it "
-        "writes to that file (its own render time, start-up left out). With --peer, two ratios are read off the curves "
-        "(log-log interpolation between steps): equal-error = the peer's time to reach "
+        "seconds, relmse, rmse, ssim, seeds, relmse_min, relmse_max), DIR/report.png (log-log "
+        "relMSE against seconds) and DIR/report.txt; with --seeds K each step is K renders and "
+        "shows their mean errors and median seconds. glint and the peer take turns, step by "
+        "step. glint's seconds are the wall time of the in-process render (scene preparation "
+        "and path tracing) plus the scene's parse time, measured once; a peer's seconds are its "
+        "whole process, or, when its command has {time}, the seconds it writes to that file "
+        "(its own render time, start-up left out). With --peer, two ratios are read off the "
+        "curves (log-log interpolation between steps): equal-error = the peer's time to reach "
         "glint's final relMSE / glint's final time; equal-time = the peer's relMSE at glint's "
         "final time / glint's final relMSE (above 1: glint is ahead)");
     add_scene_options(*cmd, args.scene);
@@ -284,7 +285,7 @@ int run_report(const ReportArgs& args) {
     });
 
     std::vector<Step> glint_steps, peer_results;
-    for (int spp : steps) {
+    auto glint_step = [&](int spp) {
         std::vector<Run> runs;
         for (int k = 0; k < args.seeds; ++k) {
             if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
@@ -314,11 +315,11 @@ int run_report(const ReportArgs& args) {
         glint_steps.push_back(summarize("glint", spp, runs));
         std::fprintf(stderr, "glint %d spp: %.3f s, relMSE %.6g\n", spp, glint_steps.back().seconds,
                      glint_steps.back().metrics.relmse);
-    }
+    };
 
     std::string peer_file = file_safe(args.peer_name);
     if (peer_file == "glint") peer_file = "peer-glint";  // glint's own renders are glint-N.exr
-    for (int spp : peer_steps) {
+    auto peer_step = [&](int spp) {
         std::vector<Run> runs;
         for (int k = 0; k < args.seeds; ++k) {
             if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
@@ -374,6 +375,13 @@ int run_report(const ReportArgs& args) {
         peer_results.push_back(summarize(args.peer_name, spp, runs));
         std::fprintf(stderr, "%s %d: %.3f s, relMSE %.6g\n", args.peer_name.c_str(), spp,
                      peer_results.back().seconds, peer_results.back().metrics.relmse);
+    };
+    // Step by step, one renderer then the other: a shared machine's speed drifts over minutes,
+    // and timing all of one renderer's steps before the other's would put that drift into the
+    // ratios.
+    for (size_t i = 0; i < std::max(steps.size(), peer_steps.size()); ++i) {
+        if (i < steps.size()) glint_step(steps[i]);
+        if (i < peer_steps.size()) peer_step(peer_steps[i]);
     }
 
     // The CSV, glint's rows first.

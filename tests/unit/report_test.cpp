@@ -349,9 +349,13 @@ TEST_F(ReportCli, SeedsAverageTheErrorOverRendersAndNumberThePeersSeeds) {
     RunResult r = run("report '" + path("scene.pov") + "' --reference '" + path("ref.exr") +
                       "' --spp-steps 1,4 --seed 5 --seeds 3 --threads 1 --out '" + path("rep") +
                       "' --peer \"cp '" + path("ref.exr") + "' {out}; echo {spp}:{seed} >> '" +
-                      path("seeds.txt") + "'\" --peer-steps 2 --peer-name copy");
+                      path("seeds.txt") + "'; ls '" + path("rep") + "' | grep -c '^glint-' >> '" +
+                      path("glint_files.txt") + "'\" --peer-steps 2 --peer-name copy");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(slurp(dir_ / "seeds.txt"), "2:0\n2:1\n2:2\n");
+    // The renderers take turns step by step: the peer's first step runs after glint's first
+    // (its three seeds' images), not after all of glint's steps.
+    EXPECT_EQ(slurp(dir_ / "glint_files.txt"), "3\n3\n3\n");
     const auto rows = read_csv(slurp(dir_ / "rep" / "report.csv"));
     ASSERT_EQ(rows.size(), 4u);
     for (int i = 1; i <= 3; ++i) {
