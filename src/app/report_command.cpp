@@ -319,6 +319,7 @@ int run_report(const ReportArgs& args) {
 
     std::string peer_file = file_safe(args.peer_name);
     if (peer_file == "glint") peer_file = "peer-glint";  // glint's own renders are glint-N.exr
+    const bool own_time = args.peer.find("{time}") != std::string::npos;
     auto peer_step = [&](int spp) {
         std::vector<Run> runs;
         for (int k = 0; k < args.seeds; ++k) {
@@ -329,7 +330,6 @@ int run_report(const ReportArgs& args) {
             const fs::path time_file = dir / (stem + ".seconds");
             fs::remove(out, ec);
             fs::remove(time_file, ec);
-            const bool own_time = args.peer.find("{time}") != std::string::npos;
             // The numbers before the paths, so no path is searched for {spp} or {seed}.
             std::string command = replace_all(args.peer, "{spp}", std::to_string(spp));
             command = replace_all(command, "{seed}", std::to_string(k));
