@@ -1,6 +1,7 @@
 #include "formats/obj/obj_importer.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -15,6 +16,8 @@
 #include <tuple>
 
 #include <tiny_obj_loader.h>
+
+#include "formats/obj/face_triangulation.h"
 
 namespace glint::obj {
 namespace {
@@ -459,7 +462,7 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
         drop_skin_weights(text, file, diag);
         std::istringstream obj_text(std::move(text));
         ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &obj_text, &mtl_reader,
-                              /*triangulate=*/true, /*default_vcols_fallback=*/false);
+                              /*triangulate=*/false, /*default_vcols_fallback=*/false);
     }
     if (!ok) {
         if (err.find("Cannot open file") != std::string::npos)
@@ -619,6 +622,8 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
     const size_t nv = attrib.vertices.size() / 3, nn = attrib.normals.size() / 3,
                  nt = attrib.texcoords.size() / 2;
     std::vector<int> vmap(nv, -1), nmap(nn, -1), tmap(nt, -1);
+    std::vector<Vec3> corners;                // of one polygon
+    std::vector<std::array<int, 3>> cuts;     // its triangles, as corner indices
     result.first_object = static_cast<int>(scene.objects.size());
     for (const auto& sh : shapes) {
         scene::Mesh mesh;
@@ -651,33 +656,45 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
         const auto& fv = sh.mesh.num_face_vertices;
         mesh.faces.reserve(fv.size());
         for (size_t f = 0; f < fv.size(); ++f) {
-            if (fv[f] != 3) {  // triangulate=true leaves only lines and points here
-                index += fv[f];
-                continue;
-            }
-            scene::MeshFace face;
-            bool smooth = true, textured = true;
-            for (int k = 0; k < 3; ++k) {
-                const tinyobj::index_t& ix = sh.mesh.indices[index + k];
-                face.v[k] = remap(vmap, touched_v, ix.vertex_index, add_v);
-                smooth &= ix.normal_index >= 0;
-                textured &= ix.texcoord_index >= 0;
-            }
-            for (int k = 0; k < 3; ++k) {
-                const tinyobj::index_t& ix = sh.mesh.indices[index + k];
-                // Flat unless every corner has a normal; no uvs unless every corner has one.
-                if (smooth) face.n[k] = remap(nmap, touched_n, ix.normal_index, add_n);
-                if (textured) face.uv[k] = remap(tmap, touched_t, ix.texcoord_index, add_t);
-            }
+            const size_t n = fv[f];
+            const tinyobj::index_t* ix = &sh.mesh.indices[index];
+            index += n;
+            if (n < 3) continue;  // tinyobjloader keeps lines and points apart; none expected
             int mid = f < sh.mesh.material_ids.size() ? sh.mesh.material_ids[f] : -1;
-            if (material_override >= 0)
-                face.material = material_override;
-            else
-                face.material = mid >= 0 && mid < static_cast<int>(materials.size())
-                                    ? result.first_material + mid
-                                    : fallback_material();
-            mesh.faces.push_back(face);
-            index += 3;
+            const int material = material_override >= 0 ? material_override
+                                 : mid >= 0 && mid < static_cast<int>(materials.size())
+                                     ? result.first_material + mid
+                                     : fallback_material();
+            cuts.clear();
+            if (n == 3) {
+                cuts.push_back({0, 1, 2});
+            } else {
+                corners.resize(n);
+                for (size_t k = 0; k < n; ++k) {
+                    const size_t vi = static_cast<size_t>(ix[k].vertex_index);
+                    corners[k] = Vec3(attrib.vertices[3 * vi], attrib.vertices[3 * vi + 1],
+                                      attrib.vertices[3 * vi + 2]);
+                }
+                triangulate_face(corners, &cuts);
+            }
+            for (const auto& cut : cuts) {
+                scene::MeshFace face;
+                bool smooth = true, textured = true;
+                for (int k = 0; k < 3; ++k) {
+                    const tinyobj::index_t& c = ix[cut[k]];
+                    face.v[k] = remap(vmap, touched_v, c.vertex_index, add_v);
+                    smooth &= c.normal_index >= 0;
+                    textured &= c.texcoord_index >= 0;
+                }
+                for (int k = 0; k < 3; ++k) {
+                    const tinyobj::index_t& c = ix[cut[k]];
+                    // Flat unless every corner has a normal; no uvs unless every corner has one.
+                    if (smooth) face.n[k] = remap(nmap, touched_n, c.normal_index, add_n);
+                    if (textured) face.uv[k] = remap(tmap, touched_t, c.texcoord_index, add_t);
+                }
+                face.material = material;
+                mesh.faces.push_back(face);
+            }
         }
         for (int i : touched_v) vmap[i] = -1;
         for (int i : touched_n) nmap[i] = -1;

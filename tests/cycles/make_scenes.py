@@ -407,11 +407,15 @@ def render_references(name, ref_dir, spp, seeds, tmp_dir):
 # ----------------------------------------------------------------------------- export
 
 def export_obj(path):
+    # Faces as Blender holds them, not triangulated: the exporter's triangulation cuts quads on
+    # their shorter diagonal, while Cycles renders Blender's own cut (0-2 unless the quad is
+    # concave there), which glint's OBJ importer makes too. On smooth-shaded quads the cut
+    # decides how normals interpolate (the torus and Suzanne of `hdr` showed it).
     bpy.ops.wm.obj_export(filepath=path, export_eval_mode="DAG_EVAL_RENDER",
                           apply_modifiers=True, forward_axis="NEGATIVE_Z", up_axis="Y",
                           export_selected_objects=False, export_uv=False, export_normals=True,
                           export_materials=True, export_pbr_extensions=True,
-                          path_mode="RELATIVE", export_triangulated_mesh=True,
+                          path_mode="RELATIVE", export_triangulated_mesh=False,
                           export_object_groups=False, export_smooth_groups=False)
 
 

@@ -394,7 +394,10 @@ def _context_override(scene, view_layer):
 def export_obj(depsgraph, path):
     """Meshes with modifiers as the render sees them, through Blender's OBJ exporter (which
     evaluates the view layer itself, hence the frame_set: the render's frame may not have been
-    evaluated for the view layer yet)."""
+    evaluated for the view layer yet). Faces go out as Blender holds them: the exporter's own
+    triangulation cuts quads on the shorter diagonal, Cycles renders Blender's cut (0-2 unless
+    the quad is concave there), and glint's OBJ importer makes Blender's cut, which decides how
+    a smooth quad's normals interpolate."""
     scene = depsgraph.scene
     view_layer = depsgraph.view_layer
     with _context_override(scene, view_layer):
@@ -404,7 +407,7 @@ def export_obj(depsgraph, path):
             apply_modifiers=True, forward_axis='NEGATIVE_Z', up_axis='Y', global_scale=1.0,
             export_selected_objects=False, export_uv=True, export_normals=True,
             export_colors=False, export_materials=True, export_pbr_extensions=True,
-            path_mode='ABSOLUTE', export_triangulated_mesh=True, export_curves_as_nurbs=False,
+            path_mode='ABSOLUTE', export_triangulated_mesh=False, export_curves_as_nurbs=False,
             export_object_groups=False, export_material_groups=False,
             export_vertex_groups=False, export_smooth_groups=False)
     if 'FINISHED' not in result or not os.path.isfile(path):
