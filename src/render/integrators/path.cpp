@@ -7,6 +7,7 @@
 
 #include "core/float.h"
 #include "render/bsdf/bsdf.h"
+#include "render/bsdf/shading_normal.h"
 
 namespace glint::render {
 namespace {
@@ -230,7 +231,9 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         if (depth >= settings_.max_depth) break;
 
         const Bsdf bsdf = Bsdf::principled(s.bsdf);
-        const Frame frame = Frame::from_normal(hit.n);
+        // The shading normal bent, where it must be, so that the view's mirror direction
+        // leaves the surface (Cycles does this for every closure).
+        const Frame frame = Frame::from_normal(valid_reflection_normal(hit.ng, -r.dir, hit.n));
         const Vec3 wo = frame.to_local(-r.dir);
 
         // Next-event estimation.
