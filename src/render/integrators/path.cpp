@@ -81,6 +81,9 @@ PathIntegrator::PathIntegrator(const scene::Scene& scene, const Geometry& geomet
         }
         any_alpha_ = any_alpha_ || has_alpha_[i];
     }
+    constant_bsdf_.resize(n);
+    for (size_t i = 0; i < n; ++i)
+        if (constant_[i]) constant_bsdf_[i] = Bsdf::principled(constant_[i]->bsdf);
     lights_.emplace(scene, emission_, [this](const Vec3& d) { return environment(d); }, textures);
 }
 
@@ -230,7 +233,12 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         }
         if (depth >= settings_.max_depth) break;
 
-        const Bsdf bsdf = Bsdf::principled(s.bsdf);
+        // Made once per material where the surface is constant (most hits): building one
+        // costs Fresnel terms and a square root.
+        const bool constant = hit.material >= 0 &&
+                              hit.material < static_cast<int>(constant_bsdf_.size()) &&
+                              constant_bsdf_[hit.material];
+        const Bsdf bsdf = constant ? *constant_bsdf_[hit.material] : Bsdf::principled(s.bsdf);
         // The shading normal bent, where it must be, so that the view's mirror direction
         // leaves the surface (Cycles does this for every closure).
         const Frame frame = Frame::from_normal(valid_reflection_normal(hit.ng, -r.dir, hit.n));

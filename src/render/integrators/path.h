@@ -13,6 +13,7 @@
 #include <optional>
 #include <vector>
 
+#include "render/bsdf/bsdf.h"
 #include "render/bsdf/pov_to_pbr.h"
 #include "render/geometry.h"
 #include "render/integrators/aov.h"
@@ -58,6 +59,7 @@ private:
     PigmentEvaluator pigments_;
     PathSettings settings_;
     std::vector<std::optional<SurfacePbr>> constant_;  // per material, where the hit can't change it
+    std::vector<std::optional<Bsdf>> constant_bsdf_;   // the BSDF of each constant_ surface
     std::vector<Color> emission_;                      // per material, where constant
     std::vector<char> has_alpha_;  // per material: shadow rays may pass (alpha < 1, or IOR 1)
     // OBJ/MTL image maps per material (empty where none), in a cache of their own that is
