@@ -54,12 +54,6 @@ Vec3 uniform_sphere(Sample2 u) {
     return Vec3(r * std::cos(phi), r * std::sin(phi), z);
 }
 
-// Angle between unit vectors, accurate near 0 and pi (where acos of the dot product is not).
-double unit_angle(const Vec3& u, const Vec3& v) {
-    if (dot(u, v) < 0) return kPi - 2 * std::asin(std::min(1.0, length(u + v) / 2));
-    return 2 * std::asin(std::min(1.0, length(v - u) / 2));
-}
-
 // Solid angle of the spherical triangle of unit directions a, b, c (Van Oosterom & Strackee
 // 1983: tan(A / 2) = |a . (b x c)| / (1 + a.b + b.c + c.a)).
 double spherical_triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -69,25 +63,25 @@ double spherical_triangle_area(const Vec3& a, const Vec3& b, const Vec3& c) {
 }
 
 // A direction uniformly distributed (in solid angle) over the spherical triangle of unit
-// directions a, b, c: Arvo, "Stratified Sampling of Spherical Triangles" (SIGGRAPH 1995).
-// u.u picks the sub-triangle (a, b, c') with area u.u times the whole; u.v the point along
-// the arc from b to c'.
-bool sample_spherical_triangle(const Vec3& a, const Vec3& b, const Vec3& c, Sample2 u, Vec3* w) {
-    Vec3 n_ab = cross(a, b), n_bc = cross(b, c), n_ca = cross(c, a);
-    if (!(length_squared(n_ab) > 0) || !(length_squared(n_bc) > 0) ||
-        !(length_squared(n_ca) > 0))
-        return false;
+// directions a, b, c whose solid angle is `area` (spherical_triangle_area): Arvo, "Stratified
+// Sampling of Spherical Triangles" (SIGGRAPH 1995). u.u picks the sub-triangle (a, b, c')
+// with area u.u times the whole; u.v the point along the arc from b to c'. The pdf the caller
+// uses is 1 / area with the same area, and sin and cos of the angle alpha at a come from
+// the arcs' plane normals, so one sincos is the only transcendental call.
+bool sample_spherical_triangle(const Vec3& a, const Vec3& b, const Vec3& c, double area,
+                               Sample2 u, Vec3* w) {
+    Vec3 n_ab = cross(a, b), n_ac = cross(a, c);
+    if (!(length_squared(n_ab) > 0) || !(length_squared(n_ac) > 0) || !(area > 0)) return false;
     n_ab = normalize(n_ab);
-    n_bc = normalize(n_bc);
-    n_ca = normalize(n_ca);
-    const double alpha = unit_angle(n_ab, -n_ca);
-    const double beta = unit_angle(n_bc, -n_ab);
-    const double gamma = unit_angle(n_ca, -n_bc);
-    const double area = alpha + beta + gamma - kPi;
-    if (!(area > 0)) return false;
+    n_ac = normalize(n_ac);
+    // alpha: the angle at a between the arcs towards b and towards c (the dihedral angle of
+    // their planes); its sine is positive, as the triangle runs the same way round as these.
+    const double cos_a = std::clamp(dot(n_ab, n_ac), -1.0, 1.0);
+    const double sin_a = length(cross(n_ab, n_ac));
     const double sub = u.u * area;
-    const double s = std::sin(sub - alpha), t = std::cos(sub - alpha);
-    const double cos_a = std::cos(alpha), sin_a = std::sin(alpha);
+    const double sin_sub = std::sin(sub), cos_sub = std::cos(sub);
+    // sin and cos of (sub - alpha).
+    const double s = sin_sub * cos_a - cos_sub * sin_a, t = cos_sub * cos_a + sin_sub * sin_a;
     const double k1 = t - cos_a;
     const double k2 = s + sin_a * dot(a, b);
     const double den = (k2 * s + k1 * t) * sin_a;
@@ -108,7 +102,7 @@ bool sample_spherical_triangle(const Vec3& a, const Vec3& b, const Vec3& c, Samp
 
 }  // namespace
 
-double PathLights::tri_solid_angle(const Tri& t, const Vec3& p) {
+double PathLights::tri_solid_angle(const Tri& t, const Vec3& p, Vec3 dirs[3]) {
     if (!t.locatable) return 0;
     // Cycles 3.4's rule (light.h): the solid angle pays where the triangle's longest edge is
     // longer than its plane is far; elsewhere sampling by area is about as good and cheaper.
@@ -119,7 +113,13 @@ double PathLights::tri_solid_angle(const Tri& t, const Vec3& p) {
     const Vec3 a = t.p0 - p, b = a + t.e1, c = a + t.e2;
     const double la = length(a), lb = length(b), lc = length(c);
     if (!(la > 0) || !(lb > 0) || !(lc > 0)) return 0;
-    const double area = spherical_triangle_area(a / la, b / lb, c / lc);
+    const Vec3 ua = a / la, ub = b / lb, uc = c / lc;
+    const double area = spherical_triangle_area(ua, ub, uc);
+    if (dirs) {
+        dirs[0] = ua;
+        dirs[1] = ub;
+        dirs[2] = uc;
+    }
     // Tiny or degenerate spherical triangles: area sampling (the same rule in pdf and sample).
     return area > 1e-6 && std::isfinite(area) ? area : 0.0;
 }
@@ -364,11 +364,11 @@ bool PathLights::sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out
             }
             const Tri& t = tris_[i];
             const double select = select_prob() * t.area * average(t.le) / emitter_total_;
-            if (const double omega = tri_solid_angle(t, p); omega > 0) {
-                const Vec3 a = normalize(t.p0 - p), b = normalize(t.p0 + t.e1 - p),
-                           c = normalize(t.p0 + t.e2 - p);
+            Vec3 dirs[3];
+            if (const double omega = tri_solid_angle(t, p, dirs); omega > 0) {
                 Vec3 w;
-                if (!sample_spherical_triangle(a, b, c, {ur, u.v}, &w)) return false;
+                if (!sample_spherical_triangle(dirs[0], dirs[1], dirs[2], omega, {ur, u.v}, &w))
+                    return false;
                 const double along = dot(w, t.n);
                 const double dist = dot(t.p0 - p, t.n) / along;
                 if (!(dist > 0) || !std::isfinite(dist)) return false;

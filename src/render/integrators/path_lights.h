@@ -139,7 +139,8 @@ private:
     };
     // Solid angle of `t` seen from p when sample() samples it by solid angle (Arvo 1995, where
     // Cycles 3.4 does: its longest edge longer than its plane's distance), 0 for area sampling.
-    static double tri_solid_angle(const Tri& t, const Vec3& p);
+    // With `dirs`, also the unit directions from p to its corners.
+    static double tri_solid_angle(const Tri& t, const Vec3& p, Vec3 dirs[3] = nullptr);
     // How far q is from the shape's surface, relative to its size (0 on it).
     static double off_surface(const Shape& e, const Vec3& q);
     static constexpr int kNotSampled = -1;
