@@ -25,6 +25,6 @@ namespace glint::obj {
 void triangulate_face(std::span<const Vec3> corners, std::vector<std::array<int, 3>>* out);
 
 // Ear clipping costs O(n^2) in a polygon's corners; past this a polygon is cut as a fan.
-constexpr int kMaxEarClipCorners = 4096;
+constexpr int kMaxEarClipCorners = 1024;
 
 }  // namespace glint::obj
