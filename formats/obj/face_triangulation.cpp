@@ -103,8 +103,8 @@ void triangulate_face(std::span<const Vec3> c, std::vector<std::array<int, 3>>* 
     for (int i = 0; i < n; ++i) {
         const Vec3& a = c[i];
         const Vec3& b = c[(i + 1) % n];
-        normal += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
-                       (a.x - b.x) * (a.y + b.y));
+        normal +=
+            Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
     }
     const double len = length(normal);
     if (!(len > 0) || !std::isfinite(len) || n > kMaxEarClipCorners) {

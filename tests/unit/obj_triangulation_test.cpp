@@ -35,8 +35,7 @@ TEST(ObjTriangulation, QuadsAreCutOnTheirFirstDiagonal) {
     // (tinyobjloader: 1-3). Blender cuts all three on 0-2.
     EXPECT_EQ(cut({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}), (Tris{{0, 1, 2}, {0, 2, 3}}));
     EXPECT_EQ(cut({{0, 0, 0}, {3, 0, 0}, {2, 1, 0}, {1, 1, 0}}), (Tris{{0, 1, 2}, {0, 2, 3}}));
-    EXPECT_EQ(cut({{0, 0, 0}, {2, -0.5, 0}, {4, 0, 0}, {2, 0.5, 0}}),
-              (Tris{{0, 1, 2}, {0, 2, 3}}));
+    EXPECT_EQ(cut({{0, 0, 0}, {2, -0.5, 0}, {4, 0, 0}, {2, 0.5, 0}}), (Tris{{0, 1, 2}, {0, 2, 3}}));
 }
 
 TEST(ObjTriangulation, ConcaveQuadIsCutOnTheDiagonalInside) {

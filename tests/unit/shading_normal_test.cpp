@@ -1,11 +1,11 @@
 // The path tracer's bent shading normal (render/bsdf/shading_normal.h): Cycles' rule that the
 // view's mirror direction must leave the surface.
+#include "render/bsdf/shading_normal.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-
-#include "render/bsdf/shading_normal.h"
 
 namespace glint::render {
 namespace {

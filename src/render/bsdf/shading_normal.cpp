@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace glint::render {
 
@@ -39,7 +40,8 @@ Vec3 valid_reflection_normal(const Vec3& ng_in, const Vec3& wo, const Vec3& n_in
     constexpr double kTol = 1e-5;
     auto admissible = [](double u) { return u > kTol && u <= 1 + kTol; };
     auto normal_of = [](double u) {
-        return std::pair<double, double>(std::sqrt(std::max(0.0, 1 - u)), std::sqrt(std::max(0.0, u)));
+        return std::pair<double, double>(std::sqrt(std::max(0.0, 1 - u)),
+                                         std::sqrt(std::max(0.0, u)));
     };
     auto height = [&](std::pair<double, double> m) {
         return 2 * (m.first * ix + m.second * iz) * m.second - iz;
