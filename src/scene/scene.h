@@ -2,6 +2,7 @@
 // from. Entities link by integer ids (materials, meshes). Defaults match POV-Ray 3.7.
 #pragma once
 
+#include <deque>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,7 +42,7 @@ struct Scene {
     Camera camera;
     std::vector<Light> lights;
     std::vector<Object> objects;
-    std::vector<Material> materials;
+    std::deque<Material> materials;
     std::vector<Mesh> meshes;
     GlobalSettings global;
     ColorFT background{Color(0, 0, 0)};
