@@ -55,10 +55,10 @@ Estimate by_sampling(const Bsdf& b, const Vec3& wo, int n, uint32_t seed, double
     double s = 0, s2 = 0;
     for (int i = 0; i < n; ++i) {
         PixelSampler ps(static_cast<int>(seed), 7, static_cast<uint32_t>(i), seed);
-        const Sample2 a = ps.get2(1), d = ps.get2(2);
+        const Sample2 d = ps.get2(2);
         BsdfSample bs;
         double v = 0;
-        if (b.sample(wo, a.u, d.u, d.v, &bs)) {
+        if (b.sample(wo, d.u, d.v, &bs)) {
             v = (bs.weight.r + bs.weight.g + bs.weight.b) / 3;
             if (!bs.delta && max_pdf_err) {
                 const double p = b.pdf(wo, bs.wi);
@@ -321,9 +321,9 @@ TEST(PathBsdf, ExtremeParametersStayFinite) {
                 for (double theta : {0.0, 1e-7, 45.0, 89.9999, 90.0, 135.0, 180.0}) {
                     const Vec3 wo = dir_from(theta);
                     for (uint32_t i = 0; i < 64; ++i) {
-                        const Sample2 a = PixelSampler(1, 2, i, 3).get2(1), d = PixelSampler(1, 2, i, 3).get2(2);
+                        const Sample2 d = PixelSampler(1, 2, i, 3).get2(2);
                         BsdfSample bs;
-                        if (!b.sample(wo, a.u, d.u, d.v, &bs)) continue;
+                        if (!b.sample(wo, d.u, d.v, &bs)) continue;
                         ASSERT_TRUE(std::isfinite(bs.weight.r) && std::isfinite(bs.pdf));
                         ASSERT_TRUE(is_finite(bs.wi));
                         const Color f = b.eval(wo, bs.wi);

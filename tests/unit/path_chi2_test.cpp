@@ -181,9 +181,9 @@ Outcome run_chi2(const Config& c, uint64_t seed,
     chi2::Rng rng(seed);
     double weight_sum = 0, weight_sum2 = 0;
     for (int i = 0; i < kSamples; ++i) {
-        const double ul = rng.next(), u1 = rng.next(), u2 = rng.next();
+        const double u1 = rng.next(), u2 = rng.next();
         BsdfSample bs;
-        if (!c.bsdf.sample(wo, ul, u1, u2, &bs)) {
+        if (!c.bsdf.sample(wo, u1, u2, &bs)) {
             observed.back() += 1;
             continue;
         }
@@ -272,9 +272,9 @@ TEST(BsdfChi2Smooth, ReflectRefractChoiceFollowsFresnel) {
         std::vector<double> observed(3, 0.0);  // reflected, refracted, other
         double max_weight_err = 0;
         for (int i = 0; i < kSamples; ++i) {
-            const double ul = rng.next(), u1 = rng.next(), u2 = rng.next();
+            const double u1 = rng.next(), u2 = rng.next();
             BsdfSample bs;
-            if (!b.sample(wo, ul, u1, u2, &bs)) {
+            if (!b.sample(wo, u1, u2, &bs)) {
                 observed[2] += 1;
                 continue;
             }

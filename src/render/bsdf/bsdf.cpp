@@ -1,5 +1,6 @@
 #include "render/bsdf/bsdf.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace glint::render {
@@ -289,14 +290,18 @@ double Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
     return pdf / sum;
 }
 
-bool Bsdf::sample(const Vec3& wo, double u_lobe, double u1, double u2, BsdfSample* out) const {
+bool Bsdf::sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const {
     if (wo.z == 0) return false;
     const LobeProbs l = lobe_probs(wo);
     const double sum = l.sum();
     if (!(sum > 0)) return false;
     const double s = wo.z < 0 ? -1.0 : 1.0;
     const Vec3 o(wo.x, wo.y, wo.z * s);
-    const double u = u_lobe * sum;
+    const double u = u1 * sum;
+    // u1 rescaled to [0, 1) within the share [lo, lo + width) of sum that picked the lobe.
+    auto rescaled = [&](double lo, double width) {
+        return width > 0 ? std::clamp((u - lo) / width, 0.0, 0x1.fffffffffffffp-1) : 0.0;
+    };
     auto delta = [&](const Vec3& wi_local, const Color& weight, double p) {
         out->wi = Vec3(wi_local.x, wi_local.y, wi_local.z * s);
         out->weight = weight / p;
@@ -306,22 +311,23 @@ bool Bsdf::sample(const Vec3& wo, double u_lobe, double u1, double u2, BsdfSampl
     };
     Vec3 i;
     if (u < l.d) {
-        i = cosine_hemisphere(u1, u2);
+        i = cosine_hemisphere(rescaled(0, l.d), u2);
     } else if (u < l.d + l.s) {
         if (spec_delta_) return delta(Vec3(-o.x, -o.y, o.z), spec_fresnel(o.z) * w_spec_, l.s / sum);
-        i = reflect(o, ggx_.sample_visible(o, u1, u2));
+        i = reflect(o, ggx_.sample_visible(o, rescaled(l.d, l.s), u2));
         if (i.z <= 0) return false;
     } else if (u < l.d + l.s + l.gr) {
         if (trans_delta_)
             return delta(Vec3(-o.x, -o.y, o.z), Color(w_trans_ * glass_fresnel(wo)), l.gr / sum);
-        i = reflect(o, ggx_.sample_visible(o, u1, u2));
+        i = reflect(o, ggx_.sample_visible(o, rescaled(l.d + l.s, l.gr), u2));
         if (i.z <= 0) return false;
     } else if (u < l.d + l.s + l.gr + l.gt) {
         const double etap = wo.z > 0 ? eta_ : 1.0 / eta_;
         const double share = refraction_share(glass_fresnel(wo));
         if (std::fabs(eta_ - 1) < kIndexMatched)  // straight on: an IOR 1 object leaves no trace
             return delta(-o, trans_tint_ * (w_trans_ * share), l.gt / sum);
-        const Vec3 wm = trans_delta_ ? Vec3(0, 0, 1) : ggx_.sample_visible(o, u1, u2);
+        const Vec3 wm = trans_delta_ ? Vec3(0, 0, 1)
+                                     : ggx_.sample_visible(o, rescaled(l.d + l.s + l.gr, l.gt), u2);
         double unused;
         if (dot(o, wm) <= 0) return false;
         if (!refract(o, wm, etap, &unused, &i) || i.z >= 0) return false;
@@ -329,7 +335,7 @@ bool Bsdf::sample(const Vec3& wo, double u_lobe, double u1, double u2, BsdfSampl
     } else {
         // Phong lobe: cos^n around the mirror direction.
         const Vec3 r(-o.x, -o.y, o.z);
-        const double cos_a = std::pow(u1, 1.0 / (phong_n_ + 1));
+        const double cos_a = std::pow(rescaled(l.d + l.s + l.gr + l.gt, l.p), 1.0 / (phong_n_ + 1));
         const double sin_a = std::sqrt(std::max(0.0, 1 - cos_a * cos_a));
         const double phi = 2 * kPi * u2;
         const Frame fr = Frame::from_normal(r);

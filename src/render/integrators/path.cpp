@@ -12,9 +12,9 @@
 namespace glint::render {
 namespace {
 
-// Sampler pairs used per bounce: (lobe, roulette), BSDF direction, (unused, light pick), then
-// one per light slot. Alpha coins come from pairs after all the bounces' ones, one per test, so
-// a see-through surface does not shift the random numbers of the bounces after it.
+// Sampler pairs used per bounce: (unused, roulette), BSDF lobe and direction, (unused, light
+// pick), then one per light slot. Alpha coins come from pairs after all the bounces' ones, one
+// per test, so a see-through surface does not shift the random numbers of the bounces after it.
 constexpr uint32_t kPairsPerVertex = 3 + PathLights::kSampleAllMax;
 // Stochastic-alpha pass-throughs allowed on top of max_depth bounces.
 constexpr int kMaxAlphaSkips = 64;
@@ -270,11 +270,12 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             }
         }
 
-        // Continue the path by sampling the BSDF.
+        // Continue the path by sampling the BSDF: one 2D point picks the lobe and the
+        // direction (Bsdf::sample); ul.v is the roulette's.
         const Sample2 ul = sampler.get2(base);
         const Sample2 ud = sampler.get2(base + 1);
         BsdfSample bs;
-        if (!bsdf.sample(wo, ul.u, ud.u, ud.v, &bs)) break;
+        if (!bsdf.sample(wo, ud.u, ud.v, &bs)) break;
         ++scatterings;
         beta *= bs.weight;
         if (bs.delta && s.bsdf.ior == 1.0 && bs.wi.x == -wo.x && bs.wi.y == -wo.y &&
