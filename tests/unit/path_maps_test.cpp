@@ -289,7 +289,50 @@ TEST_F(PathMaps, DataMapsAreLinearAndColorMapsSrgb) {
     const SurfacePbr s = pbr_surface(pbr, maps, Vec2(0.5, 0.5));
     EXPECT_NEAR(s.bsdf.base.r, srgb(128), 1e-6);
     EXPECT_NEAR(s.bsdf.roughness, 128 / 255.0, 1e-6);
-    EXPECT_EQ(cache.size(), 2u);  // the same file once per decoding
+    // An 8-bit sRGB file is held once, as stored: the color map decodes after its blend.
+    EXPECT_EQ(cache.size(), 1u);
+}
+
+TEST_F(PathMaps, EightBitColorMapsBlendBeforeDecoding) {
+    // Two texels, 0 and 255, side by side: halfway between their centres Cycles 3.4 blends the
+    // stored bytes and decodes the blend, sRGB(127.5) = 0.212, where blending the decoded
+    // texels would give 0.5 (the 70% seams of a wrapping texture).
+    const std::string file = png("ramp.png", 2, 1, 3, [](int x, int, int) { return x ? 255 : 0; });
+    scene::Pbr pbr;
+    pbr.derived = false;
+    pbr.base_color_map.file = pbr.base_color_map.resolved_path = file;
+    TextureCache cache(ImageGamma{});
+    const PbrMaps maps = prepare_pbr_maps(pbr, cache);
+    ASSERT_TRUE(maps.base_color.decode_after);
+    const double v = 0.5;
+    const double mid = 127.5 / 255.0;
+    const double expected = std::pow((mid + 0.055) / 1.055, 2.4);
+    EXPECT_NEAR(pbr_surface(pbr, maps, Vec2(0.5, v)).bsdf.base.r, expected, 1e-6);
+    // At a texel centre the texel itself, decoded.
+    EXPECT_NEAR(pbr_surface(pbr, maps, Vec2(0.75, v)).bsdf.base.g, 1.0, 1e-6);
+    EXPECT_NEAR(pbr_surface(pbr, maps, Vec2(0.25, v)).bsdf.base.b, 0.0, 1e-6);
+}
+
+TEST_F(PathMaps, SixteenBitColorMapsAreDecodedAtLoad) {
+    // Cycles converts images of more than 8 bits to linear floats when it loads them; so does
+    // glint, and blends the decoded texels.
+    const std::string path = (dir_ / "ramp16.png").string();
+    {
+        const uint16_t data[6] = {0, 0, 0, 65535, 65535, 65535};
+        auto out = OIIO::ImageOutput::create(path);
+        OIIO::ImageSpec spec(2, 1, 3, OIIO::TypeDesc::UINT16);
+        ASSERT_TRUE(out && out->open(path, spec));
+        out->write_image(OIIO::TypeDesc::UINT16, data);
+        out->close();
+    }
+    scene::Pbr pbr;
+    pbr.derived = false;
+    pbr.base_color_map.file = pbr.base_color_map.resolved_path = path;
+    TextureCache cache(ImageGamma{});
+    const PbrMaps maps = prepare_pbr_maps(pbr, cache);
+    EXPECT_FALSE(maps.base_color.decode_after);
+    EXPECT_NEAR(pbr_surface(pbr, maps, Vec2(0.5, 0.5)).bsdf.base.r, 0.5, 1e-6);
+    EXPECT_EQ(cache.size(), 2u);  // read as stored first, then again decoded
 }
 
 TEST_F(PathMaps, MissingMapStillRenders) {

@@ -117,6 +117,8 @@ void PbrMapLookup::lookup(Vec2 uv, float out[5]) const {
     const double wa = (1 - fx) * (1 - fy), wb = fx * (1 - fy), wc = (1 - fx) * fy, wd = fx * fy;
     for (int k = 0; k < 5; ++k)
         out[k] = static_cast<float>(a[k] * wa + b[k] * wb + c[k] * wc + d[k] * wd);
+    if (decode_after)
+        for (int k = 0; k < 3; ++k) out[k] = static_cast<float>(srgb_decode(out[k]));
 }
 
 double PbrMapLookup::value(Vec2 uv) const {
@@ -130,8 +132,16 @@ namespace {
 PbrMapLookup prepare_map(const scene::PbrMap& m, bool color, TextureCache& cache) {
     PbrMapLookup l;
     if (!m.present()) return l;
-    cache.add_pbr(m, color);
-    l.image = cache.find_pbr(m, color);
+    // A color map is read as stored first: an 8-bit sRGB file (nearly every one) is used so
+    // and decoded after the blend; any other is read again, decoded at load.
+    cache.add_pbr(m, false);
+    l.image = cache.find_pbr(m, false);
+    if (color && l.image && l.image->srgb8()) {
+        l.decode_after = true;
+    } else if (color) {
+        cache.add_pbr(m, true);
+        l.image = cache.find_pbr(m, true);
+    }
     if (l.image && (l.image->width() <= 0 || l.image->height() <= 0)) l.image = nullptr;
     l.ou = m.offset.x;
     l.ov = m.offset.y;

@@ -29,6 +29,11 @@ SurfacePbr pbr_surface(const scene::Pbr& pbr, const Color& base);
 struct PbrMapLookup {
     const ImageTexture* image = nullptr;
     double ou = 0, ov = 0, su = 1, sv = 1;
+    // The image holds 8-bit sRGB values as stored, decoded after the bilinear blend: Cycles
+    // 3.4 keeps such images as bytes and decodes the interpolated value ("compress as sRGB"),
+    // which differs from blending decoded texels wherever neighbours differ much (a texture's
+    // wrap seam by up to 70%).
+    bool decode_after = false;
     explicit operator bool() const { return image != nullptr; }
     // Bilinear, repeating, (0, 0) at the image's bottom left: r, g, b, filter, transmit.
     void lookup(Vec2 uv, float out[5]) const;
@@ -49,7 +54,8 @@ struct PbrMaps {
     }
 };
 
-// Loads `pbr`'s maps into `cache` (color maps sRGB-decoded, data maps as stored).
+// Loads `pbr`'s maps into `cache`: data maps as stored; color maps of 8-bit sRGB files as
+// stored too, decoded at lookup (decode_after), others decoded from their own gamma at load.
 PbrMaps prepare_pbr_maps(const scene::Pbr& pbr, TextureCache& cache);
 
 // The surface at `uv`: each map present replaces its constant (MTL.md says how each is read).

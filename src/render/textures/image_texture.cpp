@@ -9,12 +9,12 @@
 #include "core/quiet_stderr.h"
 
 namespace glint::render {
-namespace {
 
 double srgb_decode(double v) {
-    // IEC 61966-2-1, the default file gamma of 8-bit images in POV-Ray 3.7.
     return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
 }
+
+namespace {
 
 // Collects image maps from a pigment tree.
 void collect(const scene::Pigment& p, std::vector<const scene::ImageMap*>* out) {
@@ -133,6 +133,8 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const scene::ImageMap& ma
     tex->width_ = w;
     tex->height_ = h;
     tex->has_alpha_ = alpha_channel >= 0;
+    tex->srgb8_ = tabulate &&
+                  !(file_gamma > 0 && colorspace != "sRGB" && colorspace.rfind("Gamma", 0) == 0);
     tex->data_.resize(static_cast<size_t>(w) * h * 5);
     for (size_t i = 0; i < static_cast<size_t>(w) * h; ++i) {
         const float* s = &raw[i * nc];

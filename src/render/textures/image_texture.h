@@ -29,6 +29,9 @@ struct ImageGamma {
 
 ImageGamma image_gamma(const scene::Scene& scene);
 
+// IEC 61966-2-1's decoding curve, the default file gamma of 8-bit images in POV-Ray 3.7.
+double srgb_decode(double v);
+
 class ImageTexture {
 public:
     int width() const { return width_; }
@@ -39,6 +42,9 @@ public:
     }
     // Whether the file has an alpha channel (otherwise transmit is 0 everywhere).
     bool has_alpha() const { return has_alpha_; }
+    // Whether the file holds 8-bit values in the sRGB encoding (8 bits a channel and no gamma
+    // of its own), whatever this texture decoded them to.
+    bool srgb8() const { return srgb8_; }
 
     // Throws Error(MissingFile) if the file cannot be read.
     static std::shared_ptr<const ImageTexture> load(const scene::ImageMap& map,
@@ -48,6 +54,7 @@ private:
     int width_ = 0;
     int height_ = 0;
     bool has_alpha_ = false;
+    bool srgb8_ = false;
     std::vector<float> data_;
 };
 
