@@ -31,7 +31,7 @@ namespace {
 
 // a*b - c*d with one rounding (Kahan's algorithm with FMA): the discriminant without
 // catastrophic cancellation.
-double diff_of_products(double a, double b, double c, double d) {
+[[gnu::always_inline]] inline double diff_of_products(double a, double b, double c, double d) {
     double cd = c * d;
     double err = std::fma(-c, d, cd);
     double dop = std::fma(a, b, -cd);
@@ -77,6 +77,29 @@ private:
     };
 
     int candidates(const Ray& ray, double tmax, Candidate out[4]) const {
+#if defined(__x86_64__)
+        static const bool fma = __builtin_cpu_supports("fma");
+        if (fma) return candidates_fma(ray, tmax, out);
+#endif
+        return candidates_any(ray, tmax, out);
+    }
+
+    // The roots, built twice: glint's build runs on any x86-64, where std::fma is a call into
+    // the C library (and every live register is spilled around it); the copy for CPUs with FMA
+    // has the instruction inline. FMA rounds once either way, so both give the same bits
+    // (cone.cpp is compiled without contraction into FMA, see CMakeLists.txt).
+#if defined(__x86_64__)
+    __attribute__((target("fma"))) int candidates_fma(const Ray& ray, double tmax,
+                                                      Candidate out[4]) const {
+        return candidates_body(ray, tmax, out);
+    }
+#endif
+    int candidates_any(const Ray& ray, double tmax, Candidate out[4]) const {
+        return candidates_body(ray, tmax, out);
+    }
+
+    [[gnu::always_inline]] int candidates_body(const Ray& ray, double tmax,
+                                               Candidate out[4]) const {
         int n = 0;
         const Vec3 &o = ray.origin, &d = ray.dir;
         double rho = r0_ + k_ * o.z;  // radius at the origin's height
