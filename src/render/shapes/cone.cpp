@@ -39,7 +39,7 @@ namespace {
 }
 
 class ConePrim final : public Primitive {
-public:
+  public:
     ConePrim(double r0, double r1, bool open) : r0_(r0), r1_(r1), k_(r1 - r0), open_(open) {}
 
     Bounds3 bounds() const override {
@@ -70,7 +70,7 @@ public:
         return p.x * p.x + p.y * p.y <= r * r;
     }
 
-private:
+  private:
     struct Candidate {
         double t;
         int part;  // 0 side, 1 base cap, 2 top cap
@@ -121,7 +121,8 @@ private:
                 double q = -(bh + std::copysign(sd, bh));
                 if (q != 0) {
                     double t_far = q / a, t_near = c / q;
-                    double e_near = gamma(4) * scale_c / std::fabs(q) + gamma(3) * std::fabs(t_near);
+                    double e_near =
+                        gamma(4) * scale_c / std::fabs(q) + gamma(3) * std::fabs(t_near);
                     double e_far = gamma(8) * std::fabs(t_far);
                     side(t_near, e_near);
                     side(t_far, e_far);

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/image_library.h"
+#include "core/png_reader.h"
 #include "core/image_limits.h"
 #include "core/quiet_stderr.h"
 #include "render/shapes/shapes.h"
@@ -280,7 +280,7 @@ std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const 
     FileLoc at = s.file_loc.line > 0 ? s.file_loc : loc;
     QuietStderr quiet;  // libpng's own lines: glint's error says what went wrong
     std::string err;
-    std::unique_ptr<ImageReader> in = image_library().open(path, {}, &err);
+    std::unique_ptr<ImageReader> in = open_image(path, {}, &err);
     if (!in)
         throw Error(ErrorKind::MissingFile, at,
                     "cannot read height_field image '" + s.file + "': " + first_line_of(err));

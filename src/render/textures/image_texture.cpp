@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "core/image_library.h"
+#include "core/png_reader.h"
 #include "core/image_limits.h"
 #include "core/quiet_stderr.h"
 
@@ -63,7 +63,7 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const scene::ImageMap& ma
     QuietStderr quiet;  // libpng's own lines: glint's error says what went wrong
     // POV-Ray works with unassociated alpha for PNG and friends.
     std::unique_ptr<ImageReader> in =
-        image_library().open(path, {{"oiio:UnassociatedAlpha", 1}}, &why);
+        open_image(path, {{"oiio:UnassociatedAlpha", 1}}, &why);
     if (!in) {
         throw Error(ErrorKind::MissingFile, map.loc,
                     "cannot read image '" + map.file + "': " + first_line_of(why));
