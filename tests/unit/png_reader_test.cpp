@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <random>
 #include <string>
@@ -217,6 +218,37 @@ TEST_F(PngReader, ABrokenHeaderIsAnErrorOfItsOwn) {
     std::string why;
     EXPECT_FALSE(open_png(cut, true, &why));
     EXPECT_EQ(why, "Read error: hit end of file");
+}
+
+// What the reader is for: a scene whose only image is a PNG map renders without opening
+// OpenImageIO's module (LD_DEBUG=files lists each library the loader opens, dlopen included).
+TEST_F(PngReader, ASceneWithAPngImageMapDoesNotLoadOpenImageIo) {
+    ASSERT_TRUE(write_variant({"rgba8", 8, PNG_COLOR_TYPE_RGB_ALPHA}, (dir_ / "tex.png").string()));
+    {
+        std::FILE* f = std::fopen((dir_ / "s.pov").c_str(), "w");
+        ASSERT_TRUE(f);
+        std::fputs(
+            "camera { location <0, 0, -3> look_at 0 }\n"
+            "light_source { <2, 4, -3> color rgb 1 }\n"
+            "box { -1, 1 pigment { image_map { png \"tex.png\" } } }\n",
+            f);
+        std::fclose(f);
+    }
+    const std::string log = (dir_ / "ld.txt").string();
+    const std::string cmd =
+        "cd '" + dir_.string() + "' && LD_DEBUG=files '" + std::string(GLINT_BINARY) +
+        "' render s.pov -o out.png --width 8 --height 8 > /dev/null 2> '" + log + "'";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    EXPECT_TRUE(std::filesystem::exists(dir_ / "out.png"));
+    std::FILE* f = std::fopen(log.c_str(), "r");
+    ASSERT_TRUE(f);
+    std::string opened;
+    char buf[4096];
+    while (size_t n = std::fread(buf, 1, sizeof buf, f)) opened.append(buf, n);
+    std::fclose(f);
+    EXPECT_NE(opened.find("libpng16"), std::string::npos) << opened;
+    EXPECT_EQ(opened.find("libglint_oiio"), std::string::npos);
+    EXPECT_EQ(opened.find("libOpenImageIO"), std::string::npos);
 }
 
 }  // namespace
