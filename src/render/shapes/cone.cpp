@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "render/shapes/cone_roots.h"
 #include "render/shapes/shapes.h"
 
 namespace glint::render {
@@ -38,9 +39,73 @@ namespace {
     return dop + err;
 }
 
+// The roots, built twice: glint's build runs on any x86-64, where std::fma is a call into the C
+// library (and every live register is spilled around it); the copy for CPUs with FMA has the
+// instruction inline. FMA rounds once either way and cone.cpp is compiled without contraction
+// into FMA (CMakeLists.txt), so both give the same bits (cone_roots_test).
+[[gnu::always_inline]] inline int roots_body(const ConeShape& cone, const Ray& ray, double tmax,
+                                             ConeRoot out[4]) {
+    const double r0 = cone.r0, r1 = cone.r1, k = r1 - r0;
+    int n = 0;
+    const Vec3 &o = ray.origin, &d = ray.dir;
+    double rho = r0 + k * o.z;  // radius at the origin's height
+    double kd = k * d.z;
+    double a = diff_of_products(d.x, d.x, kd, kd) + d.y * d.y;
+    double bh = o.x * d.x + o.y * d.y - rho * kd;
+    double c = diff_of_products(o.x, o.x, rho, rho) + o.y * o.y;
+    double scale_c = o.x * o.x + o.y * o.y + rho * rho;
+    auto side = [&](double t, double err) {
+        if (!(t > err) || !(t < tmax)) return;
+        double z = o.z + t * d.z;
+        if (z >= 0 && z <= 1) out[n++] = {t, 0};
+    };
+    double scale_a = d.x * d.x + d.y * d.y + kd * kd;
+    if (std::fabs(a) > gamma(4) * scale_a) {
+        double disc = diff_of_products(bh, bh, a, c);
+        if (disc >= 0) {
+            double sd = std::sqrt(disc);
+            double q = -(bh + std::copysign(sd, bh));
+            if (q != 0) {
+                double t_far = q / a, t_near = c / q;
+                double e_near = gamma(4) * scale_c / std::fabs(q) + gamma(3) * std::fabs(t_near);
+                double e_far = gamma(8) * std::fabs(t_far);
+                side(t_near, e_near);
+                side(t_far, e_far);
+            }
+        }
+    } else if (bh != 0) {
+        // The ray is parallel to a generating line of the cone: one root.
+        double t = -c / (2 * bh);
+        side(t, gamma(4) * scale_c / std::fabs(2 * bh) + gamma(3) * std::fabs(t));
+    }
+    if (!cone.open && d.z != 0) {
+        for (int cap = 0; cap < 2; ++cap) {
+            double r = cap ? r1 : r0;
+            if (r <= 0) continue;
+            double t = (cap - o.z) / d.z;
+            if (!(t > 0) || !(t < tmax)) continue;
+            double x = o.x + t * d.x, y = o.y + t * d.y;
+            if (x * x + y * y <= r * r) out[n++] = {t, 1 + cap};
+        }
+    }
+    return n;
+}
+
+int roots_generic(const ConeShape& cone, const Ray& ray, double tmax, ConeRoot out[4]) {
+    return roots_body(cone, ray, tmax, out);
+}
+
+#if defined(__x86_64__)
+__attribute__((target("fma"))) int roots_fma(const ConeShape& cone, const Ray& ray, double tmax,
+                                             ConeRoot out[4]) {
+    return roots_body(cone, ray, tmax, out);
+}
+#endif
+
 class ConePrim final : public Primitive {
-  public:
-    ConePrim(double r0, double r1, bool open) : r0_(r0), r1_(r1), k_(r1 - r0), open_(open) {}
+public:
+    ConePrim(double r0, double r1, bool open)
+        : r0_(r0), r1_(r1), k_(r1 - r0), shape_{r0, r1, open}, roots_(cone_roots()) {}
 
     Bounds3 bounds() const override {
         double r = std::max(r0_, r1_) * (1 + gamma(2));
@@ -48,8 +113,8 @@ class ConePrim final : public Primitive {
     }
 
     bool intersect(const Ray& ray, double tmax, LocalHit* hit) const override {
-        Candidate c[4];
-        int n = candidates(ray, tmax, c);
+        ConeRoot c[4];
+        int n = roots_(shape_, ray, tmax, c);
         int best = -1;
         for (int i = 0; i < n; ++i)
             if (best < 0 || c[i].t < c[best].t) best = i;
@@ -59,8 +124,8 @@ class ConePrim final : public Primitive {
     }
 
     void intersect_all(const Ray& ray, double tmax, HitList* hits) const override {
-        Candidate c[4];
-        int n = candidates(ray, tmax, c);
+        ConeRoot c[4];
+        int n = roots_(shape_, ray, tmax, c);
         for (int i = 0; i < n; ++i) fill(ray, c[i], &hits->emplace_back());
     }
 
@@ -70,83 +135,8 @@ class ConePrim final : public Primitive {
         return p.x * p.x + p.y * p.y <= r * r;
     }
 
-  private:
-    struct Candidate {
-        double t;
-        int part;  // 0 side, 1 base cap, 2 top cap
-    };
-
-    int candidates(const Ray& ray, double tmax, Candidate out[4]) const {
-#if defined(__x86_64__)
-        static const bool fma = __builtin_cpu_supports("fma");
-        if (fma) return candidates_fma(ray, tmax, out);
-#endif
-        return candidates_any(ray, tmax, out);
-    }
-
-    // The roots, built twice: glint's build runs on any x86-64, where std::fma is a call into
-    // the C library (and every live register is spilled around it); the copy for CPUs with FMA
-    // has the instruction inline. FMA rounds once either way, so both give the same bits
-    // (cone.cpp is compiled without contraction into FMA, see CMakeLists.txt).
-#if defined(__x86_64__)
-    __attribute__((target("fma"))) int candidates_fma(const Ray& ray, double tmax,
-                                                      Candidate out[4]) const {
-        return candidates_body(ray, tmax, out);
-    }
-#endif
-    int candidates_any(const Ray& ray, double tmax, Candidate out[4]) const {
-        return candidates_body(ray, tmax, out);
-    }
-
-    [[gnu::always_inline]] int candidates_body(const Ray& ray, double tmax,
-                                               Candidate out[4]) const {
-        int n = 0;
-        const Vec3 &o = ray.origin, &d = ray.dir;
-        double rho = r0_ + k_ * o.z;  // radius at the origin's height
-        double kd = k_ * d.z;
-        double a = diff_of_products(d.x, d.x, kd, kd) + d.y * d.y;
-        double bh = o.x * d.x + o.y * d.y - rho * kd;
-        double c = diff_of_products(o.x, o.x, rho, rho) + o.y * o.y;
-        double scale_c = o.x * o.x + o.y * o.y + rho * rho;
-        auto side = [&](double t, double err) {
-            if (!(t > err) || !(t < tmax)) return;
-            double z = o.z + t * d.z;
-            if (z >= 0 && z <= 1) out[n++] = {t, 0};
-        };
-        double scale_a = d.x * d.x + d.y * d.y + kd * kd;
-        if (std::fabs(a) > gamma(4) * scale_a) {
-            double disc = diff_of_products(bh, bh, a, c);
-            if (disc >= 0) {
-                double sd = std::sqrt(disc);
-                double q = -(bh + std::copysign(sd, bh));
-                if (q != 0) {
-                    double t_far = q / a, t_near = c / q;
-                    double e_near =
-                        gamma(4) * scale_c / std::fabs(q) + gamma(3) * std::fabs(t_near);
-                    double e_far = gamma(8) * std::fabs(t_far);
-                    side(t_near, e_near);
-                    side(t_far, e_far);
-                }
-            }
-        } else if (bh != 0) {
-            // The ray is parallel to a generating line of the cone: one root.
-            double t = -c / (2 * bh);
-            side(t, gamma(4) * scale_c / std::fabs(2 * bh) + gamma(3) * std::fabs(t));
-        }
-        if (!open_ && d.z != 0) {
-            for (int cap = 0; cap < 2; ++cap) {
-                double r = cap ? r1_ : r0_;
-                if (r <= 0) continue;
-                double t = (cap - o.z) / d.z;
-                if (!(t > 0) || !(t < tmax)) continue;
-                double x = o.x + t * d.x, y = o.y + t * d.y;
-                if (x * x + y * y <= r * r) out[n++] = {t, 1 + cap};
-            }
-        }
-        return n;
-    }
-
-    void fill(const Ray& ray, const Candidate& c, LocalHit* h) const {
+private:
+    void fill(const Ray& ray, const ConeRoot& c, LocalHit* h) const {
         Vec3 p = ray.origin + ray.dir * c.t;
         h->t = c.t;
         h->has_uv = false;
@@ -174,10 +164,25 @@ class ConePrim final : public Primitive {
     }
 
     double r0_, r1_, k_;
-    bool open_;
+    ConeShape shape_;
+    ConeRootsFn roots_;
 };
 
 }  // namespace
+
+ConeRootsFn cone_roots_generic() { return roots_generic; }
+
+ConeRootsFn cone_roots_fma() {
+#if defined(__x86_64__)
+    if (__builtin_cpu_supports("fma")) return roots_fma;
+#endif
+    return nullptr;
+}
+
+ConeRootsFn cone_roots() {
+    static const ConeRootsFn best = cone_roots_fma() ? cone_roots_fma() : cone_roots_generic();
+    return best;
+}
 
 std::unique_ptr<Primitive> make_cylinder(const scene::Cylinder& s, Transform* frame,
                                          const char** why) {
