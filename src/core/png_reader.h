@@ -24,7 +24,8 @@ std::unique_ptr<ImageReader> open_png(const std::string& path, bool keep_unassoc
                                       std::string* error);
 
 // An image file for reading: PNGs through open_png() where it can, everything else through
-// image_library() (`config` as there).
+// image_library() (`config` as there). A PNG read by open_png() has no text in its header (its
+// tEXt chunks are not read): for images whose pixels are all that is used.
 std::unique_ptr<ImageReader> open_image(const std::string& path,
                                         const std::vector<std::pair<std::string, int>>& config,
                                         std::string* error);
