@@ -74,7 +74,10 @@ TEST(ConeRoots, RootsLieOnTheSurface) {
             const Vec3 p = k.ray.origin + k.ray.dir * out[i].t;
             const double scale = std::max({1.0, std::fabs(k.ray.origin.x),
                                            std::fabs(k.ray.origin.y), std::fabs(k.ray.origin.z)});
-            const double tol = 1e-9 * scale;
+            // Rays nearly tangent to the side, or passing by a cone's apex where its two
+            // nappes meet, have nearly double roots, known only to about the square root of the
+            // rounding error: the bound is loose for them, and still far below any wrong root.
+            const double tol = 1e-6 * scale;
             if (out[i].part == 0) {
                 const double r = k.cone.r0 + (k.cone.r1 - k.cone.r0) * p.z;
                 EXPECT_NEAR(std::hypot(p.x, p.y), r, tol * (1 + std::fabs(k.cone.r1 - k.cone.r0)));
