@@ -105,10 +105,10 @@ __attribute__((target("fma"))) int roots_fma(const ConeShape& cone, const Ray& r
 class ConePrim final : public Primitive {
 public:
     ConePrim(double r0, double r1, bool open)
-        : r0_(r0), r1_(r1), k_(r1 - r0), shape_{r0, r1, open}, roots_(cone_roots()) {}
+        : shape_{r0, r1, open}, k_(r1 - r0), roots_(cone_roots()) {}
 
     Bounds3 bounds() const override {
-        double r = std::max(r0_, r1_) * (1 + gamma(2));
+        double r = std::max(shape_.r0, shape_.r1) * (1 + gamma(2));
         return {Vec3(-r, -r, 0), Vec3(r, r, 1)};
     }
 
@@ -131,7 +131,7 @@ public:
 
     bool inside(const Vec3& p) const override {
         if (p.z < 0 || p.z > 1) return false;
-        double r = r0_ + k_ * p.z;
+        double r = shape_.r0 + k_ * p.z;
         return p.x * p.x + p.y * p.y <= r * r;
     }
 
@@ -142,14 +142,14 @@ private:
         h->has_uv = false;
         if (c.part == 0) {
             p.z = std::clamp(p.z, 0.0, 1.0);
-            double r = r0_ + k_ * p.z;
+            double r = shape_.r0 + k_ * p.z;
             double w = std::sqrt(p.x * p.x + p.y * p.y);
             // Reproject onto the surface at this height (pbrt-v4's cylinder refinement).
             if (w > 0) {
                 p.x *= r / w;
                 p.y *= r / w;
             }
-            double e = gamma(6) * (std::fabs(p.x) + std::fabs(p.y) + r0_ + std::fabs(k_));
+            double e = gamma(6) * (std::fabs(p.x) + std::fabs(p.y) + shape_.r0 + std::fabs(k_));
             h->p_error = Vec3(e) + rounding_error(p, 2);
             // Gradient of x^2 + y^2 - r(z)^2; at the apex (r = 0) the axis direction.
             Vec3 g(p.x, p.y, -k_ * r);
@@ -163,8 +163,8 @@ private:
         h->n = h->ng;
     }
 
-    double r0_, r1_, k_;
     ConeShape shape_;
+    double k_;  // r1 - r0
     ConeRootsFn roots_;
 };
 
