@@ -38,6 +38,30 @@ inline double next_down(double v) {
     return v;
 }
 
+// The nearest floats at or below / at or above a double (beyond the float range: the largest
+// float, or an infinity), so that float boxes and bounds enclose double values. Branch-free
+// (the float box test's ray set-up calls them per ray, on values that round either way): the
+// rounded float's bits step one towards the double where rounding went past it. Stepping the
+// bits of +-0, +-inf and the largest float gives the right neighbour; NaN stays NaN.
+inline float float_up(double v) {
+    float f = static_cast<float>(v);
+    uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    const uint32_t step = static_cast<double>(f) < v;
+    u += std::signbit(f) ? 0u - step : step;
+    std::memcpy(&f, &u, sizeof f);
+    return f;
+}
+inline float float_down(double v) {
+    float f = static_cast<float>(v);
+    uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    const uint32_t step = static_cast<double>(f) > v;
+    u += std::signbit(f) ? step : 0u - step;
+    std::memcpy(&f, &u, sizeof f);
+    return f;
+}
+
 // Moves `p` (with absolute error bound `p_error`) off the surface with geometric normal `n`,
 // to the side `w` points to.
 inline Vec3 offset_ray_origin(const Vec3& p, const Vec3& p_error, const Vec3& n, const Vec3& w) {

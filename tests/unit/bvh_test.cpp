@@ -99,7 +99,7 @@ void check_against_brute_force(int objects, uint64_t seed, int rays, int min_hit
 
 TEST(Bvh, IdenticalToBruteForce) { check_against_brute_force(300, 11, 20000, 5000); }
 
-// Past some 8,000 nodes the scene's objects are walked in the four-wide tree (geometry.cpp).
+// Past some 8,000 nodes the scene's objects are walked in the eight-wide tree (geometry.cpp).
 TEST(Bvh, WideSceneTreeIdenticalToBruteForce) { check_against_brute_force(20000, 12, 800, 400); }
 
 // A union of many children (searched through its own BVH) gives the same hits as the same

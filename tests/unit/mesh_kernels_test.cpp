@@ -1,6 +1,6 @@
 // The mesh kernels (render/shapes/mesh_kernels.h) and the mesh primitive on top of them: the
 // AVX2 and the portable build give the same hits bit for bit, and both give the hits of a brute
-// force over every triangle with the scalar watertight test, through the four-wide BVH.
+// force over every triangle with the scalar watertight test, through the eight-wide BVH.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -27,10 +27,11 @@ struct TestMesh {
     MeshView view;
 };
 
-TestMesh make_test_mesh(std::mt19937_64& rng, int n) {
+// `scale` multiplies every coordinate (the extreme-scale tests).
+TestMesh make_test_mesh(std::mt19937_64& rng, int n, double scale = 1) {
     std::uniform_real_distribution<double> u(-4, 4), s(0.01, 1.5);
     std::vector<std::array<Vec3, 3>> raw;
-    auto f = [](double v) { return static_cast<double>(static_cast<float>(v)); };
+    auto f = [scale](double v) { return static_cast<double>(static_cast<float>(v * scale)); };
     for (int i = 0; i < n; ++i) {
         Vec3 c(u(rng), u(rng), u(rng));
         double k = s(rng);
@@ -39,7 +40,8 @@ TestMesh make_test_mesh(std::mt19937_64& rng, int n) {
         if (!(length_squared(cross(t[1] - t[0], t[2] - t[0])) > 0)) continue;
         raw.push_back(t);
         // Every third triangle gets a neighbour over its first edge: shared edges.
-        if (i % 3 == 0) raw.push_back({t[1], t[0], Vec3(f(t[2].x + 0.3), t[2].y, f(t[2].z - 0.2))});
+        if (i % 3 == 0)
+            raw.push_back({t[1], t[0], Vec3(f(t[2].x / scale + 0.3), t[2].y, f(t[2].z / scale - 0.2))});
     }
     std::vector<Bounds3> boxes(raw.size());
     for (size_t i = 0; i < raw.size(); ++i)
@@ -76,8 +78,8 @@ TestMesh make_test_mesh(std::mt19937_64& rng, int n) {
 }
 
 // Half the rays aim at a point of a triangle: inside, on an edge or at a corner.
-Ray random_ray(std::mt19937_64& rng, const TestMesh& m) {
-    std::uniform_real_distribution<double> u(-6, 6), b(0, 1);
+Ray random_ray(std::mt19937_64& rng, const TestMesh& m, double scale = 1) {
+    std::uniform_real_distribution<double> u(-6 * scale, 6 * scale), b(0, 1);
     Vec3 o(u(rng), u(rng), u(rng)), target(u(rng) / 2, u(rng) / 2, u(rng) / 2);
     if (rng() % 2 == 0) {
         const auto& t = m.tri[rng() % m.tri.size()];
@@ -180,6 +182,62 @@ TEST(MeshKernels, BothBuildsGiveTheSameHitsBitForBit) {
         ASSERT_EQ(ha, hb) << "ray " << r;
         if (ha) expect_same(a, b);
     }
+}
+
+// The box test runs in single precision and must never cull a box the exact ray enters: at
+// any scale of the scene, from origins far beyond the mesh, with direction components whose
+// reciprocals overflow or underflow a float, and along axes through box planes. Each closest
+// and any-hit answer is the brute force's over every triangle.
+TEST(MeshKernels, FloatBoxTestNeverCullsAHitAtAnyScale) {
+    std::vector<const MeshKernels*> builds{&mesh_kernels_base()};
+    if (mesh_kernels_avx2()) builds.push_back(mesh_kernels_avx2());
+    int hits = 0;
+    for (double scale : {1e-30, 1e-8, 1.0, 1e8, 1e33}) {
+        std::mt19937_64 rng(static_cast<uint64_t>(std::log2(scale) + 200));
+        const TestMesh m = make_test_mesh(rng, 400, scale);
+        for (int r = 0; r < 3000; ++r) {
+            Ray ray = random_ray(rng, m, scale);
+            switch (r % 6) {
+                case 1:  // from far back along the ray, up to 1e36 times the mesh's size
+                    ray.origin = ray.origin - ray.dir * std::ldexp(1.0, static_cast<int>(rng() % 120));
+                    break;
+                case 2:  // reciprocals beyond the float range
+                    ray.dir = ray.dir * 1e-42;
+                    break;
+                case 3:  // reciprocals that underflow a float
+                    ray.dir = ray.dir * 1e270;
+                    break;
+                case 4:  // one tiny component: 1 / dir overflows along one axis only
+                    ray.dir[static_cast<int>(rng() % 3)] *= 1e-300;
+                    break;
+                case 5:  // an origin on a vertex's plane, with no motion across it
+                    if (ray.dir.x != 0) {
+                        ray.origin.x = m.tri[rng() % m.tri.size()][0].x;
+                        ray.dir.x = 0;
+                    }
+                    break;
+                default:
+                    break;
+            }
+            if (!(length_squared(ray.dir) > 0) || !std::isfinite(length_squared(ray.dir))) continue;
+            int want_i = -1;
+            TriangleHit want;
+            const bool want_hit = brute_closest(m, ray, kInfinity, &want_i, &want);
+            hits += want_hit;
+            for (const MeshKernels* k : builds) {
+                MeshHit got;
+                ASSERT_EQ(k->closest(m.view, ray, kInfinity, &got), want_hit)
+                    << k->name << " scale " << scale << " ray " << r;
+                EXPECT_EQ(k->any(m.view, ray, kInfinity), want_hit)
+                    << k->name << " scale " << scale << " ray " << r;
+                if (want_hit) {
+                    EXPECT_EQ(got.index, want_i) << k->name << " scale " << scale << " ray " << r;
+                    EXPECT_EQ(got.th.t, want.t) << k->name << " scale " << scale << " ray " << r;
+                }
+            }
+        }
+    }
+    EXPECT_GT(hits, 3000) << "the rays should hit often enough to test something";
 }
 
 // Equal t everywhere: coplanar copies of one triangle under different face indices. The lower

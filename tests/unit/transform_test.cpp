@@ -146,6 +146,30 @@ TEST(Float, NextUpDownMatchNextafter) {
     EXPECT_TRUE(std::isnan(next_up(std::nan(""))));
 }
 
+// float_up / float_down give the nearest float at or above / at or below a double: the
+// reference rounds to nearest and steps with std::nextafter, across zeros, float denormals,
+// values that round either way, the edge of the float range and beyond it.
+TEST(Float, FloatUpDownBracketTheDouble) {
+    const float fmax = std::numeric_limits<float>::max(), finf = std::numeric_limits<float>::infinity();
+    std::vector<double> values{0.0, -0.0, 1.0, -1.0, 1e-50, -1e-50, 1e-40, -1e-40, 0.1, -0.1,
+                               1.0 / 3, -1.0 / 3, fmax, -fmax, 3.4028235e38, -3.4028235e38,
+                               1e39, -1e39, 1e300, -1e300, kInfinity, -kInfinity};
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int i = 0; i < 2000; ++i) values.push_back(std::ldexp(u(rng), static_cast<int>(rng() % 300) - 150));
+    for (double v : values) {
+        const float f = static_cast<float>(v);
+        const float up = static_cast<double>(f) < v ? std::nextafter(f, finf) : f;
+        const float down = static_cast<double>(f) > v ? std::nextafter(f, -finf) : f;
+        EXPECT_EQ(float_up(v), up) << v;
+        EXPECT_EQ(float_down(v), down) << v;
+        EXPECT_GE(static_cast<double>(float_up(v)), v) << v;
+        EXPECT_LE(static_cast<double>(float_down(v)), v) << v;
+    }
+    EXPECT_TRUE(std::isnan(float_up(std::nan(""))));
+    EXPECT_TRUE(std::isnan(float_down(std::nan(""))));
+}
+
 // offset_ray_origin moves a point strictly off its surface by at least the error bound.
 TEST(Float, OffsetRayOriginLeavesTheErrorBox) {
     Vec3 p(1e5, 2, -3), e(1e-11, 1e-16, 1e-16), n(0, 1, 0);

@@ -11,18 +11,6 @@ constexpr int kBins = 16;
 // Deeper trees would overflow the traversal stack; past this depth splits are by count.
 constexpr int kMaxSahDepth = 48;
 
-// Nearest floats below / above a double, so float boxes enclose double ones.
-float float_down(double v) {
-    float f = static_cast<float>(v);
-    return static_cast<double>(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity())
-                                      : f;
-}
-float float_up(double v) {
-    float f = static_cast<float>(v);
-    return static_cast<double>(f) < v ? std::nextafter(f, std::numeric_limits<float>::infinity())
-                                      : f;
-}
-
 double half_area(const Bounds3& b) {
     if (b.empty()) return 0;
     Vec3 d = b.diagonal();

@@ -14,6 +14,16 @@ double half_area(const Bvh::Node& n) {
     return dx * dy + dy * dz + dz * dx;
 }
 
+// The plane clamping WideNode::kPlaneLimit describes; both only ever move a plane outwards.
+float push_out_lo(float lo) {
+    constexpr float kLimit = WideNode::kPlaneLimit;
+    return lo < -kLimit ? -std::numeric_limits<float>::infinity() : std::min(lo, kLimit);
+}
+float push_out_hi(float hi) {
+    constexpr float kLimit = WideNode::kPlaneLimit;
+    return hi > kLimit ? std::numeric_limits<float>::infinity() : std::max(hi, -kLimit);
+}
+
 }  // namespace
 
 WideBvh::WideBvh(const Bvh& bvh) {
@@ -30,10 +40,11 @@ int WideBvh::emit(const Bvh& bvh, int binary_node, int depth) {
         throw Error(ErrorKind::Render, {}, "internal error: mesh BVH deeper than the traversal stack");
     depth_ = std::max(depth_, depth);
     const auto& bn = bvh.nodes();
-    // Up to four children: open the largest interior child until there are four.
-    int kids[4] = {binary_node + 1, bn[binary_node].index, -1, -1};
+    // Up to eight children: open the largest interior child until there are eight.
+    constexpr int kWidth = WideNode::kWidth;
+    int kids[kWidth] = {binary_node + 1, bn[binary_node].index};
     int n = 2;
-    while (n < 4) {
+    while (n < kWidth) {
         int pick = -1;
         for (int i = 0; i < n; ++i)
             if (bn[kids[i]].count == 0 && (pick < 0 || half_area(bn[kids[i]]) > half_area(bn[kids[pick]])))
@@ -45,31 +56,24 @@ int WideBvh::emit(const Bvh& bvh, int binary_node, int depth) {
     }
     const int self = static_cast<int>(nodes_.size());
     WideNode node{};
-    for (int lane = 0; lane < 4; ++lane) {
+    for (int lane = 0; lane < kWidth; ++lane) {
         for (int a = 0; a < 3; ++a) {
             node.box[a][lane] = std::numeric_limits<float>::infinity();
             node.box[3 + a][lane] = -std::numeric_limits<float>::infinity();
         }
-        node.child[lane] = WideNode::kEmpty;
+        node.ref[lane] = WideNode::leaf_ref(0, 0);
     }
     nodes_.push_back(node);
     for (int lane = 0; lane < n; ++lane) {
         const Bvh::Node& c = bn[kids[lane]];
-        int32_t child;
-        uint8_t count = 0;
-        if (c.count > 0) {
-            child = ~c.index;
-            count = static_cast<uint8_t>(c.count);
-        } else {
-            child = emit(bvh, kids[lane], depth + 1);
-        }
+        const int64_t ref =
+            c.count > 0 ? WideNode::leaf_ref(c.index, c.count) : emit(bvh, kids[lane], depth + 1);
         WideNode& w = nodes_[self];  // emit() may have grown nodes_
         for (int a = 0; a < 3; ++a) {
-            w.box[a][lane] = c.box[0][a];
-            w.box[3 + a][lane] = c.box[1][a];
+            w.box[a][lane] = push_out_lo(c.box[0][a]);
+            w.box[3 + a][lane] = push_out_hi(c.box[1][a]);
         }
-        w.child[lane] = child;
-        w.count[lane] = count;
+        w.ref[lane] = ref;
     }
     return self;
 }

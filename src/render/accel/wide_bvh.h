@@ -1,7 +1,8 @@
-// A four-wide BVH for triangle meshes, made by collapsing the binary SAH tree (bvh.h): each node
-// holds the boxes of up to four children side by side, so one SIMD slab test (mesh_kernels.inc)
-// answers all four, and the tree is about half as deep. The binary tree's leaves stay the leaves,
-// with their triangles contiguous in its order() sequence.
+// An eight-wide BVH for triangle meshes and the scene's objects, made by collapsing the binary
+// SAH tree (bvh.h): each node holds the boxes of up to eight children side by side, so one SIMD
+// slab test in single precision (mesh_kernels.inc) answers all eight, and the tree is about a
+// third as deep as the binary one. The binary tree's leaves stay the leaves, with their
+// primitives contiguous in its order() sequence.
 #pragma once
 
 #include <cstdint>
@@ -12,16 +13,22 @@
 
 namespace glint::render {
 
-// 128 bytes, two cache lines (aligned to them). Lane i is empty when count[i] == 0 and child[i] == kEmpty: its box
-// is inverted (lo = +inf, hi = -inf), which no ray enters.
+// 256 bytes, four cache lines (aligned to them): the boxes in the first three, the children's
+// references in the last.
 struct alignas(64) WideNode {
-    static constexpr int32_t kEmpty = INT32_MIN;
-    float box[6][4];   // [plane][lane]: lo x, lo y, lo z, hi x, hi y, hi z; floats rounded outwards
-    int32_t child[4];  // >= 0: index of a node; < 0 (not kEmpty): leaf, ~child is its first primitive
-    uint8_t count[4];  // primitives of a leaf child; 0 for a node
-    uint8_t pad[12];
+    static constexpr int kWidth = 8;
+    // Box planes are floats rounded outwards, then pushed out to an infinity past +-kPlaneLimit
+    // (or, for a box wholly beyond it, in to the limit): so a plane minus a clamped ray origin
+    // never overflows to the wrong infinity in the float slab test.
+    static constexpr float kPlaneLimit = 1e38f;
+    // A lane's child: >= 0, a node's index; < 0, a leaf as -(first * 256 + count) - 1, with
+    // `first` its first primitive. An empty lane is a leaf of no primitives (-1) whose box is
+    // inverted (lo = +inf, hi = -inf), which no ray enters.
+    static constexpr int64_t leaf_ref(int64_t first, int count) { return -(first * 256 + count) - 1; }
+    float box[6][kWidth];  // [plane][lane]: lo x, lo y, lo z, hi x, hi y, hi z
+    int64_t ref[kWidth];
 };
-static_assert(sizeof(WideNode) == 128);
+static_assert(sizeof(WideNode) == 256);
 
 class WideBvh {
 public:
@@ -32,9 +39,9 @@ public:
 
     const Nodes& nodes() const { return nodes_; }
     int depth() const { return depth_; }
-    // Traversal stack entries the deepest path can need: three siblings wait at each level.
+    // Traversal stack entries the deepest path can need: seven siblings wait at each level.
     static constexpr int kMaxDepth = 84;
-    static constexpr int kStackSize = 3 * kMaxDepth + 4;
+    static constexpr int kStackSize = (WideNode::kWidth - 1) * kMaxDepth + 4;
 
 private:
     int emit(const Bvh& bvh, int binary_node, int depth);

@@ -1,8 +1,9 @@
-// The inner loops of mesh intersection: the four-wide BVH's slab tests and the watertight
-// triangle test, four at a time in double precision. Built twice from mesh_kernels.inc, for
-// AVX2 and for any x86-64, with the same operations in the same order, so both give the same
-// hits bit for bit; mesh_kernels() picks one for this CPU once. Used by MeshPrim
-// (mesh_prim.cpp) and measured by bench/traversal_bench.
+// The inner loops of mesh intersection: the eight-wide BVH's slab tests, eight boxes at a time
+// in single precision and conservative, and the watertight triangle test, four at a time in
+// double precision. Built twice from mesh_kernels.inc, for AVX2 and for any x86-64, with the
+// same operations in the same order, so both give the same hits bit for bit; mesh_kernels()
+// picks one for this CPU once. Used by MeshPrim (mesh_prim.cpp) and measured by
+// bench/traversal_bench.
 #pragma once
 
 #include "render/accel/wide_bvh.h"
@@ -42,7 +43,7 @@ struct MeshKernels {
     bool (*any)(const MeshView& mesh, const Ray& ray, double tmax);
     // Every hit with 0 < t < tmax, in no particular order.
     void (*all)(const MeshView& mesh, const Ray& ray, double tmax, MeshHitSink sink, void* ctx);
-    // The four-wide tree alone, nearest box first, for primitives other than triangles (the
+    // The eight-wide tree alone, nearest box first, for primitives other than triangles (the
     // scene's objects): leaf() for every leaf the ray enters within *tmax. With no nodes, one
     // leaf of all `count` primitives. Returns whether a leaf ended it.
     bool (*walk)(const WideNode* nodes, int count, const Ray& ray, double* tmax, WideLeafFn leaf,

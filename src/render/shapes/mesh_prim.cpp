@@ -19,7 +19,7 @@ namespace glint::render {
 namespace {
 
 // Memory per triangle (bench/traversal_bench.cpp measures it): 36 bytes of float vertices and
-// 4 of face index in the kernels' leaf layout (mesh_kernels.h), and the four-wide BVH's share;
+// 4 of face index in the kernels' leaf layout (mesh_kernels.h), and the eight-wide BVH's share;
 // normal, uv and material indices only for meshes that have them.
 //
 // The vertices are floats relative to the centre of the mesh's box (POV-Ray keeps mesh vertices
