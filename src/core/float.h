@@ -48,7 +48,8 @@ inline float float_up(double v) {
     uint32_t u;
     std::memcpy(&u, &f, sizeof u);
     const uint32_t step = static_cast<double>(f) < v;
-    u += std::signbit(f) ? 0u - step : step;
+    const uint32_t neg = 0u - static_cast<uint32_t>(std::signbit(f));  // all ones if negative
+    u += (step ^ neg) - neg;                                            // -step if negative
     std::memcpy(&f, &u, sizeof f);
     return f;
 }
@@ -57,7 +58,8 @@ inline float float_down(double v) {
     uint32_t u;
     std::memcpy(&u, &f, sizeof u);
     const uint32_t step = static_cast<double>(f) > v;
-    u += std::signbit(f) ? step : 0u - step;
+    const uint32_t pos = static_cast<uint32_t>(std::signbit(f)) - 1u;  // all ones if positive
+    u += (step ^ pos) - pos;                                           // -step if positive
     std::memcpy(&f, &u, sizeof f);
     return f;
 }
