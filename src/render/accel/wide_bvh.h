@@ -23,7 +23,9 @@ struct alignas(64) WideNode {
     static constexpr float kPlaneLimit = 1e38f;
     // A lane's child: >= 0, a node's index; < 0, a leaf as -(first * 256 + count) - 1, with
     // `first` its first primitive. An empty lane is a leaf of no primitives (-1) whose box is
-    // inverted (lo = +inf, hi = -inf), which no ray enters.
+    // inverted (lo = +inf, hi = -inf): no ray enters it but one whose origin lies past the
+    // float range on every axis (the slab test's inf - inf leaves those planes out), and that
+    // one finds nothing there.
     static constexpr int64_t leaf_ref(int64_t first, int count) { return -(first * 256 + count) - 1; }
     float box[6][kWidth];  // [plane][lane]: lo x, lo y, lo z, hi x, hi y, hi z
     int64_t ref[kWidth];
