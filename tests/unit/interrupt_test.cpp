@@ -62,6 +62,10 @@ Exit run_glint(std::vector<std::string> args, const std::string& err_path,
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
     Exit r;
+    // Empty the stderr file first: the child truncates it only once it runs, and until then the
+    // wait for a `progress` line below would read the previous run's lines and signal early
+    // (under load, before any tile had finished).
+    std::ofstream(err_path, std::ios::trunc).close();
     const auto start = std::chrono::steady_clock::now();
     pid_t pid = fork();
     if (pid < 0) return r;
