@@ -5,9 +5,11 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <vector>
 
+#include "core/float.h"
 #include "core/log.h"
 #include "render/accel/bvh.h"
 #include "render/accel/wide_bvh.h"
@@ -238,6 +240,46 @@ TEST(MeshKernels, FloatBoxTestNeverCullsAHitAtAnyScale) {
         }
     }
     EXPECT_GT(hits, 3000) << "the rays should hit often enough to test something";
+}
+
+// The box set-up rounds the ray's origin and reciprocals to floats on a chosen side four lanes
+// at a time; each build must give exactly float_up and float_down, on values that round either
+// way, on zeros of both signs, subnormals, the edges of the float range, infinities and NaN.
+TEST(MeshKernels, VectorDirectedRoundingsMatchTheScalarOnes) {
+    std::vector<const MeshKernels*> builds{&mesh_kernels_base()};
+    if (mesh_kernels_avx2()) builds.push_back(mesh_kernels_avx2());
+    const double fmax = std::numeric_limits<float>::max();
+    const double fmin = std::numeric_limits<float>::min();
+    const double fsub = std::numeric_limits<float>::denorm_min();
+    std::vector<double> values = {0.0, -0.0, 1.0, -1.0, 1.0 / 3, -1.0 / 3, 0.1, -0.1,
+                                  fmax, -fmax, std::nextafter(fmax, kInfinity),
+                                  -std::nextafter(fmax, kInfinity), fmax * 2, -fmax * 2,
+                                  fmin, -fmin, fmin / 3, -fmin / 3, fsub, -fsub, fsub / 4,
+                                  -fsub / 4, 1e-300, -1e-300, 1e300, -1e300, kInfinity,
+                                  -kInfinity, std::nan("")};
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> mant(-1, 1);
+    for (int i = 0; i < 4000; ++i)
+        values.push_back(std::ldexp(mant(rng), static_cast<int>(rng() % 320) - 160));
+    while (values.size() % 4) values.push_back(0.5);
+    for (const MeshKernels* k : builds) {
+        for (size_t i = 0; i < values.size(); i += 4) {
+            float up[4], down[4];
+            k->round4(&values[i], up, down);
+            for (int l = 0; l < 4; ++l) {
+                const double v = values[i + l];
+                const float want_up = float_up(v), want_down = float_down(v);
+                EXPECT_EQ(std::memcmp(&up[l], &want_up, sizeof up[l]), 0)
+                    << k->name << " up " << v << ": " << up[l] << " vs " << want_up;
+                EXPECT_EQ(std::memcmp(&down[l], &want_down, sizeof down[l]), 0)
+                    << k->name << " down " << v << ": " << down[l] << " vs " << want_down;
+                if (!std::isnan(v)) {
+                    EXPECT_LE(down[l], v) << k->name << " " << v;
+                    EXPECT_GE(up[l], v) << k->name << " " << v;
+                }
+            }
+        }
+    }
 }
 
 // Equal t everywhere: coplanar copies of one triangle under different face indices. The lower
