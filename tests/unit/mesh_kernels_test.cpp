@@ -242,44 +242,69 @@ TEST(MeshKernels, FloatBoxTestNeverCullsAHitAtAnyScale) {
     EXPECT_GT(hits, 3000) << "the rays should hit often enough to test something";
 }
 
-// The box set-up rounds the ray's origin and reciprocals to floats on a chosen side four lanes
-// at a time; each build must give exactly float_up and float_down, on values that round either
-// way, on zeros of both signs, subnormals, the edges of the float range, infinities and NaN.
-TEST(MeshKernels, VectorDirectedRoundingsMatchTheScalarOnes) {
+// The float slab test against boxes built around a point the exact ray passes through, at
+// t_hit: the box must be entered, no later than t_hit, whatever the scale of the scene, the
+// distance of the origin, the length of the direction (reciprocals that overflow a float or
+// fall among its subnormals), zero or tiny components, and a tmax just past t_hit. The other
+// lanes hold empty boxes or random ones.
+TEST(MeshKernels, BoxTestEntersEveryBoxTheRayPassesThrough) {
     std::vector<const MeshKernels*> builds{&mesh_kernels_base()};
     if (mesh_kernels_avx2()) builds.push_back(mesh_kernels_avx2());
-    const double fmax = std::numeric_limits<float>::max();
-    const double fmin = std::numeric_limits<float>::min();
-    const double fsub = std::numeric_limits<float>::denorm_min();
-    std::vector<double> values = {0.0, -0.0, 1.0, -1.0, 1.0 / 3, -1.0 / 3, 0.1, -0.1,
-                                  fmax, -fmax, std::nextafter(fmax, kInfinity),
-                                  -std::nextafter(fmax, kInfinity), fmax * 2, -fmax * 2,
-                                  fmin, -fmin, fmin / 3, -fmin / 3, fsub, -fsub, fsub / 4,
-                                  -fsub / 4, 1e-300, -1e-300, 1e300, -1e300, kInfinity,
-                                  -kInfinity, std::nan("")};
-    std::mt19937_64 rng(7);
-    std::uniform_real_distribution<double> mant(-1, 1);
-    for (int i = 0; i < 4000; ++i)
-        values.push_back(std::ldexp(mant(rng), static_cast<int>(rng() % 320) - 160));
-    while (values.size() % 4) values.push_back(0.5);
-    for (const MeshKernels* k : builds) {
-        for (size_t i = 0; i < values.size(); i += 4) {
-            float up[4], down[4];
-            k->round4(&values[i], up, down);
-            for (int l = 0; l < 4; ++l) {
-                const double v = values[i + l];
-                const float want_up = float_up(v), want_down = float_down(v);
-                EXPECT_EQ(std::memcmp(&up[l], &want_up, sizeof up[l]), 0)
-                    << k->name << " up " << v << ": " << up[l] << " vs " << want_up;
-                EXPECT_EQ(std::memcmp(&down[l], &want_down, sizeof down[l]), 0)
-                    << k->name << " down " << v << ": " << down[l] << " vs " << want_down;
-                if (!std::isnan(v)) {
-                    EXPECT_LE(down[l], v) << k->name << " " << v;
-                    EXPECT_GE(up[l], v) << k->name << " " << v;
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1), pos(0.001, 1);
+    auto pow10 = [&](int lo, int hi) { return std::pow(10.0, lo + static_cast<int>(rng() % (hi - lo + 1))); };
+    int checked = 0;
+    for (int i = 0; i < 60000; ++i) {
+        const double scale = pow10(-30, 30);
+        Ray ray;
+        ray.origin = Vec3{u(rng), u(rng), u(rng)} * scale * pow10(0, 6);
+        ray.dir = Vec3{u(rng), u(rng), u(rng)};
+        switch (i % 5) {
+            case 1: ray.dir = ray.dir * pow10(-39, 39); break;  // reciprocals out of float range
+            case 2: ray.dir[static_cast<int>(rng() % 3)] = 0; break;
+            case 3: ray.dir[static_cast<int>(rng() % 3)] *= 1e-300; break;
+            default: break;
+        }
+        if (!(length_squared(ray.dir) > 0)) continue;
+        // The point at t_hit, and a box about it whose half-sizes cover its rounding error.
+        const double t_hit = scale * pos(rng) / length(ray.dir);
+        const Vec3 q = ray.origin + ray.dir * t_hit;
+        WideNode node;
+        std::uniform_int_distribution<int> lane_of(0, 7);
+        const int lane = lane_of(rng);
+        for (int l = 0; l < 8; ++l) {
+            for (int a = 0; a < 3; ++a) {
+                double lo = kInfinity, hi = -kInfinity;  // empty
+                if (l == lane) {
+                    const double err = 0x1p-50 * (std::fabs(ray.origin[a]) + std::fabs(ray.dir[a] * t_hit));
+                    const double r = std::max(err, scale * pos(rng) * pow10(-9, 0));
+                    lo = q[a] - r;
+                    hi = q[a] + r;
+                } else if (rng() % 2) {
+                    const double c = u(rng) * scale * 4;
+                    lo = c - scale * pos(rng);
+                    hi = c + scale * pos(rng);
                 }
+                node.box[a][l] = float_down(lo);
+                node.box[3 + a][l] = float_up(hi);
             }
         }
+        bool skip = false;
+        for (int a = 0; a < 6; ++a) skip = skip || !(std::fabs(node.box[a][lane]) < 1e37f);
+        if (skip) continue;  // past the plane limit, where boxes are pushed out to infinity
+        const double tmax = rng() % 2 ? kInfinity : t_hit * (1 + 1e-12);
+        for (const MeshKernels* k : builds) {
+            float t_enter[8];
+            const int mask = k->enter_boxes(node, ray, tmax, t_enter);
+            ASSERT_TRUE(mask >> lane & 1)
+                << k->name << " case " << i << " scale " << scale << " origin " << ray.origin.x
+                << " " << ray.origin.y << " " << ray.origin.z << " dir " << ray.dir.x << " "
+                << ray.dir.y << " " << ray.dir.z;
+            EXPECT_LE(t_enter[lane], t_hit) << k->name << " case " << i;
+        }
+        ++checked;
     }
+    EXPECT_GT(checked, 40000);
 }
 
 // Equal t everywhere: coplanar copies of one triangle under different face indices. The lower

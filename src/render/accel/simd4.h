@@ -12,8 +12,6 @@
 #include <cmath>
 #include <cstdint>
 
-#include "core/float.h"
-
 #if defined(__AVX2__)
 #include <immintrin.h>
 #endif
@@ -56,30 +54,16 @@ inline M4 operator&(M4 a, M4 b) { return {_mm256_and_pd(a.v, b.v)}; }
 inline M4 and_not(M4 a, M4 b) { return {_mm256_andnot_pd(b.v, a.v)}; }  // a and not b
 inline M4 select(M4 m, M4 a, M4 b) { return {_mm256_blendv_pd(b.v, a.v, m.v)}; }
 inline int bits(M4 m) { return _mm256_movemask_pd(m.v); }
-inline int sign_bits(D4 a) { return _mm256_movemask_pd(a.v); }
+inline D4 select(M4 m, D4 a, D4 b) { return {_mm256_blendv_pd(b.v, a.v, m.v)}; }
+// The lanes whose sign bit is set (-0 and negative NaNs included).
+inline M4 sign_mask(D4 a) {
+    return {_mm256_castsi256_pd(
+        _mm256_cmpgt_epi64(_mm256_setzero_si256(), _mm256_castpd_si256(a.v)))};
+}
 inline void store(double* out, D4 a) { _mm256_storeu_pd(out, a.v); }
 
-namespace detail {
-// Each lane's float rounded to nearest, then stepped one towards the double where rounding
-// went past it in the unwanted direction: float_up (kUp) or float_down (core/float.h), lane by
-// lane, with the same results.
-template <bool kUp>
-inline void floats_directed(D4 a, float out[4]) {
-    const __m128 f = _mm256_cvtpd_ps(a.v);
-    const __m256d back = _mm256_cvtps_pd(f);
-    const __m256d past = _mm256_cmp_pd(back, a.v, kUp ? _CMP_LT_OQ : _CMP_GT_OQ);
-    // The four 64-bit masks narrowed to 32 bits (their low halves).
-    const __m128i step = _mm_castps_si128(_mm_shuffle_ps(_mm256_castps256_ps128(
-        _mm256_castpd_ps(past)), _mm256_extractf128_ps(_mm256_castpd_ps(past), 1),
-        _MM_SHUFFLE(2, 0, 2, 0)));
-    const __m128i u = _mm_castps_si128(f);
-    const __m128i neg = _mm_srai_epi32(u, 31);  // all ones where the sign bit is set
-    // Up: +1 on the bits of a positive float, -1 on a negative's; down: the other way round.
-    const __m128i away = kUp ? neg : _mm_xor_si128(neg, _mm_set1_epi32(-1));
-    const __m128i delta = _mm_and_si128(step, _mm_or_si128(away, _mm_set1_epi32(1)));
-    _mm_storeu_ps(out, _mm_castsi128_ps(_mm_add_epi32(u, delta)));
-}
-}  // namespace detail
+// Each lane rounded to the nearest float.
+inline void to_floats(D4 a, float out[4]) { _mm_storeu_ps(out, _mm256_cvtpd_ps(a.v)); }
 
 #else
 
@@ -120,23 +104,14 @@ inline M4 operator&(M4 a, M4 b) { M4 r; GLINT_D4_LANES(r.v[k] = a.v[k] && b.v[k]
 inline M4 and_not(M4 a, M4 b) { M4 r; GLINT_D4_LANES(r.v[k] = a.v[k] && !b.v[k]); return r; }
 inline M4 select(M4 m, M4 a, M4 b) { M4 r; GLINT_D4_LANES(r.v[k] = m.v[k] ? a.v[k] : b.v[k]); return r; }
 inline int bits(M4 m) { return m.v[0] | m.v[1] << 1 | m.v[2] << 2 | m.v[3] << 3; }
-inline int sign_bits(D4 a) { int m = 0; GLINT_D4_LANES(m |= std::signbit(a.v[k]) << k); return m; }
+inline D4 select(M4 m, D4 a, D4 b) { D4 r; GLINT_D4_LANES(r.v[k] = m.v[k] ? a.v[k] : b.v[k]); return r; }
+inline M4 sign_mask(D4 a) { M4 r; GLINT_D4_LANES(r.v[k] = std::signbit(a.v[k])); return r; }
 inline void store(double* out, D4 a) { GLINT_D4_LANES(out[k] = a.v[k]); }
 
-namespace detail {
-template <bool kUp>
-inline void floats_directed(D4 a, float out[4]) {
-    GLINT_D4_LANES(out[k] = kUp ? float_up(a.v[k]) : float_down(a.v[k]));
-}
-}  // namespace detail
+inline void to_floats(D4 a, float out[4]) { GLINT_D4_LANES(out[k] = static_cast<float>(a.v[k])); }
 
 #undef GLINT_D4_LANES
 
 #endif
-
-// Each lane as the nearest float at or above (floats_up) or at or below (floats_down) it, as
-// float_up and float_down (core/float.h) give them.
-inline void floats_up(D4 a, float out[4]) { detail::floats_directed<true>(a, out); }
-inline void floats_down(D4 a, float out[4]) { detail::floats_directed<false>(a, out); }
 
 }  // namespace glint::render::GLINT_SIMD_NS

@@ -48,9 +48,9 @@ struct MeshKernels {
     // leaf of all `count` primitives. Returns whether a leaf ended it.
     bool (*walk)(const WideNode* nodes, int count, const Ray& ray, double* tmax, WideLeafFn leaf,
                  void* ctx);
-    // For tests: the box set-up's directed roundings (simd4.h floats_up and floats_down) of
-    // four doubles in this build, which must equal float_up and float_down lane by lane.
-    void (*round4)(const double v[4], float up[4], float down[4]);
+    // For tests: the slab test of one node's eight boxes, as the walks run it: the lanes the
+    // ray enters within [0, tmax], as bits, and where it enters them.
+    int (*enter_boxes)(const WideNode& node, const Ray& ray, double tmax, float t_enter[8]);
     const char* name;
 };
 
