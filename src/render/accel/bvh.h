@@ -27,11 +27,9 @@ public:
     Bvh() = default;
     // Primitives with empty or non-finite bounds are left out. `block`: primitives tested
     // together at the cost of one (the mesh kernels test four triangles at once), so the SAH
-    // counts a leaf of n as ceil(n / block) tests (Embree's builders do the same).
-    // `node_cost`: what visiting a node costs, in those tests; a split must save more than
-    // that to be made.
-    explicit Bvh(const std::vector<Bounds3>& prim_bounds, int max_leaf = 4, int block = 1,
-                 double node_cost = 1);
+    // counts a leaf of n as ceil(n / block) tests (Embree's builders do the same), and a node
+    // visit as one: a split must save more than that to be made.
+    explicit Bvh(const std::vector<Bounds3>& prim_bounds, int max_leaf = 4, int block = 1);
 
     bool empty() const { return nodes_.empty(); }
     const std::vector<Node>& nodes() const { return nodes_; }
@@ -121,7 +119,6 @@ private:
     int build(std::vector<int>& ids, int begin, int end, const std::vector<Bounds3>& bounds,
               const std::vector<Vec3>& centroids, int max_leaf, int depth);
     int block_ = 1;
-    double node_cost_ = 1;  // a node visit, in primitive (block) tests
 
     std::vector<Node> nodes_;
     std::vector<int> order_;
