@@ -247,6 +247,45 @@ void BM_GlintOccluded(benchmark::State& state) {
 }
 BENCHMARK(BM_GlintOccluded)->Arg(1)->Unit(benchmark::kMillisecond);
 
+// The BVH query alone (mesh_kernels.h: the walk and the watertight test, giving t, the
+// barycentrics, the face and its corners), the counterpart of rtcIntersect1 and rtcOccluded1.
+// The primitive's queries above add the move into the mesh's frame and, for a hit, the record
+// the renderer shades from (the point with its error bound, the unit normal, the material),
+// which Embree leaves to its caller.
+glint::render::MeshQuery glint_query() {
+    const auto q = glint::render::mesh_query(*glint_scene().prim);
+    if (!q) {
+        std::fprintf(stderr, "traversal_bench: the mesh primitive has no query view\n");
+        std::exit(1);
+    }
+    return *q;
+}
+
+glint::render::Ray query_ray(const glint::render::MeshQuery& q, const RaySet& rays, size_t i) {
+    glint::render::Ray r = glint_ray(rays, i);
+    r.origin = r.origin - q.origin;
+    return r;
+}
+
+void BM_GlintQueryClosest(benchmark::State& state) {
+    const glint::render::MeshQuery q = glint_query();
+    const glint::render::MeshKernels& k = glint::render::mesh_kernels();
+    glint::render::MeshHit h;
+    trace_one_by_one(state, [&](const RaySet& rays, size_t i) {
+        return k.closest(*q.view, query_ray(q, rays, i), glint::kInfinity, &h);
+    });
+}
+BENCHMARK(BM_GlintQueryClosest)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+void BM_GlintQueryOccluded(benchmark::State& state) {
+    const glint::render::MeshQuery q = glint_query();
+    const glint::render::MeshKernels& k = glint::render::mesh_kernels();
+    trace_one_by_one(state, [&](const RaySet& rays, size_t i) {
+        return k.any(*q.view, query_ray(q, rays, i), glint::kInfinity);
+    });
+}
+BENCHMARK(BM_GlintQueryOccluded)->Arg(1)->Unit(benchmark::kMillisecond);
+
 #ifdef GLINT_HAVE_EMBREE
 
 // One Embree device on one thread (its own build threads too), medium build quality (its

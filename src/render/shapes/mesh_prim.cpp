@@ -122,6 +122,10 @@ public:
     }
 
     bool empty() const { return view_.count == 0; }
+    std::optional<MeshQuery> query() const {
+        if (baked_) return std::nullopt;
+        return MeshQuery{&view_, origin_};
+    }
     int dropped() const { return dropped_; }
 
     // The local box about the origin, conservatively in the object (baked: parent) space.
@@ -260,6 +264,11 @@ private:
 };
 
 }  // namespace
+
+std::optional<MeshQuery> mesh_query(const Primitive& prim) {
+    const auto* mesh = dynamic_cast<const MeshPrim*>(&prim);
+    return mesh ? mesh->query() : std::nullopt;
+}
 
 bool bake_exact(const Transform& xf) {
     if (xf.is_identity()) return false;

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/log.h"
 #include "core/transform.h"
+#include "render/shapes/mesh_kernels.h"
 #include "render/shapes/primitive.h"
 #include "scene/mesh.h"
 
@@ -29,6 +31,17 @@ struct MeshPart {
 };
 std::unique_ptr<Primitive> make_merged_mesh(const std::vector<MeshPart>& parts,
                                             Diagnostics& diag, const Transform* baked = nullptr);
+
+// The BVH query of a primitive from make_mesh, below the primitive: the kernels' view of its
+// triangles and the point their float corners are offsets from (a ray's origin goes into that
+// frame by subtracting it). For bench/traversal_bench, which times the query alone against
+// Embree's (which, like it, leaves the hit point and the unit normal to its caller). Null for
+// any other primitive and for a baked mesh (whose rays are mirrored too).
+struct MeshQuery {
+    const MeshView* view;
+    Vec3 origin;
+};
+std::optional<MeshQuery> mesh_query(const Primitive& prim);
 
 // Whether a mesh behind `xf` can be baked with results identical bit for bit to transforming
 // each ray: xf must be a pure mirror (a diagonal of +-1, no translation; obj_file's z-mirror is
