@@ -181,6 +181,7 @@ private:
     // Baked (a pure mirror, bake_exact): the ray in object space is the parent-space ray with
     // the mirrored components negated, exactly what the transform's matrix computes.
     Vec3 mirrored(Vec3 v) const {
+        if (!baked_) return v;  // the usual case, one branch instead of three a vector
         for (int a = 0; a < 3; ++a)
             if (flip_[a]) v[a] = -v[a];
         return v;
