@@ -195,7 +195,8 @@ private:
     // Each field is written once, with no *h = LocalHit() first (59 of the 225 instructions
     // a hit cost): LocalHit's size is pinned below so that a new field is not left out.
     void fill(const MeshHit& mh, LocalHit* h) const {
-        static_assert(sizeof(void*) != 8 || sizeof(LocalHit) == 216, "a field was added to LocalHit: fill() sets it");
+        static_assert(sizeof(void*) != 8 || sizeof(LocalHit) == 216,
+                      "a field was added to LocalHit: fill() must set it");
         h->uv = Vec2();
         h->has_uv = false;
         h->uv_source = nullptr;
