@@ -4,10 +4,14 @@
 
 #include <chrono>
 #include <climits>
+#include <map>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "geom_test_util.h"
 #include "render/accel/bvh.h"
+#include "render/accel/wide_bvh.h"
 
 namespace glint {
 namespace {
@@ -209,6 +213,115 @@ TEST(Bvh, SkipsEmptyAndInfiniteBounds) {
     double tmax = kInfinity;
     EXPECT_FALSE(none.traverse({{0, 0, 0}, {1, 0, 0}, kInfinity}, tmax,
                                [](int, double&) { return true; }));
+}
+
+std::vector<Bounds3> random_boxes(std::mt19937_64& rng, int n) {
+    std::uniform_real_distribution<double> u(-10, 10), r(0.01, 0.6);
+    std::vector<Bounds3> boxes(n);
+    for (auto& b : boxes) {
+        const Vec3 c(u(rng), u(rng), u(rng)), e(r(rng), r(rng), r(rng));
+        b = {c - e, c + e};
+    }
+    return boxes;
+}
+
+// The box of a wide node's lane, as doubles.
+Bounds3 lane_box(const render::WideNode& n, int lane) {
+    return {Vec3(n.box[0][lane], n.box[1][lane], n.box[2][lane]),
+            Vec3(n.box[3][lane], n.box[4][lane], n.box[5][lane])};
+}
+
+bool contains(const Bounds3& outer, const Bounds3& inner) {
+    for (int a = 0; a < 3; ++a)
+        if (!(outer.lo[a] <= inner.lo[a] && inner.hi[a] <= outer.hi[a])) return false;
+    return true;
+}
+
+// Checks one collapsed tree: its leaves cover order() once, none holds more than `max_count`,
+// every lane's box holds what lies below it, and each node has two lanes or more. Returns
+// the primitives under `node`, as a box and a count.
+std::pair<Bounds3, int> check_wide(const render::WideBvh& w, const render::Bvh& bvh,
+                                   const std::vector<Bounds3>& boxes, int node, int max_count,
+                                   std::vector<int>& seen) {
+    const render::WideNode& n = w.nodes()[node];
+    Bounds3 all;
+    int count = 0, lanes = 0;
+    for (int lane = 0; lane < render::WideNode::kWidth; ++lane) {
+        const int64_t ref = n.ref[lane];
+        Bounds3 below;
+        int below_count = 0;
+        if (ref >= 0) {
+            EXPECT_GT(ref, node) << "children follow their parent";
+            std::tie(below, below_count) = check_wide(w, bvh, boxes, static_cast<int>(ref), max_count, seen);
+        } else {
+            const int64_t first = render::WideNode::leaf_first(ref);
+            below_count = render::WideNode::leaf_count(ref);
+            EXPECT_LE(below_count, max_count);
+            for (int i = 0; i < below_count; ++i) {
+                ++seen[first + i];
+                below.extend(boxes[bvh.order()[first + i]]);
+            }
+        }
+        if (below_count == 0) continue;
+        ++lanes;
+        EXPECT_TRUE(contains(lane_box(n, lane), below)) << "node " << node << " lane " << lane;
+        all.extend(below);
+        count += below_count;
+    }
+    EXPECT_GE(lanes, 2) << "node " << node;
+    return {all, count};
+}
+
+// Collapsing to the eight-wide tree, with and without leaves merged: every primitive in
+// exactly one leaf, boxes that hold their subtrees, leaves no larger than allowed; unmerged,
+// the leaves are the binary tree's own.
+TEST(WideBvh, CollapseKeepsEveryPrimitiveOnceInsideItsBoxes) {
+    std::mt19937_64 rng(21);
+    const std::vector<Bounds3> boxes = random_boxes(rng, 20000);
+    const render::Bvh bvh(boxes, 4, 4);
+    std::map<int, int> binary_leaves;
+    int binary_max = 0;
+    for (const auto& n : bvh.nodes())
+        if (n.count > 0) {
+            binary_leaves[n.index] = n.count;
+            binary_max = std::max<int>(binary_max, n.count);
+        }
+    for (const render::WideBvh::Costs costs : {render::WideBvh::Costs{4, 0, 1.0},
+                                               render::WideBvh::Costs{4, 16, 1.5},
+                                               render::WideBvh::Costs{4, 40, 30.0}}) {
+        const render::WideBvh w(bvh, costs);
+        ASSERT_FALSE(w.nodes().empty());
+        std::vector<int> seen(bvh.order().size(), 0);
+        const auto [box, count] =
+            check_wide(w, bvh, boxes, 0, std::max(binary_max, costs.max_leaf), seen);
+        EXPECT_EQ(count, static_cast<int>(bvh.order().size()));
+        for (size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << "primitive " << i;
+        std::map<int, int> leaves;
+        w.for_each_leaf([&](int first, int n) { leaves[first] = n; });
+        if (costs.max_leaf == 0) EXPECT_EQ(leaves, binary_leaves);
+        else EXPECT_LT(leaves.size(), binary_leaves.size()) << "some leaves should merge";
+    }
+}
+
+// Where a node visit costs far more than a test, every subtree small enough to be one leaf
+// is one: no wide node below the root holds `max_leaf` primitives or fewer.
+TEST(WideBvh, ExpensiveNodesMergeEverySmallSubtree) {
+    std::mt19937_64 rng(22);
+    const std::vector<Bounds3> boxes = random_boxes(rng, 5000);
+    const render::Bvh bvh(boxes, 4, 4);
+    constexpr int kMaxLeaf = 24;
+    const render::WideBvh w(bvh, {4, kMaxLeaf, 1e6});
+    std::vector<int> seen(bvh.order().size(), 0);
+    std::vector<int> under(w.nodes().size(), 0);
+    // Nodes follow their parents, so counting backwards sees children first.
+    for (size_t k = w.nodes().size(); k-- > 0;)
+        for (int64_t ref : w.nodes()[k].ref)
+            under[k] += ref >= 0 ? under[ref] : render::WideNode::leaf_count(ref);
+    EXPECT_EQ(under[0], static_cast<int>(bvh.order().size()));
+    for (size_t k = 1; k < w.nodes().size(); ++k) EXPECT_GT(under[k], kMaxLeaf) << "node " << k;
+    // And the fewer nodes, the fewer visits: the tree is far smaller than the unmerged one.
+    const render::WideBvh unmerged(bvh, {4, 0, 1.0});
+    EXPECT_LT(w.nodes().size() * 2, unmerged.nodes().size());
 }
 
 }  // namespace

@@ -30,7 +30,8 @@ struct TestMesh {
 };
 
 // `scale` multiplies every coordinate (the extreme-scale tests).
-TestMesh make_test_mesh(std::mt19937_64& rng, int n, double scale = 1) {
+TestMesh make_test_mesh(std::mt19937_64& rng, int n, double scale = 1,
+                        const WideBvh::Costs& costs = kMeshCollapse) {
     std::uniform_real_distribution<double> u(-4, 4), s(0.01, 1.5);
     std::vector<std::array<Vec3, 3>> raw;
     auto f = [scale](double v) { return static_cast<double>(static_cast<float>(v * scale)); };
@@ -69,9 +70,8 @@ TestMesh make_test_mesh(std::mt19937_64& rng, int n, double scale = 1) {
     if (bvh.single_leaf()) {
         leaf(0, static_cast<int>(order.size()));
     } else {
-        for (const auto& node : bvh.nodes())
-            if (node.count > 0) leaf(node.index, node.count);
-        m.wide = WideBvh(bvh);
+        m.wide = WideBvh(bvh, costs);
+        m.wide.for_each_leaf(leaf);
     }
     m.view.nodes = m.wide.nodes().empty() ? nullptr : m.wide.nodes().data();
     m.view.tris = m.data.data();
@@ -132,9 +132,10 @@ void expect_same(const MeshHit& a, const MeshHit& b) {
     }
 }
 
-void check_against_brute_force(const MeshKernels& k, int triangles, uint64_t seed) {
+void check_against_brute_force(const MeshKernels& k, int triangles, uint64_t seed,
+                               const WideBvh::Costs& costs = kMeshCollapse) {
     std::mt19937_64 rng(seed);
-    const TestMesh m = make_test_mesh(rng, triangles);
+    const TestMesh m = make_test_mesh(rng, triangles, 1, costs);
     int hits = 0;
     for (int r = 0; r < 4000; ++r) {
         const Ray ray = random_ray(rng, m);
@@ -169,6 +170,15 @@ TEST(MeshKernels, Avx2BuildMatchesBruteForce) {
     const MeshKernels* avx2 = mesh_kernels_avx2();
     if (!avx2) GTEST_SKIP() << "this CPU has no AVX2";
     for (int n : {1, 3, 7, 40, 3000}) check_against_brute_force(*avx2, n, 100 + n);
+}
+
+// Leaves merged from whole subtrees (nodes priced high, so most small subtrees are merged):
+// runs of up to 40 triangles, ten groups of four and a partial one, tested like any leaf.
+TEST(MeshKernels, MergedLeavesMatchBruteForce) {
+    const WideBvh::Costs merging{4, 40, 30.0};
+    for (int n : {40, 3000}) check_against_brute_force(mesh_kernels_base(), n, 300 + n, merging);
+    if (const MeshKernels* avx2 = mesh_kernels_avx2())
+        for (int n : {40, 3000}) check_against_brute_force(*avx2, n, 300 + n, merging);
 }
 
 TEST(MeshKernels, BothBuildsGiveTheSameHitsBitForBit) {

@@ -1,12 +1,15 @@
 #include "render/accel/wide_bvh.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 
 #include "core/error.h"
 
 namespace glint::render {
 namespace {
+
+constexpr int kWidth = WideNode::kWidth;
 
 double half_area(const Bvh::Node& n) {
     const double dx = n.box[1][0] - n.box[0][0], dy = n.box[1][1] - n.box[0][1],
@@ -26,34 +29,116 @@ float push_out_hi(float hi) {
 
 }  // namespace
 
-WideBvh::WideBvh(const Bvh& bvh) {
-    if (bvh.nodes().size() < 2) return;
-    nodes_.reserve(bvh.nodes().size() / 2 + 1);
-    emit(bvh, 0, 1);
+// For each binary node n, what its subtree costs when it may fill up to i lanes of the wide
+// node above it, i = 1 .. 8, and how. One lane: n becomes a leaf or a wide node of its own,
+// whichever is cheaper. More lanes: either that, or n's two children share the lanes (k to
+// the first, i - k to the second), n itself never stored. Costs are relative to the root's
+// area, in floats: they only rank choices.
+struct WideBvh::Plan {
+    std::vector<std::array<float, kWidth>> cost;  // [n][i - 1]
+    // [n][i - 1]: 0 where n takes one lane, else the lanes its first child gets.
+    std::vector<std::array<uint8_t, kWidth>> split;
+    std::vector<uint8_t> wide_split;  // n as a wide node: the lanes its first child gets
+    std::vector<uint8_t> as_leaf;     // n in one lane: a leaf (1) or a wide node (0)
+    std::vector<int> first, count;    // n's run of order()
+};
+
+WideBvh::WideBvh(const Bvh& bvh, const Costs& costs) {
+    const auto& bn = bvh.nodes();
+    if (bn.size() < 2) return;
+    const size_t n_nodes = bn.size();
+    const int block = std::max(costs.block, 1);
+    const int max_leaf = std::clamp(costs.max_leaf, 0, 255);
+    const double root_area = half_area(bn[0]);
+    const double unit = root_area > 0 ? 1 / root_area : 1;
+    constexpr float kNever = std::numeric_limits<float>::infinity();
+
+    Plan plan;
+    plan.cost.resize(n_nodes);
+    plan.split.resize(n_nodes);
+    plan.wide_split.assign(n_nodes, 0);
+    plan.as_leaf.assign(n_nodes, 0);
+    plan.first.resize(n_nodes);
+    plan.count.resize(n_nodes);
+    // Children follow their parent in bn (the first at n + 1, the second at bn[n].index), so
+    // walking backwards meets every child before its parent.
+    for (size_t k = n_nodes; k-- > 0;) {
+        const Bvh::Node& node = bn[k];
+        const double area = half_area(node) * unit;
+        auto& cost = plan.cost[k];
+        auto& split = plan.split[k];
+        split.fill(0);
+        if (node.count > 0) {
+            plan.first[k] = node.index;
+            plan.count[k] = node.count;
+            plan.as_leaf[k] = 1;
+            cost.fill(static_cast<float>(area * ((node.count + block - 1) / block)));
+            continue;
+        }
+        const size_t a = k + 1, b = static_cast<size_t>(node.index);
+        plan.first[k] = plan.first[a];
+        plan.count[k] = plan.count[a] + plan.count[b];
+        // shared[i - 1]: the least cost of the two children in i lanes between them.
+        float shared[kWidth];
+        uint8_t shared_k[kWidth] = {};
+        shared[0] = kNever;
+        for (int i = 2; i <= kWidth; ++i) {
+            shared[i - 1] = kNever;
+            for (int j = 1; j < i; ++j) {
+                const float c = plan.cost[a][j - 1] + plan.cost[b][i - j - 1];
+                if (c < shared[i - 1]) {
+                    shared[i - 1] = c;
+                    shared_k[i - 1] = static_cast<uint8_t>(j);
+                }
+            }
+        }
+        const int count = plan.count[k];
+        const float leaf = count <= max_leaf
+                               ? static_cast<float>(area * ((count + block - 1) / block))
+                               : kNever;
+        const float wide = static_cast<float>(costs.node * area) + shared[kWidth - 1];
+        plan.wide_split[k] = shared_k[kWidth - 1];
+        plan.as_leaf[k] = leaf <= wide;
+        cost[0] = std::min(leaf, wide);
+        for (int i = 2; i <= kWidth; ++i) {
+            if (cost[0] <= shared[i - 1]) {
+                cost[i - 1] = cost[0];
+            } else {
+                cost[i - 1] = shared[i - 1];
+                split[i - 1] = shared_k[i - 1];
+            }
+        }
+    }
+    // Only the choices are kept from here on.
+    plan.cost = {};
+    nodes_.reserve(n_nodes / 4 + 1);
+    emit(bvh, plan, 0, 1);
     nodes_.shrink_to_fit();
 }
 
-int WideBvh::emit(const Bvh& bvh, int binary_node, int depth) {
+int WideBvh::emit(const Bvh& bvh, const Plan& plan, int binary_node, int depth) {
     // Bvh stops splitting by SAH at depth 48 and halves by count below, so no mesh glint
     // accepts (--max-triangles) comes near this; the check keeps the traversal stack honest.
     if (depth > kMaxDepth)
         throw Error(ErrorKind::Render, {}, "internal error: mesh BVH deeper than the traversal stack");
     depth_ = std::max(depth_, depth);
     const auto& bn = bvh.nodes();
-    // Up to eight children: open the largest interior child until there are eight.
-    constexpr int kWidth = WideNode::kWidth;
-    int kids[kWidth] = {binary_node + 1, bn[binary_node].index};
-    int n = 2;
-    while (n < kWidth) {
-        int pick = -1;
-        for (int i = 0; i < n; ++i)
-            if (bn[kids[i]].count == 0 && (pick < 0 || half_area(bn[kids[i]]) > half_area(bn[kids[pick]])))
-                pick = i;
-        if (pick < 0) break;
-        const int opened = kids[pick];
-        kids[pick] = opened + 1;
-        kids[n++] = bn[opened].index;
-    }
+    // The binary nodes that fill this node's lanes, in the binary tree's order.
+    int kids[kWidth];
+    int n = 0;
+    auto gather = [&](auto& self, int node, int lanes) -> void {
+        const int k = lanes > 1 ? plan.split[node][lanes - 1] : 0;
+        if (k == 0) {
+            kids[n++] = node;
+            return;
+        }
+        self(self, node + 1, k);
+        self(self, bn[node].index, lanes - k);
+    };
+    const int k = plan.wide_split[binary_node];
+    gather(gather, binary_node + 1, k);
+    gather(gather, bn[binary_node].index, kWidth - k);
+
     const int self = static_cast<int>(nodes_.size());
     WideNode node{};
     for (int lane = 0; lane < kWidth; ++lane) {
@@ -65,13 +150,14 @@ int WideBvh::emit(const Bvh& bvh, int binary_node, int depth) {
     }
     nodes_.push_back(node);
     for (int lane = 0; lane < n; ++lane) {
-        const Bvh::Node& c = bn[kids[lane]];
-        const int64_t ref =
-            c.count > 0 ? WideNode::leaf_ref(c.index, c.count) : emit(bvh, kids[lane], depth + 1);
+        const int c = kids[lane];
+        const int64_t ref = plan.as_leaf[c] ? WideNode::leaf_ref(plan.first[c], plan.count[c])
+                                            : emit(bvh, plan, c, depth + 1);
         WideNode& w = nodes_[self];  // emit() may have grown nodes_
+        const Bvh::Node& box = bn[c];
         for (int a = 0; a < 3; ++a) {
-            w.box[a][lane] = push_out_lo(c.box[0][a]);
-            w.box[3 + a][lane] = push_out_hi(c.box[1][a]);
+            w.box[a][lane] = push_out_lo(box.box[0][a]);
+            w.box[3 + a][lane] = push_out_hi(box.box[1][a]);
         }
         w.ref[lane] = ref;
     }

@@ -66,7 +66,8 @@ public:
         // as three tests; in the eight-wide tree, with a third fewer node visits, a price of
         // one is the faster on every size: traversal_bench's 1M-triangle mesh 0.91 of the
         // time on incoherent closest and any-hit rays, 4 alternating pairs, in 54 bytes a
-        // triangle instead of 48; 13% fewer instructions on a 10k mesh in cache.)
+        // triangle instead of 48; 13% fewer instructions on a 10k mesh in cache.) The
+        // eight-wide tree is then cut from it by kMeshCollapse's prices.
         const Bvh bvh(boxes, 4, 4);
         bounds_ = bvh.bounds();
         // Faces in leaf order, each leaf's corners by component (the kernels' layout).
@@ -87,9 +88,8 @@ public:
         if (bvh.single_leaf()) {
             lay_out_leaf(0, static_cast<int>(n));
         } else {
-            for (const Bvh::Node& node : bvh.nodes())
-                if (node.count > 0) lay_out_leaf(node.index, node.count);
-            wide_ = WideBvh(bvh);
+            wide_ = WideBvh(bvh, kMeshCollapse);
+            wide_.for_each_leaf(lay_out_leaf);
         }
         bool has_normals = false, has_uvs = false, has_material = false;
         std::vector<int> face(n);  // the scene face at each leaf position
