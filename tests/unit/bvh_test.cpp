@@ -303,6 +303,42 @@ TEST(WideBvh, CollapseKeepsEveryPrimitiveOnceInsideItsBoxes) {
     }
 }
 
+// Boxes past the float range (rounded out to infinite planes, some with a zero extent beside
+// them, whose area in float arithmetic is inf * 0): every primitive is still in exactly one
+// leaf, and every node holds two lanes or more.
+TEST(WideBvh, CollapseSurvivesBoxesPastTheFloatRange) {
+    std::mt19937_64 rng(23);
+    std::vector<Bounds3> boxes = random_boxes(rng, 3000);
+    for (size_t i = 0; i < boxes.size(); i += 7) {
+        const double big = i % 2 ? 1e300 : 1e39;
+        boxes[i].hi.x = big;
+        if (i % 5 == 0) boxes[i].lo.z = -big;
+    }
+    // A cluster of flat boxes reaching to infinity along x: subtrees of them have an area of
+    // inf * 0 in float arithmetic.
+    for (int i = 0; i < 64; ++i)
+        boxes.push_back({Vec3(20 + i * 0.01, 0.5, 5), Vec3(1e39, 0.5, 5.0 + i * 1e-3)});
+    const render::Bvh bvh(boxes, 4, 4);
+    for (const render::WideBvh::Costs costs : {render::WideBvh::Costs{1, 0, 1.0},
+                                               render::WideBvh::Costs{4, 16, 1.5}}) {
+        const render::WideBvh w(bvh, costs);
+        ASSERT_FALSE(w.nodes().empty());
+        std::vector<int> seen(bvh.order().size(), 0);
+        int under = 0;
+        w.for_each_leaf([&](int first, int n) {
+            under += n;
+            for (int i = 0; i < n; ++i) ++seen[first + i];
+        });
+        EXPECT_EQ(under, static_cast<int>(bvh.order().size()));
+        for (size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << "primitive " << i;
+        for (const auto& n : w.nodes()) {
+            int lanes = 0;
+            for (int64_t ref : n.ref) lanes += ref >= 0 || render::WideNode::leaf_count(ref) > 0;
+            EXPECT_GE(lanes, 2);
+        }
+    }
+}
+
 // Where a node visit costs far more than a test, every subtree small enough to be one leaf
 // is one: no wide node below the root holds `max_leaf` primitives or fewer.
 TEST(WideBvh, ExpensiveNodesMergeEverySmallSubtree) {

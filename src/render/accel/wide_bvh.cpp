@@ -11,10 +11,15 @@ namespace {
 
 constexpr int kWidth = WideNode::kWidth;
 
+// In double, and held finite: a box past the float range (a plane at infinity, and perhaps a
+// zero extent beside it, inf * 0) would otherwise turn the costs into infinities or NaN.
 double half_area(const Bvh::Node& n) {
-    const double dx = n.box[1][0] - n.box[0][0], dy = n.box[1][1] - n.box[0][1],
-                 dz = n.box[1][2] - n.box[0][2];
-    return dx * dy + dy * dz + dz * dx;
+    const double dx = static_cast<double>(n.box[1][0]) - n.box[0][0],
+                 dy = static_cast<double>(n.box[1][1]) - n.box[0][1],
+                 dz = static_cast<double>(n.box[1][2]) - n.box[0][2];
+    const double area = dx * dy + dy * dz + dz * dx;
+    constexpr double kHuge = 1e300;
+    return area < kHuge ? area : kHuge;  // NaN too
 }
 
 // The plane clamping WideNode::kPlaneLimit describes; both only ever move a plane outwards.
@@ -78,12 +83,15 @@ WideBvh::WideBvh(const Bvh& bvh, const Costs& costs) {
         const size_t a = k + 1, b = static_cast<size_t>(node.index);
         plan.first[k] = plan.first[a];
         plan.count[k] = plan.count[a] + plan.count[b];
-        // shared[i - 1]: the least cost of the two children in i lanes between them.
+        // shared[i - 1]: the least cost of the two children in i lanes between them. A split
+        // is always recorded (one lane to the first child until a cheaper one is found), so
+        // the lanes handed out never add up to more than eight.
         float shared[kWidth];
         uint8_t shared_k[kWidth] = {};
         shared[0] = kNever;
         for (int i = 2; i <= kWidth; ++i) {
             shared[i - 1] = kNever;
+            shared_k[i - 1] = 1;
             for (int j = 1; j < i; ++j) {
                 const float c = plan.cost[a][j - 1] + plan.cost[b][i - j - 1];
                 if (c < shared[i - 1]) {
