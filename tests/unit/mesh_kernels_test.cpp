@@ -173,7 +173,8 @@ TEST(MeshKernels, Avx2BuildMatchesBruteForce) {
 }
 
 // Leaves merged from whole subtrees (nodes priced high, so most small subtrees are merged):
-// runs of up to 40 triangles, ten groups of four and a partial one, tested like any leaf.
+// runs of up to 40 triangles, up to ten groups of four (the last perhaps partial), tested
+// like any leaf.
 TEST(MeshKernels, MergedLeavesMatchBruteForce) {
     const WideBvh::Costs merging{4, 40, 30.0};
     for (int n : {40, 3000}) check_against_brute_force(mesh_kernels_base(), n, 300 + n, merging);
