@@ -61,8 +61,10 @@ TEST(KernelCodegen, ClosestAndAnyPrefetchInEveryBuild) {
                     prefetches += n;
                 }
             }
-            ASSERT_EQ(found, 1) << prefix << "...) is not one function in " << GLINT_BINARY;
-            // closest() has 24 and any() 12 with GCC 12 at -O2; none means they were dropped.
+            // More than one where the compiler splits off a cold part ("[clone .cold]").
+            ASSERT_GE(found, 1) << prefix << "...) is not in " << GLINT_BINARY;
+            // closest() has 24 and any() 12 in a Release build with GCC 12; none means they
+            // were dropped.
             EXPECT_GT(prefetches, 0) << prefix << "...) has no prefetch instruction of its "
                                      << "own: prefetch() in mesh_kernels.inc must be inlined "
                                      << "(GCC deletes calls to an out-of-line copy)";
