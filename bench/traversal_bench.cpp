@@ -2,7 +2,10 @@
 // every mesh2 and OBJ face takes) against Embree 3 on the same triangles and the same rays, one
 // thread each. Closest hit and any hit (shadow rays); coherent rays (a 1024x1024 pinhole camera
 // in 8x8 tiles, as the renderer traces) and incoherent rays (2M, origins uniform in the mesh's
-// box, directions uniform on the sphere). Also the build time and the bytes per triangle.
+// box, directions uniform on the sphere); the coherent rays' closest hits also for the rays that
+// hit the mesh and those that miss it apart (benchmark arguments 2 and 3), which cost very
+// differently. Embree both in its default mode and in its robust (watertight) one, which is the
+// guarantee glint's test gives. Also the build time and the bytes per triangle.
 //
 //   build/bench/traversal_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only
 //   GLINT_BENCH_TRIS=100000 build/bench/traversal_bench     (default 1,000,000 triangles)
@@ -144,10 +147,26 @@ const TestMesh& test_mesh() {
     static const TestMesh m = make_bumpy_sphere(triangle_target());
     return m;
 }
+// The ray sets a benchmark's argument names: the coherent set, the incoherent set, and the
+// coherent set's rays that hit the mesh and those that miss it (split by glint's query, which
+// Embree agrees with but for a handful of rays through shared edges).
+enum Set { kCoherent = 0, kIncoherent = 1, kCoherentHit = 2, kCoherentMiss = 3 };
+RaySet hits_or_misses(const RaySet& rays, bool hits);
 const RaySet& ray_set(int which) {
     static const RaySet coherent = coherent_rays();
     static const RaySet incoherent = incoherent_rays();
-    return which == 0 ? coherent : incoherent;
+    switch (which) {
+        case kCoherentHit: {
+            static const RaySet hit = hits_or_misses(coherent, true);
+            return hit;
+        }
+        case kCoherentMiss: {
+            static const RaySet miss = hits_or_misses(coherent, false);
+            return miss;
+        }
+        default:
+            return which == kCoherent ? coherent : incoherent;
+    }
 }
 
 glint::render::Ray glint_ray(const RaySet& s, size_t i) {
@@ -193,7 +212,22 @@ const GlintScene& glint_scene() {
     return s;
 }
 
-const char* set_name(int which) { return which == 0 ? "coherent" : "incoherent"; }
+const char* set_name(int which) {
+    static const char* const kNames[] = {"coherent", "incoherent", "coherent, hits", "coherent, misses"};
+    return kNames[which];
+}
+
+RaySet hits_or_misses(const RaySet& rays, bool hits) {
+    const auto& prim = *glint_scene().prim;
+    RaySet out;
+    for (size_t i = 0; i < rays.size(); ++i) {
+        glint::render::LocalHit h;
+        if (prim.intersect(glint_ray(rays, i), glint::kInfinity, &h) != hits) continue;
+        out.o.insert(out.o.end(), rays.o.begin() + 3 * i, rays.o.begin() + 3 * i + 3);
+        out.d.insert(out.d.end(), rays.d.begin() + 3 * i, rays.d.begin() + 3 * i + 3);
+    }
+    return out;
+}
 
 // Rays per second (items) and the fraction of rays that hit, for a benchmark that traced every
 // ray of `rays` per iteration.
@@ -275,7 +309,7 @@ void BM_GlintQueryClosest(benchmark::State& state) {
         return k.closest(*q.view, query_ray(q, rays, i), glint::kInfinity, &h);
     });
 }
-BENCHMARK(BM_GlintQueryClosest)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GlintQueryClosest)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
 
 void BM_GlintQueryOccluded(benchmark::State& state) {
     const glint::render::MeshQuery q = glint_query();
@@ -289,12 +323,14 @@ BENCHMARK(BM_GlintQueryOccluded)->Arg(1)->Unit(benchmark::kMillisecond);
 #ifdef GLINT_HAVE_EMBREE
 
 // One Embree device on one thread (its own build threads too), medium build quality (its
-// default), the mesh's arrays shared rather than copied.
+// default), the mesh's arrays shared rather than copied. Robust: RTC_SCENE_FLAG_ROBUST, Embree's
+// watertight mode (no ray slips through a shared edge), the guarantee glint's test gives.
 struct EmbreeScene {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     size_t bvh_bytes = 0;
-    EmbreeScene() {
+    bool robust = false;
+    explicit EmbreeScene(bool robust_ = false) : robust(robust_) {
         device = rtcNewDevice("threads=1");
         rtcSetDeviceMemoryMonitorFunction(
             device,
@@ -313,6 +349,7 @@ struct EmbreeScene {
         bvh_bytes = 0;
         scene = rtcNewScene(device);
         rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
+        if (robust) rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
         RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
         rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, m.xyz.data(),
                                    0, 3 * sizeof(float), m.vertices());
@@ -329,8 +366,9 @@ struct EmbreeScene {
     }
 };
 
-EmbreeScene& embree_scene() {
-    static EmbreeScene s;
+EmbreeScene& embree_scene(bool robust = false) {
+    static EmbreeScene fast, watertight(true);
+    EmbreeScene& s = robust ? watertight : fast;
     if (!s.scene) s.build(test_mesh());
     return s;
 }
@@ -359,8 +397,8 @@ void BM_EmbreeBuild(benchmark::State& state) {
 }
 BENCHMARK(BM_EmbreeBuild)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-void BM_EmbreeClosest(benchmark::State& state) {
-    RTCScene scene = embree_scene().scene;
+void embree_closest(benchmark::State& state, bool robust) {
+    RTCScene scene = embree_scene(robust).scene;
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     trace_one_by_one(state, [&](const RaySet& rays, size_t i) {
@@ -369,7 +407,11 @@ void BM_EmbreeClosest(benchmark::State& state) {
         return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
     });
 }
-BENCHMARK(BM_EmbreeClosest)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+void BM_EmbreeClosest(benchmark::State& state) { embree_closest(state, false); }
+BENCHMARK(BM_EmbreeClosest)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
+// The same queries in Embree's robust mode.
+void BM_EmbreeRobustClosest(benchmark::State& state) { embree_closest(state, true); }
+BENCHMARK(BM_EmbreeRobustClosest)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
 
 // 16-wide packets of 4x4 pixels: Embree's fastest mode for camera rays.
 void BM_EmbreeClosest16(benchmark::State& state) {
@@ -408,8 +450,8 @@ void BM_EmbreeClosest16(benchmark::State& state) {
 }
 BENCHMARK(BM_EmbreeClosest16)->Unit(benchmark::kMillisecond);
 
-void BM_EmbreeOccluded(benchmark::State& state) {
-    RTCScene scene = embree_scene().scene;
+void embree_occluded(benchmark::State& state, bool robust) {
+    RTCScene scene = embree_scene(robust).scene;
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     trace_one_by_one(state, [&](const RaySet& rays, size_t i) {
@@ -418,7 +460,10 @@ void BM_EmbreeOccluded(benchmark::State& state) {
         return r.tfar < 0;
     });
 }
+void BM_EmbreeOccluded(benchmark::State& state) { embree_occluded(state, false); }
 BENCHMARK(BM_EmbreeOccluded)->Arg(1)->Unit(benchmark::kMillisecond);
+void BM_EmbreeRobustOccluded(benchmark::State& state) { embree_occluded(state, true); }
+BENCHMARK(BM_EmbreeRobustOccluded)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // Not timed: both tracers must find the same hit or miss, at the same distance (to 1e-4
 // relative: Embree's float against glint's double arithmetic), for every ray of both sets.
