@@ -42,6 +42,13 @@ inline long long to_long_long(double v) {
     return static_cast<long long>(std::clamp(v, -kMax, kMax));
 }
 
+// Directives that open a block closed by #end (#if, #ifdef, #ifndef, #while, #for, #switch,
+// #macro), and those that start a new statement (which end a #declare's value).
+bool opens_block(const std::string& d);
+bool starts_statement(const std::string& d);
+// Throws where `name`, about to be defined, is one of POV-Ray's reserved words.
+void check_not_reserved(const std::string& name, const std::string& expected, const FileLoc& at);
+
 // Thrown for a feature glint does not implement yet. Inside the standard include files a
 // declaration that throws this is skipped and its identifier marked unusable.
 class Unsupported : public Error {
