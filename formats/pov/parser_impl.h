@@ -48,6 +48,9 @@ bool opens_block(const std::string& d);
 bool starts_statement(const std::string& d);
 // Throws where `name`, about to be defined, is one of POV-Ray's reserved words.
 void check_not_reserved(const std::string& name, const std::string& expected, const FileLoc& at);
+// Entries of a block pattern (checker 2, brick 2, hexagon 3, square 4, triangular and cubic 6;
+// 0 for the others).
+int block_count(scene::PatternKind k);
 
 // Thrown for a feature glint does not implement yet. Inside the standard include files a
 // declaration that throws this is skipped and its identifier marked unusable.
