@@ -1,7 +1,11 @@
 // The POV-Ray importer's parser state, shared by the files that implement its layers:
-//   token_stream.cpp  tokens from the #include stack, directives, macro calls, conditionals
+//   token_stream.cpp  tokens from the #include stack and macro frames; errors; symbols
+//   directives.cpp    #declare, #include, #macro and macro calls, #if/#while/#for/#switch/#end
+//   file_directives.cpp  #fopen, #fclose, #read, #write
 //   expressions.cpp   float/vector/color/string expressions
 //   materials.cpp     texture, pigment, finish, normal, interior, color maps
+//   patterns.cpp      pigment, normal and texture bodies and their pattern keywords
+//   pattern_grammar.cpp  pattern arguments and modifiers, warps, maps
 //   objects.cpp       shapes, CSG, meshes, lights, object modifiers
 //   camera.cpp        camera resolution, global_settings, background, sky_sphere
 //   parser.cpp        the top-level loop and placement of objects into the scene
@@ -107,7 +111,7 @@ public:
     scene::Scene parse_main_file(const std::string& path);
     scene::Scene parse_main_string(const std::string& text, const std::string& name);
 
-    // ---- token layer (token_stream.cpp)
+    // ---- token layer (token_stream.cpp; directives in directives.cpp, file_directives.cpp)
     const Token& next();   // the next grammar token; directives and macro calls are handled
     const Token& peek() { next(); unget(); return *cur_; }
     void unget() { ungot_ = true; }
@@ -215,7 +219,7 @@ public:
     std::vector<scene::ColorMapEntry> parse_color_map_body();
     // bump_size is read into *bump_size when given (bump_map).
     void parse_image_map_body(scene::ImageMap& im, double* bump_size = nullptr);
-    // ---- patterns and maps (patterns.cpp)
+    // ---- patterns and maps (patterns.cpp, pattern_grammar.cpp)
     void parse_pattern_arguments(scene::PatternKind kind, scene::PatternParams& pp, bool normal);
     // A pattern modifier (turbulence, frequency, warp, brick_size, ...) if `w` is one; `head`
     // is the pattern's own transform, which a warp block moves into the warp list.
@@ -284,7 +288,7 @@ public:
     scene::Texture default_texture_;
 
 private:
-    // token_stream.cpp internals
+    // token_stream.cpp and directives.cpp internals
     int load_file(const std::string& path, bool system, const FileLoc& from);
     int add_source(const std::string& text, const std::string& name, bool system);
     const Token& raw();        // next token of the top frame, no processing

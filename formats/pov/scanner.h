@@ -1,6 +1,6 @@
 // The first stage of the POV-Ray importer: characters -> tokens with line/column. Comments
 // (// and nested /* */) vanish here; `#word` becomes one Directive token so the directive layer
-// (token_stream.cpp) can recognise it without looking at whitespace.
+// (token_stream.cpp, directives.cpp) can recognise it without looking at whitespace.
 #pragma once
 
 #include <memory>

@@ -1,5 +1,5 @@
 // POV-Ray patterns, warps, maps, block entries, normals and layered/patterned textures to IR
-// (formats/pov/patterns.cpp), and the exact errors for their misuse.
+// (formats/pov/patterns.cpp, pattern_grammar.cpp), and the exact errors for their misuse.
 #include <gtest/gtest.h>
 
 #include "tests/unit/pov_test_util.h"
