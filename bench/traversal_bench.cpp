@@ -213,7 +213,8 @@ const GlintScene& glint_scene() {
 }
 
 const char* set_name(int which) {
-    static const char* const kNames[] = {"coherent", "incoherent", "coherent, hits", "coherent, misses"};
+    static const char* const kNames[] = {"coherent", "incoherent", "coherent, hits",
+                                         "coherent, misses"};
     return kNames[which];
 }
 
