@@ -171,7 +171,8 @@ private:
             Visit* visit;
         } ctx{&bvh_.order(), &visit};
         return kernels_.walk(
-            wide_.nodes().data(), static_cast<int>(bvh_.order().size()), ray, &tmax,
+            wide_.nodes().data(), static_cast<int>(bvh_.order().size()), wide_.reach(), ray,
+            &tmax,
             [](void* c, int first, int n, double* t) {
                 auto* x = static_cast<Ctx*>(c);
                 for (int k = first; k < first + n; ++k)

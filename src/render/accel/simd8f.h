@@ -24,6 +24,13 @@ inline F8 splat8(float a) { return {_mm256_set1_ps(a)}; }
 inline F8 load8(const float* p) { return {_mm256_load_ps(p)}; }  // 32-byte aligned
 inline F8 operator-(F8 a, F8 b) { return {_mm256_sub_ps(a.v, b.v)}; }
 inline F8 operator*(F8 a, F8 b) { return {_mm256_mul_ps(a.v, b.v)}; }
+// a * b + c: rounded once with FMA (the AVX2 kernels are built with it), twice without. Only
+// for bounds whose margins cover either.
+#if defined(__FMA__)
+inline F8 fmadd(F8 a, F8 b, F8 c) { return {_mm256_fmadd_ps(a.v, b.v, c.v)}; }
+#else
+inline F8 fmadd(F8 a, F8 b, F8 c) { return {_mm256_add_ps(_mm256_mul_ps(a.v, b.v), c.v)}; }
+#endif
 // a > b ? a : b and a < b ? a : b per lane (a NaN in a gives b), as vmaxps and vminps do.
 inline F8 max(F8 a, F8 b) { return {_mm256_max_ps(a.v, b.v)}; }
 inline F8 min(F8 a, F8 b) { return {_mm256_min_ps(a.v, b.v)}; }
@@ -48,6 +55,7 @@ inline F8 splat8(float a) { F8 r; GLINT_F8_LANES(r.v[k] = a); return r; }
 inline F8 load8(const float* p) { F8 r; GLINT_F8_LANES(r.v[k] = p[k]); return r; }
 inline F8 operator-(F8 a, F8 b) { F8 r; GLINT_F8_LANES(r.v[k] = a.v[k] - b.v[k]); return r; }
 inline F8 operator*(F8 a, F8 b) { F8 r; GLINT_F8_LANES(r.v[k] = a.v[k] * b.v[k]); return r; }
+inline F8 fmadd(F8 a, F8 b, F8 c) { F8 r; GLINT_F8_LANES(r.v[k] = a.v[k] * b.v[k] + c.v[k]); return r; }
 inline F8 max(F8 a, F8 b) { F8 r; GLINT_F8_LANES(r.v[k] = a.v[k] > b.v[k] ? a.v[k] : b.v[k]); return r; }
 inline F8 min(F8 a, F8 b) { F8 r; GLINT_F8_LANES(r.v[k] = a.v[k] < b.v[k] ? a.v[k] : b.v[k]); return r; }
 inline int le_bits(F8 a, F8 b) { int m = 0; GLINT_F8_LANES(m |= (a.v[k] <= b.v[k]) << k); return m; }

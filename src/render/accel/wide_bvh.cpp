@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 
 #include "core/error.h"
@@ -122,6 +123,11 @@ WideBvh::WideBvh(const Bvh& bvh, const Costs& costs) {
     nodes_.reserve(n_nodes / 4 + 1);
     emit(bvh, plan, 0, 1);
     nodes_.shrink_to_fit();
+    for (const WideNode& node : nodes_)
+        for (const auto& row : node.box)
+            for (float p : row)
+                if (std::fabs(p) < std::numeric_limits<float>::infinity())
+                    reach_ = std::max(reach_, std::fabs(p));
 }
 
 int WideBvh::emit(const Bvh& bvh, const Plan& plan, int binary_node, int depth) {

@@ -57,6 +57,9 @@ public:
 
     const Nodes& nodes() const { return nodes_; }
     int depth() const { return depth_; }
+    // The largest magnitude of any finite box plane (0 for an empty tree): what the box
+    // test's fast form (mesh_kernels.inc, BoxRay) bounds its rounding by.
+    float reach() const { return reach_; }
     // Calls leaf(first, count) for every leaf of the tree: runs of order() that together
     // cover it once.
     template <class Leaf>
@@ -76,6 +79,7 @@ private:
 
     Nodes nodes_;
     int depth_ = 0;
+    float reach_ = 0;
 };
 
 }  // namespace glint::render

@@ -14,7 +14,8 @@ const MeshKernels& mesh_kernels_base() { return kernels_base::kKernels; }
 
 const MeshKernels* mesh_kernels_avx2() {
 #if defined(__x86_64__) && defined(GLINT_HAVE_AVX2_KERNELS)
-    static const bool has = __builtin_cpu_supports("avx2");
+    // Every CPU with AVX2 so far has FMA too, which the box test uses; asked for all the same.
+    static const bool has = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
     return has ? &kernels_avx2::kKernels : nullptr;
 #else
     return nullptr;

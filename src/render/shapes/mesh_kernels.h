@@ -1,10 +1,15 @@
 // The inner loops of mesh intersection: the eight-wide BVH's slab tests, eight boxes at a time
 // in single precision and conservative, and the watertight triangle test, four at a time in
-// double precision. Built twice from mesh_kernels.inc, for AVX2 and for any x86-64, with the
-// same operations in the same order, so both give the same hits bit for bit; mesh_kernels()
-// picks one for this CPU once. Used by MeshPrim (mesh_prim.cpp) and measured by
+// double precision. Built twice from mesh_kernels.inc, for AVX2 with FMA and for any x86-64,
+// with the triangle test's operations in the same order, so both give the same hits bit for
+// bit (the box test's fused multiply-adds may round its entry distances differently, which
+// may change the order of the walk, but it is conservative either way: closest() and any()
+// answer alike, all() gives the same hits, perhaps in another order); mesh_kernels() picks
+// one for this CPU once. Used by MeshPrim (mesh_prim.cpp) and measured by
 // bench/traversal_bench.
 #pragma once
+
+#include <limits>
 
 #include "render/accel/wide_bvh.h"
 #include "render/ray.h"
@@ -22,6 +27,8 @@ struct MeshView {
     const WideNode* nodes = nullptr;  // null: the whole mesh is one leaf
     const float* tris = nullptr;
     int count = 0;  // triangles
+    // The nodes' WideBvh::reach(); infinite (unknown) keeps the box test to its exact form.
+    float reach = std::numeric_limits<float>::infinity();
 };
 
 // How a mesh's binary SAH tree (built with leaves of up to 16, four triangles a test) is
@@ -56,9 +63,10 @@ struct MeshKernels {
     void (*all)(const MeshView& mesh, const Ray& ray, double tmax, MeshHitSink sink, void* ctx);
     // The eight-wide tree alone, nearest box first, for primitives other than triangles (the
     // scene's objects): leaf() for every leaf the ray enters within *tmax. With no nodes, one
-    // leaf of all `count` primitives. Returns whether a leaf ended it.
-    bool (*walk)(const WideNode* nodes, int count, const Ray& ray, double* tmax, WideLeafFn leaf,
-                 void* ctx);
+    // leaf of all `count` primitives; `reach` is the tree's WideBvh::reach(). Returns whether
+    // a leaf ended it.
+    bool (*walk)(const WideNode* nodes, int count, float reach, const Ray& ray, double* tmax,
+                 WideLeafFn leaf, void* ctx);
     // For tests: the slab test of one node's eight boxes, as the walks run it: the lanes the
     // ray enters within [0, tmax], as bits, and where it enters them.
     int (*enter_boxes)(const WideNode& node, const Ray& ray, double tmax, float t_enter[8]);

@@ -117,6 +117,7 @@ public:
         view_.nodes = wide_.nodes().empty() ? nullptr : wide_.nodes().data();
         view_.tris = tris_.data();
         view_.count = static_cast<int>(n);
+        view_.reach = wide_.reach();
         if (mesh.has_inside_vector && length_squared(mesh.inside_vector) > 0)
             inside_dir_ = mesh.inside_vector;
     }
