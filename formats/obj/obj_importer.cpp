@@ -177,6 +177,37 @@ void drop_skin_weights(std::string& text, const std::shared_ptr<const std::strin
                          std::to_string(dropped) + " in the file)");
 }
 
+// The `o` and `g` statements of the file, in order: each one's name (the rest of its line,
+// trimmed, as tinyobjloader names the shape it starts) and line, so that what is said about
+// a mesh points at the statement that named it.
+struct ShapeStatement {
+    std::string name;
+    int line = 0;
+};
+
+std::vector<ShapeStatement> shape_statements(const std::string& text) {
+    std::vector<ShapeStatement> found;
+    int line_no = 1;
+    for (size_t i = 0; i < text.size();) {
+        size_t end = i;
+        while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+        size_t a = i;
+        while (a < end && (text[a] == ' ' || text[a] == '\t')) ++a;
+        if (a + 1 < end && (text[a] == 'o' || text[a] == 'g') &&
+            (text[a + 1] == ' ' || text[a + 1] == '\t')) {
+            size_t b = a + 2, e = end;
+            while (b < e && (text[b] == ' ' || text[b] == '\t')) ++b;
+            while (e > b && (text[e - 1] == ' ' || text[e - 1] == '\t')) --e;
+            found.push_back({text.substr(b, e - b), line_no});
+        }
+        i = end;
+        if (i < text.size() && text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+        if (i < text.size()) ++i;
+        ++line_no;
+    }
+    return found;
+}
+
 // One pass over the OBJ file: the values of every v, vn and vt statement are numbers, enough
 // of them (v x y z [w] or v x y z r g b; vn x y z; vt u [v [w]]).
 void check_obj_numbers(const std::string& path, const std::shared_ptr<const std::string>& file) {
@@ -455,11 +486,13 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
     // tinyobjloader reads a value that is not a number as 0: such files are errors.
     check_obj_numbers(path, file);
     bool ok = false;
+    std::vector<ShapeStatement> shape_lines;
     {
         std::ifstream in(path, std::ios::binary);
         if (!in) throw Error(ErrorKind::MissingFile, FileLoc{}, "cannot open OBJ file '" + path + "'");
         std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
         drop_skin_weights(text, file, diag);
+        shape_lines = shape_statements(text);
         std::istringstream obj_text(std::move(text));
         ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &obj_text, &mtl_reader,
                               /*triangulate=*/false, /*default_vcols_fallback=*/false);
@@ -625,9 +658,18 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
     std::vector<Vec3> corners;                // of one polygon
     std::vector<std::array<int, 3>> cuts;     // its triangles, as corner indices
     result.first_object = static_cast<int>(scene.objects.size());
+    size_t next_statement = 0;
     for (const auto& sh : shapes) {
         scene::Mesh mesh;
+        mesh.name = sh.name;
         mesh.loc = file_loc(file, 1);
+        for (size_t k = next_statement; k < shape_lines.size() && !sh.name.empty(); ++k) {
+            if (shape_lines[k].name == sh.name) {
+                mesh.loc = file_loc(file, shape_lines[k].line);
+                next_statement = k + 1;
+                break;
+            }
+        }
         std::vector<int> touched_v, touched_n, touched_t;
         auto remap = [](std::vector<int>& map, std::vector<int>& touched, int i, auto add) {
             if (i < 0) return -1;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "core/error.h"
@@ -25,6 +26,7 @@ struct Mesh {
     // POV-Ray's inside_vector: lets a closed mesh take part in CSG.
     bool has_inside_vector = false;
     Vec3 inside_vector{0, 0, 1};
+    std::string name;  // the OBJ object or group ("" for POV-Ray's meshes): named in warnings
     FileLoc loc;
 };
 

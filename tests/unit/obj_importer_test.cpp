@@ -78,6 +78,12 @@ TEST_F(ObjImporter, ObjectsMeshesAndMaterials) {
     EXPECT_GE(quad.faces[0].n[0], 0);  // smooth: normals given
     const scene::Mesh& tri = s.meshes[std::get<scene::MeshRef>(s.objects[1].shape).mesh];
     EXPECT_EQ(tri.positions.size(), 3u);
+    // Each mesh carries its object's name and the line of the statement that named it, for
+    // what is said about its faces.
+    EXPECT_EQ(quad.name, "Quad");
+    EXPECT_EQ(quad.loc.line, 11);
+    EXPECT_EQ(tri.name, "Tri");
+    EXPECT_EQ(tri.loc.line, 14);
     EXPECT_EQ(tri.faces[0].n[0], -1);  // flat: no normals
     EXPECT_EQ(tri.faces[0].uv[0], -1);
     // The MTL's material, and a default one for the unknown `usemtl`.

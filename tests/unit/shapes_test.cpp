@@ -546,6 +546,24 @@ TEST(Mesh, DegenerateFacesSkippedWithWarning) {
     EXPECT_TRUE(is_finite(prim->bounds().lo) && is_finite(prim->bounds().hi));
 }
 
+TEST(Mesh, SkippedFacesAreNamedByTheirObject) {
+    // An OBJ object's name leads the warning (the Blender add-on turns it into the Blender
+    // object's); POV-Ray's meshes have none and say nothing more.
+    for (const std::string name : {"Sliver", ""}) {
+        scene::Mesh m = unit_square();
+        m.name = name;
+        scene::MeshFace zero;
+        zero.v = {0, 1, 1};
+        m.faces.push_back(zero);
+        Diagnostics diag;
+        ASSERT_TRUE(render::make_mesh(m, diag));
+        ASSERT_EQ(diag.warning_count(), 1);
+        const std::string& said = diag.all().front().message;
+        EXPECT_EQ(said.rfind("object 'Sliver': 1 degenerate", 0) == 0, !name.empty()) << said;
+        EXPECT_EQ(said.rfind("1 degenerate", 0) == 0, name.empty()) << said;
+    }
+}
+
 TEST(Mesh, EmptyMeshIsSkippedNotFatal) {
     scene::Scene s = test::scene_of({test::object(scene::MeshRef{0})});
     s.meshes.emplace_back();

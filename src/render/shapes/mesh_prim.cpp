@@ -296,6 +296,11 @@ bool bake_exact(const Transform& xf) {
 
 namespace {
 
+// How a warning about `mesh` starts: its OBJ object's name where it has one.
+std::string mesh_label(const scene::Mesh& mesh) {
+    return mesh.name.empty() ? std::string() : "object '" + mesh.name + "': ";
+}
+
 // The faces of `mesh` a ray can hit: indices in range, finite, non-zero area. The others are
 // counted in warnings at the mesh's location.
 std::vector<int> usable_faces(const scene::Mesh& mesh, Diagnostics& diag) {
@@ -332,13 +337,14 @@ std::vector<int> usable_faces(const scene::Mesh& mesh, Diagnostics& diag) {
         }
         usable.push_back(static_cast<int>(f));
     }
+    const std::string who = mesh_label(mesh);
     if (degenerate > 0)
-        diag.warning(mesh.loc, std::to_string(degenerate) +
+        diag.warning(mesh.loc, who + std::to_string(degenerate) +
                                    " degenerate mesh triangle(s) (zero area, or vertices not "
                                    "finite or beyond 1e15) skipped");
     if (bad_index > 0)
-        diag.warning(mesh.loc,
-                     std::to_string(bad_index) + " mesh triangle(s) with invalid indices skipped");
+        diag.warning(mesh.loc, who + std::to_string(bad_index) +
+                                   " mesh triangle(s) with invalid indices skipped");
     return usable;
 }
 
@@ -347,7 +353,8 @@ std::unique_ptr<Primitive> make_prim(const scene::Mesh& mesh, const std::vector<
     if (usable.empty()) return nullptr;
     auto prim = std::make_unique<MeshPrim>(mesh, usable, baked);
     if (prim->dropped() > 0)
-        diag.warning(mesh.loc, std::to_string(prim->dropped()) +
+        diag.warning(mesh.loc, mesh_label(mesh) +
+                                   std::to_string(prim->dropped()) +
                                    " mesh triangle(s) too small for single precision skipped");
     if (prim->empty()) return nullptr;
     return prim;
