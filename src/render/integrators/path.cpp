@@ -97,9 +97,11 @@ SurfacePbr PathIntegrator::surface(Hit& hit) const {
     const scene::Material& m = scene_.materials[hit.material];
     const PatternPoint at{hit.p, hit.uv, hit.has_uv};
     if (!m.pbr.derived) {
-        // Only materials with maps get here; without uvs they show their constants.
+        // Only materials with maps get here. A surface without uvs reads its maps at uv
+        // (0, 0), as Cycles reads an Image Texture on a mesh without a UV map (a missing
+        // image's magenta shows there too); its normal stays, having no tangents to bump.
         const PbrMaps& maps = maps_[hit.material];
-        if (!hit.has_uv) return pbr_surface(m.pbr, m.pbr.base_color);
+        if (!hit.has_uv) return pbr_surface(m.pbr, maps, Vec2(0, 0));
         if (maps.bump) hit.n = mapped_normal(maps, hit.uv, hit.n, hit.dpdu, hit.dpdv);
         return pbr_surface(m.pbr, maps, hit.uv);
     }
