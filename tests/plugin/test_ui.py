@@ -8,8 +8,9 @@ and the OBJ export is queued to the main thread (engine.py). Needs a display: ru
    does): render() must run off the main thread and the export on it, the main thread must keep
    running its event loop, the job must end through render_complete with no error
    reported, and the Render Result (saved with save_render) must have the scene's size and not
-   be black; no temp folder left. The same with Lock Interface, Ctrl F12 over two frames, and
-   with a glint binary that is not there (one error report).
+   be black; no temp folder left. The same with Lock Interface, Ctrl F12 over two frames, a
+   scene holding an object of every type (object_types.py), and with a glint binary that is
+   not there (one error report).
 2. Esc (a key event from the X server) while glint renders a heavy scene: glint's process must
    be gone within 1 s of the engine's test_break() turning true (the key's own latency through
    Blender's event loop is printed), render_cancel must fire, no temp folder left.
@@ -30,6 +31,7 @@ import traceback
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import addon_env  # noqa: E402
 import bpy  # noqa: E402
+import object_types  # noqa: E402
 from bpy.app.handlers import persistent  # noqa: E402
 from plugin_test_util import alive, child_pids, process_name, script_args  # noqa: E402
 
@@ -331,6 +333,15 @@ def steps(glint):
     means = [check_image("Ctrl F12", os.path.join(WORK, "anim_%04d.exr" % f), (96, 64))
              for f in (1, 2)]
     check(means[0] != means[1], "Ctrl F12: both frames are the same image")
+
+    # ---- 1e. F12 on a scene with an object of every type and collection instances of them
+    # (issue 28: an Empty took Blender down), with Cycles' settings left as they are.
+    scene = addon_env.build_scene(width=96, height=64, samples=8, light='AREA')
+    object_types.build(scene)
+    yield from f12_case("F12 with every object type", scene)
+    saved = os.path.join(WORK, "f12_types.exr")
+    bpy.data.images["Render Result"].save_render(saved, scene=scene)
+    check_image("F12 with every object type: Render Result", saved, (96, 64))
 
     # ---- 1d. A glint that is not there: the error reaches Blender, the job ends, no folder.
     prefs = bpy.context.preferences.addons["glint_blender"].preferences

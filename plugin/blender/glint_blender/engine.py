@@ -11,20 +11,20 @@ Outcomes: success loads glint's linear float EXR into the render result (Blender
 transform afterwards); a failure reports glint's own error lines with self.report({'ERROR'}) so
 `blender -b` exits non-zero without writing an image; a cancel (Esc, or SIGINT to `blender -b`)
 stops glint (SIGTERM, then SIGKILL after a second) and ends quietly. The per-render temp folder is
-removed in every case unless the keep_temp preference is on.
+removed in every case unless the keep_temp preference is on; those of a Blender that crashed or
+was killed are removed at the next render (render_dirs.py).
 """
 
 import os
 import queue
 import signal
-import tempfile
 import threading
 import time
 import traceback
 
 import bpy
 
-from . import exporter, preferences, runner
+from . import exporter, preferences, render_dirs, runner
 
 EXPORT_TIMEOUT_S = 600.0
 PUMP_INTERVAL_S = 0.05
@@ -71,7 +71,7 @@ class GlintRenderEngine(bpy.types.RenderEngine):
         self._warned = set()
         prefs = preferences.get()
         keep = bool(prefs and prefs.keep_temp)
-        out_dir = tempfile.mkdtemp(prefix="glint_render_")
+        out_dir = render_dirs.create()
         try:
             self._render(depsgraph, prefs, out_dir)
         except exporter.ExportError as e:
@@ -81,9 +81,10 @@ class GlintRenderEngine(bpy.types.RenderEngine):
             self._error("%s: %s" % (type(e).__name__, e))
         finally:
             if keep:
+                render_dirs.keep(out_dir)
                 print("glint: render folder kept: %s" % out_dir)
             else:
-                exporter.remove_dir(out_dir)
+                render_dirs.remove(out_dir)
 
     def _render(self, depsgraph, prefs, out_dir):
         configured = prefs.binary if prefs else ""
@@ -133,7 +134,8 @@ class GlintRenderEngine(bpy.types.RenderEngine):
             self.update_stats("", "glint: cancelled")
             return
         if not result.ok:
-            lines = result.error_lines() or ["(glint printed nothing)"]
+            lines = exporter.translate_lines(result.error_lines(), export) or \
+                ["(glint printed nothing)"]
             how = "exit code %d" % result.returncode
             if result.returncode < 0:
                 try:
@@ -144,7 +146,7 @@ class GlintRenderEngine(bpy.types.RenderEngine):
             return
         for line in result.stderr_lines:
             if "warning" in line:
-                self._warn_once(line.strip())
+                self._warn_once(exporter.translate_message(line, export))
         if not os.path.isfile(export.output_path):
             self._error("glint exited with 0 but wrote no image (%s)" % export.output_path)
             return

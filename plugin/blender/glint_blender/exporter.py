@@ -23,11 +23,13 @@ have (depth of field, motion blur, transparent film, ...) are reported through w
 
 import math
 import os
+import re
 import shlex
-import shutil
 
 import bpy
 from mathutils import Vector
+
+from . import materials
 
 SCENE_NAME = "scene"
 
@@ -38,15 +40,61 @@ class ExportError(Exception):
 
 class Export:
     """What export_frame wrote: the scene file, the output image glint will write, the image
-    size, and glint's arguments (without the binary)."""
+    size, glint's arguments (without the binary), and `names`: for each kind of thing glint
+    names in its messages ('object', 'material'), the exported name -> what the user knows it
+    as in Blender (translate_message)."""
 
-    def __init__(self, out_dir, scene_path, output_path, width, height, argv):
+    def __init__(self, out_dir, scene_path, output_path, width, height, argv, names=None):
         self.out_dir = out_dir
         self.scene_path = scene_path
         self.output_path = output_path
         self.width = width
         self.height = height
         self.argv = argv
+        self.names = names or {}
+
+
+_LOCATED = re.compile(r"^(?P<path>.+?):(?P<line>\d+):(?P<col>\d+): (?P<rest>.*)$")
+_NAMED = re.compile(r"\b(?P<kind>object|material) '(?P<name>[^']*)'")
+
+
+def _in_export(path, export):
+    full = path if os.path.isabs(path) else os.path.join(export.out_dir, path)
+    return os.path.abspath(full).startswith(os.path.join(os.path.abspath(export.out_dir), ""))
+
+
+def translate_message(line, export):
+    """One line glint printed, as the user can read it: the location in the temporary export
+    (which is gone once the render ends) is dropped, and the OBJ object and MTL material names
+    become the Blender object (with its mesh) and material."""
+    text = line.strip()
+    m = _LOCATED.match(text)
+    if m and _in_export(m.group("path"), export):
+        text = m.group("rest")
+        if text.startswith("warning: "):
+            text = text[len("warning: "):]  # the report itself is a warning
+    text = text.replace(os.path.join(export.out_dir, ""), "")
+
+    def name(match):
+        known = export.names.get(match.group("kind"), {}).get(match.group("name"))
+        return known if known is not None else match.group(0)
+    return _NAMED.sub(name, text)
+
+
+def translate_lines(lines, export):
+    """translate_message over glint's output; the source line and caret glint quotes under a
+    message located in the temporary export (a line of scene.pov or scene.obj) are left out."""
+    out, skip = [], 0
+    for line in lines:
+        if skip and line.startswith("  "):
+            skip -= 1
+            continue
+        skip = 0
+        m = _LOCATED.match(line.strip())
+        if m and _in_export(m.group("path"), export):
+            skip = 2
+        out.append(translate_message(line, export))
+    return out
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -200,11 +248,16 @@ def image_file(image, out_dir, warn):
     return dest
 
 
-def _environment_text(env, strength, out_dir, warn):
+def _environment_text(env, strength, out_dir, warn, missing):
     image = env.image
     if image is None:
         warn("world: the Environment Texture has no image: the world renders black")
         return "background { color rgb 0 }\n"
+    problem = materials.image_problem(image)
+    if problem is not None:  # Cycles' magenta (one warning an image: missing.report)
+        missing.add(image, problem, "the world")
+        return "background { color rgb %s }\n" % fmt(
+            tuple(c * strength for c in materials.MISSING_RGBA[:3]))
     if env.projection != 'EQUIRECTANGULAR':
         warn("world: Environment Texture projection %s is not supported (equirectangular "
              "only): the world renders black" % env.projection)
@@ -261,7 +314,7 @@ def _environment_text(env, strength, out_dir, warn):
             % (keyword, pov_string(path), interp, rotate, strength))
 
 
-def world_text(scene, out_dir, warn):
+def world_text(scene, out_dir, warn, missing):
     world = scene.world
     black = "background { color rgb 0 }\n"
     if world is None:
@@ -289,7 +342,7 @@ def world_text(scene, out_dir, warn):
         return "background { color rgb %s }\n" % fmt((c[0] * strength, c[1] * strength,
                                                       c[2] * strength))
     if cnode.type == 'TEX_ENVIRONMENT':
-        return _environment_text(cnode, strength, out_dir, warn)
+        return _environment_text(cnode, strength, out_dir, warn, missing)
     c = node.inputs["Color"].default_value
     warn("world: color from node '%s' (%s) is not supported (a color or an Environment "
          "Texture): using the Background's own color" % (cnode.name, cnode.type))
@@ -421,15 +474,49 @@ def _has_faces(obj_path):
         return any(line.startswith(b"f ") for line in f)
 
 
-def _rewrite_materials(mtl_path, depsgraph, out_dir, warn):
-    """materials.rewrite_mtl (Principled & co. in glint's MTL dialect) when it is there."""
-    try:
-        from . import materials
-    except ImportError:
-        return
-    rewrite = getattr(materials, "rewrite_mtl", None)
-    if rewrite is not None and os.path.isfile(mtl_path):
-        rewrite(mtl_path, depsgraph, out_dir, warn)
+# Objects with geometry that the OBJ exchange cannot carry, by type: what the user is told.
+_LEFT_OUT = {
+    "CURVES": "hair curves are not supported by glint",
+    "POINTCLOUD": "point clouds are not supported by glint",
+    "VOLUME": "volume objects are not supported by glint",
+    "GPENCIL": "Grease Pencil objects are not drawn by glint",
+}
+
+
+def left_out_warnings(depsgraph, warn):
+    """One warning for each object type glint leaves out, naming its objects (instances
+    included, each object once). Only the type is read: never an object's materials."""
+    names = {}
+    for inst in depsgraph.object_instances:
+        ob = inst.object
+        if ob.type in _LEFT_OUT:
+            name = ob.original.name if ob.original else ob.name
+            objects = names.setdefault(ob.type, [])
+            if name not in objects:
+                objects.append(name)
+    for kind, objects in names.items():
+        shown = ", ".join("'%s'" % n for n in objects[:5])
+        if len(objects) > 5:
+            shown += " and %d more" % (len(objects) - 5)
+        warn("%s: %s left out" % (_LEFT_OUT[kind], shown))
+
+
+def object_names(depsgraph):
+    """The OBJ exporter's name of each object with a surface -> how a message names it in
+    Blender's terms: "object 'Name' (mesh 'Data')"."""
+    names = {}
+    for inst in depsgraph.object_instances:
+        ob = inst.object
+        if ob.type not in materials.SURFACE_TYPES:
+            continue
+        original = ob.original if ob.original else ob
+        data = original.data
+        label = "object '%s'" % original.name
+        if data is not None and data.name != original.name:
+            label += " (%s '%s')" % ("mesh" if ob.type == 'MESH' else ob.type.lower(),
+                                     data.name)
+        names.setdefault(materials.mtl_name(original.name), label)
+    return names
 
 
 # ----------------------------------------------------------------------------- settings
@@ -472,9 +559,13 @@ def export_frame(depsgraph, out_dir, warn):
     render_warnings(scene, warn)
     camera = camera_block(depsgraph, width, height, warn)  # first: a camera error stops early
 
+    left_out_warnings(depsgraph, warn)
+
+    missing = materials.MissingImages()
     obj_path = os.path.join(out_dir, SCENE_NAME + ".obj")
     export_obj(depsgraph, obj_path)
-    _rewrite_materials(os.path.join(out_dir, SCENE_NAME + ".mtl"), depsgraph, out_dir, warn)
+    materials.rewrite_mtl(os.path.join(out_dir, SCENE_NAME + ".mtl"), depsgraph, out_dir,
+                          warn, missing)
 
     parts = ["// glint scene written by the glint Blender add-on (Blender %s), scene '%s', "
              "frame %d.\n" % (bpy.app.version_string, scene.name, scene.frame_current),
@@ -483,10 +574,11 @@ def export_frame(depsgraph, out_dir, warn):
              "#version 3.7;\n",
              "global_settings { assumed_gamma 1.0 }\n",
              camera,
-             world_text(scene, out_dir, warn),
+             world_text(scene, out_dir, warn, missing),
              lights_text(depsgraph, warn),
              'obj_file { "%s.obj" }\n' % SCENE_NAME if _has_faces(obj_path) else
              "// no meshes to render: the world and lights only\n"]
+    missing.report(warn)
     scene_path = os.path.join(out_dir, SCENE_NAME + ".pov")
     with open(scene_path, "w", encoding="utf-8") as f:
         f.write("".join(parts))
@@ -496,8 +588,8 @@ def export_frame(depsgraph, out_dir, warn):
     argv = glint_argv(settings, scene_path, output_path, width, height)
     with open(os.path.join(out_dir, "command.txt"), "w", encoding="utf-8") as f:
         f.write(shlex.join(["glint"] + argv) + "\n")
-    return Export(out_dir, scene_path, output_path, width, height, argv)
+    material_names = {k: "material '%s'" % m.name
+                      for k, m in materials.scene_materials(depsgraph)[0].items()}
+    return Export(out_dir, scene_path, output_path, width, height, argv,
+                  {"object": object_names(depsgraph), "material": material_names})
 
-
-def remove_dir(path):
-    shutil.rmtree(path, ignore_errors=True)

@@ -146,14 +146,63 @@ GLINT_DECODE = {"map_Kd": "srgb", "map_Ks": "srgb", "map_Ke": "srgb", "map_Pr": 
                 "map_Pm": "linear", "map_d": "linear", "map_Bump": "linear"}
 
 
+# Cycles' colour for an image it has no pixels for (a missing or unreadable file): magenta,
+# alpha 1 (TEX_IMAGE_MISSING_R/G/B/A in Cycles' kernel).
+MISSING_RGBA = (1.0, 0.0, 1.0, 1.0)
+
+
+def image_path(image):
+    """The absolute path of an image's file ("" when it has none)."""
+    import bpy
+    raw = image.filepath_raw or image.filepath
+    return bpy.path.abspath(raw, library=image.library) if raw else ""
+
+
+def image_problem(image):
+    """Why Blender has no pixels for `image` (Cycles then renders it magenta), or None."""
+    if image.packed_file is not None or image.source not in ("FILE", "SEQUENCE", "MOVIE",
+                                                            "TILED"):
+        return None  # packed and generated images always have pixels
+    path = image_path(image)
+    if not path:
+        return "it has no file"
+    if image.source == "FILE" and not os.path.isfile(path):
+        return "file not found: " + path
+    if not image.has_data:
+        image.size[:]  # asks Blender to load it
+    if not image.has_data or image.size[0] <= 0 or image.size[1] <= 0:
+        return "Blender cannot read " + path
+    return None
+
+
+class MissingImages:
+    """Images Blender has no pixels for, with everything that uses them: ONE warning an image
+    naming its path and every user, however many materials (and the world) share it."""
+
+    def __init__(self):
+        self.images = {}  # (name, library path) -> [problem, [users]]
+
+    def add(self, image, problem, user):
+        key = (image.name, image.library.filepath if image.library else "")
+        entry = self.images.setdefault(key, [problem, []])
+        if user not in entry[1]:
+            entry[1].append(user)
+
+    def report(self, warn):
+        for (name, _), (problem, users) in self.images.items():
+            warn("image '%s' is missing (%s): rendered magenta as in Cycles; used by %s"
+                 % (name, problem, ", ".join(users)))
+
+
 class ImageWriter:
     """Finds or writes the file glint reads for an image in a given use."""
 
-    def __init__(self, out_dir, mtl_dir):
+    def __init__(self, out_dir, mtl_dir, missing=None):
         self.dir = os.path.join(out_dir, "textures")
         self.mtl_dir = mtl_dir
         self.cache = {}
         self.used = set()
+        self.missing = missing if missing is not None else MissingImages()
 
     def rel(self, path):
         p = os.path.abspath(path)
@@ -162,8 +211,12 @@ class ImageWriter:
 
     def file_for(self, image, statement, issues, kind="color", scale=1.0):
         """kind: 'color' (RGB as is), 'gray' (the luminance, a height map), 'alpha' (the alpha
-        channel as gray). scale multiplies the values (an emission strength)."""
-        import bpy
+        channel as gray). scale multiplies the values (an emission strength). An image without
+        pixels gives Cycles' magenta (recorded in self.missing for its one warning)."""
+        problem = image_problem(image)
+        if problem is not None:
+            self.missing.add(image, problem, "material '%s'" % issues.material)
+            return self._write_missing(kind, scale)
         key = (image.name, image.library.filepath if image.library else "", statement, kind,
                scale)
         if key in self.cache:
@@ -175,7 +228,7 @@ class ImageWriter:
         if image.source not in ("FILE", "GENERATED"):
             issues.add("image '%s' is a %s; its first frame/tile is used" %
                        (image.name, image.source.lower()))
-        path = bpy.path.abspath(image.filepath_raw or image.filepath, library=image.library)
+        path = image_path(image)
         ext = os.path.splitext(path)[1].lower()
         on_disk = (image.source == "FILE" and image.packed_file is None and not image.is_dirty
                    and os.path.isfile(path) and ext in READABLE_EXTS)
@@ -193,13 +246,39 @@ class ImageWriter:
         self.cache[key] = result
         return result
 
+    def _write_missing(self, kind, scale):
+        """A 1 x 1 float image of what Cycles reads from a missing image in this use."""
+        key = ("<missing>", kind, scale)
+        if key not in self.cache:
+            r, g, b, a = MISSING_RGBA
+            if kind == "gray":
+                r = g = b = luminance((r, g, b))
+            elif kind == "alpha":
+                r = g = b = a
+            rgb = [r * scale, g * scale, b * scale]
+            self.cache[key] = self._write_pfm("missing_" + kind + (
+                "_x%g" % scale if scale != 1.0 else ""), 1, 1, rgb)
+        return self.cache[key]
+
+    def _write_pfm(self, base, w, h, rgb):
+        os.makedirs(self.dir, exist_ok=True)
+        name, k = base, 1
+        while name in self.used:
+            k += 1
+            name = "%s_%d" % (base, k)
+        self.used.add(name)
+        out = os.path.join(self.dir, name + ".pfm")
+        write_pfm(out, w, h, rgb)
+        return out
+
     def _write(self, image, kind, scale, issues):
         import numpy as np
         w, h = image.size[:2]
         n = image.channels
-        if w <= 0 or h <= 0 or n <= 0:
-            issues.add("image '%s' has no pixels" % image.name)
-            return None
+        if w <= 0 or h <= 0 or n <= 0:  # image_problem() said it has pixels: a Blender quirk
+            self.missing.add(image, "Blender gives it no pixels",
+                             "material '%s'" % issues.material)
+            return self._write_missing(kind, scale)
         px = np.empty(w * h * n, dtype=np.float32)
         image.pixels.foreach_get(px)
         px = px.reshape(h * w, n).astype(np.float64)
@@ -214,20 +293,12 @@ class ImageWriter:
         elif kind == "alpha":
             rgb = np.repeat(alpha[:, None], 3, axis=1)
         rgb = rgb * scale
-        os.makedirs(self.dir, exist_ok=True)
         base = re.sub(r"[^A-Za-z0-9._-]", "_", os.path.splitext(image.name)[0]) or "image"
         if kind != "color":
             base += "_" + kind
         if scale != 1.0:
             base += "_x%g" % scale
-        name, k = base, 1
-        while name in self.used:
-            k += 1
-            name = "%s_%d" % (base, k)
-        self.used.add(name)
-        out = os.path.join(self.dir, name + ".pfm")
-        write_pfm(out, w, h, rgb.astype(np.float32).ravel())
-        return out
+        return self._write_pfm(base, w, h, rgb.astype(np.float32).ravel())
 
 
 # ----------------------------------------------------------------------------- node graph
@@ -686,15 +757,23 @@ def convert_material(material, name, images, issues):
 # ----------------------------------------------------------------------------- entry point
 
 
+# The object types whose surfaces Blender's OBJ exporter writes (each as a mesh): only these
+# have materials in the MTL file. Other objects are never asked for theirs: reading
+# material_slots of an evaluated Empty (a depsgraph instance) crashes Blender 3.4.
+SURFACE_TYPES = frozenset({"MESH", "CURVE", "SURFACE", "FONT", "META"})
+
+
 def scene_materials(depsgraph):
     """Evaluated materials of the depsgraph's objects, by the name the OBJ exporter writes."""
     found = {}
     collisions = set()
     for inst in depsgraph.object_instances:
         ob = inst.object
-        mats = [slot.material for slot in getattr(ob, "material_slots", [])]
+        if ob.type not in SURFACE_TYPES:
+            continue
+        mats = [slot.material for slot in ob.material_slots]
         # Materials a geometry node tree set live on the evaluated data.
-        mats += list(getattr(getattr(ob, "data", None), "materials", None) or [])
+        mats += list(getattr(ob.data, "materials", None) or [])
         for m in mats:
             if m is None:
                 continue
@@ -707,14 +786,16 @@ def scene_materials(depsgraph):
     return found, collisions
 
 
-def rewrite_mtl(mtl_path, depsgraph, out_dir, warn):
-    """Rewrites mtl_path in place (see the module doc)."""
+def rewrite_mtl(mtl_path, depsgraph, out_dir, warn, missing=None):
+    """Rewrites mtl_path in place (see the module doc). Images without pixels are collected in
+    `missing` (a MissingImages) when given, for the caller to report with the world's; else
+    they are reported here."""
     if not os.path.isfile(mtl_path):
         return
     with open(mtl_path, encoding="utf-8", errors="surrogateescape") as f:
         header, blocks = parse_mtl(f.read())
     materials, collisions = scene_materials(depsgraph)
-    images = ImageWriter(out_dir, os.path.dirname(os.path.abspath(mtl_path)))
+    images = ImageWriter(out_dir, os.path.dirname(os.path.abspath(mtl_path)), missing)
     out = list(header) or ["# Blender MTL File"]
     out.append("# material blocks rewritten by glint_blender (plugin/blender/MATERIALS.md)")
     written = set()
@@ -747,3 +828,5 @@ def rewrite_mtl(mtl_path, depsgraph, out_dir, warn):
         issues.report(warn)
     with open(mtl_path, "w", encoding="utf-8", errors="surrogateescape") as f:
         f.write("\n".join(out) + "\n")
+    if missing is None:
+        images.missing.report(warn)
