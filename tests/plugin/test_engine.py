@@ -11,7 +11,8 @@
    scene without meshes leaves out the obj_file.
 3. Animation: `blender -b f.blend -E GLINT -a` over a 3-frame camera move writes three frames
    that differ from each other and each equal the CLI re-render of its own export.
-4. make_zip.sh's zip installs through Blender's add-on installer and renders the default scene.
+4. make_zip.sh's zip installs through Blender's add-on installer and renders the default scene;
+   so does the README's install.py, run from another folder with a relative binary path.
 5. Disabling the add-on closes the stock panels to GLINT again and removes scene.glint.
 """
 
@@ -238,6 +239,56 @@ def test_zip_install(glint, work):
     print("zip install: installed, enabled, rendered the default scene (32 x 24)")
 
 
+RENDER_DEFAULT_SCENE = """
+import sys, bpy
+out = sys.argv[sys.argv.index("--") + 1]
+scene = bpy.context.scene
+scene.render.engine = "GLINT"
+scene.render.resolution_x, scene.render.resolution_y = 32, 24
+scene.glint.samples = 2
+scene.render.image_settings.file_format = "OPEN_EXR"
+scene.render.filepath = out
+bpy.ops.render.render(write_still=True)
+"""
+
+
+def test_install_script(glint, work):
+    """The README's install (plugin/blender/install.py) from another folder, with the binary
+    given by a relative path, into a fresh user configuration: exits 0 with no error or
+    "not disabled" message, twice (the second replaces the first); then a plain `blender -b`
+    with that configuration renders the default scene through the add-on."""
+    root = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+    env = dict(os.environ, BLENDER_USER_CONFIG=os.path.join(work, "user_config"),
+               BLENDER_USER_SCRIPTS=os.path.join(work, "user_scripts_2"))
+    elsewhere = os.path.join(work, "elsewhere")
+    os.makedirs(elsewhere)
+    relative = os.path.relpath(glint, elsewhere)
+    install = os.path.join(root, "plugin", "blender", "install.py")
+    for attempt in ("first", "again"):
+        r = subprocess.run([blender_binary(), "-b", "--python-exit-code", "1", "--python",
+                            install, "--", "--binary", relative], env=env, cwd=elsewhere,
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                           timeout=120)
+        if r.returncode != 0 or "add-on installed" not in r.stdout:
+            fail("install.py (%s) failed:\n%s" % (attempt, r.stdout))
+        for alarming in ("not disabled", "Error", "Traceback"):
+            if alarming in r.stdout:
+                fail("install.py (%s) printed %r:\n%s" % (attempt, alarming, r.stdout))
+    script = os.path.join(work, "render_default.py")
+    with open(script, "w") as f:
+        f.write(RENDER_DEFAULT_SCENE)
+    out = os.path.join(work, "install_script.exr")
+    r = subprocess.run([blender_binary(), "-b", "--python-exit-code", "1", "--python", script,
+                        "--", out], env=env, cwd=elsewhere, stdout=subprocess.PIPE,
+                       stderr=subprocess.STDOUT, text=True, timeout=120)
+    if r.returncode != 0 or not os.path.isfile(out):
+        fail("rendering with the installed add-on failed:\n" + r.stdout)
+    img = load(out)
+    if img.shape[:2] != (24, 32) or img[:, :, :3].max() <= 0:
+        fail("the default scene rendered wrong after install.py: shape %s" % (img.shape,))
+    print("install.py: installed twice from another folder, rendered the default scene")
+
+
 def test_unregister():
     """Disabling the add-on removes GLINT from every stock panel and scene.glint."""
     import addon_utils
@@ -270,6 +321,7 @@ def main():
     test_export(work)
     test_animation(glint, work)
     test_zip_install(glint, work)
+    test_install_script(glint, work)
     test_unregister()
     shutil.rmtree(work, ignore_errors=True)
     print("PASS test_engine")
