@@ -13,7 +13,8 @@
    floor), on 4 x 4 pixel blocks.
 3. An image file that is gone renders magenta where Cycles does (the cube's material and the
    world's Environment Texture share it): one warning, naming its path, both materials and the
-   world; the cube's pixels are magenta in glint's image and in Cycles'.
+   world; the cube's pixels are magenta in glint's image and in Cycles'. An Image Texture node
+   without an image (on the metaball) is magenta in both too, and warned about.
 4. Temporary folders: one left by a `blender -b` killed with SIGKILL mid-render, and a
    hand-made one whose owner is gone, are removed by the next render; a folder kept by the
    keep_temp preference and one whose owner is alive stay; the renders above leave none.
@@ -235,6 +236,10 @@ def main():
         tex = nt.nodes.new("ShaderNodeTexImage")
         tex.image = image
         nt.links.new(tex.outputs["Color"], nt.nodes["Principled BSDF"].inputs["Base Color"])
+    # An Image Texture node without an image: Cycles renders it magenta too.
+    nt = bpy.data.materials["Scene Metaball material"].node_tree
+    empty_tex = nt.nodes.new("ShaderNodeTexImage")
+    nt.links.new(empty_tex.outputs["Color"], nt.nodes["Principled BSDF"].inputs["Base Color"])
     world = scene.world
     world.use_nodes = True
     env = world.node_tree.nodes.new("ShaderNodeTexEnvironment")
@@ -250,6 +255,9 @@ def main():
                                    "the world")):
         fail("missing image: expected one warning naming %s, both materials and the world"
              % png)
+    if not any("Scene Metaball material" in w and "has no image" in w
+               for w in REPORTS["warnings"]):
+        fail("missing image: the Image Texture without an image was not warned about")
     c = render(scene, os.path.join(work, "missing_cycles.exr"), "CYCLES", seed=1)
     for name, img in (("glint", g), ("Cycles", c)):
         r, gr, b = blocks(img)[H // 8, W // 8]  # the cube's centre

@@ -250,12 +250,13 @@ def image_file(image, out_dir, warn):
 
 def _environment_text(env, strength, out_dir, warn, missing):
     image = env.image
-    if image is None:
-        warn("world: the Environment Texture has no image: the world renders black")
-        return "background { color rgb 0 }\n"
-    problem = materials.image_problem(image)
-    if problem is not None:  # Cycles' magenta (one warning an image: missing.report)
-        missing.add(image, problem, "the world")
+    problem = None if image is None else materials.image_problem(image)
+    if image is None or problem is not None:  # Cycles' magenta
+        if image is None:
+            warn("world: the Environment Texture has no image: the world renders magenta, as "
+                 "in Cycles")
+        else:
+            missing.add(image, problem, "the world")  # one warning an image: missing.report
         return "background { color rgb %s }\n" % fmt(
             tuple(c * strength for c in materials.MISSING_RGBA[:3]))
     if env.projection != 'EQUIRECTANGULAR':

@@ -212,7 +212,10 @@ class ImageWriter:
     def file_for(self, image, statement, issues, kind="color", scale=1.0):
         """kind: 'color' (RGB as is), 'gray' (the luminance, a height map), 'alpha' (the alpha
         channel as gray). scale multiplies the values (an emission strength). An image without
-        pixels gives Cycles' magenta (recorded in self.missing for its one warning)."""
+        pixels gives Cycles' magenta (recorded in self.missing for its one warning), and so
+        does image None (a node without an image, which the caller warns about)."""
+        if image is None:  # an Image Texture node without an image
+            return self._write_missing(kind, scale)
         problem = image_problem(image)
         if problem is not None:
             self.missing.add(image, problem, "material '%s'" % issues.material)
@@ -355,9 +358,9 @@ class Converter:
         if node.mute:
             self.issues.add("%s: muted Image Texture '%s'" % (label, node.name))
             return None
-        if node.image is None:
-            self.issues.add("%s: Image Texture '%s' has no image" % (label, node.name))
-            return None
+        if node.image is None:  # Cycles renders the node magenta, as a missing image
+            self.issues.add("%s: Image Texture '%s' has no image (magenta, as in Cycles)"
+                            % (label, node.name))
         if node.projection != "FLAT":
             self.issues.add("%s: Image Texture projection %s (glint: flat)" %
                             (label, node.projection))
