@@ -13,6 +13,8 @@ adds, each in its own spot so that nothing hides the cube:
   speaker, an armature with a bone, a lattice;
 - a Grease Pencil object with a stroke, a hair Curves object, a point cloud, a Volume (no grid);
 - geometry the OBJ exporter converts: a text, a metaball, a NURBS surface, a bevelled curve;
+- a floor mesh without a material (Cycles' default surface, not the material of the object
+  written before it);
 - a collection holding one object of each of these types (and a mesh with a material), and two
   collection instances of it: one plain, one of them nested in a second instanced collection.
 
@@ -202,6 +204,11 @@ def build(scene=None):
     track.track_axis, track.up_axis = 'TRACK_NEGATIVE_Z', 'UP_Y'
     cam.data.dof.focus_object = bpy.data.objects["Scene Empty sphere"]
     cam.data.dof.use_dof = False
+
+    # A floor without a material (Cycles' default surface), below the cube.
+    floor = bpy.data.meshes.new("Floor")
+    floor.from_pydata([(-6, -6, -1), (6, -6, -1), (6, 6, -1), (-6, 6, -1)], [], [(0, 1, 2, 3)])
+    root.objects.link(bpy.data.objects.new("Floor", floor))
 
     # A collection of every type, instanced twice (once through a second, nested instance).
     kit = bpy.data.collections.new("Every Type")

@@ -10,7 +10,7 @@
    warning each, with the instanced objects too; no warning names the temporary export.
 2. The same scene with those left-out objects hidden from render agrees with Cycles 3.4 at equal
    samples: the relMSE of glint against Cycles is within 3x that of two Cycles seeds (the noise
-   floor), on 4 x 4 pixel blocks.
+   floor) plus 3e-5, on 4 x 4 pixel blocks.
 3. An image file that is gone renders magenta where Cycles does (the cube's material and the
    world's Environment Texture share it): one warning, naming its path, both materials and the
    world; the cube's pixels are magenta in glint's image and in Cycles'. An Image Texture node
@@ -218,7 +218,7 @@ def main():
     c2 = render(scene, os.path.join(work, "cycles2.exr"), "CYCLES", seed=2)
     floor, err = rel_mse(c2, c1), rel_mse(g, c1)
     log("against Cycles (4x4 blocks): relMSE glint %.5f, Cycles seed to seed %.5f" % (err, floor))
-    if err > 3 * floor + 1e-4:
+    if err > 3 * floor + 3e-5:
         fail("every type: glint differs from Cycles (relMSE %.5f, noise floor %.5f)"
              % (err, floor))
 

@@ -468,6 +468,45 @@ def export_obj(depsgraph, path):
         raise ExportError("Blender's OBJ exporter failed (%s)" % ", ".join(result))
 
 
+# Cycles renders an object without a material with its default surface, a Diffuse BSDF of 0.8
+# grey. Blender's OBJ exporter writes no `usemtl` for such an object (so OBJ readers give it the
+# material of the object before it, which usemtl statements carry over) or an empty one (a
+# geometry-nodes instance); both get this material, written after the rewritten MTL.
+DEFAULT_SURFACE = "glint_blender_default_surface"
+DEFAULT_SURFACE_MTL = ("\nnewmtl %s\n# Cycles' surface for objects without a material: Diffuse "
+                       "BSDF, 0.8 grey\nKd 0.800000 0.800000 0.800000\nKs 0.000000 0.000000 "
+                       "0.000000\nKe 0.000000 0.000000 0.000000\nNi 1.450000\nd 1.000000\n"
+                       "illum 1\n" % DEFAULT_SURFACE)
+
+
+def give_default_surface(obj_path, mtl_path):
+    """Gives every OBJ object whose faces come before any `usemtl` (and every empty `usemtl`)
+    the DEFAULT_SURFACE material, added to the MTL file. Returns whether it was needed."""
+    with open(obj_path, "rb") as f:
+        data = f.read()
+    tag = b"usemtl " + DEFAULT_SURFACE.encode() + b"\n"
+    parts = data.split(b"\no ")
+    changed = False
+    for i in range(1, len(parts)):
+        chunk = parts[i]
+        first_face, first_usemtl = chunk.find(b"\nf "), chunk.find(b"\nusemtl ")
+        if first_face >= 0 and (first_usemtl < 0 or first_usemtl > first_face):
+            name_end = chunk.find(b"\n") + 1
+            parts[i] = chunk[:name_end] + tag + chunk[name_end:]
+            changed = True
+    data = b"\no ".join(parts)
+    if b"\nusemtl \n" in data:
+        data = data.replace(b"\nusemtl \n", b"\n" + tag)
+        changed = True
+    if not changed:
+        return False
+    with open(obj_path, "wb") as f:
+        f.write(data)
+    with open(mtl_path, "a", encoding="utf-8") as f:
+        f.write(DEFAULT_SURFACE_MTL)
+    return True
+
+
 def _has_faces(obj_path):
     """Whether the OBJ has a face (glint rejects an obj_file without one; Blender renders an
     empty scene as the world alone)."""
@@ -565,8 +604,9 @@ def export_frame(depsgraph, out_dir, warn):
     missing = materials.MissingImages()
     obj_path = os.path.join(out_dir, SCENE_NAME + ".obj")
     export_obj(depsgraph, obj_path)
-    materials.rewrite_mtl(os.path.join(out_dir, SCENE_NAME + ".mtl"), depsgraph, out_dir,
-                          warn, missing)
+    mtl_path = os.path.join(out_dir, SCENE_NAME + ".mtl")
+    materials.rewrite_mtl(mtl_path, depsgraph, out_dir, warn, missing)
+    give_default_surface(obj_path, mtl_path)
 
     parts = ["// glint scene written by the glint Blender add-on (Blender %s), scene '%s', "
              "frame %d.\n" % (bpy.app.version_string, scene.name, scene.frame_current),
