@@ -93,6 +93,35 @@ def test_render(glint, work):
     print("render: 64 x 48, mean %.4f, equals the CLI re-render" % rgb.mean())
 
 
+def test_messages(work):
+    """glint's lines as the user reads them: no location in the temporary export (with or
+    without line:col), OBJ/MTL names turned into Blender's, the quoted source and caret under
+    an error in scene.pov left out; other files' locations and plain lines kept."""
+    from glint_blender import exporter
+    d = os.path.join(work, "export")
+    os.makedirs(d)
+    for name in ("scene.obj", "scene.pov"):
+        open(os.path.join(d, name), "w").close()
+    e = exporter.Export(d, os.path.join(d, "scene.pov"), os.path.join(d, "out.exr"), 1, 1, [],
+                        {"object": {"My_Cube": "object 'My Cube' (mesh 'Cube.001')"},
+                         "material": {"Mat_A": "material 'Mat A'"}})
+    cases = [("scene.obj: warning: material [ 'x' ] not found", "material [ 'x' ] not found"),
+             (d + "/scene.obj:41:1: warning: object 'My_Cube': 1 degenerate",
+              "object 'My Cube' (mesh 'Cube.001'): 1 degenerate"),
+             ("error: the scene has more", "error: the scene has more"),
+             ("/elsewhere/t.png:1:1: warning: material 'Mat_A' y",
+              "/elsewhere/t.png:1:1: warning: material 'Mat A' y")]
+    for line, expected in cases:
+        got = exporter.translate_message(line, e)
+        if got != expected:
+            fail("translate_message(%r) = %r, expected %r" % (line, got, expected))
+    got = exporter.translate_lines(["scene.pov:20:12: error: too many", '  obj_file { "x" }',
+                                    "             ^", "more"], e)
+    if got != ["error: too many", "more"]:
+        fail("translate_lines: %r" % got)
+    print("messages: %d lines translated as the user reads them" % (len(cases) + 4))
+
+
 def test_export(work):
     from glint_blender import exporter
     scene = addon_env.build_scene(width=64, height=48, light=None)
@@ -318,6 +347,7 @@ def main():
     work = tempfile.mkdtemp(prefix="glint_test_engine_")
     addon_env.enable(glint, keep_temp=True)
     test_render(glint, work)
+    test_messages(work)
     test_export(work)
     test_animation(glint, work)
     test_zip_install(glint, work)

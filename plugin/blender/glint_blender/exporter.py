@@ -54,13 +54,16 @@ class Export:
         self.names = names or {}
 
 
-_LOCATED = re.compile(r"^(?P<path>.+?):(?P<line>\d+):(?P<col>\d+): (?P<rest>.*)$")
+_LOCATED = re.compile(r"^(?P<path>[^:]+?)(?::(?P<line>\d+):(?P<col>\d+))?: (?P<rest>.*)$")
 _NAMED = re.compile(r"\b(?P<kind>object|material) '(?P<name>[^']*)'")
 
 
 def _in_export(path, export):
+    """Whether a message's location is a file of the export (which still exists while the
+    render's messages are read)."""
     full = path if os.path.isabs(path) else os.path.join(export.out_dir, path)
-    return os.path.abspath(full).startswith(os.path.join(os.path.abspath(export.out_dir), ""))
+    return (os.path.abspath(full).startswith(os.path.join(os.path.abspath(export.out_dir), ""))
+            and os.path.exists(full))
 
 
 def translate_message(line, export):
