@@ -1,8 +1,12 @@
 #include "app/cli_common.h"
 
+#include <unistd.h>
+
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <thread>
 
 namespace glint::app {
 
@@ -53,6 +57,21 @@ void install_signal_handlers() {
 }
 
 const std::atomic<bool>& cancel_flag() { return g_cancel; }
+
+void cancel_when_parent_exits() {
+    const pid_t parent = ::getppid();
+    // Polled: portable, and a fifth of a second is nothing beside a render. The thread ends
+    // with the process.
+    std::thread([parent] {
+        while (!g_cancel.load()) {
+            if (::getppid() != parent) {
+                g_cancel.store(true);
+                return;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        }
+    }).detach();
+}
 
 std::vector<std::string> include_search_path(const std::vector<std::string>& user_dirs) {
     std::vector<std::string> dirs = user_dirs;

@@ -33,6 +33,11 @@ int report_error(const Error& e);
 void install_signal_handlers();
 const std::atomic<bool>& cancel_flag();
 
+// --exit-with-parent: sets the flag, as SIGTERM does, once the process that started glint has
+// ended (its parent pid changes: the process was re-parented). A program that runs glint (the
+// Blender add-on) may crash or be killed, and its glint must not render on for nobody.
+void cancel_when_parent_exits();
+
 // The user's -I folders, then /usr/share/povray-3.7/include when it exists.
 std::vector<std::string> include_search_path(const std::vector<std::string>& user_dirs);
 

@@ -34,6 +34,8 @@ struct RenderArgs {
     bool variance = false;
     // --save-partial: on SIGINT/SIGTERM write what was rendered (render_command.cpp).
     bool save_partial = false;
+    // --exit-with-parent: stop, as on SIGTERM, once the process that started glint has ended.
+    bool exit_with_parent = false;
     // Parts of a render (parts.h): --region x0,y0,x1,y1; --frames A-B (the animation, or a
     // subset of the one POV-Ray's options define); --frame K (one frame of it);
     // --skip-existing (leave an output that is already this job's complete part alone).

@@ -163,6 +163,10 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                   "Whitted the finished 32x32 tiles and transparent black elsewhere; the path "
                   "tracer every pixel at the samples of its last finished progressive pass "
                   "(1, 2, 4, 8, ... spp). The file's ImageDescription says how much");
+    cmd->add_flag("--exit-with-parent", args.exit_with_parent,
+                  "Stop as on SIGTERM when the process that started glint ends (for programs "
+                  "that run glint, such as the Blender add-on: a crash of theirs leaves no "
+                  "glint rendering)");
     cmd->add_flag("--variance", args.variance,
                   "Path tracer: also write OUT-stem.variance.exr, per pixel and channel the "
                   "variance of the pixel's mean (sample variance / n; 0 with fewer than 2 "
@@ -370,6 +374,7 @@ RenderArgs effective_render_args(const RenderArgs& args) {
 
 int run_render(const RenderArgs& args) {
     install_signal_handlers();
+    if (args.exit_with_parent) cancel_when_parent_exits();
     const bool frame_flags = !args.frames.empty() || args.frame >= 0;
     if (args.pov_args.empty() && !frame_flags) {
         if (args.scene.path.empty())

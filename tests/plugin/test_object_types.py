@@ -15,7 +15,8 @@
    world's Environment Texture share it): one warning, naming its path, both materials and the
    world; the cube's pixels are magenta in glint's image and in Cycles'. An Image Texture node
    without an image (on the metaball) is magenta in both too, and warned about.
-4. Temporary folders: one left by a `blender -b` killed with SIGKILL mid-render, and a
+4. A `blender -b` killed with SIGKILL mid-render: its glint stops by itself within 3 s
+   (--exit-with-parent). Temporary folders: the one that Blender left, and a
    hand-made one whose owner is gone, are removed by the next render; a folder kept by the
    keep_temp preference and one whose owner is alive stay; the renders above leave none.
 Exits non-zero on the first failure.
@@ -38,11 +39,12 @@ import addon_env  # noqa: E402
 import bpy  # noqa: E402
 import numpy as np  # noqa: E402
 import object_types  # noqa: E402
-from plugin_test_util import (blender_render_cmd, child_pids, fail,  # noqa: E402
+from plugin_test_util import (alive, blender_render_cmd, child_pids, fail,  # noqa: E402
                               process_name, script_args)
 
 W, H = 96, 72
 SPP = 64
+GLINT_ORPHAN_S = 3.0  # how long glint may outlive a killed Blender
 LEFT_OUT = {"hair curves": ("Scene Hair", "Kit Hair"),
             "point clouds": ("Scene Point Cloud", "Kit Point Cloud"),
             "volume objects": ("Scene Volume", "Kit Volume"),
@@ -132,8 +134,8 @@ def owned_dir(tmp, name, pid, start="None", keep=False):
 
 
 def killed_blender_dir(glint, work, tmp):
-    """A `blender -b` rendering through the add-on, killed with SIGKILL while glint runs: the
-    folder it leaves in tmp (and its glint, which this test then stops)."""
+    """A `blender -b` rendering through the add-on, killed with SIGKILL while glint runs: its
+    glint must end by itself within GLINT_ORPHAN_S; returns the folder left in tmp."""
     scene = bpy.context.scene  # Blender's default scene, made slow to render
     scene.render.engine = "GLINT"
     scene.render.resolution_x, scene.render.resolution_y = 640, 480
@@ -152,7 +154,14 @@ def killed_blender_dir(glint, work, tmp):
         fail("killed Blender: glint never started under it")
     os.kill(proc.pid, signal.SIGKILL)
     proc.wait()
-    os.kill(glint_pid, signal.SIGKILL)  # an orphan now: not this test's subject
+    killed_at = time.monotonic()
+    while alive(glint_pid) and time.monotonic() - killed_at < GLINT_ORPHAN_S:
+        time.sleep(0.02)
+    if alive(glint_pid):
+        os.kill(glint_pid, signal.SIGKILL)
+        fail("killed Blender: its glint still ran %.1f s later (--exit-with-parent)"
+             % GLINT_ORPHAN_S)
+    log("killed Blender: its glint ended %.2f s after it" % (time.monotonic() - killed_at))
     left = [d for d in os.listdir(tmp) if d.startswith("glint_render_")]
     if len(left) != 1:
         fail("killed Blender: expected its one render folder in %s, found %s" % (tmp, left))

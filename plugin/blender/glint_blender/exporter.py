@@ -577,7 +577,8 @@ def glint_argv(settings, scene_path, output_path, width, height):
     time_limit = get("time_limit", 0.0)
     if time_limit > 0:
         argv += ["--time-limit", "%g" % time_limit]
-    argv += ["--progress", "lines"]
+    # --exit-with-parent: a Blender that crashes or is killed leaves no glint rendering on.
+    argv += ["--progress", "lines", "--exit-with-parent"]
     return argv
 
 
