@@ -71,7 +71,11 @@ class GlintRenderEngine(bpy.types.RenderEngine):
         self._warned = set()
         prefs = preferences.get()
         keep = bool(prefs and prefs.keep_temp)
-        out_dir = render_dirs.create()
+        try:
+            out_dir = render_dirs.create()
+        except OSError as e:  # e.g. a full or read-only temp folder
+            self._error("cannot make a temporary folder for the render: %s" % e)
+            return
         try:
             self._render(depsgraph, prefs, out_dir)
         except exporter.ExportError as e:
