@@ -60,7 +60,7 @@ int run_convert(const ConvertArgs& args) {
                      "glint: warning: --view %s does not apply to %s: float images stay linear\n",
                      encoding.view.view.c_str(), args.output.c_str());
     bool has_alpha = false;
-    render::Image image = io::read_float_image(args.input, &has_alpha);
+    Image image = io::read_float_image(args.input, &has_alpha);
     encoding.alpha = has_alpha;
     io::write_image(image, args.output, encoding);
     if (args.verbose)

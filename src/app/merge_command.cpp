@@ -16,7 +16,7 @@
 #include "app/commands.h"
 #include "app/parts.h"
 #include "core/error.h"
-#include "core/image_library.h"
+#include "image/image_library.h"
 #include "io/image_output.h"
 
 namespace glint::app {

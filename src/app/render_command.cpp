@@ -15,10 +15,10 @@
 #include "app/parts.h"
 #include "app/pov_options.h"
 #include "app/scene_loading.h"
-#include "core/image_library.h"
+#include "image/image_library.h"
 #include "io/color_encoding.h"
 #include "io/image_output.h"
-#include "io/progress.h"
+#include "app/progress.h"
 #include "io/scene_encoding.h"
 #include "render/integrators/driver.h"
 #include "render/render.h"
@@ -70,12 +70,12 @@ void parse_aa(const std::string& text, render::RenderOptions& options) {
     }
 }
 
-io::ProgressStyle progress_style(const std::string& flag) {
+ProgressStyle progress_style(const std::string& flag) {
     if (flag.empty())
-        return isatty(STDERR_FILENO) ? io::ProgressStyle::Bar : io::ProgressStyle::None;
-    if (flag == "bar") return io::ProgressStyle::Bar;
-    if (flag == "lines") return io::ProgressStyle::Lines;
-    return io::ProgressStyle::None;
+        return isatty(STDERR_FILENO) ? ProgressStyle::Bar : ProgressStyle::None;
+    if (flag == "bar") return ProgressStyle::Bar;
+    if (flag == "lines") return ProgressStyle::Lines;
+    return ProgressStyle::None;
 }
 
 // Refuses an output path that cannot work before spending time on the render: unsupported
@@ -284,11 +284,11 @@ int render_frame(const RenderArgs& args);
 
 // The image and its side files (--aov, --variance): all of them or none.
 struct Outputs {
-    const render::Image* image = nullptr;
-    const render::Image* albedo = nullptr;
-    const render::Image* normal = nullptr;
-    const render::Image* depth = nullptr;
-    const render::Image* variance = nullptr;
+    const Image* image = nullptr;
+    const Image* albedo = nullptr;
+    const Image* normal = nullptr;
+    const Image* depth = nullptr;
+    const Image* variance = nullptr;
 };
 
 // The AOVs --aov names, each once, in the order given.
@@ -325,7 +325,7 @@ void write_outputs(const RenderArgs& args, const std::vector<std::string>& aovs,
     io::OutputBatch batch;
     io::write_image(*out.image, args.output, encoding, metadata, &batch);
     for (const std::string& name : aovs) {
-        const render::Image& aov = name == "albedo"   ? *out.albedo
+        const Image& aov = name == "albedo"   ? *out.albedo
                                    : name == "normal" ? *out.normal
                                                       : *out.depth;
         io::write_float_exr(aov, aov_output_path(args.output, name), name == "depth" ? 1 : 3,
@@ -570,7 +570,7 @@ int render_frame(const RenderArgs& args) {
     double parse_seconds = seconds_since(start);
     if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
 
-    io::ProgressReporter progress(progress_style(args.progress), stderr);
+    ProgressReporter progress(progress_style(args.progress), stderr);
     options.progress = [&progress](double f) { progress.update(f); };
     Diagnostics diag([&args](const Diagnostic& d) {
         if (d.level == Diagnostic::Level::Warning)

@@ -133,7 +133,7 @@ float clamp01(float v) {
 
 }  // namespace
 
-std::vector<float> encode_rgb(const render::Image& image, const OutputEncoding& encoding) {
+std::vector<float> encode_rgb(const Image& image, const OutputEncoding& encoding) {
     const size_t n = static_cast<size_t>(image.width) * static_cast<size_t>(image.height);
     std::vector<float> rgb(n * 3);
     for (size_t i = 0; i < n; ++i) {
@@ -149,7 +149,7 @@ std::vector<float> encode_rgb(const render::Image& image, const OutputEncoding& 
     return rgb;
 }
 
-std::vector<float> linear_rgba(const render::Image& image, const OutputEncoding& encoding) {
+std::vector<float> linear_rgba(const Image& image, const OutputEncoding& encoding) {
     const size_t n = static_cast<size_t>(image.width) * static_cast<size_t>(image.height);
     std::vector<float> rgba(n * 4);
     for (size_t i = 0; i < n * 4; ++i) rgba[i] = finite_or_zero(image.rgba[i]);
@@ -166,7 +166,7 @@ std::vector<float> linear_rgba(const render::Image& image, const OutputEncoding&
 }
 
 float encode_value(float value, const OutputEncoding& encoding) {
-    render::Image one;
+    Image one;
     one.width = 1;
     one.height = 1;
     one.rgba = {value, value, value, 1.0f};

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "io/image_output.h"
-#include "render/image.h"
+#include "image/image.h"
 
 namespace glint::io {
 
@@ -16,7 +16,7 @@ namespace glint::io {
 // in [0, 1] (clamped; NaN becomes 0). Alpha is not touched here. Builds OpenColorIO
 // processors from transforms in code; no configuration file is read. Throws Error(Output) when
 // OpenColorIO rejects the transform.
-std::vector<float> encode_rgb(const render::Image& image, const OutputEncoding& encoding);
+std::vector<float> encode_rgb(const Image& image, const OutputEncoding& encoding);
 
 // POV-Ray 3.7's quantization (source/base/image/encoding.h, IntEncode): clip to [0, 1],
 // scale by max, add one half, floor, all in single precision; no dithering (POV-Ray's
@@ -31,7 +31,7 @@ inline unsigned quantize(float encoded, unsigned max) {
 // The film as linear light for float formats (exr, hdr): RGB decoded from the working space,
 // alpha unchanged, NaN made 0 and infinities the largest float. Width*height*4 values. Touches
 // OpenColorIO only when the working space is not linear.
-std::vector<float> linear_rgba(const render::Image& image, const OutputEncoding& encoding);
+std::vector<float> linear_rgba(const Image& image, const OutputEncoding& encoding);
 
 // The encoded value of one film value; convenient for tests and single colors.
 float encode_value(float value, const OutputEncoding& encoding);

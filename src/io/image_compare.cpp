@@ -10,10 +10,10 @@
 #include <memory>
 
 #include "core/error.h"
-#include "core/image_library.h"
+#include "image/image_library.h"
 #include "io/color_encoding.h"
 #include "io/image_output.h"
-#include "render/image.h"
+#include "image/image.h"
 
 namespace glint::io {
 
@@ -181,7 +181,7 @@ LinearImage read_linear(const std::string& path) {
 
 Rgb8Image encode_srgb8(const LinearImage& image) {
     const size_t pixels = static_cast<size_t>(image.width) * image.height;
-    render::Image linear;
+    Image linear;
     linear.width = image.width;
     linear.height = image.height;
     linear.rgba.resize(pixels * 4, 1.0f);
@@ -237,7 +237,7 @@ LinearImage linear_difference(const LinearImage& a, const LinearImage& b) {
 }
 
 void write_linear_exr(const LinearImage& image, const std::string& path) {
-    render::Image film;
+    Image film;
     film.width = image.width;
     film.height = image.height;
     film.rgba.resize(static_cast<size_t>(image.width) * image.height * 4, 1.0f);
@@ -304,7 +304,7 @@ Rgb8Image difference_image(const Rgb8Image& a, const Rgb8Image& b) {
 void write_rgb8_png(const Rgb8Image& image, const std::string& path) {
     // Through write_image with an identity encoding: the code values pass unchanged
     // (v / 255 quantizes back to v exactly), and the write is atomic.
-    render::Image film;
+    Image film;
     film.width = image.width;
     film.height = image.height;
     film.rgba.resize(static_cast<size_t>(image.width) * image.height * 4, 1.0f);

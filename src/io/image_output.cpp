@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/image_library.h"
+#include "image/image_library.h"
 #include "io/color_encoding.h"
-#include "io/png_writer.h"
+#include "image/png_writer.h"
 
 namespace glint::io {
 
@@ -195,7 +195,7 @@ std::string output_format_for(const std::string& path) { return format_info(path
 
 bool is_float_format(const std::string& path) { return format_info(path).is_float; }
 
-void write_image(const render::Image& image, const std::string& path,
+void write_image(const Image& image, const std::string& path,
                  const OutputEncoding& encoding, const ImageMetadata& metadata,
                  OutputBatch* batch) {
     const FormatInfo& format = format_info(path);
@@ -287,7 +287,7 @@ void write_image(const render::Image& image, const std::string& path,
     write_atomically(path, std::move(spec), metadata, batch);
 }
 
-void write_float_exr(const render::Image& image, const std::string& path, int channels,
+void write_float_exr(const Image& image, const std::string& path, int channels,
                      const ImageMetadata& metadata, OutputBatch* batch) {
     if (channels != 1 && channels != 3)
         throw Error(ErrorKind::Output, {}, "cannot write " + path + ": 1 or 3 channels only");
@@ -314,7 +314,7 @@ void write_pixels(const std::string& path, ImageWrite w, const ImageMetadata& me
     write_atomically(path, std::move(w), metadata, nullptr);
 }
 
-render::Image read_float_image(const std::string& path, bool* has_alpha) {
+Image read_float_image(const std::string& path, bool* has_alpha) {
     std::string why;
     std::unique_ptr<ImageReader> in = image_library().open(path, {}, &why);
     if (!in) {
@@ -336,7 +336,7 @@ render::Image read_float_image(const std::string& path, bool* has_alpha) {
     if (!why.empty()) throw Error(ErrorKind::MissingFile, {}, "cannot read " + path + ": " + why);
     const int alpha = spec.alpha_channel >= 0 ? spec.alpha_channel : (nc == 4 ? 3 : -1);
     if (has_alpha) *has_alpha = alpha >= 0;
-    render::Image image;
+    Image image;
     image.width = spec.width;
     image.height = spec.height;
     image.rgba.resize(pixels * 4);

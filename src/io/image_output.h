@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/image_library.h"
-#include "render/image.h"
+#include "image/image_library.h"
+#include "image/image.h"
 
 namespace glint::io {
 
@@ -85,14 +85,14 @@ void check_writable(const std::string& path);
 // `<path>.tmp-<pid>` beside the target and renames it; on failure the temporary is removed.
 // PNG and JPEG get 8 bits, TIFF 16 bits per channel, EXR and HDR 32-bit float. With a batch
 // the rename waits for batch->commit().
-void write_image(const render::Image& image, const std::string& path,
+void write_image(const Image& image, const std::string& path,
                  const OutputEncoding& encoding, const ImageMetadata& metadata = {},
                  OutputBatch* batch = nullptr);
 
 // Writes the first `channels` of the image (1 or 3) as a 32-bit float OpenEXR file, values as
 // they are (no encoding): the path tracer's AOVs and variance. One channel is named Z
 // (OpenEXR's depth channel), three R, G, B. Atomic like write_image; throws Error(Output).
-void write_float_exr(const render::Image& image, const std::string& path, int channels = 3,
+void write_float_exr(const Image& image, const std::string& path, int channels = 3,
                      const ImageMetadata& metadata = {}, OutputBatch* batch = nullptr);
 
 // Writes pixels that are already in the file's own type and encoding (w.data, w.type: glint
@@ -103,6 +103,6 @@ void write_pixels(const std::string& path, ImageWrite w, const ImageMetadata& me
 // Reads a float image (OpenEXR, Radiance HDR) as linear RGBA: one channel becomes gray, a
 // missing alpha 1; `has_alpha` tells whether the file had one. Throws Error(MissingFile) when
 // it cannot be read and Error(Usage) for an integer (display-encoded) file.
-render::Image read_float_image(const std::string& path, bool* has_alpha = nullptr);
+Image read_float_image(const std::string& path, bool* has_alpha = nullptr);
 
 }  // namespace glint::io

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <limits>
 
-#include "core/image_library.h"
+#include "image/image_library.h"
 #include "io/image_output.h"
-#include "render/image.h"
+#include "image/image.h"
 
 namespace glint::io {
 namespace {
@@ -44,7 +44,7 @@ void decade_range(const std::vector<const std::vector<double>*>& values, int* lo
     if (*hi <= *lo) *hi = *lo + 1;
 }
 
-// Text alignment, as core/image_library.h's DrawOp takes it.
+// Text alignment, as image/image_library.h's DrawOp takes it.
 enum class AX { Left = -1, Center = 0, Right = 1 };
 enum class AY { Top = -1, Center = 0, Bottom = 1 };
 
@@ -70,7 +70,7 @@ public:
     std::string write(const std::string& path) const {
         std::vector<float> rgb;
         const std::string text_error = image_library().draw(w_, h_, ops_, &rgb);
-        render::Image image;
+        Image image;
         image.width = w_;
         image.height = h_;
         image.rgba.assign(static_cast<size_t>(w_) * h_ * 4, 1.0f);

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "core/log.h"
-#include "render/image.h"
+#include "image/image.h"
 #include "scene/features.h"
 #include "scene/scene.h"
 

@@ -48,7 +48,7 @@ TEST(StabilityCamera, ExtremeFieldsOfViewAndImageShapes) {
             double marker = distance * 0.005 * tan_width;
             if (size.width > 1) marker = distance * 2 * tan_width / size.width;
             if (size.height > 1) marker = distance * 2 * tan_height / size.height;
-            const render::Image image =
+            const Image image =
                 render_file("camera_extremes.pov", prelude(fov, marker), size.width, size.height);
             ASSERT_EQ(image.width, size.width);
             ASSERT_EQ(image.height, size.height);

@@ -22,7 +22,7 @@ TEST(StabilityCoplanar, Case3SameImageAcrossRunsAndThreadCounts) {
             if (path) return render_path_tracer(scene, kWidth, kHeight, 4, 8, 3, threads).image;
             return render_scene(scene, kWidth, kHeight, threads);
         };
-        const render::Image first = render_at(1);
+        const Image first = render_at(1);
         ASSERT_EQ(first.rgba.size(), size_t{kWidth * kHeight * 4});
         long worst = 0;
         for (int threads : {2, 1, 2}) worst = std::max(worst, differing_values(first, render_at(threads)));

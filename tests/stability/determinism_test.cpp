@@ -21,11 +21,11 @@ scene::Scene demo_scene() {
 
 void expect_same_at_one_and_two_threads(render::AaMode aa, const char* label) {
     const scene::Scene scene = demo_scene();
-    const render::Image first = render_scene(scene, 320, 240, 1, aa);
+    const Image first = render_scene(scene, 320, 240, 1, aa);
     ASSERT_EQ(first.rgba.size(), size_t{320 * 240 * 4});
     const int runs[] = {2, 1, 2};
     for (int threads : runs) {
-        const render::Image again = render_scene(scene, 320, 240, threads, aa);
+        const Image again = render_scene(scene, 320, 240, threads, aa);
         const long n = differing_values(first, again);
         std::printf(
             "case 18 whitted demo.pov %s, %d thread(s) vs 1 thread: differing float values = %ld "
@@ -46,10 +46,10 @@ TEST(StabilityDeterminism, SameFilmAtOneAndTwoThreadsWithAdaptiveAa) {
 
 TEST(StabilityDeterminism, PathTracerSameFilmAtOneAndTwoThreads) {
     const scene::Scene scene = demo_scene();
-    const render::Image first = render_path_tracer(scene, 160, 120, 4, 8, 11, 1).image;
+    const Image first = render_path_tracer(scene, 160, 120, 4, 8, 11, 1).image;
     ASSERT_EQ(first.rgba.size(), size_t{160 * 120 * 4});
     for (int threads : {2, 1, 2}) {
-        const render::Image again = render_path_tracer(scene, 160, 120, 4, 8, 11, threads).image;
+        const Image again = render_path_tracer(scene, 160, 120, 4, 8, 11, threads).image;
         const long n = differing_values(first, again);
         std::printf(
             "case 18 path demo.pov 4 spp, %d thread(s) vs 1 thread: differing float "

@@ -17,7 +17,7 @@ TEST(StabilityGloss, Case14PhongExtremeExponents) {
     // The light (0, 4, 6) seen in the floor is (0, -4, 6): the camera at (0, 2, -3) sees it
     // through the origin (both at ratio 2:1 along the line), the look_at point.
     for (const char* size : {"0", "40", "1e5", "1e6"}) {
-        const render::Image image =
+        const Image image =
             render_file("gloss.pov", std::string("#declare Size = ") + size + ";", w, h);
         const long bad = count_nonfinite(image);
         int bx = 0, by = 0;

@@ -25,7 +25,7 @@ struct AcneResult {
     std::array<int, 3> median{0, 0, 0};
 };
 
-AcneResult measure(const scene::Scene& scene, const render::Image& image) {
+AcneResult measure(const scene::Scene& scene, const Image& image) {
     std::vector<std::array<int, 3>> colors;
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {
@@ -84,7 +84,7 @@ TEST(StabilityGroundPlane, NoAcneAtGrazingAnglesFromFarAway) {
     };
     for (const Variant& v : variants) {
         const scene::Scene scene = load_scene("ground_plane.pov", v.prelude, kWidth, kHeight);
-        const render::Image image = render_scene(scene, kWidth, kHeight);
+        const Image image = render_scene(scene, kWidth, kHeight);
         EXPECT_EQ(count_nonfinite(image), 0) << v.name;
         const AcneResult r = measure(scene, image);
         std::printf(
@@ -109,7 +109,7 @@ struct NoisyAcne {
     long acne = 0;
     double median = 0, sigma = 0;
 };
-NoisyAcne measure_noisy(const scene::Scene& scene, const render::Image& image) {
+NoisyAcne measure_noisy(const scene::Scene& scene, const Image& image) {
     std::vector<double> lum;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {

@@ -16,9 +16,9 @@ constexpr int kHeight = 240;
 constexpr double kMaxVanishDiff = 1e-5;
 
 TEST(StabilityIor, Ior1SphereVanishes) {
-    const render::Image without =
+    const Image without =
         render_file("ior_sphere.pov", "#declare Show_Sphere = 0;", kWidth, kHeight);
-    const render::Image with =
+    const Image with =
         render_file("ior_sphere.pov", "#declare Ior = 1.0;", kWidth, kHeight);
     ASSERT_EQ(with.rgba.size(), without.rgba.size());
     double max_diff = 0;
@@ -43,7 +43,7 @@ TEST(StabilityIor, Ior1SphereVanishes) {
     EXPECT_LE(max_diff, kMaxVanishDiff);
 
     // Not vacuous: the same sphere with ior 1.5 does show.
-    const render::Image glass =
+    const Image glass =
         render_file("ior_sphere.pov", "#declare Ior = 1.5;", kWidth, kHeight);
     const double unchanged = fraction_within(glass, without, 0);
     std::printf(
@@ -56,7 +56,7 @@ TEST(StabilityIor, ExtremeIorsAndTotalInternalReflectionStayFinite) {
     for (const char* ior : {"1.0001", "1.5", "2.4", "100"}) {
         const std::string prelude =
             std::string("#declare Ior = ") + ior + "; #declare Show_Cube = 1;";
-        const render::Image image = render_file("ior_sphere.pov", prelude, kWidth, kHeight);
+        const Image image = render_file("ior_sphere.pov", prelude, kWidth, kHeight);
         ASSERT_EQ(image.width, kWidth);
         const long bad = count_nonfinite(image);
         std::printf(
@@ -80,7 +80,7 @@ render::RenderResult render_path(const scene::Scene& scene, int width, int heigh
     return render::render(scene, options, diag);
 }
 
-double max_abs_diff(const render::Image& a, const render::Image& b) {
+double max_abs_diff(const Image& a, const Image& b) {
     double m = 0;
     for (size_t i = 0; i < a.rgba.size(); ++i) {
         const double d = std::fabs(static_cast<double>(a.rgba[i]) - b.rgba[i]);
@@ -160,7 +160,7 @@ TEST(StabilityIorPath, Ior1SphereVanishesBeforeEmitters) {
         EXPECT_LE(d, kMaxVanishDiff) << kind;
         EXPECT_EQ(with.nonfinite_paths, 0u);
         // Not vacuous: ior 1.5 bends the stripes.
-        const render::Image glass = render_path(emitters_scene(kind, 1.5), w, h, 4, 8, 3).image;
+        const Image glass = render_path(emitters_scene(kind, 1.5), w, h, 4, 8, 3).image;
         const double dg = max_abs_diff(glass, without.image);
         std::printf(
             "case 15 path: ior 1.5 sphere vs no sphere: max linear difference = %.3g (bound > "

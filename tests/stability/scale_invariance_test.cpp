@@ -35,7 +35,7 @@ struct AcneCount {
     long lost_shadow = 0;
     long shadowed = 0;
 };
-AcneCount count_acne(const render::Image& image, const scene::Camera& unit_camera,
+AcneCount count_acne(const Image& image, const scene::Camera& unit_camera,
                      bool quantized = false) {
     const Vec3 sphere_center{0, 1, 0};
     const double radius = 1.0;
@@ -76,7 +76,7 @@ AcneCount count_acne(const render::Image& image, const scene::Camera& unit_camer
 
 TEST(StabilityScaleInvariance, SameImageAtEveryScaleAndOffset) {
     const scene::Scene unit_scene = load_scene("scale_invariance.pov", "", kWidth, kHeight);
-    const render::Image reference = render_scene(unit_scene, kWidth, kHeight);
+    const Image reference = render_scene(unit_scene, kWidth, kHeight);
     ASSERT_EQ(count_nonfinite(reference), 0);
 
     const AcneCount unit_acne = count_acne(reference, unit_scene.camera);
@@ -100,7 +100,7 @@ TEST(StabilityScaleInvariance, SameImageAtEveryScaleAndOffset) {
         {"translate 1e8", "#declare T = <1e8, 1e8, 1e8>;", false},
     };
     for (const Variant& v : variants) {
-        const render::Image image = render_file("scale_invariance.pov", v.prelude, kWidth, kHeight);
+        const Image image = render_file("scale_invariance.pov", v.prelude, kWidth, kHeight);
         ASSERT_EQ(image.width, kWidth);
         ASSERT_EQ(image.height, kHeight);
         EXPECT_EQ(count_nonfinite(image), 0) << v.name;
@@ -123,13 +123,13 @@ TEST(StabilityScaleInvariance, PathTracerSameImageAtEveryScaleAndOffset) {
     // rare sample that grazes an outline differently.
     const int w = 160, h = 120, spp = 8;
     const scene::Scene unit_scene = load_scene("scale_invariance.pov", "", w, h);
-    const render::Image reference = render_path_tracer(unit_scene, w, h, spp, 4, 1).image;
+    const Image reference = render_path_tracer(unit_scene, w, h, spp, 4, 1).image;
     ASSERT_EQ(count_nonfinite(reference), 0);
     const char* preludes[] = {"#declare S = 1e-4;", "#declare S = 1e4;",
                               "#declare T = <1e5, 1e5, 1e5>;"};
     for (const char* prelude : preludes) {
         const scene::Scene s = load_scene("scale_invariance.pov", prelude, w, h);
-        const render::Image image = render_path_tracer(s, w, h, spp, 4, 1).image;
+        const Image image = render_path_tracer(s, w, h, spp, 4, 1).image;
         const double within = fraction_within(image, reference, 1);
         std::printf(
             "case 1 path %s: within 1/255 of scale 1 = %.5f (bound >= %.3f); non-finite "

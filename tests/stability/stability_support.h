@@ -41,7 +41,7 @@ inline scene::Scene load_scene(const std::string& file, const std::string& prelu
     return pov::parse_string(text, scenes_dir() + "/prelude_" + file, options, diag);
 }
 
-inline render::Image render_scene(const scene::Scene& scene, int width, int height, int threads = 0,
+inline Image render_scene(const scene::Scene& scene, int width, int height, int threads = 0,
                                   render::AaMode aa = render::AaMode::None) {
     render::RenderOptions options;
     options.width = width;
@@ -68,7 +68,7 @@ inline render::RenderResult render_path_tracer(const scene::Scene& scene, int wi
     return render::render(scene, options, diag);
 }
 
-inline render::Image render_file(const std::string& file, const std::string& prelude, int width,
+inline Image render_file(const std::string& file, const std::string& prelude, int width,
                                  int height, int threads = 0) {
     return render_scene(load_scene(file, prelude, width, height), width, height, threads);
 }
@@ -81,7 +81,7 @@ inline int to_8bit(float linear) {
 }
 
 // Largest 8-bit channel difference at pixel (x, y).
-inline int diff_8bit(const render::Image& a, const render::Image& b, int x, int y) {
+inline int diff_8bit(const Image& a, const Image& b, int x, int y) {
     int d = 0;
     for (int c = 0; c < 3; ++c)
         d = std::max(d, std::abs(to_8bit(a.pixel(x, y)[c]) - to_8bit(b.pixel(x, y)[c])));
@@ -89,7 +89,7 @@ inline int diff_8bit(const render::Image& a, const render::Image& b, int x, int 
 }
 
 // Number of film values (floats) that differ bit for bit; different sizes count as all.
-inline long differing_values(const render::Image& a, const render::Image& b) {
+inline long differing_values(const Image& a, const Image& b) {
     if (a.rgba.size() != b.rgba.size())
         return static_cast<long>(std::max(a.rgba.size(), b.rgba.size()));
     long n = 0;
@@ -99,7 +99,7 @@ inline long differing_values(const render::Image& a, const render::Image& b) {
 }
 
 // Fraction of pixels whose largest 8-bit channel difference is <= tolerance.
-inline double fraction_within(const render::Image& a, const render::Image& b, int tolerance) {
+inline double fraction_within(const Image& a, const Image& b, int tolerance) {
     long within = 0;
     for (int y = 0; y < a.height; ++y)
         for (int x = 0; x < a.width; ++x)
@@ -107,7 +107,7 @@ inline double fraction_within(const render::Image& a, const render::Image& b, in
     return static_cast<double>(within) / (static_cast<double>(a.width) * a.height);
 }
 
-inline long count_nonfinite(const render::Image& image) {
+inline long count_nonfinite(const Image& image) {
     return std::count_if(image.rgba.begin(), image.rgba.end(),
                          [](float v) { return !std::isfinite(v); });
 }
@@ -131,7 +131,7 @@ inline CameraRay primary_ray(const scene::Camera& cam, int x, int y, int width, 
 // centre, and returns its PNG as linear film values (inverse of to_8bit, so that to_8bit gives
 // back POV-Ray's 8-bit values). Empty when `povray` is not installed or fails.
 inline bool povray_available() { return std::system("command -v povray >/dev/null 2>&1") == 0; }
-inline std::optional<render::Image> povray_render(const std::string& file,
+inline std::optional<Image> povray_render(const std::string& file,
                                                   const std::string& prelude, int width,
                                                   int height) {
     if (!povray_available()) return std::nullopt;
@@ -144,11 +144,11 @@ inline std::optional<render::Image> povray_render(const std::string& file,
                                 std::to_string(width) + " +H" + std::to_string(height) +
                                 " -D -A +WT1 -GA +L" + scenes_dir() +
                                 " +L/usr/share/povray-3.7/include >log.txt 2>&1";
-    std::optional<render::Image> result;
+    std::optional<Image> result;
     if (std::system(command.c_str()) == 0) {
         try {
             const io::Rgb8Image png = io::read_rgb8(folder + "/out.png");
-            render::Image image;
+            Image image;
             image.width = png.width;
             image.height = png.height;
             image.rgba.assign(static_cast<size_t>(png.width) * png.height * 4, 1.0f);

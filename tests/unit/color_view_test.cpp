@@ -21,7 +21,7 @@
 #include "core/error.h"
 #include "io/color_encoding.h"
 #include "io/image_output.h"
-#include "render/image.h"
+#include "image/image.h"
 
 namespace fs = std::filesystem;
 using glint::Error;
@@ -259,7 +259,7 @@ TEST(ViewRgba, PartialAlphaIsTransformedUnpremultiplied) {
 TEST(WriteImage, ViewGivesRgbPngWithoutAlphaAndRgbaWithIt) {
     REQUIRE_BLENDER_CONFIG();
     fs::path dir = temp_dir("write");
-    glint::render::Image img;
+    glint::Image img;
     img.width = 2;
     img.height = 1;
     img.rgba = {0.18f, 0.18f, 0.18f, 0.25f, 3.0f, 0.5f, 0.01f, 1.0f};
@@ -273,7 +273,7 @@ TEST(WriteImage, ViewGivesRgbPngWithoutAlphaAndRgbaWithIt) {
     EXPECT_EQ(kind_of([&] { glint::io::read_float_image((dir / "rgb.png").string(), &alpha); }),
               ErrorKind::Usage);
     glint::io::write_image(img, (dir / "lin.exr").string(), enc);
-    glint::render::Image back = glint::io::read_float_image((dir / "lin.exr").string(), &alpha);
+    glint::Image back = glint::io::read_float_image((dir / "lin.exr").string(), &alpha);
     EXPECT_TRUE(alpha);
     EXPECT_EQ(back.rgba, img.rgba);  // float output ignores the view
     fs::remove_all(dir);
@@ -284,7 +284,7 @@ TEST(WriteImage, ViewGivesRgbPngWithoutAlphaAndRgbaWithIt) {
 TEST(WriteImage, PngStraightTiffPremultiplied) {
     REQUIRE_BLENDER_CONFIG();
     fs::path dir = temp_dir("alpha");
-    glint::render::Image img;
+    glint::Image img;
     img.width = 1;
     img.height = 1;
     img.rgba = {0.05f, 0.1f, 0.2f, 0.25f};  // premultiplied: straight (0.2, 0.4, 0.8)
@@ -324,7 +324,7 @@ int run(const std::string& command) {
 TEST(ConvertCommand, WritesTheViewAndRefusesLooseFlags) {
     REQUIRE_BLENDER_CONFIG();
     fs::path dir = temp_dir("cli");
-    glint::render::Image img;
+    glint::Image img;
     img.width = 3;
     img.height = 1;
     img.rgba = {0.0f, 0.0f, 0.0f, 1.0f, 0.18f, 0.18f, 0.18f, 1.0f, 1.0f, 1.0f, 1.0f, 1.0f};

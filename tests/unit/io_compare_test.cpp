@@ -9,7 +9,7 @@
 #include "core/error.h"
 #include "io/image_compare.h"
 #include "io/image_output.h"
-#include "render/image.h"
+#include "image/image.h"
 
 namespace fs = std::filesystem;
 using glint::io::Rgb8Image;
@@ -116,7 +116,7 @@ TEST(IoCompare, ReadsPngExactlyAndExrThroughSrgb) {
     EXPECT_EQ(back.height, 2);
     EXPECT_EQ(back.rgb, a.rgb);
 
-    glint::render::Image film;
+    glint::Image film;
     film.width = 1;
     film.height = 1;
     film.rgba = {0.5f, 0.0f, 1.0f, 1.0f};

@@ -18,7 +18,7 @@
 #include "io/color_encoding.h"
 #include "io/image_output.h"
 #include "io/scene_encoding.h"
-#include "render/image.h"
+#include "image/image.h"
 #include "scene/scene.h"
 
 namespace fs = std::filesystem;
@@ -34,8 +34,8 @@ fs::path temp_dir(const std::string& name) {
     return dir;
 }
 
-glint::render::Image ramp(int w, int h) {
-    glint::render::Image img;
+glint::Image ramp(int w, int h) {
+    glint::Image img;
     img.width = w;
     img.height = h;
     img.rgba.resize(static_cast<size_t>(w) * h * 4);
@@ -153,7 +153,7 @@ TEST(IoEncoding, ExrGetsLinearLightLikePovRay) {
         glint::scene::Scene s;
         s.version = c.version;
         s.global.assumed_gamma = c.assumed_gamma;
-        glint::render::Image img;
+        glint::Image img;
         img.width = 2;
         img.height = 1;
         img.rgba = {0.5f, 0.5f, 0.5f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f};
@@ -188,7 +188,7 @@ TEST(IoEncoding, ClampsAndQuantizesLikePovRay) {
 
 TEST(IoOutput, PngRoundTripIsExact) {
     fs::path dir = temp_dir("png");
-    glint::render::Image img = ramp(17, 9);
+    glint::Image img = ramp(17, 9);
     std::string path = (dir / "a.png").string();
     glint::io::write_image(img, path, linear());
     std::vector<int> codes = read_codes(path, OIIO::TypeDesc::UINT8, 255);
@@ -216,7 +216,7 @@ std::string libraries_opened_for(const fs::path& dir, const std::string& output)
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-// A PNG without alpha is libpng's (io/png_writer.h): a render that writes one never opens
+// A PNG without alpha is libpng's (image/png_writer.h): a render that writes one never opens
 // OpenImageIO's module nor OpenImageIO; an EXR does (the check can see a load).
 TEST(IoOutput, PlainPngDoesNotLoadOpenImageIo) {
     fs::path dir = temp_dir("plainpng");
@@ -235,7 +235,7 @@ TEST(IoOutput, PlainPngDoesNotLoadOpenImageIo) {
 // OpenImageIO reads back the colour space, the gamma and the text that libpng was given.
 TEST(IoOutput, PlainPngCarriesColorSpaceAndText) {
     fs::path dir = temp_dir("pngtext");
-    glint::render::Image img = ramp(5, 3);
+    glint::Image img = ramp(5, 3);
     const std::string a = (dir / "a.png").string(), g = (dir / "g.png").string();
     glint::io::write_image(img, a, OutputEncoding(),
                            {{"ImageDescription", "a ramp"}, {"glint:partial", "tiles 1/2"}});
@@ -259,7 +259,7 @@ TEST(IoOutput, PlainPngCarriesColorSpaceAndText) {
 
 TEST(IoOutput, PngWithAlphaKeepsCoverage) {
     fs::path dir = temp_dir("alpha");
-    glint::render::Image img = ramp(4, 4);
+    glint::Image img = ramp(4, 4);
     img.pixel(1, 1)[3] = 0.5f;
     OutputEncoding e;
     e.alpha = true;
@@ -275,7 +275,7 @@ TEST(IoOutput, PngWithAlphaKeepsCoverage) {
 
 TEST(IoOutput, TiffIsSixteenBit) {
     fs::path dir = temp_dir("tif");
-    glint::render::Image img = ramp(8, 8);
+    glint::Image img = ramp(8, 8);
     std::string path = (dir / "a.tif").string();
     glint::io::write_image(img, path, linear());
     std::vector<int> codes = read_codes(path, OIIO::TypeDesc::UINT16, 65535);
@@ -287,7 +287,7 @@ TEST(IoOutput, TiffIsSixteenBit) {
 
 TEST(IoOutput, ExrKeepsLinearFloats) {
     fs::path dir = temp_dir("exr");
-    glint::render::Image img = ramp(8, 6);
+    glint::Image img = ramp(8, 6);
     img.pixel(2, 3)[0] = 17.25f;  // beyond display range: kept
     OutputEncoding srgb;          // ignored for float formats
     std::string path = (dir / "a.exr").string();
@@ -306,7 +306,7 @@ TEST(IoOutput, ExrKeepsLinearFloats) {
 
 TEST(IoOutput, HdrKeepsLinearValuesWithinRgbePrecision) {
     fs::path dir = temp_dir("hdr");
-    glint::render::Image img = ramp(8, 6);
+    glint::Image img = ramp(8, 6);
     img.pixel(0, 0)[0] = 5.0f;
     std::string path = (dir / "a.hdr").string();
     glint::io::write_image(img, path, OutputEncoding{});
@@ -324,7 +324,7 @@ TEST(IoOutput, HdrKeepsLinearValuesWithinRgbePrecision) {
 
 TEST(IoOutput, JpegIsCloseForFlatColor) {
     fs::path dir = temp_dir("jpg");
-    glint::render::Image img;
+    glint::Image img;
     img.width = 16;
     img.height = 16;
     img.rgba.assign(16 * 16 * 4, 0.5f);

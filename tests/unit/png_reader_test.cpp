@@ -1,8 +1,8 @@
-// glint's own PNG reader (core/png_reader.h) against OpenImageIO's on the same files: every
+// glint's own PNG reader (image/png_reader.h) against OpenImageIO's on the same files: every
 // colour type and bit depth PNG has, palettes with and without transparency, interlacing, and
 // the gamma chunks. Image maps and height fields see the header and pixels of one where they
 // saw the other's, so both must agree to the bit.
-#include "core/png_reader.h"
+#include "image/png_reader.h"
 
 #include <gtest/gtest.h>
 #include <png.h>
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "core/image_library.h"
+#include "image/image_library.h"
 
 namespace glint {
 namespace {

@@ -14,7 +14,7 @@
 #include "core/error.h"
 #include "render/camera.h"
 #include "render/integrators/aov.h"
-#include "render/image.h"
+#include "image/image.h"
 #include "render/render.h"
 
 namespace glint::render {

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/png_reader.h"
-#include "core/image_limits.h"
+#include "image/png_reader.h"
+#include "image/image_limits.h"
 #include "core/quiet_stderr.h"
 #include "render/shapes/shapes.h"
 

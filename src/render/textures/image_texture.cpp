@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "core/png_reader.h"
-#include "core/image_limits.h"
+#include "image/png_reader.h"
+#include "image/image_limits.h"
 #include "core/quiet_stderr.h"
 
 namespace glint::render {

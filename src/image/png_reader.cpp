@@ -1,4 +1,4 @@
-#include "core/png_reader.h"
+#include "image/png_reader.h"
 
 #include <png.h>
 

@@ -1,4 +1,4 @@
-// The OpenImageIO side of core/image_library.h, built as the module libglint_oiio.so and
+// The OpenImageIO side of image/image_library.h, built as the module libglint_oiio.so and
 // loaded only when a scene reads an image or writes a format other than PNG. It sees only
 // OpenImageIO and the interface: no glint library is linked in, so the process keeps one copy
 // of glint's state.
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/image_library.h"
+#include "image/image_library.h"
 
 namespace glint {
 namespace {
@@ -157,7 +157,7 @@ public:
 }  // namespace
 }  // namespace glint
 
-// The module's one entry point, found with dlsym by core/image_library.cpp.
+// The module's one entry point, found with dlsym by image/image_library.cpp.
 extern "C" __attribute__((visibility("default"))) const glint::ImageLibrary*
 glint_image_library_v1() {
     static const glint::OiioLibrary library;

@@ -1,14 +1,14 @@
 // PNG encoding with libpng, for the renders that need no more: 8- or 16-bit RGB, no alpha. It
-// keeps OpenImageIO (core/image_library.h) out of the process for the most common output;
+// keeps OpenImageIO (image/image_library.h) out of the process for the most common output;
 // PNGs with alpha and every other format still go through OpenImageIO.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "core/image_library.h"
+#include "image/image_library.h"
 
-namespace glint::io {
+namespace glint {
 
 // Whether encode_png() takes this request.
 bool png_writer_accepts(const ImageWrite& w);
@@ -20,4 +20,4 @@ bool png_writer_accepts(const ImageWrite& w);
 // empty on success.
 std::string encode_png(const ImageWrite& w, std::vector<unsigned char>* bytes);
 
-}  // namespace glint::io
+}  // namespace glint

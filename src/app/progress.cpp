@@ -1,9 +1,9 @@
-#include "io/progress.h"
+#include "app/progress.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace glint::io {
+namespace glint::app {
 
 void ProgressReporter::update(double fraction) {
     if (style_ == ProgressStyle::None) return;
@@ -49,4 +49,4 @@ void ProgressReporter::abandon() {
     std::fflush(out_);
 }
 
-}  // namespace glint::io
+}  // namespace glint::app

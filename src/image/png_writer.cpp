@@ -1,4 +1,4 @@
-#include "io/png_writer.h"
+#include "image/png_writer.h"
 
 #include <png.h>
 
@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <cstring>
 
-namespace glint::io {
+namespace glint {
 namespace {
 
 struct WriteState {
@@ -120,4 +120,4 @@ std::string encode_png(const ImageWrite& w, std::vector<unsigned char>* bytes) {
     return {};
 }
 
-}  // namespace glint::io
+}  // namespace glint

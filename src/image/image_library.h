@@ -1,8 +1,8 @@
 // Image files through OpenImageIO, loaded when first needed. Debian's OpenImageIO pulls in
 // some 260 shared libraries (OpenCV, GDAL, FFmpeg, GStreamer...), whose loading and static
 // initialisers cost about 350 ms and 130 MB before main() would run; a scene that reads no
-// image and writes PNG (io/png_writer.h) never loads it. The OpenImageIO side is the module
-// src/io/oiio/oiio_module.cpp (libglint_oiio.so); this interface has no OpenImageIO types.
+// image and writes PNG (image/png_writer.h) never loads it. The OpenImageIO side is the module
+// src/image/oiio/oiio_module.cpp (libglint_oiio.so); this interface has no OpenImageIO types.
 #pragma once
 
 #include <memory>

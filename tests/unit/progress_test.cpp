@@ -7,10 +7,10 @@
 #include <thread>
 #include <vector>
 
-#include "io/progress.h"
+#include "app/progress.h"
 
-using glint::io::ProgressReporter;
-using glint::io::ProgressStyle;
+using glint::app::ProgressReporter;
+using glint::app::ProgressStyle;
 
 namespace {
 

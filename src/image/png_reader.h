@@ -1,5 +1,5 @@
 // PNG files read through libpng directly, for image maps and height fields: loading the
-// OpenImageIO module costs about 350 ms (core/image_library.h), more than a scene with one
+// OpenImageIO module costs about 350 ms (image/image_library.h), more than a scene with one
 // small PNG texture takes to render. The reader gives what OpenImageIO's PNG reader gives
 // (tests/unit/png_reader_test.cpp holds the two side by side): low bit depths, palettes and
 // tRNS expanded to 8-bit channels with alpha, 16-bit kept, oiio:ColorSpace "sRGB" unless a
@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/image_library.h"
+#include "image/image_library.h"
 
 namespace glint {
 

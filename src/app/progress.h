@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <mutex>
 
-namespace glint::io {
+namespace glint::app {
 
 enum class ProgressStyle { None, Bar, Lines };
 
@@ -34,4 +34,4 @@ class ProgressReporter {
     bool done_ = false;
 };
 
-}  // namespace glint::io
+}  // namespace glint::app

@@ -1,4 +1,4 @@
-#include "core/image_library.h"
+#include "image/image_library.h"
 
 #include <dlfcn.h>
 #include <unistd.h>

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-namespace glint::render {
+namespace glint {
 
 struct Image {
     int width = 0;
@@ -17,4 +17,4 @@ struct Image {
     }
 };
 
-}  // namespace glint::render
+}  // namespace glint
