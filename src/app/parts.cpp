@@ -7,7 +7,7 @@
 #include <iterator>
 
 #include "core/error.h"
-#include "render/integrators/driver.h"
+#include "render/film/film.h"
 
 namespace glint::app {
 namespace {

@@ -20,7 +20,7 @@
 #include "io/image_output.h"
 #include "app/progress.h"
 #include "io/scene_encoding.h"
-#include "render/integrators/driver.h"
+#include "render/film/film.h"
 #include "render/render.h"
 #include "scene/features.h"
 

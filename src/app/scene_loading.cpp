@@ -10,7 +10,7 @@
 #include "core/memory.h"
 #include "formats/obj/obj_importer.h"
 #include "formats/pov/parser.h"
-#include "render/object_query.h"
+#include "render/render.h"
 #include "scene/validate.h"
 
 namespace glint::app {

@@ -1,4 +1,4 @@
-#include "render/object_query.h"
+#include "render/render.h"
 
 #include "render/geometry.h"
 #include "render/textures/pigment.h"

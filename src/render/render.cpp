@@ -7,7 +7,7 @@
 #include "core/error.h"
 #include "render/camera.h"
 #include "render/geometry.h"
-#include "render/integrators/driver.h"
+#include "render/film/driver.h"
 #include "render/integrators/path.h"
 #include "render/integrators/whitted.h"
 #include "render/textures/image_texture.h"

@@ -2,67 +2,16 @@
 // integrator over the image with the tile driver.
 #pragma once
 
-#include <atomic>
 #include <cstdint>
-#include <functional>
 #include <string>
 
 #include "core/log.h"
 #include "image/image.h"
+#include "render/options.h"
 #include "scene/features.h"
 #include "scene/scene.h"
 
 namespace glint::render {
-
-enum class AaMode {
-    None,      // one ray through each pixel centre (POV-Ray -A)
-    Adaptive,  // POV-Ray's sampling method 1 with threshold (+A0.3)
-    Grid,      // N x N regular grid per pixel, box filtered
-};
-
-enum class IntegratorKind {
-    Whitted,  // POV-Ray's classic model
-    Path,     // Monte Carlo path tracer (spp samples per pixel, averaged)
-};
-
-// A rectangle of pixels, [x0, x1) x [y0, y1), row 0 at the top.
-struct Region {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-    bool empty() const { return x1 <= x0 || y1 <= y0; }
-    int width() const { return x1 - x0; }
-    int height() const { return y1 - y0; }
-    bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
-    bool operator==(const Region&) const = default;
-};
-
-struct RenderOptions {
-    int width = 320;
-    int height = 240;
-    // Only these pixels of the width x height image (empty: all of them); the result is that
-    // rectangle, each pixel bit for bit as the whole image's render has it (the driver's
-    // tiles are blocks of the whole image, so adaptive AA compares the same neighbours, and
-    // the path tracer's random numbers depend on the pixel alone).
-    Region region;
-    AaMode aa = AaMode::None;
-    double aa_threshold = 0.3;  // POV-Ray's +A default
-    int aa_depth = 3;           // POV-Ray's +R default
-    int grid_n = 2;
-    int threads = 0;  // 0 = all hardware threads
-    IntegratorKind integrator = IntegratorKind::Whitted;
-    // Path tracer: samples per pixel (with a time limit: at most), bounces, sampler seed, and
-    // a wall-clock limit in seconds (0: none) checked between progressive passes.
-    int spp = 16;
-    int max_depth = 8;
-    uint32_t seed = 0;
-    double time_limit = 0;
-    // Path tracer: also average the first hit's albedo, normal and depth per pixel, and
-    // estimate the variance of each pixel's mean (RenderResult::albedo ... variance).
-    bool aovs = false;
-    bool variance = false;
-    // Called with the finished fraction in [0, 1], from any thread, at most every tile.
-    std::function<void(double)> progress;
-    const std::atomic<bool>* cancel = nullptr;  // render throws Error(Cancelled) when set
-};
 
 struct RenderResult {
     Image image;
@@ -77,5 +26,22 @@ struct RenderResult {
 };
 
 RenderResult render(const scene::Scene& scene, const RenderOptions& options, Diagnostics& diag);
+
+// Questions the scene language asks about one object while parsing: POV-Ray's trace() and
+// min_extent()/max_extent(). The importer cannot see the renderer, so the application passes
+// answer_object_query as ParseOptions::object_query; it builds the renderer's geometry for a
+// scene holding only that object (object_query.cpp).
+// kind 0 (bounds): lo/hi = the world bounding box; false when empty.
+// kind 1 (trace): the first hit from `a` along `b` (any length); true on a hit with the point
+// in lo and the surface normal (facing the ray's origin side as POV-Ray's trace returns the
+// object's normal) in hi.
+bool answer_object_query(const scene::Scene& one, int kind, const Vec3& a, const Vec3& b, Vec3& lo,
+                         Vec3& hi);
+
+// ParseOptions::pattern_hook: a pattern function's value (out[0]) or a pigment function's color
+// (out = rgbft) when the scene calls one while parsing (shapes.inc's HF macros do). `user` is
+// unused; functions called from inside such a pattern are not available there.
+void parse_time_pattern(const void* user, const scene::Function& f, const Vec3& p, double out[5]);
+
 
 }  // namespace glint::render

@@ -284,7 +284,7 @@ def build_hdr(out_dir):
     nt.links.new(env.outputs["Color"], nt.nodes["Background"].inputs["Color"])
     nt.nodes["Background"].inputs["Strength"].default_value = 1.0
     bpy.context.scene.world = world
-    # glint's map_type 1 reads u = atan2(q.z, q.x) / 2pi (render/integrators/environment.h);
+    # glint's map_type 1 reads u = atan2(q.z, q.x) / 2pi (render/lights/environment.h);
     # Blender's u is 0.5 - atan2(b.y, b.x) / 2pi = 0.5 - atan2(p.z, p.x) / 2pi for the glint
     # point p = (b.x, b.z, b.y). With q = (-p.x, p.y, p.z) the two agree, so the sky is
     # mirrored in x. v = 0.5 + asin(up) / pi in both, top row up.

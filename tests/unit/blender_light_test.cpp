@@ -13,7 +13,7 @@
 #include <string>
 
 #include "core/log.h"
-#include "render/integrators/blender_lights.h"
+#include "render/lights/blender_lights.h"
 #include "render/lights/light.h"
 #include "render/render.h"
 #include "unit/path_test_util.h"

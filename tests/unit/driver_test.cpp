@@ -6,7 +6,7 @@
 #include <mutex>
 
 #include "core/error.h"
-#include "render/integrators/driver.h"
+#include "render/film/driver.h"
 
 namespace glint::render {
 namespace {

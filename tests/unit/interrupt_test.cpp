@@ -23,7 +23,7 @@
 #include <thread>
 #include <vector>
 
-#include "render/integrators/driver.h"
+#include "render/film/driver.h"
 
 namespace fs = std::filesystem;
 

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "render/object_query.h"
+#include "render/render.h"
 #include "scene/function.h"
 #include "tests/unit/pov_test_util.h"
 

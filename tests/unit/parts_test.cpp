@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "render/integrators/driver.h"
+#include "render/film/driver.h"
 
 // The CLI is an executable, not a library the tests link: its code is compiled here.
 #include "app/parts.cpp"  // NOLINT(bugprone-suspicious-include)

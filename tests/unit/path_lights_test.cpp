@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "core/log.h"
-#include "render/integrators/environment.h"
-#include "render/integrators/path_lights.h"
+#include "render/lights/environment.h"
+#include "render/lights/path_lights.h"
 #include "render/render.h"
 #include "render/textures/image_texture.h"
 #include "render/textures/pigment.h"

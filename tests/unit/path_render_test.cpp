@@ -12,7 +12,7 @@
 #include "core/log.h"
 #include "render/bsdf/bsdf.h"
 #include "render/camera.h"
-#include "render/integrators/path_lights.h"
+#include "render/lights/path_lights.h"
 #include "render/render.h"
 #include "unit/path_test_util.h"
 

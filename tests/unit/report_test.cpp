@@ -20,7 +20,7 @@
 #include "io/image_compare.h"
 #include "io/plot.h"
 #include "render/camera.h"
-#include "render/integrators/driver.h"
+#include "render/film/driver.h"
 #include "render/render.h"
 #include "unit/path_test_util.h"
 

@@ -8,6 +8,7 @@
 #include "core/float.h"
 #include "render/bsdf/bsdf.h"
 #include "render/bsdf/shading_normal.h"
+#include "render/lights/sky.h"
 
 namespace glint::render {
 namespace {
@@ -112,20 +113,7 @@ SurfacePbr PathIntegrator::surface(Hit& hit) const {
 }
 
 Color PathIntegrator::environment(const Vec3& dir) const {
-    const scene::SkySphere* sky = scene_.sky_sphere ? &*scene_.sky_sphere : nullptr;
-    Color col;
-    Color fil(1.0);
-    if (sky && !sky->pigments.empty()) {
-        const Vec3 d = normalize(dir);
-        const Vec3 p = sky->transform.is_identity() ? d : sky->transform.inverse_point(d);
-        for (int i = static_cast<int>(sky->pigments.size()) - 1; i >= 0; --i) {
-            scene::ColorFT c;
-            pigments_.evaluate(sky->pigments[i], {p, {}, false}, &c);
-            col += c.rgb * (1.0 - c.filter - c.transmit) * fil * sky->emission;
-            fil *= c.rgb * c.filter + Color(c.transmit);
-        }
-    }
-    return col + scene_.background.rgb * fil;
+    return sky_radiance(scene_, pigments_, dir);
 }
 
 Color PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dist,

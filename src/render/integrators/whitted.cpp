@@ -5,8 +5,9 @@
 #include <cmath>
 
 #include "core/float.h"
-#include "render/integrators/blender_lights.h"
+#include "render/lights/blender_lights.h"
 #include "render/lights/area_light.h"
+#include "render/lights/sky.h"
 #include "render/materials/opacity.h"
 #include "render/textures/normal.h"
 
@@ -605,47 +606,6 @@ Color Whitted::shadow_texture(const scene::Texture& tex, const PatternPoint& at,
     return c;
 }
 
-Color Whitted::sky(const Vec3& dir) const {
-    const ColorFT& bg = scene_.background;
-    const scene::SkySphere* sky = scene_.sky_sphere ? &*scene_.sky_sphere : nullptr;
-    Vec3 d = normalize(dir);
-    if (legacy_) {
-        // ComputeSky for pre-3.7 scenes.
-        if (!sky || sky->pigments.empty()) return bg.rgb;
-        Vec3 p = sky->transform.is_identity() ? d : sky->transform.inverse_point(d);
-        Color col;
-        Color frgb(1.0);
-        double ff = 1.0, ft = 1.0;
-        double trans = 1.0;
-        for (int i = static_cast<int>(sky->pigments.size()) - 1; i >= 0; --i) {
-            ColorFT c;
-            pigments_.evaluate(sky->pigments[i], {p, {}, false}, &c);
-            double att = trans * (1.0 - c.filter - c.transmit);
-            col += c.rgb * att;
-            frgb *= c.rgb;
-            ff *= c.filter;
-            ft *= c.transmit;
-            trans = std::fabs(ff) + std::fabs(ft);
-        }
-        col *= sky->emission;
-        return col + bg.rgb * (frgb * ff + Color(ft));
-    }
-    // 3.7: the sky sphere behaves like a layered texture over the background.
-    Color col;
-    Color fil(1.0);
-    if (sky && !sky->pigments.empty()) {
-        Vec3 p = sky->transform.is_identity() ? d : sky->transform.inverse_point(d);
-        for (int i = static_cast<int>(sky->pigments.size()) - 1; i >= 0; --i) {
-            ColorFT c;
-            pigments_.evaluate(sky->pigments[i], {p, {}, false}, &c);
-            double att = 1.0 - c.filter - c.transmit;
-            col += c.rgb * att * fil * sky->emission;
-            fil *= rgb_transm(c);
-        }
-    }
-    // Without an alpha channel the background's filter and transmit are ignored.
-    col += bg.rgb * fil;
-    return col;
-}
+Color Whitted::sky(const Vec3& dir) const { return sky_radiance(scene_, pigments_, dir, legacy_); }
 
 }  // namespace glint::render

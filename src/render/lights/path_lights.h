@@ -34,8 +34,8 @@
 #include <optional>
 #include <vector>
 
-#include "render/integrators/blender_lights.h"
-#include "render/integrators/environment.h"
+#include "render/lights/blender_lights.h"
+#include "render/lights/environment.h"
 #include "render/ray.h"
 #include "render/sampling/sampler.h"
 #include "scene/scene.h"

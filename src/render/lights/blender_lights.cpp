@@ -1,4 +1,4 @@
-#include "render/integrators/blender_lights.h"
+#include "render/lights/blender_lights.h"
 
 #include <algorithm>
 #include <cmath>

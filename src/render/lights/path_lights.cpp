@@ -1,4 +1,4 @@
-#include "render/integrators/path_lights.h"
+#include "render/lights/path_lights.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "render/integrators/driver.h"
+#include "render/film/driver.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

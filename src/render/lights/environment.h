@@ -12,23 +12,9 @@
 // p(u, v) / (2 pi^2 sin(theta)); the floor keeps it above zero wherever the environment has
 // radiance a sub-sample missed, so the estimator stays unbiased.
 //
-// POV-Ray's spherical image map and Blender's world texture (measured with Blender 3.4.1 Cycles,
-// tests/unit/path_lights_test.cpp, EnvironmentMatchesBlender):
-// - POV-Ray map_type 1, for a direction q in the pigment's space (Y up): u = atan2(q.z, q.x)/2pi
-//   (mod 1), v = 0.5 + asin(q.y)/pi, v = 1 at the image's top row.
-// - Blender's Environment Texture (equirectangular), for a world direction b (Z up):
-//   u = 0.5 - atan2(b.y, b.x)/2pi, v = 0.5 + asin(b.z)/pi: the image centre looks along +X,
-//   +Y is at u = 0.25, v = 1 at the top row. A Mapping node rotating the vector by alpha about
-//   Z adds alpha to atan2(b.y, b.x).
-// - Blender's OBJ exporter (forward -Z, up Y) writes g = (b.x, b.z, -b.y), and glint's obj_file
-//   mirrors z into POV-Ray's left-handed axes, so in a POV scene that places the export with
-//   obj_file a Blender direction is g = (b.x, b.z, b.y) and u_blender = 0.5 - atan2(g.z, g.x)/2pi:
-//   POV-Ray's u mirrored. A script writes
-//     sky_sphere { pigment { image_map { exr "sky.exr" map_type 1 interpolate 2 } }
-//                  scale <-1, 1, 1> rotate <0, alpha, 0> emission S }
-//   for a Mapping node Z rotation of alpha degrees (leave it out for none) and a Background
-//   strength S (interpolate 2 is Blender's Linear). In the OBJ file's own coordinates
-//   (x, z, -y), without obj_file's mirror, the same sky is `rotate <0, 180 - alpha, 0>`.
+// How POV-Ray's spherical image map and Blender's world texture map directions (and how the
+// add-on writes a Blender world for glint): docs/pbr-mapping.md, "Blender world textures"
+// (checked by path_lights_test, EnvironmentMatchesBlender).
 #pragma once
 
 #include <functional>
@@ -36,29 +22,13 @@
 #include <vector>
 
 #include "core/math.h"
+#include "render/sampling/distribution.h"
 #include "render/sampling/sampler.h"
 #include "scene/scene.h"
 
 namespace glint::render {
 
 class TextureCache;
-
-// A piecewise-constant density on [0, 1) over n equal bins, sampled by inverting its CDF.
-class Distribution1D {
-public:
-    explicit Distribution1D(std::vector<double> f);
-    // A point in [0, 1); *bin gets its bin, *pdf its density (with respect to [0, 1)).
-    double sample(double u, int* bin, double* pdf) const;
-    double pdf(int bin) const { return f_[bin] / integral_; }
-    // (1 / n) * sum f: the integral of the unnormalized function.
-    double integral() const { return integral_; }
-    int size() const { return static_cast<int>(f_.size()); }
-
-private:
-    std::vector<double> f_;
-    std::vector<double> cdf_;  // n + 1 entries, cdf_[0] = 0, cdf_[n] = 1
-    double integral_ = 0;
-};
 
 struct EnvironmentGrid {
     int width = 128;

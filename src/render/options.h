@@ -1,0 +1,62 @@
+// What a render is asked for: the image size and region, anti-aliasing, the integrator and its
+// settings, progress and cancellation. Shared by the facade (render.h), the film's tile driver
+// and the integrators.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+
+namespace glint::render {
+
+enum class AaMode {
+    None,      // one ray through each pixel centre (POV-Ray -A)
+    Adaptive,  // POV-Ray's sampling method 1 with threshold (+A0.3)
+    Grid,      // N x N regular grid per pixel, box filtered
+};
+
+enum class IntegratorKind {
+    Whitted,  // POV-Ray's classic model
+    Path,     // Monte Carlo path tracer (spp samples per pixel, averaged)
+};
+
+// A rectangle of pixels, [x0, x1) x [y0, y1), row 0 at the top.
+struct Region {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool empty() const { return x1 <= x0 || y1 <= y0; }
+    int width() const { return x1 - x0; }
+    int height() const { return y1 - y0; }
+    bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+    bool operator==(const Region&) const = default;
+};
+
+struct RenderOptions {
+    int width = 320;
+    int height = 240;
+    // Only these pixels of the width x height image (empty: all of them); the result is that
+    // rectangle, each pixel bit for bit as the whole image's render has it (the driver's
+    // tiles are blocks of the whole image, so adaptive AA compares the same neighbours, and
+    // the path tracer's random numbers depend on the pixel alone).
+    Region region;
+    AaMode aa = AaMode::None;
+    double aa_threshold = 0.3;  // POV-Ray's +A default
+    int aa_depth = 3;           // POV-Ray's +R default
+    int grid_n = 2;
+    int threads = 0;  // 0 = all hardware threads
+    IntegratorKind integrator = IntegratorKind::Whitted;
+    // Path tracer: samples per pixel (with a time limit: at most), bounces, sampler seed, and
+    // a wall-clock limit in seconds (0: none) checked between progressive passes.
+    int spp = 16;
+    int max_depth = 8;
+    uint32_t seed = 0;
+    double time_limit = 0;
+    // Path tracer: also average the first hit's albedo, normal and depth per pixel, and
+    // estimate the variance of each pixel's mean (RenderResult::albedo ... variance).
+    bool aovs = false;
+    bool variance = false;
+    // Called with the finished fraction in [0, 1], from any thread, at most every tile.
+    std::function<void(double)> progress;
+    const std::atomic<bool>* cancel = nullptr;  // render throws Error(Cancelled) when set
+};
+
+}  // namespace glint::render
