@@ -12,8 +12,9 @@
 namespace glint::app {
 
 CLI::App* add_compare_command(CLI::App& app, CompareArgs& args) {
-    CLI::App* cmd = app.add_subcommand(
-        "compare",
+    CLI::App* cmd =
+        app.add_subcommand("compare", "Compare two images; exit 0 if they agree, 6 if not");
+    cmd->footer(
         "Compare two images (PNG/TIFF/JPEG/EXR/HDR): the 8-bit metrics within, rmse, max, mae, "
         "ssim (float files sRGB-encoded first), and on linear values (8-bit files "
         "sRGB-decoded) relmse = mean((A-B)^2/(B^2+0.01)) and rmse_linear; exit 0 if they "

@@ -40,6 +40,8 @@ io::ViewSettings checked_view_settings(const io::ViewSettings& view) {
 CLI::App* add_convert_command(CLI::App& app, ConvertArgs& args) {
     CLI::App* cmd = app.add_subcommand(
         "convert",
+        "Convert a linear EXR/HDR render for display (sRGB or a Blender view)");
+    cmd->footer(
         "Convert a linear float image (.exr, .hdr, e.g. a glint render) to OUT: 8/16-bit "
         "formats get POV-Ray's sRGB encoding, or Blender's view transform with --view");
     cmd->add_option("IN", args.input, "Linear float image (.exr or .hdr)")->required();

@@ -12,7 +12,7 @@
 
 int main(int argc, char** argv) {
     using namespace glint::app;
-    CLI::App app("glint: renders POV-Ray 3.7 scenes", "glint");
+    CLI::App app("glint: renders POV-Ray 3.7 scenes and OBJ/MTL models", "glint");
     app.require_subcommand(1);
     app.set_version_flag("--version", "glint 0.1.0");
 

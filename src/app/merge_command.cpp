@@ -22,8 +22,9 @@
 namespace glint::app {
 
 CLI::App* add_merge_command(CLI::App& app, MergeArgs& args) {
-    CLI::App* cmd = app.add_subcommand(
-        "merge",
+    CLI::App* cmd =
+        app.add_subcommand("merge", "Join the parts of a render into the whole image, bit for bit");
+    cmd->footer(
         "Join the parts of a render (glint render --region, written by glint farm) into the "
         "whole image, bit for bit; refuses parts of other jobs or image sizes, overlaps and gaps");
     cmd->add_option("parts", args.parts, "The parts: PNG, TIFF or EXR files of one job")

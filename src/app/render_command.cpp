@@ -121,11 +121,13 @@ std::vector<std::string> take_pov_arguments(const std::vector<std::string>& argv
 }
 
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
-    CLI::App* cmd = app.add_subcommand(
-        "render",
-        "Render a POV-Ray scene to an image. POV-Ray's own switches (+W640 +H480 +A0.3 "
-        "+Iscene.pov +Oout.png +KFF10 ...) and .ini files (scene.ini, res.ini[Low]) are "
-        "accepted too; glint's flags win over them");
+    CLI::App* cmd =
+        app.add_subcommand("render", "Render a POV-Ray scene or an OBJ/MTL model to an image");
+    cmd->footer(
+        "SCENE is a POV-Ray scene (.pov) or an OBJ/MTL model (.obj: framed by a camera and lit "
+        "by a default rig). POV-Ray's own switches (+W640 +H480 +A0.3 +Iscene.pov +Oout.png "
+        "+KFF10 ...) and .ini files (scene.ini, res.ini[Low]) are accepted too; glint's flags "
+        "win over them");
     add_scene_options(*cmd, args.scene, /*scene_required=*/false);
     cmd->add_option("-o,--output", args.output,
                     "Output image; format from the extension: png, exr, tif, hdr, jpg "

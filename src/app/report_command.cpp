@@ -185,7 +185,8 @@ std::string format_number(double v) {
 
 CLI::App* add_report_command(CLI::App& app, ReportArgs& args) {
     CLI::App* cmd = app.add_subcommand(
-        "report",
+        "report", "Error against run time of the path tracer, beside a peer");
+    cmd->footer(
         "Error against run time: render SCENE with the path tracer at each --spp-steps count, "
         "compare each with --reference (relMSE = mean((x-r)^2/(r^2+0.01)), RMSE on linear "
         "values, SSIM of the sRGB 8-bit lumas), and write DIR/report.csv (renderer, spp, "

@@ -16,7 +16,7 @@
 namespace glint::app {
 
 void add_scene_options(CLI::App& cmd, SceneRequest& request, bool scene_required) {
-    cmd.add_option("SCENE", request.path, "POV-Ray scene file")->required(scene_required);
+    cmd.add_option("SCENE", request.path, "POV-Ray scene (.pov) or OBJ model (.obj)")->required(scene_required);
     cmd.add_option("-I,--include", request.include_dirs, "Include folder (repeatable)")
         ->allow_extra_args(false);  // one folder per -I, so `-I dir scene.pov` works
     cmd.add_option("--clock", request.clock, "Value of `clock` in the scene")

@@ -88,6 +88,25 @@ TEST_F(CliTest, NoSubcommandIsAUsageError) {
     EXPECT_EQ(run("--help").exit_code, 0);
 }
 
+TEST_F(CliTest, HelpSaysOneShortLinePerSubcommandAndNamesObj) {
+    RunResult r = run("--help");
+    ASSERT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.out.find("OBJ"), std::string::npos) << r.out;
+    const size_t list = r.out.find("Subcommands:");
+    ASSERT_NE(list, std::string::npos) << r.out;
+    std::istringstream lines(r.out.substr(list));
+    std::string line;
+    std::getline(lines, line);
+    int commands = 0;
+    while (std::getline(lines, line) && !line.empty()) {
+        ++commands;
+        EXPECT_LE(line.size(), 100u) << "a paragraph, not a line: " << line;
+    }
+    EXPECT_EQ(commands, 7) << r.out;  // render ir compare report convert merge farm
+    // The long explanations stay in each subcommand's own help.
+    EXPECT_NE(run("render --help").out.find("POV-Ray's own switches"), std::string::npos);
+}
+
 TEST_F(CliTest, CompareAgreeingImagesExitsZero) {
     glint::io::Rgb8Image a = flat(10, 10, 100);
     glint::io::Rgb8Image b = a;
