@@ -13,7 +13,6 @@ case is off by more than its tolerance (TOLERANCE, else --tolerance).
 """
 
 import argparse
-import importlib.util
 import math
 import os
 import subprocess
@@ -26,10 +25,9 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "tests", "cycles"))
 import make_scenes as ms  # noqa: E402
 
-_spec = importlib.util.spec_from_file_location(
-    "glint_materials", os.path.join(ROOT, "plugin", "blender", "glint_blender", "materials.py"))
-materials = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(materials)
+# The add-on's package, imported without enabling it (materials.py uses images.py beside it).
+sys.path.insert(0, os.path.join(ROOT, "plugin", "blender"))
+from glint_blender import materials as materials  # noqa: E402
 
 W, H = 96, 72
 ARGS = None

@@ -7,7 +7,6 @@ add-on does, runs rewrite_mtl and checks the statements glint will read and the 
 Exits 1 when a test fails.
 """
 
-import importlib.util
 import math
 import os
 import sys
@@ -17,10 +16,9 @@ import traceback
 import bpy
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-_spec = importlib.util.spec_from_file_location(
-    "glint_materials", os.path.join(ROOT, "plugin", "blender", "glint_blender", "materials.py"))
-M = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(M)
+# The add-on's package, imported without enabling it (materials.py uses images.py beside it).
+sys.path.insert(0, os.path.join(ROOT, "plugin", "blender"))
+from glint_blender import materials as M  # noqa: E402
 
 TMP = tempfile.mkdtemp(prefix="glint_test_materials_")
 

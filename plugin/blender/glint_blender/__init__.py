@@ -18,10 +18,12 @@ bl_info = {
 
 if "bpy" in locals():
     import importlib
-    for _m in (preferences, properties, runner, render_dirs, materials, exporter, engine, ui):  # noqa: F821
+    for _m in (preferences, properties, runner, render_dirs, images, materials,  # noqa: F821
+               exporter, engine, ui):
         importlib.reload(_m)
 else:
-    from . import preferences, properties, runner, render_dirs, materials, exporter, engine, ui
+    from . import (preferences, properties, runner, render_dirs, images, materials,
+                   exporter, engine, ui)
 
 import bpy  # noqa: E402
 

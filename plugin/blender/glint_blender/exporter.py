@@ -29,7 +29,7 @@ import shlex
 import bpy
 from mathutils import Vector
 
-from . import materials
+from . import images, materials
 
 SCENE_NAME = "scene"
 
@@ -253,7 +253,7 @@ def image_file(image, out_dir, warn):
 
 def _environment_text(env, strength, out_dir, warn, missing):
     image = env.image
-    problem = None if image is None else materials.image_problem(image)
+    problem = None if image is None else images.image_problem(image)
     if image is None or problem is not None:  # Cycles' magenta
         if image is None:
             warn("world: the Environment Texture has no image: the world renders magenta, as "
@@ -261,7 +261,7 @@ def _environment_text(env, strength, out_dir, warn, missing):
         else:
             missing.add(image, problem, "the world")  # one warning an image: missing.report
         return "background { color rgb %s }\n" % fmt(
-            tuple(c * strength for c in materials.MISSING_RGBA[:3]))
+            tuple(c * strength for c in images.MISSING_RGBA[:3]))
     if env.projection != 'EQUIRECTANGULAR':
         warn("world: Environment Texture projection %s is not supported (equirectangular "
              "only): the world renders black" % env.projection)
@@ -605,7 +605,7 @@ def export_frame(depsgraph, out_dir, warn):
 
     left_out_warnings(depsgraph, warn)
 
-    missing = materials.MissingImages()
+    missing = images.MissingImages()
     obj_path = os.path.join(out_dir, SCENE_NAME + ".obj")
     export_obj(depsgraph, obj_path)
     mtl_path = os.path.join(out_dir, SCENE_NAME + ".mtl")
