@@ -2,7 +2,9 @@
 //   token_stream.cpp  tokens from the #include stack and macro frames; errors; symbols
 //   directives.cpp    #declare, #include, #macro and macro calls, #if/#while/#for/#switch/#end
 //   file_directives.cpp  #fopen, #fclose, #read, #write
-//   expressions.cpp   float/vector/color/string expressions
+//   expressions.cpp   float/vector/color/string expressions: Parser's entry points, with
+//                     the grammar in expr_parser.h and the built-in functions in
+//                     builtin_functions.cpp
 //   materials.cpp     texture, pigment, finish, normal, interior, color maps
 //   patterns.cpp      pigment, normal and texture bodies and their pattern keywords
 //   pattern_grammar.cpp  pattern arguments and modifiers, warps, maps
