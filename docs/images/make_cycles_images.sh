@@ -1,5 +1,5 @@
 #!/bin/bash
-# Regenerates the README's path tracer pictures: for each Cycles cross-check scene
+# Regenerates docs/path-tracer.md's pictures: for each Cycles cross-check scene
 # (tests/cycles), glint's path tracer | Blender 3.4 Cycles | difference x4, side by side at
 # twice the 128x96 render size, written to docs/images/cycles_<name>.png. glint renders at
 # 1024 spp; the Cycles half is the committed reference (16 seeds x 256 spp). Both are linear

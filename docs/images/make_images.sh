@@ -1,5 +1,5 @@
 #!/bin/bash
-# Regenerates the README's comparison pictures: for each scene, glint | POV-Ray 3.7 | difference
+# Regenerates the comparison pictures (docs/compatibility.md, README.md): for each scene, glint | POV-Ray 3.7 | difference
 # side by side (320x240 each, no anti-aliasing, the golden-test setting), written to
 # docs/images/<name>_compare.png. The difference is |glint - POV-Ray| per channel, amplified
 # 8x so that a 2/255 error is visible. The POV-Ray half is the committed golden reference.
@@ -27,7 +27,7 @@ while read -r name path; do
         --tolerance 2 --min-fraction 0.99 || true))"
 done < <(golden_scenes "$root")
 
-# The demo scene as the README's title picture: glint at 480x360 with adaptive anti-aliasing.
+# The demo scene as the picture that opens docs/compatibility.md: glint at 480x360 with adaptive anti-aliasing.
 if [[ " ${names[*]} " == *" demo "* ]]; then
     "$glint" render "$root/scenes/demo.pov" -o "$work/demo_480.png" --width 480 --height 360 \
         --aa adaptive:0.3

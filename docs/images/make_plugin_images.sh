@@ -1,5 +1,5 @@
 #!/bin/bash
-# Regenerates the README's Blender add-on picture: for each scene of tests/plugin, the image
+# Regenerates docs/blender.md's add-on picture: for each scene of tests/plugin, the image
 # Blender saved from the glint add-on's render (256 spp) | Blender 3.4 Cycles (the committed
 # reference, 16 seeds x 256 spp) | |glint - Cycles| x4 in linear values, one row per scene at
 # twice the 128x96 render size, shown through the sRGB curve, written to

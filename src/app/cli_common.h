@@ -1,4 +1,4 @@
-// What every glint subcommand shares: the exit codes of the CLI contract (README lists them),
+// What every glint subcommand shares: the exit codes of the CLI contract (in docs/usage.md),
 // turning glint::Error into a message and an exit code, the interrupt flag set by
 // SIGINT/SIGTERM, and the include search path.
 #pragma once

@@ -27,7 +27,7 @@ struct SceneRequest {
     std::optional<double> initial_clock, final_clock;
     int initial_frame = 1, final_frame = 1, frame_number = 0;
     std::vector<std::pair<std::string, double>> declares;
-    // Resource limits (--max-*; README "Resource limits"): passing one is exit 4, never a hang
+    // Resource limits (--max-*; docs/usage.md): passing one is exit 4, never a hang
     // or an exhausted machine. Defaults are pov::ParseOptions's.
     struct Limits {
         long long loop_iterations = 10'000'000;

@@ -21,7 +21,7 @@ struct FileLoc {
     std::string to_string() const;
 };
 
-// What kind of failure: decides the CLI's exit code (README lists them).
+// What kind of failure: decides the CLI's exit code (docs/usage.md "Exit codes" lists them).
 enum class ErrorKind {
     Usage,        // bad command line
     Scene,        // the scene text is wrong (syntax, types, values)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Renders in parts without a scheduler (README "Render farm"): every AA mode and the path tracer
+# Renders in parts without a scheduler (docs/farm.md): every AA mode and the path tracer
 # rendered as regions (cut through the driver's 32-pixel blocks) and joined with glint merge
 # give the single-process render bit for bit; merge refuses overlaps, gaps, parts of another
 # job, missing parts and a format change, writing nothing; --skip-existing skips a complete

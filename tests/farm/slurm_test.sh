@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# glint farm on a real Slurm (README "Render farm"): starts a one-node cluster on localhost
+# glint farm on a real Slurm (docs/farm.md): starts a one-node cluster on localhost
 # (munged, slurmctld and slurmd, with a slurm.conf written here, nothing of the machine's own),
 # submits a 4-tile render and a 3-frame animation with `glint farm submit`, waits for both, and
 # checks that the merged image and the frames equal single-process renders bit for bit; then

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs the unit and error suites of a GLINT_SANITIZE=ON build (README.md "Sanitizers") and fails
+# Runs the unit and error suites of a GLINT_SANITIZE=ON build (docs/testing.md "Sanitizers") and fails
 # on any AddressSanitizer, LeakSanitizer or UBSan report. Reports go to files in
 # BUILD/sanitizer-logs rather than to stderr, so that one from a glint process whose exit code a
 # test does not look at (or whose stderr it swallows) still fails the run; every report found is
