@@ -20,11 +20,11 @@ bool Parser::handle_directive(const Token& d, int file) {
     } else if (k == "include") {
         handle_include(dloc);
     } else if (k == "if") {
-        handle_if(dloc, 0);
+        handle_if(dloc, Conditional::If);
     } else if (k == "ifdef") {
-        handle_if(dloc, 1);
+        handle_if(dloc, Conditional::Ifdef);
     } else if (k == "ifndef") {
-        handle_if(dloc, 2);
+        handle_if(dloc, Conditional::Ifndef);
     } else if (k == "else" || k == "elseif") {
         handle_else(d);
     } else if (k == "end") {
@@ -385,9 +385,9 @@ std::string Parser::skip_block(bool stop_at_else, bool stop_at_case, const FileL
     }
 }
 
-void Parser::handle_if(const FileLoc& dloc, int mode) {
+void Parser::handle_if(const FileLoc& dloc, Conditional kind) {
     bool c;
-    if (mode == 0) {
+    if (kind == Conditional::If) {
         c = parse_cond_paren() != 0;
     } else {
         const Token& p = raw();
@@ -406,7 +406,7 @@ void Parser::handle_if(const FileLoc& dloc, int mode) {
             if (!q.is_symbol(')')) fail("expected ')' after the identifier, got " + got(q));
             c = s != nullptr;
         }
-        if (mode == 2) c = !c;
+        if (kind == Conditional::Ifndef) c = !c;
     }
     for (;;) {
         if (c) {

@@ -369,14 +369,14 @@ public:
         // An object glint left out (its warning said so) is empty here: no bounds, no hits.
         scene::Scene one;
         if (keep->left_out.empty()) one = p_.one_object_scene(*keep);
-        Vec3 lo, hi;
         if (f != "trace") {
             p_.expect(")", ("to close " + f + "()").c_str());
-            bool ok = p_.options.object_query(one, kObjectBounds, Vec3(), Vec3(), lo, hi);
+            const scene::ObjectAnswer box =
+                p_.options.object_query(one, scene::ObjectQuery::Bounds, Vec3(), Vec3());
             // POV-Ray's bounding boxes of unbounded objects are large, not infinite.
             auto clamp = [](double v) { return std::clamp(v, -1e10, 1e10); };
-            Vec3 r = f == "min_extent" ? lo : hi;
-            if (!ok) r = Vec3(0, 0, 0);
+            Vec3 r = f == "min_extent" ? box.lo : box.hi;
+            if (!box.found) r = Vec3(0, 0, 0);
             return Value(Num::vec(Vec3(clamp(r.x), clamp(r.y), clamp(r.z))));
         }
         p_.expect(",", "after the object in trace()");
@@ -394,10 +394,13 @@ public:
         }
         p_.expect(")", "to close trace()");
         (void)fn_loc;
-        bool hit = length(dir) > 0 && p_.options.object_query(one, kObjectTrace, from, dir, lo, hi);
-        if (!hit) lo = hi = Vec3(0, 0, 0);
-        if (!normal_var.empty()) p_.assign_existing_or_declare(normal_var, Num::vec(hi), nloc);
-        return Value(Num::vec(lo));
+        scene::ObjectAnswer hit;
+        if (length(dir) > 0)
+            hit = p_.options.object_query(one, scene::ObjectQuery::Trace, from, dir);
+        if (!hit.found) hit.point = hit.normal = Vec3(0, 0, 0);
+        if (!normal_var.empty())
+            p_.assign_existing_or_declare(normal_var, Num::vec(hit.normal), nloc);
+        return Value(Num::vec(hit.point));
     }
 
     Value function(const std::string& f);  // builtin_functions.cpp

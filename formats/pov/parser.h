@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/log.h"
+#include "scene/object_query.h"
 #include "scene/scene.h"
 
 namespace glint::pov {
@@ -63,16 +64,11 @@ struct ParseOptions {
     void (*pattern_hook)(const void* user, const scene::Function& f, const Vec3& p,
                          double out[5]) = nullptr;
     const void* hook_user = nullptr;
-    // trace() and min_extent()/max_extent() at parse time: the application answers with the
-    // renderer's geometry for `one`, a scene holding only the object. kind kObjectBounds: lo/hi
-    // get the bounding box (false when empty); kObjectTrace: from `a` along `b`, true on a hit
-    // with the point in lo and the normal in hi. Unset: those functions are not supported.
-    std::function<bool(const scene::Scene& one, int kind, const Vec3& a, const Vec3& b, Vec3& lo,
-                       Vec3& hi)>
-        object_query;
+    // trace() and min_extent()/max_extent() at parse time (scene/object_query.h): the
+    // application answers with the renderer's geometry. Unset: those functions are not
+    // supported.
+    scene::ObjectQueryFn object_query;
 };
-constexpr int kObjectBounds = 0;
-constexpr int kObjectTrace = 1;
 
 // Throws glint::Error (ErrorKind::Scene or MissingFile) with the FileLoc of the problem.
 scene::Scene parse_file(const std::string& path, const ParseOptions& options, Diagnostics& diag);

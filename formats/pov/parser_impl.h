@@ -303,7 +303,8 @@ private:
     void handle_include(const FileLoc& dloc);
     void handle_macro_def(const FileLoc& dloc);
     void call_macro(const Macro& m, const FileLoc& loc);
-    void handle_if(const FileLoc& dloc, int mode);  // 0 #if, 1 #ifdef, 2 #ifndef
+    enum class Conditional { If, Ifdef, Ifndef };
+    void handle_if(const FileLoc& dloc, Conditional kind);
     void handle_else(const Token& d);
     void handle_end(const FileLoc& dloc);
     void handle_while(const FileLoc& dloc);

@@ -74,6 +74,5 @@ const ImageLibrary& image_library() {
     return *lib;
 }
 
-bool image_library_loaded() { return g_library.load(std::memory_order_acquire) != nullptr; }
 
 }  // namespace glint

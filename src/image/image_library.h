@@ -86,7 +86,5 @@ public:
 // when none loads.
 const ImageLibrary& image_library();
 
-// Whether the module has been loaded in this process (for tests of start-up cost).
-bool image_library_loaded();
 
 }  // namespace glint

@@ -6,26 +6,27 @@
 
 namespace glint::render {
 
-bool answer_object_query(const scene::Scene& one, int kind, const Vec3& a, const Vec3& b, Vec3& lo,
-                         Vec3& hi) {
-    if (one.objects.empty()) return false;
+scene::ObjectAnswer answer_object_query(const scene::Scene& one, scene::ObjectQuery query,
+                                        const Vec3& origin, const Vec3& direction) {
+    scene::ObjectAnswer answer;
+    if (one.objects.empty()) return answer;
     Diagnostics quiet;  // the scene's own parse reports problems with the object
     std::unique_ptr<Geometry> g = build_geometry(one, scene::analyze(one), quiet);
-    if (kind == 0) {
+    if (query == scene::ObjectQuery::Bounds) {
         Bounds3 box = g->bounds();
-        if (box.empty()) return false;
-        lo = box.lo;
-        hi = box.hi;
-        return true;
+        if (box.empty()) return answer;
+        answer.found = true;
+        answer.lo = box.lo;
+        answer.hi = box.hi;
+        return answer;
     }
-    Ray ray{a, normalize(b), kInfinity};
+    Ray ray{origin, normalize(direction), kInfinity};
     Hit hit;
-    if (!g->intersect(ray, &hit)) return false;
-    lo = hit.p;
-    // POV-Ray's trace returns the object's normal at the hit, oriented by the object (not
-    // flipped toward the ray).
-    hi = hit.n;
-    return true;
+    if (!g->intersect(ray, &hit)) return answer;
+    answer.found = true;
+    answer.point = hit.p;
+    answer.normal = hit.n;
+    return answer;
 }
 
 void parse_time_pattern(const void*, const scene::Function& f, const Vec3& p, double out[5]) {

@@ -9,6 +9,7 @@
 #include "image/image.h"
 #include "render/options.h"
 #include "scene/features.h"
+#include "scene/object_query.h"
 #include "scene/scene.h"
 
 namespace glint::render {
@@ -27,21 +28,16 @@ struct RenderResult {
 
 RenderResult render(const scene::Scene& scene, const RenderOptions& options, Diagnostics& diag);
 
-// Questions the scene language asks about one object while parsing: POV-Ray's trace() and
-// min_extent()/max_extent(). The importer cannot see the renderer, so the application passes
-// answer_object_query as ParseOptions::object_query; it builds the renderer's geometry for a
-// scene holding only that object (object_query.cpp).
-// kind 0 (bounds): lo/hi = the world bounding box; false when empty.
-// kind 1 (trace): the first hit from `a` along `b` (any length); true on a hit with the point
-// in lo and the surface normal (facing the ray's origin side as POV-Ray's trace returns the
-// object's normal) in hi.
-bool answer_object_query(const scene::Scene& one, int kind, const Vec3& a, const Vec3& b, Vec3& lo,
-                         Vec3& hi);
+// The scene language's questions about one object while parsing (POV-Ray's trace(),
+// min_extent(), max_extent(); scene/object_query.h), answered with the renderer's geometry for
+// a scene holding only that object (object_query.cpp). The application passes it to the
+// importer as ParseOptions::object_query.
+scene::ObjectAnswer answer_object_query(const scene::Scene& one, scene::ObjectQuery query,
+                                        const Vec3& origin, const Vec3& direction);
 
 // ParseOptions::pattern_hook: a pattern function's value (out[0]) or a pigment function's color
 // (out = rgbft) when the scene calls one while parsing (shapes.inc's HF macros do). `user` is
 // unused; functions called from inside such a pattern are not available there.
 void parse_time_pattern(const void* user, const scene::Function& f, const Vec3& p, double out[5]);
-
 
 }  // namespace glint::render
