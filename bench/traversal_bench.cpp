@@ -25,7 +25,7 @@
 
 #include "core/log.h"
 #include "render/accel/huge_pages.h"
-#include "render/shapes/mesh_prim.h"
+#include "render/shapes/mesh/mesh_prim.h"
 #include "scene/mesh.h"
 
 #ifdef GLINT_HAVE_EMBREE

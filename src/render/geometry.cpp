@@ -12,8 +12,8 @@
 #include "render/accel/bvh.h"
 #include "render/accel/wide_bvh.h"
 #include "render/materials/opacity.h"
-#include "render/shapes/mesh_kernels.h"
-#include "render/shapes/mesh_prim.h"
+#include "render/shapes/mesh/mesh_kernels.h"
+#include "render/shapes/mesh/mesh_prim.h"
 #include "render/shapes/object_node.h"
 
 namespace glint::render {

@@ -13,9 +13,9 @@
 #include "core/float.h"
 #include "render/accel/bvh.h"
 #include "render/geometry.h"
-#include "render/shapes/mesh_prim.h"
+#include "render/shapes/mesh/mesh_prim.h"
 #include "render/shapes/shapes.h"
-#include "render/shapes/triangle.h"
+#include "render/shapes/mesh/triangle.h"
 #include "scene/features.h"
 #include "stability_support.h"
 

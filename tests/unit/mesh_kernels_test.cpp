@@ -1,4 +1,4 @@
-// The mesh kernels (render/shapes/mesh_kernels.h) and the mesh primitive on top of them: the
+// The mesh kernels (render/shapes/mesh/mesh_kernels.h) and the mesh primitive on top of them: the
 // AVX2 and the portable build give the same hits bit for bit, and both give the hits of a brute
 // force over every triangle with the scalar watertight test, through the eight-wide BVH.
 #include <gtest/gtest.h>
@@ -13,9 +13,9 @@
 #include "core/log.h"
 #include "render/accel/bvh.h"
 #include "render/accel/wide_bvh.h"
-#include "render/shapes/mesh_kernels.h"
-#include "render/shapes/mesh_prim.h"
-#include "render/shapes/triangle.h"
+#include "render/shapes/mesh/mesh_kernels.h"
+#include "render/shapes/mesh/mesh_prim.h"
+#include "render/shapes/mesh/triangle.h"
 
 namespace glint::render {
 namespace {

@@ -7,10 +7,10 @@
 
 #include "core/float.h"
 #include "geom_test_util.h"
-#include "render/shapes/mesh_prim.h"
+#include "render/shapes/mesh/mesh_prim.h"
 #include "render/shapes/object_node.h"
 #include "render/shapes/shapes.h"
-#include "render/shapes/triangle.h"
+#include "render/shapes/mesh/triangle.h"
 
 namespace glint {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <filesystem>
 
-#include "render/shapes/font.h"
-#include "render/shapes/text.h"
+#include "render/shapes/text/font.h"
+#include "render/shapes/text/text.h"
 #include "unit/pov_test_util.h"
 
 namespace glint {

@@ -5,9 +5,9 @@
 
 #include "core/error.h"
 #include "core/float.h"
-#include "render/shapes/mesh_prim.h"
+#include "render/shapes/mesh/mesh_prim.h"
 #include "render/shapes/shapes.h"
-#include "render/shapes/text.h"
+#include "render/shapes/text/text.h"
 
 namespace glint::render {
 

@@ -1,4 +1,4 @@
-#include "render/shapes/poly_roots.h"
+#include "render/shapes/polynomial/poly_roots.h"
 
 #include <cmath>
 

@@ -6,7 +6,7 @@
 // `sturm` takes the same path: it is already the robust one.
 #include <cmath>
 
-#include "render/shapes/poly_roots.h"
+#include "render/shapes/polynomial/poly_roots.h"
 #include "render/shapes/shapes.h"
 
 namespace glint::render {

@@ -1,6 +1,6 @@
 // triangle and smooth_triangle (POV-Ray 3.7 manual 2.4.2.5 and 2.4.2.4), and the watertight
 // test they share with meshes.
-#include "render/shapes/triangle.h"
+#include "render/shapes/mesh/triangle.h"
 
 #include <cmath>
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "render/shapes/poly_solve.h"
+#include "render/shapes/polynomial/poly_solve.h"
 #include "render/shapes/shapes.h"
 
 namespace glint::render {

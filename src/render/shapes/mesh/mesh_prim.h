@@ -8,7 +8,7 @@
 
 #include "core/log.h"
 #include "core/transform.h"
-#include "render/shapes/mesh_kernels.h"
+#include "render/shapes/mesh/mesh_kernels.h"
 #include "render/shapes/primitive.h"
 #include "scene/mesh.h"
 

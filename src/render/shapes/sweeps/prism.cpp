@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "render/shapes/shapes.h"
-#include "render/shapes/spline2d.h"
+#include "render/shapes/sweeps/spline2d.h"
 
 namespace glint::render {
 namespace {

@@ -4,12 +4,12 @@
 // walls where its projection onto the xy-plane meets a contour segment (a line or a
 // quadratic: a ruled surface swept along z). Tolerances and tests follow POV-Ray's
 // GlyphIntersect and Inside_Glyph so that the same rays hit.
-#include "render/shapes/text.h"
+#include "render/shapes/text/text.h"
 
 #include <cmath>
 
 #include "core/error.h"
-#include "render/shapes/font.h"
+#include "render/shapes/text/font.h"
 
 namespace glint::render {
 namespace {

@@ -2,4 +2,4 @@
 // only where the CPU has AVX2).
 #define GLINT_SIMD_NS kernels_avx2
 #define GLINT_SIMD_NAME "avx2"
-#include "render/shapes/mesh_kernels.inc"
+#include "render/shapes/mesh/mesh_kernels.inc"

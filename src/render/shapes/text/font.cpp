@@ -2,7 +2,7 @@
 // glyph outlines; the layout numbers POV-Ray takes straight from the font's tables (glyph
 // header bounds, hmtx advance and left side bearing, format 0 kern pairs, cmap choice) are
 // read from the raw tables so that its quirks can be reproduced.
-#include "render/shapes/font.h"
+#include "render/shapes/text/font.h"
 
 #include <ft2build.h>
 #include FT_FREETYPE_H

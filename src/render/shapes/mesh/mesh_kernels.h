@@ -13,7 +13,7 @@
 
 #include "render/accel/wide_bvh.h"
 #include "render/ray.h"
-#include "render/shapes/triangle.h"
+#include "render/shapes/mesh/triangle.h"
 
 namespace glint::render {
 

@@ -1,4 +1,4 @@
-#include "render/shapes/mesh_kernels.h"
+#include "render/shapes/mesh/mesh_kernels.h"
 
 namespace glint::render {
 namespace kernels_base {

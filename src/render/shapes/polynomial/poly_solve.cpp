@@ -1,4 +1,4 @@
-#include "render/shapes/poly_solve.h"
+#include "render/shapes/polynomial/poly_solve.h"
 
 #include <algorithm>
 #include <cmath>

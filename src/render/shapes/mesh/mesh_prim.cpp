@@ -1,6 +1,6 @@
 // mesh / mesh2 (POV-Ray 3.7 manual 2.4.2.2-3) and OBJ meshes: the faces of a scene::Mesh
 // behind their own BVH in object space.
-#include "render/shapes/mesh_prim.h"
+#include "render/shapes/mesh/mesh_prim.h"
 
 #include <array>
 #include <cstring>
@@ -12,8 +12,8 @@
 #include "render/accel/huge_pages.h"
 #include "render/shapes/object_node.h"
 #include "render/accel/wide_bvh.h"
-#include "render/shapes/mesh_kernels.h"
-#include "render/shapes/triangle.h"
+#include "render/shapes/mesh/mesh_kernels.h"
+#include "render/shapes/mesh/triangle.h"
 
 namespace glint::render {
 namespace {

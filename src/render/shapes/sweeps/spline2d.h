@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "core/math.h"
-#include "render/shapes/poly_solve.h"
+#include "render/shapes/polynomial/poly_solve.h"
 #include "scene/shape.h"
 
 namespace glint::render {
