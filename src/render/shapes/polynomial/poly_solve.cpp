@@ -37,8 +37,10 @@ double refine(const double* c, int degree, double a, double b, double fa) {
     return x;
 }
 
-int roots_rec(const double* c, int degree, double lo, double hi, double* out) {
-    if (degree <= 0) return 0;
+}  // namespace
+
+int real_roots(const double* c, int degree, double lo, double hi, double* out) {
+    if (degree <= 0 || !(lo <= hi)) return 0;
     if (degree == 1) {
         if (c[1] == 0) return 0;
         double r = -c[0] / c[1];
@@ -51,7 +53,7 @@ int roots_rec(const double* c, int degree, double lo, double hi, double* out) {
     double d[kMaxSolveDegree];
     for (int i = 1; i <= degree; ++i) d[i - 1] = i * c[i];
     double crit[kMaxSolveDegree];
-    int nc = roots_rec(d, degree - 1, lo, hi, crit);
+    int nc = real_roots(d, degree - 1, lo, hi, crit);
     double pts[kMaxSolveDegree + 2];
     int np = 0;
     pts[np++] = lo;
@@ -73,8 +75,6 @@ int roots_rec(const double* c, int degree, double lo, double hi, double* out) {
     return n;
 }
 
-}  // namespace
-
 int solve_in_interval(const double* c, int degree, double lo, double hi, double* roots) {
     if (!(lo <= hi) || degree > kMaxSolveDegree) return 0;
     // Drop leading terms that cannot change the value on [lo, hi] beyond rounding.
@@ -91,7 +91,7 @@ int solve_in_interval(const double* c, int degree, double lo, double hi, double*
     if (!(biggest > 0)) return 0;
     while (degree > 0 && mag[degree] <= 1e-15 * biggest) --degree;
     if (degree == 0) return 0;
-    return roots_rec(c, degree, lo, hi, roots);
+    return real_roots(c, degree, lo, hi, roots);
 }
 
 }  // namespace glint::render

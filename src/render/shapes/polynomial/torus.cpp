@@ -2,11 +2,11 @@
 // radius r: (x^2 + y^2 + z^2 + R^2 - r^2)^2 = 4 R^2 (x^2 + z^2).
 // The quartic is set up in a well-scaled frame: unit direction, origin moved to where the ray
 // enters the bounding sphere, so coefficients are O((R + r)^k) whatever the ray. Roots come from
-// the derivative-splitting solver (poly_roots.h); hit points are reprojected onto the tube.
+// the derivative-splitting solver (poly_solve.h); hit points are reprojected onto the tube.
 // `sturm` takes the same path: it is already the robust one.
 #include <cmath>
 
-#include "render/shapes/polynomial/poly_roots.h"
+#include "render/shapes/polynomial/poly_solve.h"
 #include "render/shapes/shapes.h"
 
 namespace glint::render {
