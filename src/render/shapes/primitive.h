@@ -110,6 +110,20 @@ public:
     virtual Vec2 uv_at(const Vec3&) const { return {}; }
     // POV-Ray's inside test (CSG); shapes without an inside (triangles, discs) return false.
     virtual bool inside(const Vec3& p) const = 0;
+
+protected:
+    // intersect() for shapes whose hits all come from one pass (root finding over a sweep,
+    // a polynomial, glyph outlines): the nearest of intersect_all()'s, the first of equal t.
+    bool nearest_of_all(const Ray& ray, double tmax, LocalHit* hit) const {
+        HitList hits;
+        intersect_all(ray, tmax, &hits);
+        if (hits.empty()) return false;
+        const LocalHit* best = &hits[0];
+        for (const LocalHit& h : hits)
+            if (h.t < best->t) best = &h;
+        *hit = *best;
+        return true;
+    }
 };
 
 // Hit points refined onto the surface keep an error bound proportional to their magnitude.

@@ -58,14 +58,7 @@ public:
     Bounds3 bounds() const override { return bounds_; }
 
     bool intersect(const Ray& ray, double tmax, LocalHit* hit) const override {
-        HitList hits;
-        intersect_all(ray, tmax, &hits);
-        if (hits.empty()) return false;
-        const LocalHit* best = &hits[0];
-        for (const auto& h : hits)
-            if (h.t < best->t) best = &h;
-        *hit = *best;
-        return true;
+        return nearest_of_all(ray, tmax, hit);
     }
 
     void intersect_all(const Ray& ray, double tmax, HitList* hits) const override {

@@ -144,14 +144,7 @@ public:
     Bounds3 bounds() const override { return bounds_; }
 
     bool intersect(const Ray& ray, double tmax, LocalHit* hit) const override {
-        HitList all;
-        intersect_all(ray, tmax, &all);
-        if (all.empty()) return false;
-        const LocalHit* best = &all[0];
-        for (const LocalHit& h : all)
-            if (h.t < best->t) best = &h;
-        *hit = *best;
-        return true;
+        return nearest_of_all(ray, tmax, hit);
     }
 
     void intersect_all(const Ray& ray, double tmax, HitList* hits) const override {
