@@ -19,10 +19,19 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/parts.h"
-#include "app/pov_options.h"
+#include "formats/pov/command_line.h"
 #include "core/error.h"
 
 namespace glint::app {
+
+// POV-Ray's options (formats/pov/command_line.h).
+using pov::AnimationPlan;
+using pov::PovFrame;
+using pov::PovSettings;
+using pov::apply_frame_range;
+using pov::frame_output_name;
+using pov::plan_animation;
+using pov::read_pov_arguments;
 
 CLI::App* add_farm_command(CLI::App& app, FarmArgs& args) {
     CLI::App* farm = app.add_subcommand(

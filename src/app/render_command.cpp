@@ -13,7 +13,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/parts.h"
-#include "app/pov_options.h"
+#include "formats/pov/command_line.h"
 #include "app/scene_loading.h"
 #include "image/image_library.h"
 #include "io/color_encoding.h"
@@ -25,6 +25,18 @@
 #include "scene/features.h"
 
 namespace glint::app {
+
+// POV-Ray's options (formats/pov/command_line.h).
+using pov::AnimationPlan;
+using pov::PovFrame;
+using pov::PovSettings;
+using pov::SplitArgs;
+using pov::apply_frame_range;
+using pov::extension_for_output_type;
+using pov::frame_output_name;
+using pov::plan_animation;
+using pov::read_pov_arguments;
+using pov::split_render_args;
 
 namespace {
 

@@ -14,11 +14,10 @@
 #include "core/error.h"
 #include "io/image_compare.h"
 
-// The CLI is an executable, not a library the tests link: its option code is compiled here.
-#include "app/pov_options.cpp"  // NOLINT(bugprone-suspicious-include)
+#include "formats/pov/command_line.h"
 
 namespace fs = std::filesystem;
-using namespace glint::app;
+using namespace glint::pov;
 
 namespace {
 

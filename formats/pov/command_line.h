@@ -3,7 +3,8 @@
 // and mapped onto glint's render flags; and POV-Ray's internal animation loop (Initial_Frame ..
 // Final_Frame with the clock running from Initial_Clock to Final_Clock). Reference: POV-Ray 3.7
 // manual 3.2 "Command-Line and INI-File Options" and 2.2.8 "Using INI Files".
-// Used by main.cpp (splitting the arguments) and render_command.cpp (merging and the frames).
+// Part of the POV-Ray importer: the grammar of POV-Ray's options; the CLI (src/app: main.cpp,
+// render_command.cpp, farm_command.cpp) maps them onto glint's flags.
 #pragma once
 
 #include <optional>
@@ -11,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-namespace glint::app {
+namespace glint::pov {
 
 // What POV-Ray options set. Unset fields leave glint's flags and defaults alone.
 struct PovSettings {
@@ -94,4 +95,4 @@ std::string frame_output_name(const std::string& output, int frame, int digits);
 // for the types glint cannot write (T, C targa, P ppm, B bmp, S system).
 std::string extension_for_output_type(char type);
 
-}  // namespace glint::app
+}  // namespace glint::pov

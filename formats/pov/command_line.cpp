@@ -1,4 +1,4 @@
-#include "app/pov_options.h"
+#include "formats/pov/command_line.h"
 
 #include <algorithm>
 #include <cctype>
@@ -9,7 +9,7 @@
 
 #include "core/error.h"
 
-namespace glint::app {
+namespace glint::pov {
 
 namespace {
 
@@ -533,4 +533,4 @@ std::string extension_for_output_type(char type) {
     }
 }
 
-}  // namespace glint::app
+}  // namespace glint::pov
