@@ -47,8 +47,8 @@ struct RenderArgs {
     // --view/--look/--exposure/--gamma/--ocio-config: Blender's color management for 8-bit
     // output (convert_command.cpp: add_view_options).
     io::ViewSettings view;
-    // POV-Ray switches and .ini files (formats/pov/command_line.h), in command-line order. glint's own
-    // flags, where given, win over them; `given` records which were.
+    // POV-Ray switches and .ini files (formats/pov/command_line.h), in command-line order.
+    // glint's own flags, where given, win over them; `given` records which were.
     std::vector<std::string> pov_args;
     struct {
         bool width = false, height = false, aa = false, threads = false, clock = false;

@@ -21,7 +21,8 @@ struct SceneRequest {
     double clock = 0;
     int width = 320;
     int height = 240;
-    // POV-Ray's animation identifiers and Declare=Name=Value (formats/pov/command_line.h sets these).
+    // POV-Ray's animation identifiers and Declare=Name=Value (set from POV-Ray's options,
+    // formats/pov/command_line.h).
     bool clock_on = false;
     double clock_delta = 1;
     std::optional<double> initial_clock, final_clock;
