@@ -5,7 +5,6 @@
 #include <cmath>
 #include <unordered_set>
 
-#include "formats/obj/obj_importer.h"
 #include "formats/pov/literal_list.h"
 #include "formats/pov/parser_impl.h"
 #include "formats/pov/solids.h"
@@ -55,7 +54,7 @@ void transform_child_textures(PovObject& o, const Transform& t) {
 
 }  // namespace
 
-// blender_light.cpp: after the keyword `blender_light` (at kloc).
+// extensions.cpp: after the keyword `blender_light` (at kloc).
 scene::Light parse_blender_light(Parser& p, const FileLoc& kloc);
 
 bool Parser::is_object_keyword(const Token& t) const {
@@ -499,41 +498,8 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
         // POV-Ray turns every text object by 0.001 degrees about each axis "to fix cracks in
         // text that lies along an axis"; the same rays must hit the same glyph edges.
         po.obj.transform = Transform::rotate_xyz_degrees(Vec3(0.001, 0.001, 0.001));
-    } else if (w == "obj_file") {
-        // glint extension: obj_file { "model.obj" [transforms] [texture override] }.
-        peek();
-        FileLoc floc = loc();
-        std::string file = parse_string();
-        std::string path = resolve_file(file, floc);
-        const size_t objects_before = scene.objects.size();
-        const size_t meshes_before = scene.meshes.size();
-        // OBJ is right-handed and y-up; mirroring z shows the model as authored in POV-Ray's
-        // left-handed space (as the model viewer does).
-        obj::import_obj(path, scene, Transform::scale(Vec3(1, 1, -1)), -1, diag);
-        for (size_t m = meshes_before; m < scene.meshes.size(); ++m)
-            triangles_ += static_cast<long long>(scene.meshes[m].faces.size());
-        if (triangles_ > options.max_triangles)
-            fail_limit(floc,
-                       "the scene has more than " + std::to_string(options.max_triangles) +
-                           " mesh triangles",
-                       "--max-triangles");
-        std::vector<scene::Object> parts(scene.objects.begin() + objects_before,
-                                         scene.objects.end());
-        scene.objects.resize(objects_before);
-        if (parts.empty()) fail_at(floc, "'" + file + "' has no faces");
-        po.obj.shape = scene::Csg{};
-        for (auto& part : parts) {
-            PovObject child;
-            child.obj = std::move(part);
-            po.children.push_back(std::move(child));
-        }
-        parse_object_mods(po, w.c_str(), o);
-        if (po.texture) {
-            // A texture given here replaces the MTL materials of every face.
-            for (size_t m = meshes_before; m < scene.meshes.size(); ++m)
-                for (auto& f : scene.meshes[m].faces) f.material = -1;
-            for (auto& c : po.children) c.obj.material = -1;
-        }
+    } else if (w == "obj_file") {  // glint's extension (extensions.cpp)
+        parse_obj_file(po, o);
         out = std::move(po);
         return true;
     } else if (w == "light_source") {

@@ -9,6 +9,7 @@
 //   patterns.cpp      pigment, normal and texture bodies and their pattern keywords
 //   pattern_grammar.cpp  pattern arguments and modifiers, warps, maps
 //   objects.cpp       shapes, CSG, meshes, lights, object modifiers
+//   extensions.cpp    glint's own: blender_light and obj_file
 //   camera.cpp        camera resolution, global_settings, background, sky_sphere
 //   parser.cpp        the top-level loop and placement of objects into the scene
 // Internal to formats/pov; the public entry points are in parser.h.
@@ -250,6 +251,8 @@ public:
     // Parses an object statement whose keyword was just read; false if `kw` is not one.
     bool parse_object(const Token& kw, PovObject& out);
     void parse_object_mods(PovObject& o, const char* what, const FileLoc& opened);
+    // glint's extension obj_file (extensions.cpp), after its opening brace.
+    void parse_obj_file(PovObject& po, const FileLoc& opened);
     void apply_transform(PovObject& o, const Transform& t);
     // `looks_like`, when given, receives the light's looks_like object (placed at the light).
     void parse_light_body(scene::Light& l, std::optional<PovObject>* looks_like = nullptr);

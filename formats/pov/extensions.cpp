@@ -1,9 +1,13 @@
-// `blender_light { TYPE items }`: a Blender 3.4 light as the glint Blender add-on writes it
-// (GRAMMAR.md "glint extensions", docs/pbr-mapping.md "Blender lights"). Every item is
-// optional (Blender's defaults), each may be given once, and only for the types it applies to.
+// glint's own extensions to the POV-Ray language (GRAMMAR.md "glint extensions"), kept apart
+// from POV-Ray's grammar:
+// - `blender_light { TYPE items }`: a Blender 3.4 light as the glint Blender add-on writes it
+//   (docs/pbr-mapping.md "Blender lights"). Every item is optional (Blender's defaults), each
+//   may be given once, and only for the types it applies to.
+// - `obj_file { "model.obj" ... }`: an OBJ/MTL model placed as one object.
 #include <cmath>
 #include <set>
 
+#include "formats/obj/obj_importer.h"
 #include "formats/pov/parser_impl.h"
 
 namespace glint::pov {
@@ -149,6 +153,45 @@ scene::Light parse_blender_light(Parser& p, const FileLoc& kloc) {
         p.fail_at(kloc, "blender_light area: axis_x and axis_y must not be parallel");
     l.blender = b;
     return l;
+}
+
+// obj_file { "model.obj" [transforms] [texture { ... }] }, after its opening brace (at
+// `opened`): the OBJ/MTL model as one object, a union of its OBJ objects. A texture given here
+// replaces the MTL materials of every face.
+void Parser::parse_obj_file(PovObject& po, const FileLoc& opened) {
+    peek();
+    FileLoc floc = loc();
+    std::string file = parse_string();
+    std::string path = resolve_file(file, floc);
+    const size_t objects_before = scene.objects.size();
+    const size_t meshes_before = scene.meshes.size();
+    // OBJ is right-handed and y-up; mirroring z shows the model as authored in POV-Ray's
+    // left-handed space (as the model viewer does).
+    obj::import_obj(path, scene, Transform::scale(Vec3(1, 1, -1)), -1, diag);
+    for (size_t m = meshes_before; m < scene.meshes.size(); ++m)
+        triangles_ += static_cast<long long>(scene.meshes[m].faces.size());
+    if (triangles_ > options.max_triangles)
+        fail_limit(floc,
+                   "the scene has more than " + std::to_string(options.max_triangles) +
+                       " mesh triangles",
+                   "--max-triangles");
+    std::vector<scene::Object> parts(scene.objects.begin() + objects_before,
+                                     scene.objects.end());
+    scene.objects.resize(objects_before);
+    if (parts.empty()) fail_at(floc, "'" + file + "' has no faces");
+    po.obj.shape = scene::Csg{};
+    for (auto& part : parts) {
+        PovObject child;
+        child.obj = std::move(part);
+        po.children.push_back(std::move(child));
+    }
+    parse_object_mods(po, "obj_file", opened);
+    if (po.texture) {
+        // A texture given here replaces the MTL materials of every face.
+        for (size_t m = meshes_before; m < scene.meshes.size(); ++m)
+            for (auto& f : scene.meshes[m].faces) f.material = -1;
+        for (auto& c : po.children) c.obj.material = -1;
+    }
 }
 
 }  // namespace glint::pov
