@@ -223,15 +223,11 @@ def test_animation(glint, work):
     print("animation: 3 frames, each equal to its export's CLI re-render, all different")
 
 
-INSTALL_SCRIPT = """
-import sys, addon_utils, bpy
-zip_path, glint, out = sys.argv[sys.argv.index("--") + 1:]
-bpy.ops.preferences.addon_install(filepath=zip_path)
-addon_utils.modules_refresh()
-assert addon_utils.enable("glint_blender", default_set=True, handle_error=None) is not None
-bpy.context.preferences.addons["glint_blender"].preferences.binary = glint
-scene = bpy.context.scene  # the factory startup scene: cube, camera, (light: removed here,
-bpy.data.objects.remove(bpy.data.objects["Light"])  # lights have tests of their own)
+# Renders the factory startup scene's cube under a grey world (its light removed: lights have
+# tests of their own) to `out`, through the add-on, whatever installed it.
+RENDER_CUBE = """
+scene = bpy.context.scene
+bpy.data.objects.remove(bpy.data.objects["Light"])
 scene.world.color = (0.5, 0.5, 0.5)
 scene.render.engine = "GLINT"
 scene.render.resolution_x, scene.render.resolution_y = 32, 24
@@ -240,6 +236,15 @@ scene.render.image_settings.file_format = "OPEN_EXR"
 scene.render.filepath = out
 bpy.ops.render.render(write_still=True)
 """
+
+INSTALL_SCRIPT = """
+import sys, addon_utils, bpy
+zip_path, glint, out = sys.argv[sys.argv.index("--") + 1:]
+bpy.ops.preferences.addon_install(filepath=zip_path)
+addon_utils.modules_refresh()
+assert addon_utils.enable("glint_blender", default_set=True, handle_error=None) is not None
+bpy.context.preferences.addons["glint_blender"].preferences.binary = glint
+""" + RENDER_CUBE
 
 
 def test_zip_install(glint, work):
@@ -271,14 +276,7 @@ def test_zip_install(glint, work):
 RENDER_DEFAULT_SCENE = """
 import sys, bpy
 out = sys.argv[sys.argv.index("--") + 1]
-scene = bpy.context.scene
-scene.render.engine = "GLINT"
-scene.render.resolution_x, scene.render.resolution_y = 32, 24
-scene.glint.samples = 2
-scene.render.image_settings.file_format = "OPEN_EXR"
-scene.render.filepath = out
-bpy.ops.render.render(write_still=True)
-"""
+""" + RENDER_CUBE
 
 
 def test_install_script(glint, work):
