@@ -88,7 +88,7 @@ class MissingImages:
 
     def report(self, warn):
         for (name, _), (problem, users) in self.images.items():
-            warn("image '%s' is missing (%s): rendered magenta as in Cycles; used by %s"
+            warn("image '%s': %s; rendered magenta, as Cycles does; used by %s"
                  % (name, problem, ", ".join(users)))
 
 
