@@ -1,6 +1,6 @@
 #include "render/render.h"
 
-#include "render/geometry.h"
+#include "render/prepare/geometry.h"
 #include "render/textures/pigment.h"
 #include "scene/features.h"
 

@@ -4,13 +4,10 @@
 #include <memory>
 #include <utility>
 
-#include "core/error.h"
-#include "render/camera.h"
-#include "render/geometry.h"
 #include "render/film/driver.h"
 #include "render/integrators/path.h"
 #include "render/integrators/whitted.h"
-#include "render/textures/image_texture.h"
+#include "render/prepare/prepared_scene.h"
 
 namespace glint::render {
 namespace {
@@ -24,21 +21,13 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 RenderResult render(const scene::Scene& scene, const RenderOptions& options, Diagnostics& diag) {
     auto t0 = std::chrono::steady_clock::now();
     RenderResult result;
-    result.features = scene::analyze(scene);
-    const scene::Features& features = result.features;
-
-    // The texture system is opened only for scenes with image maps.
-    std::unique_ptr<TextureCache> textures;
-    if (features.image_textures) {
-        textures = std::make_unique<TextureCache>(image_gamma(scene));
-        textures->preload(scene);
-    }
-    std::unique_ptr<Geometry> geometry = build_geometry(scene, features, diag, textures.get());
-    Camera camera(scene.camera, options.width, options.height);
+    // Prepare: the IR becomes what the integrators read (prepare/prepared_scene.h).
+    std::unique_ptr<PreparedScene> prepared = prepare(scene, options, diag);
+    result.features = prepared->features;
     if (options.integrator == IntegratorKind::Path) {
         PathSettings ps;
         ps.max_depth = std::max(0, options.max_depth);
-        PathIntegrator path(scene, *geometry, textures.get(), ps);
+        PathIntegrator path(*prepared, ps);
         result.prepare_seconds = seconds_since(t0);
         auto t1 = std::chrono::steady_clock::now();
         const uint32_t seed = options.seed;
@@ -47,7 +36,7 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
             return path.li(ray, PixelSampler(id.x, id.y, id.index, seed), first);
         };
         PathFilm film;
-        result.samples_per_pixel = run_path_tiles(camera, options, radiance, &film);
+        result.samples_per_pixel = run_path_tiles(prepared->camera, options, radiance, &film);
         result.image = std::move(film.image);
         result.albedo = std::move(film.albedo);
         result.normal = std::move(film.normal);
@@ -58,14 +47,14 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
         result.render_seconds = seconds_since(t1);
         return result;
     }
-    Whitted whitted(scene, features, *geometry, textures.get());
+    Whitted whitted(*prepared);
     DriverSettings settings;
     if (scene.global.assumed_gamma) settings.working_gamma = *scene.global.assumed_gamma;
     result.prepare_seconds = seconds_since(t0);
 
     auto t1 = std::chrono::steady_clock::now();
     RadianceFn radiance = [&whitted](const Ray& ray, const SampleId&) { return whitted.li(ray); };
-    result.image = run_tiles(camera, options, settings, radiance);
+    result.image = run_tiles(prepared->camera, options, settings, radiance);
     result.render_seconds = seconds_since(t1);
     return result;
 }

@@ -12,7 +12,7 @@
 
 #include "core/float.h"
 #include "render/accel/bvh.h"
-#include "render/geometry.h"
+#include "render/prepare/geometry.h"
 #include "render/shapes/mesh/mesh_prim.h"
 #include "render/shapes/shapes.h"
 #include "render/shapes/mesh/triangle.h"

@@ -3,7 +3,7 @@
 
 #include <memory>
 
-#include "render/geometry.h"
+#include "render/prepare/geometry.h"
 #include "scene/features.h"
 #include "scene/scene.h"
 

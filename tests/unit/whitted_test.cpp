@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include "core/float.h"
 #include "render/integrators/whitted.h"
@@ -102,8 +103,8 @@ struct Fixture {
             o.material = static_cast<int>(i);
             s.objects.push_back(o);
         }
-        scene::Features f = scene::analyze(s);
-        Whitted w(s, f, geo, nullptr);
+        auto prepared = prepare(s, RenderOptions{}, std::make_unique<FakeGeometry>(geo));
+        Whitted w(*prepared);
         Ray r;
         r.origin = origin;
         r.dir = normalize(dir);

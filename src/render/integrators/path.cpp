@@ -33,75 +33,33 @@ bool finite(const Color& c) {
 
 }  // namespace
 
-PathIntegrator::PathIntegrator(const scene::Scene& scene, const Geometry& geometry,
-                               const TextureCache* textures, const PathSettings& settings)
-    : scene_(scene),
-      geometry_(geometry),
-      pigments_(textures, PatternContext{scene.global.noise_generator, 10, &scene.functions}),
+PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings& settings)
+    : scene_(prepared.scene),
+      geometry_(*prepared.geometry),
+      materials_(prepared.materials),
+      pigments_(prepared.textures.get(),
+                PatternContext{scene_.global.noise_generator, 10, &scene_.functions}),
       settings_(settings),
       rays_(64) {
-    const size_t n = scene.materials.size();
-    constant_.resize(n);
-    emission_.assign(n, Color());
-    has_alpha_.assign(n, 1);
-    for (size_t i = 0; i < n; ++i) {
-        const scene::Material& m = scene.materials[i];
-        if (!m.pbr.derived) {
-            PbrMaps maps;
-            const scene::Pbr& p = m.pbr;
-            if (p.base_color_map.present() || p.specular_map.present() ||
-                p.emission_map.present() || p.roughness_map.present() ||
-                p.metallic_map.present() || p.exponent_map.present() || p.alpha_map.present() ||
-                p.bump_map.present()) {
-                if (!pbr_textures_)
-                    pbr_textures_ =
-                        std::make_unique<TextureCache>(ImageGamma{ImageGamma::Mode::V37, 1.0});
-                maps = prepare_pbr_maps(p, *pbr_textures_);
-            }
-            if (maps.any()) {
-                if (maps_.empty()) maps_.resize(n);
-                maps_[i] = maps;
-                // Where the maps leave emission and coverage constant, the emitter is still
-                // light-sampled and shadow rays need not look for holes.
-                const SurfacePbr c = pbr_surface(p, p.base_color);
-                if (!maps.emission && !maps.alpha) emission_[i] = c.emission;
-                has_alpha_[i] =
-                    maps.alpha || c.alpha < 1 || (c.bsdf.ior == 1.0 && c.bsdf.transmission > 0);
-            } else {
-                constant_[i] = pbr_surface(p, p.base_color);
-            }
-        } else {
-            const scene::Texture& t = base_texture(m.texture);
-            if (t.pigment.kind == scene::PatternKind::Plain)
-                constant_[i] = pov_to_pbr(t.finish, m.interior, t.pigment.color);
-        }
-        if (constant_[i]) {
-            const SurfacePbr& c = *constant_[i];
-            emission_[i] = c.emission;
-            has_alpha_[i] = c.alpha < 1 || (c.bsdf.ior == 1.0 && c.bsdf.transmission > 0);
-        }
-        any_alpha_ = any_alpha_ || has_alpha_[i];
-    }
-    constant_bsdf_.resize(n);
-    for (size_t i = 0; i < n; ++i)
-        if (constant_[i]) constant_bsdf_[i] = Bsdf::principled(constant_[i]->bsdf);
-    lights_.emplace(scene, emission_, [this](const Vec3& d) { return environment(d); }, textures);
+    lights_.emplace(scene_, materials_.emission(),
+                    [this](const Vec3& d) { return environment(d); }, prepared.textures.get());
 }
 
 SurfacePbr PathIntegrator::surface(Hit& hit) const {
-    if (hit.material < 0 || hit.material >= static_cast<int>(scene_.materials.size())) {
+    const PreparedMaterial* row = materials_.get(hit.material);
+    if (!row) {
         SurfacePbr s;
         s.bsdf.specular = 0;
         return s;
     }
-    if (const auto& c = constant_[hit.material]) return *c;
+    if (row->constant) return *row->constant;
     const scene::Material& m = scene_.materials[hit.material];
     const PatternPoint at{hit.p, hit.uv, hit.has_uv};
     if (!m.pbr.derived) {
         // Only materials with maps get here. A surface without uvs reads its maps at uv
         // (0, 0), as Cycles reads an Image Texture on a mesh without a UV map (a missing
         // image's magenta shows there too); its normal stays, having no tangents to bump.
-        const PbrMaps& maps = maps_[hit.material];
+        const PbrMaps& maps = row->maps;
         if (!hit.has_uv) return pbr_surface(m.pbr, maps, Vec2(0, 0));
         if (maps.bump) hit.n = mapped_normal(maps, hit.uv, hit.n, hit.dpdu, hit.dpdv);
         return pbr_surface(m.pbr, maps, hit.uv);
@@ -125,7 +83,7 @@ Color PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dis
     r.dir = dir;
     r.tmax = tmax;
     ++*rays;
-    if (!any_alpha_) return geometry_.occluded(r) ? Color() : Color(1, 1, 1);
+    if (!materials_.any_alpha()) return geometry_.occluded(r) ? Color() : Color(1, 1, 1);
     Color t(1, 1, 1);
     double travelled = 0;
     for (int i = 0; i < kMaxAlphaSkips; ++i) {
@@ -133,7 +91,7 @@ Color PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dis
         if (i > 0) ++*rays;
         if (!geometry_.intersect(r, &h)) return t;
         if (!(h.flags & kNoShadow)) {
-            if (h.material < 0 || !has_alpha_[h.material]) return Color();
+            if (h.material < 0 || !materials_[h.material].has_alpha) return Color();
             // What passes: the uncovered fraction, and through an index-matched (IOR 1)
             // transmissive surface the transmitted part, tinted; refraction at any other IOR
             // bends the light, which only BSDF sampling can follow.
@@ -225,10 +183,9 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
 
         // Made once per material where the surface is constant (most hits): building one
         // costs Fresnel terms and a square root.
-        const bool constant = hit.material >= 0 &&
-                              hit.material < static_cast<int>(constant_bsdf_.size()) &&
-                              constant_bsdf_[hit.material];
-        const Bsdf bsdf = constant ? *constant_bsdf_[hit.material] : Bsdf::principled(s.bsdf);
+        const PreparedMaterial* row = materials_.get(hit.material);
+        const Bsdf bsdf = row && row->constant_bsdf ? *row->constant_bsdf
+                                                    : Bsdf::principled(s.bsdf);
         // The shading normal bent, where it must be, so that the view's mirror direction
         // leaves the surface (Cycles does this for every closure).
         const Frame frame = Frame::from_normal(valid_reflection_normal(hit.ng, -r.dir, hit.n));

@@ -15,13 +15,11 @@
 
 #include "render/bsdf/bsdf.h"
 #include "render/bsdf/pov_to_pbr.h"
-#include "render/geometry.h"
 #include "render/film/aov.h"
 #include "render/lights/path_lights.h"
+#include "render/prepare/prepared_scene.h"
 #include "render/sampling/sampler.h"
 #include "render/textures/pigment.h"
-#include "scene/features.h"
-#include "scene/scene.h"
 
 namespace glint::render {
 
@@ -32,8 +30,8 @@ struct PathSettings {
 
 class PathIntegrator {
 public:
-    PathIntegrator(const scene::Scene& scene, const Geometry& geometry,
-                   const TextureCache* textures, const PathSettings& settings);
+    // `prepared` (made for IntegratorKind::Path) must outlive the integrator.
+    PathIntegrator(const PreparedScene& prepared, const PathSettings& settings);
 
     // Radiance along a camera ray. Pair 0 of the sampler is the driver's pixel jitter. With
     // `first`, also what the ray sees at its first visible hit (the AOVs).
@@ -56,17 +54,9 @@ private:
 
     const scene::Scene& scene_;
     const Geometry& geometry_;
+    const MaterialTable& materials_;
     PigmentEvaluator pigments_;
     PathSettings settings_;
-    std::vector<std::optional<SurfacePbr>> constant_;  // per material, where the hit can't change it
-    std::vector<std::optional<Bsdf>> constant_bsdf_;   // the BSDF of each constant_ surface
-    std::vector<Color> emission_;                      // per material, where constant
-    std::vector<char> has_alpha_;  // per material: shadow rays may pass (alpha < 1, or IOR 1)
-    // OBJ/MTL image maps per material (empty where none), in a cache of their own that is
-    // opened only when some material has one.
-    std::unique_ptr<TextureCache> pbr_textures_;
-    std::vector<PbrMaps> maps_;
-    bool any_alpha_ = false;
     std::optional<PathLights> lights_;
     mutable std::atomic<uint64_t> nonfinite_{0};
     // One counter per worker thread, each on its own cache line: a shared one, added to after

@@ -8,7 +8,6 @@
 #include "render/lights/blender_lights.h"
 #include "render/lights/area_light.h"
 #include "render/lights/sky.h"
-#include "render/materials/opacity.h"
 #include "render/textures/normal.h"
 
 namespace glint::render {
@@ -38,14 +37,6 @@ double greyscale(const Color& c) { return 0.297 * c.r + 0.589 * c.g + 0.114 * c.
 Color rgb_transm(const ColorFT& c) {
     return Color(c.rgb.r * c.filter + c.transmit, c.rgb.g * c.filter + c.transmit,
                  c.rgb.b * c.filter + c.transmit);
-}
-
-// Every finish a texture can show, for ClassicFinish preparation.
-void collect_finishes(const scene::Texture& t, std::vector<const scene::Finish*>* out) {
-    out->push_back(&t.finish);
-    for (const scene::Texture& l : t.layers) collect_finishes(l, out);
-    for (const scene::TextureMapEntry& e : t.texture_map) collect_finishes(e.texture[0], out);
-    for (const scene::Texture& e : t.entries) collect_finishes(e, out);
 }
 
 PatternPoint pattern_point(const Hit& hit) { return {hit.p, hit.uv, hit.has_uv}; }
@@ -79,28 +70,21 @@ void Whitted::Interiors::append(int obj, double value) {
     ++count;
 }
 
-Whitted::Whitted(const scene::Scene& scene, const scene::Features& features,
-                 const Geometry& geometry, const TextureCache* textures)
-    : scene_(scene),
-      features_(features),
-      geometry_(geometry),
-      pigments_(textures, PatternContext{scene.global.noise_generator, scene.global.number_of_waves,
-                                           &scene.functions}),
-      atmosphere_(scene),
-      lights_(prepare_lights(whitted_lights(scene.lights))),
-      max_level_(scene.global.max_trace_level),
-      adc_bailout_(scene.global.adc_bailout),
-      legacy_(scene.version < 3.7),
+Whitted::Whitted(const PreparedScene& prepared)
+    : scene_(prepared.scene),
+      features_(prepared.features),
+      geometry_(*prepared.geometry),
+      materials_(prepared.materials),
+      pigments_(prepared.textures.get(),
+                PatternContext{scene_.global.noise_generator, scene_.global.number_of_waves,
+                               &scene_.functions}),
+      atmosphere_(scene_),
+      lights_(prepare_lights(whitted_lights(scene_.lights))),
+      max_level_(scene_.global.max_trace_level),
+      adc_bailout_(scene_.global.adc_bailout),
+      legacy_(scene_.version < 3.7),
       serial_(next_serial()) {
-    finishes_.reserve(scene.materials.size());
-    for (const scene::Material& m : scene.materials) {
-        finishes_.emplace_back(m.texture.finish);
-        opaque_.push_back(!texture_can_be_transparent(m.texture, textures));
-        std::vector<const scene::Finish*> all;
-        collect_finishes(m.texture, &all);
-        for (const scene::Finish* f : all) layer_finishes_.emplace(f, ClassicFinish(*f));
-    }
-    if (features.secondary_rays()) find_camera_interiors();
+    if (features_.secondary_rays()) find_camera_interiors();
 }
 
 void Whitted::find_camera_interiors() {
@@ -309,7 +293,7 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
     const bool double_illuminate = (hit.flags & kDoubleIlluminate) != 0;
     for (int li = 0; li < layer_count && trans > adc_bailout_; ++li) {
         const scene::Texture& layer = layer_at(li);
-        const ClassicFinish& f = finish_for(layer.finish, hit.material);
+        const ClassicFinish& f = materials_.classic_finish(layer.finish, hit.material);
         const Vec3 lay_n = layer_normal(layer.normal, at, n, stack);
         if (li == 0) top_normal = lay_n;
         const double new_weight = weight * trans;
@@ -414,12 +398,6 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
         result += r.reflec * rfl;
     }
     return result;
-}
-
-const ClassicFinish& Whitted::finish_for(const scene::Finish& f, int material) const {
-    if (&f == &scene_.materials[material].texture.finish) return finishes_[material];
-    auto it = layer_finishes_.find(&f);
-    return it != layer_finishes_.end() ? it->second : finishes_[material];
 }
 
 Color Whitted::reflect(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3& raw_n,
@@ -529,7 +507,7 @@ Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls
         Hit hit;
         if (!geometry_.intersect(r, &hit)) return colour;
         if (!(hit.flags & kNoShadow)) {
-            if (hit.material < 0 || opaque_[hit.material]) return Color();
+            if (hit.material < 0 || materials_[hit.material].opaque) return Color();
             // ComputeShadowColour / ComputeShadowTexture.
             const scene::Material& mat = scene_.materials[hit.material];
             // POV-Ray stores interior { caustics C } as the exponent 45 C (Parse_Interior).

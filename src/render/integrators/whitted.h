@@ -3,25 +3,19 @@
 // per-ray function the tile driver calls. Prepared once per render; read-only while rendering.
 #pragma once
 
-#include <unordered_map>
 #include <vector>
 
-#include "render/geometry.h"
 #include "render/integrators/atmosphere.h"
 #include "render/lights/light.h"
-#include "render/materials/classic_finish.h"
+#include "render/prepare/prepared_scene.h"
 #include "render/textures/pigment.h"
-#include "scene/features.h"
-#include "scene/scene.h"
 
 namespace glint::render {
 
 class Whitted {
 public:
-    // `textures` may be null when the scene has no image maps. All references must outlive
-    // the integrator.
-    Whitted(const scene::Scene& scene, const scene::Features& features, const Geometry& geometry,
-            const TextureCache* textures);
+    // `prepared` (made for IntegratorKind::Whitted) must outlive the integrator.
+    explicit Whitted(const PreparedScene& prepared);
 
     // Radiance (in POV-Ray's working color space) arriving along a primary ray.
     Color li(const Ray& ray) const;
@@ -73,7 +67,6 @@ private:
     // ray, unit) feed it.
     Color shadow_texture(const scene::Texture& tex, const PatternPoint& at, double caustics,
                          const Vec3& raw_normal, const Vec3& dir) const;
-    const ClassicFinish& finish_for(const scene::Finish& f, int material) const;
     // `light` indexes lights_ (its shadow cache slot).
     Color shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls,
                         const RayState& eye, size_t light) const;
@@ -91,13 +84,10 @@ private:
     const scene::Scene& scene_;
     const scene::Features& features_;
     const Geometry& geometry_;
+    const MaterialTable& materials_;
     PigmentEvaluator pigments_;
     Atmosphere atmosphere_;  // fog and rainbow
     std::vector<PreparedLight> lights_;
-    std::vector<ClassicFinish> finishes_;
-    // Finishes of layers and texture map entries (keyed by the IR finish they come from).
-    std::unordered_map<const scene::Finish*, ClassicFinish> layer_finishes_;
-    std::vector<bool> opaque_;  // per material: the pigment can never let light through
     int max_level_;
     double adc_bailout_;
     bool legacy_;  // #version < 3.7: POV-Ray's 3.6 transparency and sky formulas

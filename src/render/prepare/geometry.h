@@ -12,7 +12,7 @@
 
 namespace glint::render {
 
-class TextureCache;
+class MaterialTable;
 
 class Geometry {
 public:
@@ -43,10 +43,14 @@ public:
 };
 
 // Degenerate input (zero-area triangles, non-finite vertices, empty meshes) is skipped with a
-// warning; invalid input throws glint::Error.
-// `textures` (may be null) tell which image maps have an alpha channel, for shadow_blocker.
+// warning; invalid input throws glint::Error. The material table's opacity decides which
+// objects shadow_blocker() may call opaque.
 std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,
-                                         const scene::Features& features, Diagnostics& diag,
-                                         const TextureCache* textures = nullptr);
+                                         const scene::Features& features,
+                                         const MaterialTable& materials, Diagnostics& diag);
+// The same with the opacity of a table of its own, made without the images (so any image map
+// may let light through): for one-off questions (parse-time trace(), tests).
+std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,
+                                         const scene::Features& features, Diagnostics& diag);
 
 }  // namespace glint::render

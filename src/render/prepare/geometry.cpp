@@ -1,7 +1,7 @@
 // build_geometry(): every top-level object (plain unions: each of their parts) becomes an
 // ObjectNode; objects with finite bounds go into a SAH BVH, unbounded ones (planes, inverse
 // objects) are tested one by one.
-#include "render/geometry.h"
+#include "render/prepare/geometry.h"
 
 #include <climits>
 #include <cmath>
@@ -11,7 +11,7 @@
 
 #include "render/accel/bvh.h"
 #include "render/accel/wide_bvh.h"
-#include "render/materials/opacity.h"
+#include "render/prepare/material_table.h"
 #include "render/shapes/mesh/mesh_kernels.h"
 #include "render/shapes/mesh/mesh_prim.h"
 #include "render/shapes/object_node.h"
@@ -231,12 +231,15 @@ bool mergeable_mesh(const scene::Object& o, const scene::Scene& scene) {
 // children's, its mesh faces'. A surface without a material counts as opaque, as in the
 // shadow walk. (clipped_by and bounded_by shapes show no surface.)
 bool all_opaque(const scene::Object& o, int inherited, const scene::Scene& scene,
-                const std::vector<char>& opaque) {
+                const MaterialTable& materials) {
     const int m = o.material >= 0 ? o.material : inherited;
-    auto ok = [&](int id) { return id < 0 || id >= static_cast<int>(opaque.size()) || opaque[id]; };
+    auto ok = [&](int id) {
+        const PreparedMaterial* row = materials.get(id);
+        return !row || row->opaque;
+    };
     if (const auto* csg = std::get_if<scene::Csg>(&o.shape)) {
         for (const scene::Object& c : csg->children)
-            if (!all_opaque(c, m, scene, opaque)) return false;
+            if (!all_opaque(c, m, scene, materials)) return false;
         return true;
     }
     if (const auto* ref = std::get_if<scene::MeshRef>(&o.shape)) {
@@ -273,15 +276,18 @@ std::unique_ptr<ObjectNode> merged_node(const std::vector<scene::Object>& parts,
 }  // namespace
 
 std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,
-                                         const scene::Features& features, Diagnostics& diag,
-                                         const TextureCache* textures) {
+                                         const scene::Features& features, Diagnostics& diag) {
+    return build_geometry(scene, features, MaterialTable(scene, IntegratorKind::Whitted, nullptr),
+                          diag);
+}
+
+std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,
+                                         const scene::Features& features,
+                                         const MaterialTable& materials, Diagnostics& diag) {
     std::vector<std::unique_ptr<ObjectNode>> nodes;
     std::vector<int> ids;
     // Which nodes are opaque all over, for the shadow walk (only scenes with transparency walk).
-    std::vector<char> material_opaque, node_opaque;
-    if (features.transparency)
-        for (const scene::Material& m : scene.materials)
-            material_opaque.push_back(!texture_can_be_transparent(m.texture, textures));
+    std::vector<char> node_opaque;
     // Keeps a node of scene object `id`, made of the `count` objects at objs.
     auto push = [&](std::unique_ptr<ObjectNode> node, int id, const scene::Object* objs,
                     size_t count) {
@@ -291,7 +297,7 @@ std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,
         if (!features.transparency) return;
         bool all = true;
         for (size_t j = 0; j < count; ++j)
-            all = all && all_opaque(objs[j], -1, scene, material_opaque);
+            all = all && all_opaque(objs[j], -1, scene, materials);
         node_opaque.push_back(all);
     };
     for (size_t i = 0; i < scene.objects.size(); ++i) {

@@ -1,0 +1,96 @@
+#include "render/prepare/material_table.h"
+
+#include "render/materials/opacity.h"
+#include "render/textures/image_texture.h"
+
+namespace glint::render {
+namespace {
+
+bool has_maps(const scene::Pbr& p) {
+    return !p.derived &&
+           (p.base_color_map.present() || p.specular_map.present() || p.emission_map.present() ||
+            p.roughness_map.present() || p.metallic_map.present() || p.exponent_map.present() ||
+            p.alpha_map.present() || p.bump_map.present());
+}
+
+// Every finish a texture can show: its own, its layers', its map entries'.
+void collect_finishes(const scene::Texture& t, std::vector<const scene::Finish*>* out) {
+    out->push_back(&t.finish);
+    for (const scene::Texture& l : t.layers) collect_finishes(l, out);
+    for (const scene::TextureMapEntry& e : t.texture_map) collect_finishes(e.texture[0], out);
+    for (const scene::Texture& e : t.entries) collect_finishes(e, out);
+}
+
+bool lets_shadow_rays_through(const SurfacePbr& s) {
+    return s.alpha < 1 || (s.bsdf.ior == 1.0 && s.bsdf.transmission > 0);
+}
+
+// The path tracer's half of a row.
+void prepare_pbr(const scene::Material& m, TextureCache* textures, PreparedMaterial* row) {
+    const scene::Pbr& p = m.pbr;
+    if (!p.derived) {
+        if (has_maps(p)) row->maps = prepare_pbr_maps(p, *textures);
+        if (row->maps.any()) {
+            // Where the maps leave emission and coverage constant, the emitter is still
+            // light-sampled and shadow rays need not look for holes.
+            const SurfacePbr c = pbr_surface(p, p.base_color);
+            if (!row->maps.emission && !row->maps.alpha) row->emission = c.emission;
+            row->has_alpha = row->maps.alpha || lets_shadow_rays_through(c);
+        } else {
+            row->constant = pbr_surface(p, p.base_color);
+        }
+    } else {
+        const scene::Texture& t = base_texture(m.texture);
+        if (t.pigment.kind == scene::PatternKind::Plain)
+            row->constant = pov_to_pbr(t.finish, m.interior, t.pigment.color);
+    }
+    if (row->constant) {
+        row->emission = row->constant->emission;
+        row->has_alpha = lets_shadow_rays_through(*row->constant);
+        row->constant_bsdf = Bsdf::principled(row->constant->bsdf);
+    }
+}
+
+}  // namespace
+
+bool needs_pbr_maps(const scene::Scene& scene) {
+    for (const scene::Material& m : scene.materials)
+        if (has_maps(m.pbr)) return true;
+    return false;
+}
+
+MaterialTable::MaterialTable(const scene::Scene& scene, IntegratorKind integrator,
+                             TextureCache* textures) {
+    rows_.resize(scene.materials.size());
+    for (size_t i = 0; i < rows_.size(); ++i) {
+        const scene::Material& m = scene.materials[i];
+        PreparedMaterial& row = rows_[i];
+        row.opaque = !texture_can_be_transparent(m.texture, textures);
+        if (integrator == IntegratorKind::Path) {
+            prepare_pbr(m, textures, &row);
+            any_alpha_ = any_alpha_ || row.has_alpha;
+            continue;
+        }
+        row.finish.emplace(m.texture.finish);
+        base_finishes_.push_back(&m.texture.finish);
+        std::vector<const scene::Finish*> all;
+        collect_finishes(m.texture, &all);
+        for (const scene::Finish* f : all) layer_finishes_.emplace(f, ClassicFinish(*f));
+    }
+}
+
+const ClassicFinish& MaterialTable::classic_finish(const scene::Finish& f, int material) const {
+    const ClassicFinish& own = *rows_[material].finish;
+    if (&f == base_finishes_[material]) return own;
+    auto it = layer_finishes_.find(&f);
+    return it != layer_finishes_.end() ? it->second : own;
+}
+
+std::vector<Color> MaterialTable::emission() const {
+    std::vector<Color> out;
+    out.reserve(rows_.size());
+    for (const PreparedMaterial& row : rows_) out.push_back(row.emission);
+    return out;
+}
+
+}  // namespace glint::render

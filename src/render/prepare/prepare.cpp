@@ -1,0 +1,39 @@
+#include "render/prepare/prepared_scene.h"
+
+#include <utility>
+
+namespace glint::render {
+namespace {
+
+// The images first (the material table asks which have alpha), then the materials (the
+// geometry asks which are opaque), then the geometry.
+std::unique_ptr<PreparedScene> prepare_with(const scene::Scene& scene,
+                                            const RenderOptions& options, Diagnostics* diag,
+                                            std::unique_ptr<Geometry> geometry) {
+    scene::Features features = scene::analyze(scene);
+    std::unique_ptr<TextureCache> textures;
+    const bool pbr_maps = options.integrator == IntegratorKind::Path && needs_pbr_maps(scene);
+    if (features.image_textures || pbr_maps) {
+        textures = std::make_unique<TextureCache>(image_gamma(scene));
+        if (features.image_textures) textures->preload(scene);
+    }
+    MaterialTable materials(scene, options.integrator, textures.get());
+    if (!geometry) geometry = build_geometry(scene, features, materials, *diag);
+    return std::unique_ptr<PreparedScene>(new PreparedScene{
+        scene, std::move(features), std::move(textures), std::move(materials),
+        std::move(geometry), Camera(scene.camera, options.width, options.height)});
+}
+
+}  // namespace
+
+std::unique_ptr<PreparedScene> prepare(const scene::Scene& scene, const RenderOptions& options,
+                                       Diagnostics& diag) {
+    return prepare_with(scene, options, &diag, nullptr);
+}
+
+std::unique_ptr<PreparedScene> prepare(const scene::Scene& scene, const RenderOptions& options,
+                                       std::unique_ptr<Geometry> geometry) {
+    return prepare_with(scene, options, nullptr, std::move(geometry));
+}
+
+}  // namespace glint::render

@@ -1,0 +1,40 @@
+// The prepare stage: everything a render needs from the IR, built in one step before the first
+// ray and read-only after it. The integrators take a PreparedScene and nothing else of the
+// scene's making: the IR itself (lights, sky, atmosphere, camera settings), what the scene
+// uses (features), the one texture cache, the material table, the geometry (shapes, CSG trees,
+// the BVH) and the camera.
+#pragma once
+
+#include <memory>
+
+#include "core/log.h"
+#include "render/camera.h"
+#include "render/options.h"
+#include "render/prepare/geometry.h"
+#include "render/prepare/material_table.h"
+#include "render/textures/image_texture.h"
+#include "scene/features.h"
+#include "scene/scene.h"
+
+namespace glint::render {
+
+struct PreparedScene {
+    const scene::Scene& scene;  // must outlive this
+    scene::Features features;
+    // Every image a render reads (POV-Ray image maps, the sky's, PBR maps); null for scenes
+    // without any, so that they never open the texture system.
+    std::unique_ptr<TextureCache> textures;
+    MaterialTable materials;
+    std::unique_ptr<Geometry> geometry;
+    Camera camera;
+};
+
+// Prepares `scene` for a render with `options` (its integrator and image size). Degenerate
+// input is skipped with a warning in `diag`; invalid input throws glint::Error.
+std::unique_ptr<PreparedScene> prepare(const scene::Scene& scene, const RenderOptions& options,
+                                       Diagnostics& diag);
+// The same around geometry built elsewhere (the integrator tests' stand-ins).
+std::unique_ptr<PreparedScene> prepare(const scene::Scene& scene, const RenderOptions& options,
+                                       std::unique_ptr<Geometry> geometry);
+
+}  // namespace glint::render
