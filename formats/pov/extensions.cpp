@@ -168,13 +168,11 @@ void Parser::parse_obj_file(PovObject& po, const FileLoc& opened) {
     // OBJ is right-handed and y-up; mirroring z shows the model as authored in POV-Ray's
     // left-handed space (as the model viewer does).
     obj::import_obj(path, scene, Transform::scale(Vec3(1, 1, -1)), -1, diag);
+    size_t added = 0;
     for (size_t m = meshes_before; m < scene.meshes.size(); ++m)
-        triangles_ += static_cast<long long>(scene.meshes[m].faces.size());
-    if (triangles_ > options.max_triangles)
-        fail_limit(floc,
-                   "the scene has more than " + std::to_string(options.max_triangles) +
-                       " mesh triangles",
-                   "--max-triangles");
+        added += scene.meshes[m].faces.size();
+    check_triangle_budget(added, floc);
+    count_triangles(added);
     std::vector<scene::Object> parts(scene.objects.begin() + objects_before,
                                      scene.objects.end());
     scene.objects.resize(objects_before);

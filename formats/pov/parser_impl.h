@@ -8,7 +8,9 @@
 //   materials.cpp     texture, pigment, finish, normal, interior, color maps
 //   patterns.cpp      pigment, normal and texture bodies and their pattern keywords
 //   pattern_grammar.cpp  pattern arguments and modifiers, warps, maps
-//   objects.cpp       shapes, CSG, meshes, lights, object modifiers
+//   objects.cpp       object statements: a declared object to start from, light bodies,
+//                     object modifiers; the keyword -> body table in object_bodies.h, the
+//                     bodies in object_bodies.cpp, meshes.cpp and solids.cpp
 //   extensions.cpp    glint's own: blender_light and obj_file
 //   camera.cpp        camera resolution, global_settings, background, sky_sphere
 //   parser.cpp        the top-level loop and placement of objects into the scene
@@ -256,6 +258,10 @@ public:
     void apply_transform(PovObject& o, const Transform& t);
     // `looks_like`, when given, receives the light's looks_like object (placed at the light).
     void parse_light_body(scene::Light& l, std::optional<PovObject>* looks_like = nullptr);
+    // Fails (--max-triangles) at `at` when `pending` more mesh triangles would pass the limit;
+    // count_triangles() adds them once the mesh is read.
+    void check_triangle_budget(size_t pending, const FileLoc& at) const;
+    void count_triangles(size_t n) { triangles_ += static_cast<long long>(n); }
 
     // ---- camera and scene settings (camera.cpp)
     void parse_camera_body(scene::Camera& cam);
