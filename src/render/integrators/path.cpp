@@ -46,7 +46,7 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
 }
 
 SurfacePbr PathIntegrator::surface(Hit& hit) const {
-    const PreparedMaterial* row = materials_.get(hit.material);
+    const PathMaterial* row = materials_.path(hit.material);
     if (!row) {
         SurfacePbr s;
         s.bsdf.specular = 0;
@@ -59,7 +59,7 @@ SurfacePbr PathIntegrator::surface(Hit& hit) const {
         // Only materials with maps get here. A surface without uvs reads its maps at uv
         // (0, 0), as Cycles reads an Image Texture on a mesh without a UV map (a missing
         // image's magenta shows there too); its normal stays, having no tangents to bump.
-        const PbrMaps& maps = row->maps;
+        const PbrMaps& maps = materials_.maps(*row);
         if (!hit.has_uv) return pbr_surface(m.pbr, maps, Vec2(0, 0));
         if (maps.bump) hit.n = mapped_normal(maps, hit.uv, hit.n, hit.dpdu, hit.dpdv);
         return pbr_surface(m.pbr, maps, hit.uv);
@@ -91,7 +91,8 @@ Color PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dis
         if (i > 0) ++*rays;
         if (!geometry_.intersect(r, &h)) return t;
         if (!(h.flags & kNoShadow)) {
-            if (h.material < 0 || !materials_[h.material].has_alpha) return Color();
+            const PathMaterial* pm = materials_.path(h.material);
+            if (!pm || !pm->has_alpha) return Color();
             // What passes: the uncovered fraction, and through an index-matched (IOR 1)
             // transmissive surface the transmitted part, tinted; refraction at any other IOR
             // bends the light, which only BSDF sampling can follow.
@@ -183,7 +184,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
 
         // Made once per material where the surface is constant (most hits): building one
         // costs Fresnel terms and a square root.
-        const PreparedMaterial* row = materials_.get(hit.material);
+        const PathMaterial* row = materials_.path(hit.material);
         const Bsdf bsdf = row && row->constant_bsdf ? *row->constant_bsdf
                                                     : Bsdf::principled(s.bsdf);
         // The shading normal bent, where it must be, so that the view's mirror direction

@@ -507,7 +507,7 @@ Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls
         Hit hit;
         if (!geometry_.intersect(r, &hit)) return colour;
         if (!(hit.flags & kNoShadow)) {
-            if (hit.material < 0 || materials_[hit.material].opaque) return Color();
+            if (materials_.opaque(hit.material)) return Color();
             // ComputeShadowColour / ComputeShadowTexture.
             const scene::Material& mat = scene_.materials[hit.material];
             // POV-Ray stores interior { caustics C } as the exponent 45 C (Parse_Interior).

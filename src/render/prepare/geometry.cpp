@@ -233,10 +233,7 @@ bool mergeable_mesh(const scene::Object& o, const scene::Scene& scene) {
 bool all_opaque(const scene::Object& o, int inherited, const scene::Scene& scene,
                 const MaterialTable& materials) {
     const int m = o.material >= 0 ? o.material : inherited;
-    auto ok = [&](int id) {
-        const PreparedMaterial* row = materials.get(id);
-        return !row || row->opaque;
-    };
+    auto ok = [&](int id) { return materials.opaque(id); };
     if (const auto* csg = std::get_if<scene::Csg>(&o.shape)) {
         for (const scene::Object& c : csg->children)
             if (!all_opaque(c, m, scene, materials)) return false;
@@ -277,8 +274,7 @@ std::unique_ptr<ObjectNode> merged_node(const std::vector<scene::Object>& parts,
 
 std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,
                                          const scene::Features& features, Diagnostics& diag) {
-    return build_geometry(scene, features, MaterialTable(scene, IntegratorKind::Whitted, nullptr),
-                          diag);
+    return build_geometry(scene, features, MaterialTable(scene, nullptr), diag);
 }
 
 std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,

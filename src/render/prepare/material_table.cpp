@@ -25,30 +25,36 @@ bool lets_shadow_rays_through(const SurfacePbr& s) {
     return s.alpha < 1 || (s.bsdf.ior == 1.0 && s.bsdf.transmission > 0);
 }
 
-// The path tracer's half of a row.
-void prepare_pbr(const scene::Material& m, TextureCache* textures, PreparedMaterial* row) {
+// The path tracer's view of material `m`; its maps, if any, are appended to `maps`.
+PathMaterial prepare_path(const scene::Material& m, TextureCache* textures,
+                          std::vector<PbrMaps>* maps) {
+    PathMaterial row;
     const scene::Pbr& p = m.pbr;
     if (!p.derived) {
-        if (has_maps(p)) row->maps = prepare_pbr_maps(p, *textures);
-        if (row->maps.any()) {
+        PbrMaps loaded;
+        if (has_maps(p)) loaded = prepare_pbr_maps(p, *textures);
+        if (loaded.any()) {
             // Where the maps leave emission and coverage constant, the emitter is still
             // light-sampled and shadow rays need not look for holes.
             const SurfacePbr c = pbr_surface(p, p.base_color);
-            if (!row->maps.emission && !row->maps.alpha) row->emission = c.emission;
-            row->has_alpha = row->maps.alpha || lets_shadow_rays_through(c);
+            if (!loaded.emission && !loaded.alpha) row.emission = c.emission;
+            row.has_alpha = loaded.alpha || lets_shadow_rays_through(c);
+            row.maps = static_cast<int>(maps->size());
+            maps->push_back(loaded);
         } else {
-            row->constant = pbr_surface(p, p.base_color);
+            row.constant = pbr_surface(p, p.base_color);
         }
     } else {
         const scene::Texture& t = base_texture(m.texture);
         if (t.pigment.kind == scene::PatternKind::Plain)
-            row->constant = pov_to_pbr(t.finish, m.interior, t.pigment.color);
+            row.constant = pov_to_pbr(t.finish, m.interior, t.pigment.color);
     }
-    if (row->constant) {
-        row->emission = row->constant->emission;
-        row->has_alpha = lets_shadow_rays_through(*row->constant);
-        row->constant_bsdf = Bsdf::principled(row->constant->bsdf);
+    if (row.constant) {
+        row.emission = row.constant->emission;
+        row.has_alpha = lets_shadow_rays_through(*row.constant);
+        row.constant_bsdf = Bsdf::principled(row.constant->bsdf);
     }
+    return row;
 }
 
 }  // namespace
@@ -59,19 +65,27 @@ bool needs_pbr_maps(const scene::Scene& scene) {
     return false;
 }
 
-MaterialTable::MaterialTable(const scene::Scene& scene, IntegratorKind integrator,
-                             TextureCache* textures) {
-    rows_.resize(scene.materials.size());
-    for (size_t i = 0; i < rows_.size(); ++i) {
-        const scene::Material& m = scene.materials[i];
-        PreparedMaterial& row = rows_[i];
-        row.opaque = !texture_can_be_transparent(m.texture, textures);
-        if (integrator == IntegratorKind::Path) {
-            prepare_pbr(m, textures, &row);
-            any_alpha_ = any_alpha_ || row.has_alpha;
-            continue;
+MaterialTable::MaterialTable(const scene::Scene& scene, const TextureCache* textures) {
+    opaque_.reserve(scene.materials.size());
+    for (const scene::Material& m : scene.materials)
+        opaque_.push_back(!texture_can_be_transparent(m.texture, textures));
+}
+
+void MaterialTable::prepare_for(const scene::Scene& scene, IntegratorKind integrator,
+                                TextureCache* textures) {
+    const size_t n = scene.materials.size();
+    if (integrator == IntegratorKind::Path) {
+        path_.reserve(n);
+        for (const scene::Material& m : scene.materials) {
+            path_.push_back(prepare_path(m, textures, &maps_));
+            any_alpha_ = any_alpha_ || path_.back().has_alpha;
         }
-        row.finish.emplace(m.texture.finish);
+        return;
+    }
+    finishes_.reserve(n);
+    base_finishes_.reserve(n);
+    for (const scene::Material& m : scene.materials) {
+        finishes_.emplace_back(m.texture.finish);
         base_finishes_.push_back(&m.texture.finish);
         std::vector<const scene::Finish*> all;
         collect_finishes(m.texture, &all);
@@ -80,16 +94,15 @@ MaterialTable::MaterialTable(const scene::Scene& scene, IntegratorKind integrato
 }
 
 const ClassicFinish& MaterialTable::classic_finish(const scene::Finish& f, int material) const {
-    const ClassicFinish& own = *rows_[material].finish;
+    const ClassicFinish& own = finishes_[material];
     if (&f == base_finishes_[material]) return own;
     auto it = layer_finishes_.find(&f);
     return it != layer_finishes_.end() ? it->second : own;
 }
 
 std::vector<Color> MaterialTable::emission() const {
-    std::vector<Color> out;
-    out.reserve(rows_.size());
-    for (const PreparedMaterial& row : rows_) out.push_back(row.emission);
+    std::vector<Color> out(opaque_.size());
+    for (size_t i = 0; i < path_.size(); ++i) out[i] = path_[i].emission;
     return out;
 }
 

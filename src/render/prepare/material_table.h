@@ -19,50 +19,65 @@ namespace glint::render {
 
 class TextureCache;
 
-struct PreparedMaterial {
-    // No pigment of the POV-Ray texture can ever let light through (materials/opacity.h).
-    bool opaque = true;
-
-    // Whitted only: the base texture's finish with POV-Ray's parse-time conversions done.
-    std::optional<ClassicFinish> finish;
-
-    // Path tracer only. The surface and its BSDF where no hit can change them (a POV-Ray
-    // texture with a plain pigment, a PBR material without maps): shading copies them.
+// The path tracer's view of one material.
+struct PathMaterial {
+    // The surface and its BSDF where no hit can change them (a POV-Ray texture with a plain
+    // pigment, a PBR material without maps): shading copies them.
     std::optional<SurfacePbr> constant;
     std::optional<Bsdf> constant_bsdf;
     Color emission;         // emitted radiance where constant (black otherwise): light-sampled
     bool has_alpha = true;  // shadow rays may pass: alpha below 1, or a transmissive IOR 1
-    PbrMaps maps;           // OBJ/MTL image maps (none for POV-Ray textures)
+    int maps = -1;          // its OBJ/MTL image maps (MaterialTable::maps), -1 for none
 };
 
+// Per material, each half in an array of its own, so that a render keeps only what its
+// integrator reads (a scene of 66,000 one-sphere materials holds 200 bytes a material for
+// Whitted, not the path tracer's 400 more).
 class MaterialTable {
 public:
     MaterialTable() = default;
-    // Rows for every material of `scene`, the half that `integrator` reads filled in. PBR
-    // maps are loaded into `textures`, which must be non-null when needs_pbr_maps() says so.
-    MaterialTable(const scene::Scene& scene, IntegratorKind integrator, TextureCache* textures);
+    // The opacity of every material of `scene` (`textures`, which may be null, tell which
+    // image maps have alpha): what the geometry needs.
+    MaterialTable(const scene::Scene& scene, const TextureCache* textures);
+    // The half that `integrator` reads. PBR maps are loaded into `textures`, which must be
+    // non-null when needs_pbr_maps() says so. Called after the geometry is built, so that
+    // its build's temporaries are gone before these arrays are made.
+    void prepare_for(const scene::Scene& scene, IntegratorKind integrator,
+                     TextureCache* textures);
 
-    size_t size() const { return rows_.size(); }
-    const PreparedMaterial& operator[](size_t i) const { return rows_[i]; }
-    const PreparedMaterial* get(int material) const {
-        return material >= 0 && static_cast<size_t>(material) < rows_.size() ? &rows_[material]
-                                                                           : nullptr;
+    size_t size() const { return opaque_.size(); }
+    // No pigment of the material's POV-Ray texture can ever let light through
+    // (materials/opacity.h). Ids outside the table (no material) are opaque.
+    bool opaque(int material) const {
+        return material < 0 || static_cast<size_t>(material) >= opaque_.size() ||
+               opaque_[material];
     }
 
     // Whitted: the prepared form of finish `f`, which belongs to material `material` (its
     // base texture's, or a layer's or a texture map entry's).
     const ClassicFinish& classic_finish(const scene::Finish& f, int material) const;
-    // Path tracer: some material may let shadow rays through.
+
+    // Path tracer: material `material`, or null for ids outside the table.
+    const PathMaterial* path(int material) const {
+        return material >= 0 && static_cast<size_t>(material) < path_.size() ? &path_[material]
+                                                                            : nullptr;
+    }
+    const PbrMaps& maps(const PathMaterial& m) const { return maps_[m.maps]; }
+    // Some material may let shadow rays through.
     bool any_alpha() const { return any_alpha_; }
-    // Path tracer: per material, its constant emission (the light sampler's emitters).
+    // Per material, its constant emission (the light sampler's emitters).
     std::vector<Color> emission() const;
 
 private:
-    std::vector<PreparedMaterial> rows_;
-    // Each material's own finish (the one asked for most): its row's, without a lookup.
+    std::vector<char> opaque_;
+    // Whitted: each material's own finish, the IR finish it comes from (asked for most: no
+    // lookup), and the finishes of layers and texture map entries keyed by their IR finish.
+    std::vector<ClassicFinish> finishes_;
     std::vector<const scene::Finish*> base_finishes_;
-    // The finishes of layers and texture map entries, keyed by the IR finish they come from.
     std::unordered_map<const scene::Finish*, ClassicFinish> layer_finishes_;
+    // Path tracer.
+    std::vector<PathMaterial> path_;
+    std::vector<PbrMaps> maps_;
     bool any_alpha_ = false;
 };
 

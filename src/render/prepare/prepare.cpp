@@ -5,8 +5,8 @@
 namespace glint::render {
 namespace {
 
-// The images first (the material table asks which have alpha), then the materials (the
-// geometry asks which are opaque), then the geometry.
+// The images first (the material table asks which have alpha), then the materials' opacity
+// (the geometry asks which are opaque), the geometry, and the integrator's half of the table.
 std::unique_ptr<PreparedScene> prepare_with(const scene::Scene& scene,
                                             const RenderOptions& options, Diagnostics* diag,
                                             std::unique_ptr<Geometry> geometry) {
@@ -17,8 +17,9 @@ std::unique_ptr<PreparedScene> prepare_with(const scene::Scene& scene,
         textures = std::make_unique<TextureCache>(image_gamma(scene));
         if (features.image_textures) textures->preload(scene);
     }
-    MaterialTable materials(scene, options.integrator, textures.get());
+    MaterialTable materials(scene, textures.get());
     if (!geometry) geometry = build_geometry(scene, features, materials, *diag);
+    materials.prepare_for(scene, options.integrator, textures.get());
     return std::unique_ptr<PreparedScene>(new PreparedScene{
         scene, std::move(features), std::move(textures), std::move(materials),
         std::move(geometry), Camera(scene.camera, options.width, options.height)});
