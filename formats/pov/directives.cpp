@@ -4,13 +4,13 @@
 #include <cmath>
 #include <filesystem>
 
-#include "formats/pov/parser_impl.h"
+#include "formats/pov/token_stream.h"
 
 namespace glint::pov {
 
 namespace fs = std::filesystem;
 
-bool Parser::handle_directive(const Token& d, int file) {
+bool TokenStream::handle_directive(const Token& d, int file) {
     FileLoc dloc = loc_of(file, d);
     // A view: each comparison below checks the length first (a std::string against a literal
     // costs a strlen and a memcmp each, a tenth of a bare #while iteration's time).
@@ -60,7 +60,7 @@ bool Parser::handle_directive(const Token& d, int file) {
         double v = parse_float();
         accept(";");
         declare_frame_ = saved;
-        version = v;
+        version_ = v;
         version_set_ = true;
     } else if (k == "default") {
         parse_default();
@@ -81,7 +81,7 @@ bool Parser::handle_directive(const Token& d, int file) {
     return true;
 }
 
-void Parser::handle_declare(bool local, const FileLoc& dloc) {
+void TokenStream::handle_declare(bool local, const FileLoc& dloc) {
     std::string name = read_name(local ? "#local" : "#declare");
     std::string deprecated;
     bool deprecated_once = false;
@@ -134,10 +134,7 @@ void Parser::handle_declare(bool local, const FileLoc& dloc) {
         Value v = parse_rvalue();
         declare_frame_ = saved;
         pending_declare_frame_ = size_t(-1);
-        if (auto fr = std::get_if<FunctionRef>(&v)) {
-            auto& fn = scene.functions[static_cast<size_t>(fr->index)];
-            if (fn.name.empty()) fn.name = name;
-        }
+        declared(name, v);
         declare(name, std::move(v), nloc, local, nscopes - 1);
         if (!deprecated.empty()) {
             auto& scope = local ? scopes_[std::min(nscopes, scopes_.size()) - 1] : scopes_.front();
@@ -166,7 +163,7 @@ void Parser::handle_declare(bool local, const FileLoc& dloc) {
     accept(";");
 }
 
-void Parser::skip_declaration(size_t nframes, size_t start, size_t nscopes, size_t nconds) {
+void TokenStream::skip_declaration(size_t nframes, size_t start, size_t nscopes, size_t nconds) {
     while (frames_.size() > nframes) frames_.pop_back();
     while (scopes_.size() > nscopes) scopes_.pop_back();
     Frame& f = frames_.back();
@@ -203,7 +200,7 @@ void Parser::skip_declaration(size_t nframes, size_t start, size_t nscopes, size
     }
 }
 
-void Parser::handle_include(const FileLoc& dloc) {
+void TokenStream::handle_include(const FileLoc& dloc) {
     std::string name = parse_string();
     FileLoc sloc = loc();
     int non_macro = 0;
@@ -256,7 +253,7 @@ void Parser::handle_include(const FileLoc& dloc) {
     frames_.push_back(std::move(f));
 }
 
-void Parser::handle_macro_def(const FileLoc& dloc) {
+void TokenStream::handle_macro_def(const FileLoc& dloc) {
     auto m = std::make_shared<Macro>();
     m->name = read_name("#macro");
     m->loc = dloc;
@@ -292,7 +289,7 @@ void Parser::handle_macro_def(const FileLoc& dloc) {
     s.unusable = false;
 }
 
-void Parser::call_macro(const Macro& m, const FileLoc& cloc) {
+void TokenStream::call_macro(const Macro& m, const FileLoc& cloc) {
     if (macro_depth_ >= options.max_macro_depth)
         fail_limit(cloc,
                    "macro calls nested deeper than " + std::to_string(options.max_macro_depth) +
@@ -355,14 +352,14 @@ void Parser::call_macro(const Macro& m, const FileLoc& cloc) {
     ++macro_depth_;
 }
 
-double Parser::parse_cond_paren() {
+double TokenStream::parse_cond_paren() {
     expect("(", "before the condition");
     double v = parse_float();
     expect(")", "after the condition");
     return v;
 }
 
-std::string Parser::skip_block(bool stop_at_else, bool stop_at_case, const FileLoc& opened,
+std::string TokenStream::skip_block(bool stop_at_else, bool stop_at_case, const FileLoc& opened,
                                int depth) {
     Frame& f = frames_.back();
     const auto& toks = files_[f.file]->tokens;
@@ -385,7 +382,7 @@ std::string Parser::skip_block(bool stop_at_else, bool stop_at_case, const FileL
     }
 }
 
-void Parser::handle_if(const FileLoc& dloc, Conditional kind) {
+void TokenStream::handle_if(const FileLoc& dloc, Conditional kind) {
     bool c;
     if (kind == Conditional::If) {
         c = parse_cond_paren() != 0;
@@ -423,7 +420,7 @@ void Parser::handle_if(const FileLoc& dloc, Conditional kind) {
     }
 }
 
-void Parser::handle_else(const Token& d) {
+void TokenStream::handle_else(const Token& d) {
     auto& conds = frames_.back().conds;
     FileLoc dloc = loc();
     if (!conds.empty() && conds.back().kind == CondKind::Switch && d.text == "else") return;
@@ -434,7 +431,7 @@ void Parser::handle_else(const Token& d) {
     frames_.back().conds.pop_back();
 }
 
-void Parser::handle_end(const FileLoc& dloc) {
+void TokenStream::handle_end(const FileLoc& dloc) {
     Frame& f = frames_.back();
     if (f.conds.empty()) {
         if (!f.is_macro) fail_at(dloc, "#end without a matching #if, #while, #for, #switch or #macro");
@@ -484,7 +481,7 @@ void Parser::handle_end(const FileLoc& dloc) {
     }
 }
 
-void Parser::handle_while(const FileLoc& dloc) {
+void TokenStream::handle_while(const FileLoc& dloc) {
     size_t restart = frames_.back().pos;
     if (parse_cond_paren() != 0) {
         Cond c{CondKind::While, dloc};
@@ -495,7 +492,7 @@ void Parser::handle_while(const FileLoc& dloc) {
     }
 }
 
-void Parser::handle_for(const FileLoc& dloc) {
+void TokenStream::handle_for(const FileLoc& dloc) {
     expect("(", "after #for");
     const Token& t = next();
     if (t.kind != TokKind::Word) fail("expected the loop variable after '#for (', got " + got(t));
@@ -523,7 +520,7 @@ void Parser::handle_for(const FileLoc& dloc) {
     frames_.back().conds.push_back(c);
 }
 
-void Parser::handle_switch(const FileLoc& dloc) {
+void TokenStream::handle_switch(const FileLoc& dloc) {
     double v = parse_cond_paren();
     Cond c{CondKind::Switch, dloc};
     c.switch_value = v;
@@ -549,7 +546,7 @@ void Parser::handle_switch(const FileLoc& dloc) {
     }
 }
 
-void Parser::handle_break(const FileLoc& dloc) {
+void TokenStream::handle_break(const FileLoc& dloc) {
     auto& conds = frames_.back().conds;
     int above = 0;
     for (size_t i = conds.size(); i-- > 0; ++above) {
@@ -564,7 +561,7 @@ void Parser::handle_break(const FileLoc& dloc) {
     fail_at(dloc, "#break outside a #switch");
 }
 
-void Parser::handle_message(const std::string& kind, const FileLoc& dloc) {
+void TokenStream::handle_message(const std::string& kind, const FileLoc& dloc) {
     std::string text = parse_string();
     if (kind == "error") throw Error(ErrorKind::Scene, dloc, "#error: " + text);
     if (kind == "warning")

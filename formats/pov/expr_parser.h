@@ -335,7 +335,7 @@ public:
         if (w == "frame_number") return Num::scalar(o.frame_number);
         if (w == "image_width") return Num::scalar(p_.options.image_width);
         if (w == "image_height") return Num::scalar(p_.options.image_height);
-        return Num::scalar(p_.version);  // version
+        return Num::scalar(p_.version());  // version
     }
 
     std::vector<Value> args(const std::string& name) {

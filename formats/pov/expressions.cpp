@@ -112,44 +112,6 @@ double Parser::parse_float_in_angle_brackets() {
     return e.as_float(e.expr(), "a float", at);
 }
 
-// Meshes are long lists of literal vectors; reading `<n, n, n>` straight from the token array
-// (when nothing can follow that would make it part of a larger expression) keeps a 100k-face
-// mesh2 fast. Anything else takes the general path.
-bool Parser::try_literal_vector(Vec3& out) {
-    if (ungot_ || frames_.empty()) return false;
-    Frame& f = frames_.back();
-    const auto& t = files_[f.file]->tokens;
-    size_t i = f.pos;
-    if (!t[i].is_symbol('<')) return false;
-    ++i;
-    double v[3];
-    for (int k = 0; k < 3; ++k) {
-        double sign = 1;
-        if (t[i].is_symbol('-')) {
-            sign = -1;
-            ++i;
-        }
-        if (t[i].kind != TokKind::Number) return false;
-        v[k] = sign * t[i].number;
-        ++i;
-        if (k < 2) {
-            if (!t[i].is_symbol(',')) return false;
-            ++i;
-        }
-    }
-    if (!t[i].is_symbol('>')) return false;
-    const Token& n = t[i + 1];
-    if (n.kind == TokKind::Symbol && !(n.is_symbol(',') || n.is_symbol('}') || n.is_symbol(')') ||
-                                       n.is_symbol(']') || n.is_symbol(';')))
-        return false;
-    token_count_ += static_cast<long long>(i + 1 - f.pos);
-    f.pos = i + 1;
-    cur_ = &t[i];
-    cur_file_ = f.file;
-    out = Vec3(v[0], v[1], v[2]);
-    return true;
-}
-
 Vec3 Parser::parse_vector() {
     Vec3 fast;
     if (try_literal_vector(fast)) return fast;
@@ -238,16 +200,5 @@ scene::Scene Parser::one_object_scene(const PovObject& po) const {
     return one;
 }
 
-void Parser::assign_existing_or_declare(const std::string& name, Value v, const FileLoc& at) {
-    for (size_t k = scopes_.size(); k-- > 0;) {
-        auto e = scopes_[k].find(name);
-        if (e != scopes_[k].end()) {
-            e->second.value = std::move(v);
-            e->second.loc = at;
-            return;
-        }
-    }
-    declare(name, std::move(v), at, false);
-}
 
 }  // namespace glint::pov

@@ -4,14 +4,14 @@
 #include <fstream>
 #include <sstream>
 
-#include "formats/pov/parser_impl.h"
+#include "formats/pov/token_stream.h"
 
 namespace glint::pov {
 
 // Files a scene writes are kept in memory, never written to disk: a scene file must not be
 // able to write anywhere on the user's machine, and scenes that write a file mostly read it back
 // in the same parse (caches of computed data), which the memory copy serves.
-void Parser::handle_fopen(const FileLoc& dloc) {
+void TokenStream::handle_fopen(const FileLoc& dloc) {
     std::string handle = read_name("#fopen");
     FileLoc hloc = loc();
     std::string name = parse_string();
@@ -57,7 +57,7 @@ void Parser::handle_fopen(const FileLoc& dloc) {
     open_files_[handle] = std::move(f);
 }
 
-void Parser::handle_fclose(const FileLoc& dloc) {
+void TokenStream::handle_fclose(const FileLoc& dloc) {
     (void)dloc;
     std::string handle = read_name("#fclose");
     // POV-Ray ignores #fclose of a name that is not an open file (e.g. after the end of the
@@ -85,7 +85,7 @@ bool read_number(const std::vector<Token>& toks, size_t& i, double& out) {
 
 }  // namespace
 
-void Parser::handle_read(const FileLoc& dloc) {
+void TokenStream::handle_read(const FileLoc& dloc) {
     expect("(", "after #read");
     const Token& h = raw();
     if (h.kind != TokKind::Word) fail("expected a file handle after '#read (', got " + got(h));
@@ -165,7 +165,7 @@ void Parser::handle_read(const FileLoc& dloc) {
     }
 }
 
-void Parser::handle_write(const FileLoc& dloc) {
+void TokenStream::handle_write(const FileLoc& dloc) {
     (void)dloc;
     expect("(", "after #write");
     const Token& h = raw();

@@ -111,21 +111,6 @@ Transform Parser::parse_transform_body() {
     }
 }
 
-std::string Parser::resolve_file(const std::string& name, const FileLoc& l) const {
-    std::error_code ec;  // a name the system refuses (too long, ...) is "cannot find" too
-    if (fs::path(name).is_absolute()) {
-        if (fs::is_regular_file(name, ec)) return name;
-    } else {
-        std::vector<std::string> dirs = {files_[cur_file_]->dir, scene_dir_};
-        for (const auto& d : options.include_dirs) dirs.push_back(d);
-        for (const auto& d : dirs) {
-            fs::path p = fs::path(d) / name;
-            if (fs::is_regular_file(p, ec)) return p.lexically_normal().string();
-        }
-    }
-    throw Error(ErrorKind::MissingFile, l, "cannot find the file '" + name + "'");
-}
-
 // ---------------------------------------------------------------- pigment
 
 void Parser::parse_image_map_body(scene::ImageMap& im, double* bump_size) {

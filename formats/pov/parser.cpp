@@ -74,10 +74,7 @@ static void parse_declared_sky_sphere(Parser& p);
 
 Value Parser::parse_rvalue() {
     const Token& t = next();
-    if (pending_declare_frame_ != size_t(-1)) {
-        declare_frame_ = pending_declare_frame_;
-        pending_declare_frame_ = size_t(-1);
-    }
+    value_begins();
     if (t.kind == TokKind::Word) {
         if (lookup(t.text)) {
             const Symbol& s = use_symbol(t);
@@ -94,12 +91,7 @@ Value Parser::parse_rvalue() {
         const std::string w = t.text;
         // Inside a braced value, directives are ordinary content: only an expression value
         // ends at a following directive (see Parser::next).
-        struct Restore {
-            size_t& ref;
-            size_t saved;
-            ~Restore() { ref = saved; }
-        } restore{declare_frame_, declare_frame_};
-        declare_frame_ = size_t(-1);
+        BracedValue braced_value(*this);
         PovObject po;
         if (parse_object(t, po)) return std::make_shared<const PovObject>(std::move(po));
         auto braced = [&](auto body) {
@@ -347,8 +339,8 @@ static void parse_statements(Parser& p) {
 // A scene that never ran #version is taken as pre-3.7 (3.62), as POV-Ray 3.7's
 // EffectiveLanguageVersion does (scene.h); this decides e.g. the gamma handling.
 void Parser::finish_version() {
-    scene.version = version_set_ ? version : 3.62;
-    if (!version_set_)
+    scene.version = version_set() ? version() : 3.62;
+    if (!version_set())
         diag.warning(FileLoc{}, "the scene has no #version directive: treated as version 3.62 "
                                 "(POV-Ray 3.7 does the same)");
 }
@@ -360,22 +352,23 @@ void Parser::run_statements() {
     try {
         parse_statements(*this);
     } catch (Error& e) {
-        // The frames are still those of the moment of the throw. An error that already has a
-        // note (raised deeper, e.g. a "declared here") keeps it: the innermost note is the
-        // more specific one.
-        if (e.note().empty()) {
-            for (size_t k = frames_.size(); k-- > 0;) {
-                const Frame& f = frames_[k];
-                if (!f.is_macro) continue;
-                const FileLoc& c = f.call_loc;
-                // "the macro called here has no #end" already points at the call.
-                bool same = c.filename() == e.loc().filename() && c.line == e.loc().line &&
-                            c.column == e.loc().column;
-                if (!same) e.with_note(c, "in macro '" + f.macro_name + "' called here");
-                break;
-            }
-        }
+        note_macro_call(e);
         throw;
+    }
+}
+
+Parser::Parser(const ParseOptions& opts, Diagnostics& d) : TokenStream(opts, d) {}
+
+void Parser::file_read(const std::string& path) {
+    for (const auto& s : scene.source_files)
+        if (s == path) return;
+    scene.source_files.push_back(path);
+}
+
+void Parser::declared(const std::string& name, const Value& v) {
+    if (auto fr = std::get_if<FunctionRef>(&v)) {
+        auto& fn = scene.functions[static_cast<size_t>(fr->index)];
+        if (fn.name.empty()) fn.name = name;
     }
 }
 
@@ -383,23 +376,14 @@ scene::Scene Parser::parse_main_file(const std::string& path) {
     if (!fs::is_regular_file(path))
         throw Error(ErrorKind::MissingFile, FileLoc{std::make_shared<const std::string>(path), 0, 0},
                     "cannot read the scene file '" + path + "'");
-    fs::path p(path);
-    scene_dir_ = p.has_parent_path() ? p.parent_path().string() : std::string(".");
-    int idx = load_file(path, false, FileLoc{});
-    frames_.push_back(Frame{idx, 0});
-    cur_file_ = idx;
+    open_main_file(path);
     run_statements();
     finish_version();
     return std::move(scene);
 }
 
 scene::Scene Parser::parse_main_string(const std::string& text, const std::string& name) {
-    fs::path p(name);
-    scene_dir_ = p.has_parent_path() ? p.parent_path().string() : std::string(".");
-    int idx = add_source(text, name, false);
-    scene.source_files.push_back(name);
-    frames_.push_back(Frame{idx, 0});
-    cur_file_ = idx;
+    open_main_string(text, name);
     run_statements();
     finish_version();
     return std::move(scene);

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "core/memory.h"
-#include "formats/pov/parser_impl.h"
+#include "formats/pov/token_stream.h"
 #include "formats/pov/reserved_words.h"
 
 namespace glint::pov {
@@ -22,7 +22,7 @@ bool opens_block(const std::string& d) {
 }
 
 // Directives that start a new statement: while a #declare's right-hand side is being read,
-// meeting one of these ends the value (see Parser::next).
+// meeting one of these ends the value (see TokenStream::next).
 bool starts_statement(const std::string& d) {
     return opens_block(d) || d == "declare" || d == "local" || d == "include" ||
            d == "undef" || d == "default" || d == "version" || d == "debug" ||
@@ -38,7 +38,7 @@ void check_not_reserved(const std::string& name, const std::string& expected, co
                         "' (a POV-Ray keyword cannot be redefined)");
 }
 
-Parser::Parser(const ParseOptions& opts, Diagnostics& d) : options(opts), diag(d) {
+TokenStream::TokenStream(const ParseOptions& opts, Diagnostics& d) : options(opts), diag(d) {
     stack_base_ = reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0));
     stack_budget_ = std::uintptr_t(std::max(opts.max_parse_stack_mib, 1)) << 20;
     scopes_.emplace_back();  // global
@@ -47,7 +47,7 @@ Parser::Parser(const ParseOptions& opts, Diagnostics& d) : options(opts), diag(d
     fake_end_.text = ";";
 }
 
-int Parser::add_source(const std::string& text, const std::string& name, bool system) {
+int TokenStream::add_source(const std::string& text, const std::string& name, bool system) {
     auto sf = std::make_unique<SourceFile>();
     sf->name = std::make_shared<const std::string>(name);
     fs::path p(name);
@@ -58,7 +58,7 @@ int Parser::add_source(const std::string& text, const std::string& name, bool sy
     return static_cast<int>(files_.size()) - 1;
 }
 
-int Parser::load_file(const std::string& path, bool system, const FileLoc& from) {
+int TokenStream::load_file(const std::string& path, bool system, const FileLoc& from) {
     auto it = file_cache_.find(path);
     if (it != file_cache_.end()) return it->second;
     std::ifstream in(path, std::ios::binary);
@@ -67,17 +67,15 @@ int Parser::load_file(const std::string& path, bool system, const FileLoc& from)
     ss << in.rdbuf();
     int idx = add_source(ss.str(), path, system);
     file_cache_[path] = idx;
-    bool seen = false;
-    for (const auto& s : scene.source_files) seen = seen || s == path;
-    if (!seen) scene.source_files.push_back(path);
+    file_read(path);
     return idx;
 }
 
-bool Parser::in_system_file() const { return !frames_.empty() && files_[cur_file_]->system; }
+bool TokenStream::in_system_file() const { return !frames_.empty() && files_[cur_file_]->system; }
 
-void Parser::fail(const std::string& message) const { fail_at(loc(), message); }
+void TokenStream::fail(const std::string& message) const { fail_at(loc(), message); }
 
-std::string Parser::got(const Token& t) const {
+std::string TokenStream::got(const Token& t) const {
     if (t.kind == TokKind::Word && !lookup(t.text)) {
         for (char c : t.text)
             if (c >= 'A' && c <= 'Z') return "the unknown identifier '" + t.text + "'";
@@ -85,21 +83,21 @@ std::string Parser::got(const Token& t) const {
     return describe(t);
 }
 
-void Parser::fail_at(const FileLoc& l, const std::string& message) const {
+void TokenStream::fail_at(const FileLoc& l, const std::string& message) const {
     throw Error(ErrorKind::Scene, l, message);
 }
 
-void Parser::fail_limit(const FileLoc& l, const std::string& message, const char* flag) const {
+void TokenStream::fail_limit(const FileLoc& l, const std::string& message, const char* flag) const {
     throw Error(ErrorKind::Render, l, message + " (limit: " + flag + ")");
 }
 
-void Parser::unsupported(const std::string& what) const {
+void TokenStream::unsupported(const std::string& what) const {
     throw Unsupported(loc(), what + " is not supported yet");
 }
 
 // ---------------------------------------------------------------- raw tokens
 
-void Parser::expand_number_list(const Token& list, int file) {
+void TokenStream::expand_number_list(const Token& list, int file) {
     auto it = number_list_files_.find(&list);
     int idx;
     if (it != number_list_files_.end()) {
@@ -118,7 +116,7 @@ void Parser::expand_number_list(const Token& list, int file) {
     frames_.push_back(Frame{idx, 0});
 }
 
-const Token* Parser::take_number_list() {
+const Token* TokenStream::take_number_list() {
     if (ungot_ || frames_.empty()) return nullptr;
     Frame& f = frames_.back();
     const Token& t = files_[f.file]->tokens[f.pos];
@@ -129,7 +127,7 @@ const Token* Parser::take_number_list() {
     return &t;
 }
 
-bool Parser::count_tokens(long long tokens, const FileLoc& at) {
+bool TokenStream::count_tokens(long long tokens, const FileLoc& at) {
     if (tokens > options.max_tokens - token_count_) return false;
     token_count_ += tokens;
     if (options.cancel && options.cancel->load(std::memory_order_relaxed))
@@ -143,7 +141,7 @@ bool Parser::count_tokens(long long tokens, const FileLoc& at) {
     return true;
 }
 
-const Token& Parser::raw() {
+const Token& TokenStream::raw() {
     for (;;) {
         Frame& f = frames_.back();
         const Token& t = files_[f.file]->tokens[f.pos];
@@ -174,7 +172,7 @@ const Token& Parser::raw() {
     }
 }
 
-const Token& Parser::next() {
+const Token& TokenStream::next() {
     // Every level of nesting reads a token, so the stack used so far is checked here.
     const auto here = reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0));
     if (stack_base_ > here && stack_base_ - here > stack_budget_)
@@ -250,26 +248,26 @@ const Token& Parser::next() {
     }
 }
 
-bool Parser::accept(const char* word) {
+bool TokenStream::accept(const char* word) {
     const Token& t = next();
     if (t.is(word)) return true;
     unget();
     return false;
 }
 
-void Parser::expect(const char* word, const char* context) {
+void TokenStream::expect(const char* word, const char* context) {
     const Token& t = next();
     if (!t.is(word))
         fail(std::string("expected '") + word + "' " + context + ", got " + got(t));
 }
 
-void Parser::expect_open(const char* what) {
+void TokenStream::expect_open(const char* what) {
     const Token& t = next();
     if (!t.is_symbol('{'))
         fail(std::string("expected '{' after '") + what + "', got " + got(t));
 }
 
-void Parser::expect_close(const char* what, const FileLoc& opened) {
+void TokenStream::expect_close(const char* what, const FileLoc& opened) {
     const Token& t = next();
     if (!t.is_symbol('}'))
         fail(std::string("expected '}' to close the ") + what + " opened at " +
@@ -277,10 +275,106 @@ void Parser::expect_close(const char* what, const FileLoc& opened) {
              got(t));
 }
 
+// Meshes are long lists of literal vectors; reading `<n, n, n>` straight from the token array
+// (when nothing can follow that would make it part of a larger expression) keeps a 100k-face
+// mesh2 fast. Anything else takes the general path.
+bool TokenStream::try_literal_vector(Vec3& out) {
+    if (ungot_ || frames_.empty()) return false;
+    Frame& f = frames_.back();
+    const auto& t = files_[f.file]->tokens;
+    size_t i = f.pos;
+    if (!t[i].is_symbol('<')) return false;
+    ++i;
+    double v[3];
+    for (int k = 0; k < 3; ++k) {
+        double sign = 1;
+        if (t[i].is_symbol('-')) {
+            sign = -1;
+            ++i;
+        }
+        if (t[i].kind != TokKind::Number) return false;
+        v[k] = sign * t[i].number;
+        ++i;
+        if (k < 2) {
+            if (!t[i].is_symbol(',')) return false;
+            ++i;
+        }
+    }
+    if (!t[i].is_symbol('>')) return false;
+    const Token& n = t[i + 1];
+    if (n.kind == TokKind::Symbol && !(n.is_symbol(',') || n.is_symbol('}') || n.is_symbol(')') ||
+                                       n.is_symbol(']') || n.is_symbol(';')))
+        return false;
+    token_count_ += static_cast<long long>(i + 1 - f.pos);
+    f.pos = i + 1;
+    cur_ = &t[i];
+    cur_file_ = f.file;
+    out = Vec3(v[0], v[1], v[2]);
+    return true;
+}
+
+
+const Symbol* TokenStream::symbol_after_raw_brace() const {
+    if (ungot_ || frames_.empty()) return nullptr;
+    const Frame& f = frames_.back();
+    const auto& toks = files_[f.file]->tokens;
+    if (!toks[f.pos].is_symbol('{') || toks[f.pos + 1].kind != TokKind::Word) return nullptr;
+    return lookup(toks[f.pos + 1].text);
+}
+
+void TokenStream::open_main_file(const std::string& path) {
+    fs::path p(path);
+    scene_dir_ = p.has_parent_path() ? p.parent_path().string() : std::string(".");
+    int idx = load_file(path, false, FileLoc{});
+    frames_.push_back(Frame{idx, 0});
+    cur_file_ = idx;
+}
+
+void TokenStream::open_main_string(const std::string& text, const std::string& name) {
+    fs::path p(name);
+    scene_dir_ = p.has_parent_path() ? p.parent_path().string() : std::string(".");
+    int idx = add_source(text, name, false);
+    file_read(name);
+    frames_.push_back(Frame{idx, 0});
+    cur_file_ = idx;
+}
+
+void TokenStream::note_macro_call(Error& e) const {
+    // The frames are still those of the moment of the throw. An error that already has a
+    // note (raised deeper, e.g. a "declared here") keeps it: the innermost note is the more
+    // specific one.
+    if (!e.note().empty()) return;
+    for (size_t k = frames_.size(); k-- > 0;) {
+        const Frame& f = frames_[k];
+        if (!f.is_macro) continue;
+        const FileLoc& c = f.call_loc;
+        // "the macro called here has no #end" already points at the call.
+        bool same = c.filename() == e.loc().filename() && c.line == e.loc().line &&
+                    c.column == e.loc().column;
+        if (!same) e.with_note(c, "in macro '" + f.macro_name + "' called here");
+        return;
+    }
+}
+
+std::string TokenStream::resolve_file(const std::string& name, const FileLoc& l) const {
+    std::error_code ec;  // a name the system refuses (too long, ...) is "cannot find" too
+    if (fs::path(name).is_absolute()) {
+        if (fs::is_regular_file(name, ec)) return name;
+    } else {
+        std::vector<std::string> dirs = {files_[cur_file_]->dir, scene_dir_};
+        for (const auto& d : options.include_dirs) dirs.push_back(d);
+        for (const auto& d : dirs) {
+            fs::path p = fs::path(d) / name;
+            if (fs::is_regular_file(p, ec)) return p.lexically_normal().string();
+        }
+    }
+    throw Error(ErrorKind::MissingFile, l, "cannot find the file '" + name + "'");
+}
+
 // ---------------------------------------------------------------- identifiers
 
-size_t Parser::parse_array_index(const ArrayValue& a, const std::string& name,
-                                 std::string& display) {
+size_t TokenStream::parse_array_index(const ArrayValue& a, const std::string& name,
+                                      std::string& display) {
     display = name;
     size_t flat = 0;
     for (size_t d = 0; d < a.sizes.size(); ++d) {
@@ -301,7 +395,7 @@ size_t Parser::parse_array_index(const ArrayValue& a, const std::string& name,
     return flat;
 }
 
-const Symbol* Parser::lookup(const std::string& name) const {
+const Symbol* TokenStream::lookup(const std::string& name) const {
     if (name.find('[') != std::string::npos) {
         auto it = element_syms_.find(name);
         return it == element_syms_.end() ? nullptr : &it->second;
@@ -313,7 +407,7 @@ const Symbol* Parser::lookup(const std::string& name) const {
     return nullptr;
 }
 
-const Symbol& Parser::use_symbol(const Token& t) {
+const Symbol& TokenStream::use_symbol(const Token& t) {
     const Symbol* s = lookup(t.text);
     if (!s) fail("unknown identifier '" + t.text + "'");
     if (s->unusable) {
@@ -328,12 +422,12 @@ const Symbol& Parser::use_symbol(const Token& t) {
     return *s;
 }
 
-void Parser::warn_deprecated(const std::string& name, const Symbol& s, const FileLoc& at) {
+void TokenStream::warn_deprecated(const std::string& name, const Symbol& s, const FileLoc& at) {
     if (s.deprecated_once && !warned_once_.insert(name).second) return;
     diag.warning(at, s.deprecated);
 }
 
-void Parser::declare(const std::string& name, Value v, const FileLoc& l, bool local,
+void TokenStream::declare(const std::string& name, Value v, const FileLoc& l, bool local,
                      size_t local_scope) {
     if (!local) {
         auto it = scopes_.back().find(name);
@@ -372,7 +466,7 @@ void Parser::declare(const std::string& name, Value v, const FileLoc& l, bool lo
     s.unusable_reason.clear();
 }
 
-std::string Parser::read_name(const char* context) {
+std::string TokenStream::read_name(const char* context) {
     const Token& t = raw();
     if (t.kind != TokKind::Word)
         fail(std::string("expected an identifier after ") + context + ", got " + got(t));
@@ -380,6 +474,19 @@ std::string Parser::read_name(const char* context) {
         std::string_view(context) != "#ifdef")  // #declare deprecated: see handle_declare
         check_not_reserved(t.text, std::string("an identifier after ") + context, loc());
     return t.text;
+}
+
+
+void TokenStream::assign_existing_or_declare(const std::string& name, Value v, const FileLoc& at) {
+    for (size_t k = scopes_.size(); k-- > 0;) {
+        auto e = scopes_[k].find(name);
+        if (e != scopes_[k].end()) {
+            e->second.value = std::move(v);
+            e->second.loc = at;
+            return;
+        }
+    }
+    declare(name, std::move(v), at, false);
 }
 
 }  // namespace glint::pov
