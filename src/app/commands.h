@@ -52,6 +52,7 @@ struct RenderArgs {
     std::vector<std::string> pov_args;
     struct {
         bool width = false, height = false, aa = false, threads = false, clock = false;
+        bool integrator = false, spp = false, seed = false, max_depth = false;
     } given;
 };
 

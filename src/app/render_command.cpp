@@ -214,6 +214,10 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
         args.given.aa = cmd->count("--aa") > 0;
         args.given.threads = cmd->count("--threads") > 0;
         args.given.clock = cmd->count("--clock") > 0;
+        args.given.integrator = cmd->count("--integrator") > 0;
+        args.given.spp = cmd->count("--spp") > 0;
+        args.given.seed = cmd->count("--seed") > 0;
+        args.given.max_depth = cmd->count("--max-depth") > 0;
     });
     return cmd;
 }
@@ -581,6 +585,16 @@ int render_frame(const RenderArgs& args) {
              ": float images are written linear (convert them with glint convert --view)");
 
     scene::Scene scene = load_scene(args.scene, args.verbose);
+    if (scene.blender_render) {
+        // A Blender scene carries its render settings; the flags given win over them.
+        const scene::BlenderRender& b = *scene.blender_render;
+        if (!args.given.width) options.width = b.width;
+        if (!args.given.height) options.height = b.height;
+        if (!args.given.integrator) options.integrator = render::IntegratorKind::Path;
+        if (!args.given.spp) options.spp = b.samples;
+        if (!args.given.seed) options.seed = static_cast<uint32_t>(b.seed);
+        if (!args.given.max_depth) options.max_depth = b.max_bounces + 1;
+    }
     double parse_seconds = seconds_since(start);
     if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
 

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/memory.h"
+#include "formats/blender/blender_importer.h"
 #include "formats/obj/obj_importer.h"
 #include "formats/pov/parser.h"
 #include "render/render.h"
@@ -16,7 +17,7 @@
 namespace glint::app {
 
 void add_scene_options(CLI::App& cmd, SceneRequest& request, bool scene_required) {
-    cmd.add_option("SCENE", request.path, "POV-Ray scene (.pov) or OBJ model (.obj)")->required(scene_required);
+    cmd.add_option("SCENE", request.path, "POV-Ray scene (.pov), OBJ model (.obj) or Blender exchange (.json)")->required(scene_required);
     cmd.add_option("-I,--include", request.include_dirs, "Include folder (repeatable)")
         ->allow_extra_args(false);  // one folder per -I, so `-I dir scene.pov` works
     cmd.add_option("--clock", request.clock, "Value of `clock` in the scene")
@@ -128,6 +129,18 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose) {
                         request.path + " has " + std::to_string(triangles) +
                             " triangles, more than " + std::to_string(limits.triangles) +
                             " (limit: --max-triangles)");
+        scene::validate(scene);
+        return scene;
+    }
+
+    if (blender::is_blender_exchange(request.path)) {
+        // The Blender add-on's exchange (formats/blender/FORMAT.md).
+        ParseDiagnosticPrinter printer(verbose);
+        Diagnostics diag([&printer](const Diagnostic& d) { printer.print(d); });
+        blender::ImportLimits bl;
+        bl.triangles = limits.triangles;
+        bl.objects = limits.objects;
+        scene::Scene scene = blender::import_blender(request.path, bl, diag);
         scene::validate(scene);
         return scene;
     }

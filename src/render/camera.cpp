@@ -162,6 +162,72 @@ std::optional<Ray> Camera::generate(double x, double y) const {
     return ray;
 }
 
+namespace {
+
+// Shirley and Chiu's concentric map of the unit square onto the unit disc (Cycles'
+// concentric_sample_disk).
+void concentric_disc(double u, double v, double* x, double* y) {
+    const double a = 2 * u - 1, b = 2 * v - 1;
+    if (a == 0 && b == 0) {
+        *x = *y = 0;
+        return;
+    }
+    double r, phi;
+    if (a * a > b * b) {
+        r = a;
+        phi = (kPi / 4) * (b / a);
+    } else {
+        r = b;
+        phi = kPi / 2 - (kPi / 4) * (a / b);
+    }
+    *x = r * std::cos(phi);
+    *y = r * std::sin(phi);
+}
+
+// A uniform point in a regular polygon with `corners` corners on the unit circle, the first
+// at `rotation` (Cycles' regular_polygon_sample): a corner's triangle, then a point in it.
+void polygon_sample(int corners, double rotation, double u, double v, double* x, double* y) {
+    const double corner = std::floor(u * corners);
+    u = u * corners - corner;
+    u = std::sqrt(u);
+    v = v * u;
+    u = 1 - u;
+    const double angle = kPi / corners;
+    const double px = (u + v) * std::cos(angle), py = (u - v) * std::sin(angle);
+    rotation += corner * 2 * angle;
+    const double cr = std::cos(rotation), sr = std::sin(rotation);
+    *x = cr * px - sr * py;
+    *y = sr * px + cr * py;
+}
+
+}  // namespace
+
+std::optional<Ray> Camera::generate(double x, double y, double lens_u, double lens_v) const {
+    std::optional<Ray> ray = generate(x, y);
+    const scene::Camera& c = camera_;
+    const bool linear = c.kind == CameraKind::Perspective || c.kind == CameraKind::Orthographic;
+    if (!ray || !linear || !(c.lens.radius > 0)) return ray;
+    const Vec3 r = normalize(c.right), u = normalize(c.up);
+    Vec3 fwd = cross(u, r);
+    if (dot(fwd, c.direction) < 0) fwd = -fwd;  // either handedness
+    fwd = normalize(fwd);
+    double lx, ly;
+    if (c.lens.blades >= 3)
+        polygon_sample(c.lens.blades, c.lens.rotation, lens_u, lens_v, &lx, &ly);
+    else
+        concentric_disc(lens_u, lens_v, &lx, &ly);
+    lx *= c.lens.radius / c.lens.ratio;
+    ly *= c.lens.radius;
+    const double along = dot(ray->dir, fwd);
+    if (!(along > 0)) return ray;
+    const Vec3 focus = ray->origin + ray->dir * (c.lens.focal_distance / along);
+    ray->origin = ray->origin + r * lx + u * ly;
+    const Vec3 d = focus - ray->origin;
+    if (!(length_squared(d) > 0)) return ray;
+    ray->dir = normalize(d);
+    return ray;
+}
+
 bool Camera::rays_start_at_location() const {
     return camera_.kind != CameraKind::Orthographic && camera_.kind != CameraKind::Cylinder3 &&
            camera_.kind != CameraKind::Cylinder4;

@@ -19,6 +19,12 @@ public:
     // None where the projection traces no ray (outside a fisheye's circle): POV-Ray leaves
     // such pixels black.
     std::optional<Ray> generate(double x, double y) const;
+    // The same through a thin lens (scene::Lens): (lens_u, lens_v) in [0, 1)^2 pick the point
+    // on the aperture, as Cycles samples it (a concentric disc, or a polygon of `blades`);
+    // the ray passes the point the pinhole ray meets on the focal plane. Perspective and
+    // orthographic cameras; the others ignore the lens.
+    std::optional<Ray> generate(double x, double y, double lens_u, double lens_v) const;
+    bool has_lens() const { return camera_.lens.radius > 0; }
     // Whether every primary ray starts at the camera location (not orthographic, not the
     // cylinder projections that are orthographic along one axis).
     bool rays_start_at_location() const;

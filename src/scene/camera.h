@@ -27,6 +27,16 @@ enum class CameraKind {
     Spherical,  // `angle H [, V]`
 };
 
+// A thin lens in front of the camera (Blender's depth of field): rays start on the aperture
+// and meet at the focal distance along the view direction. Off when radius is 0.
+struct Lens {
+    double radius = 0;          // aperture radius, scene units
+    double focal_distance = 1;  // along `direction`
+    int blades = 0;             // 0: a round aperture, else a polygon of that many blades
+    double rotation = 0;        // blade rotation, radians
+    double ratio = 1;           // anamorphic: aperture width / height
+};
+
 // The keyword of a camera kind ("cylinder 1" for Cylinder1).
 const char* camera_kind_name(CameraKind kind);
 
@@ -40,6 +50,7 @@ struct Camera {
     double angle = 0;        // field of view in degrees if given, else 0 (perspective/ortho)
     double h_angle = 360;    // spherical camera: horizontal and vertical field of view
     double v_angle = 180;
+    Lens lens;
     FileLoc loc;
 };
 

@@ -13,6 +13,7 @@
 #include "scene/function.h"
 #include "scene/light.h"
 #include "scene/mesh.h"
+#include "scene/shader_graph.h"
 #include "scene/shape.h"
 #include "scene/texture.h"
 
@@ -37,6 +38,22 @@ struct SkySphere {
     FileLoc loc;
 };
 
+// Render settings a Blender scene carries (the add-on's exchange, formats/blender): the CLI
+// uses them where its own flags are not given.
+struct BlenderRender {
+    int width = 0, height = 0;
+    int samples = 64;
+    int seed = 0;
+    // Cycles' Light Paths > Max Bounces.
+    int max_bounces = 12, diffuse_bounces = 4, glossy_bounces = 4, transmission_bounces = 12,
+        transparent_bounces = 8;
+    bool film_transparent = false;
+    double filter_width = 1.5;
+    double clamp_direct = 0, clamp_indirect = 10;
+    double filter_glossy = 1.0;
+    bool caustics_reflective = true, caustics_refractive = true;
+};
+
 struct Scene {
     double version = 3.7;  // the #version in force at the end of parsing
     Camera camera;
@@ -51,6 +68,11 @@ struct Scene {
     std::vector<Rainbow> rainbows;
     // User-defined functions (function patterns refer to them by index; calls between them too).
     std::vector<Function> functions;
+    // Shader node graphs (Blender's materials, world and lights); Material::graph and
+    // world_graph index them.
+    std::vector<ShaderGraph> shader_graphs;
+    int world_graph = -1;
+    std::optional<BlenderRender> blender_render;
     // Files the scene was read from (main file first), for messages and `glint ir`.
     std::vector<std::string> source_files;
 };

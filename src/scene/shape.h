@@ -174,6 +174,15 @@ struct Object {
     bool no_image = false;
     bool no_reflection = false;
     bool double_illuminate = false;
+    // Blender's ray visibility (Object Properties > Visibility), holdout and the values the
+    // Object Info node reads; POV-Ray's objects keep the defaults.
+    struct RayVisibility {
+        bool camera = true, diffuse = true, glossy = true, transmission = true, shadow = true;
+    } visibility;
+    bool holdout = false;
+    Color info_color{1, 1, 1};
+    double pass_index = 0;
+    double random = 0;
     std::vector<Object> bounded_by;  // in this object's parent space, like the object
     std::vector<Object> clipped_by;
     std::string name;  // the #declare'd identifier it came from, if any

@@ -299,6 +299,9 @@ struct Material {
     Texture texture;
     Interior interior;
     Pbr pbr;
+    // A shader node graph (Scene::shader_graphs) that the path tracer evaluates instead of
+    // `pbr`; -1: none.
+    int graph = -1;
     FileLoc loc;
 };
 

@@ -18,6 +18,9 @@
 namespace glint::render {
 namespace {
 
+// The sampler pair of the camera's lens (depth of field): far past the pairs paths use.
+constexpr uint32_t kLensPair = 0x40000000;
+
 // The film accepts only finite, non-negative values.
 float sanitize(double v) {
     if (!(v > 0.0)) return 0.0f;  // negative or NaN
@@ -363,8 +366,16 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
                                 return;
                             }
                             const uint32_t index = static_cast<uint32_t>(s);
-                            const Sample2 j = PixelSampler(x, y, index, options.seed).get2(0);
-                            std::optional<Ray> ray = camera.generate(x + j.u - 0.5, y + j.v - 0.5);
+                            const PixelSampler ps(x, y, index, options.seed);
+                            const Sample2 j = ps.get2(0);
+                            std::optional<Ray> ray;
+                            if (camera.has_lens()) {
+                                // A pair no bounce uses: the aperture's point.
+                                const Sample2 l = ps.get2(kLensPair);
+                                ray = camera.generate(x + j.u - 0.5, y + j.v - 0.5, l.u, l.v);
+                            } else {
+                                ray = camera.generate(x + j.u - 0.5, y + j.v - 0.5);
+                            }
                             float value[3] = {0, 0, 0};
                             FirstHit first;
                             if (ray) {

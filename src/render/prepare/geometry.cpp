@@ -296,11 +296,12 @@ std::unique_ptr<Geometry> build_geometry(const scene::Scene& scene,
             all = all && all_opaque(objs[j], -1, scene, materials);
         node_opaque.push_back(all);
     };
+    SharedMeshes shared;  // objects instancing one mesh share its primitive
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const scene::Object& o = scene.objects[i];
         const int id = static_cast<int>(i);
         if (!is_plain_union(o)) {
-            push(ObjectNode::build(o, scene, diag), id, &o, 1);
+            push(ObjectNode::build(o, scene, diag, &shared), id, &o, 1);
             continue;
         }
         std::vector<scene::Object> parts;

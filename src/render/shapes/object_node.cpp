@@ -59,11 +59,29 @@ struct Builder {
     Diagnostics& diag;
     // Set when the primitive took obj.transform into itself (the node then has none).
     bool baked = false;
+    SharedMeshes* shared = nullptr;
 
-    std::unique_ptr<Primitive> primitive(const scene::Object& obj, Transform* frame) {
+    std::shared_ptr<const Primitive> primitive(const scene::Object& obj, Transform* frame) {
         const char* why = nullptr;
         std::unique_ptr<Primitive> p;
         *frame = Transform();
+        // An instanced mesh: the one primitive of its mesh, whatever transform places it.
+        if (const auto* ref = std::get_if<scene::MeshRef>(&obj.shape);
+            ref && shared && ref->mesh >= 0 &&
+            ref->mesh < static_cast<int>(scene.meshes.size()) && !bake_exact(obj.transform)) {
+            const size_t id = static_cast<size_t>(ref->mesh);
+            if (shared->by_mesh.size() < scene.meshes.size()) {
+                shared->by_mesh.resize(scene.meshes.size());
+                shared->tried.resize(scene.meshes.size());
+            }
+            if (!shared->tried[id]) {
+                shared->tried[id] = 1;
+                shared->by_mesh[id] = make_mesh(scene.meshes[id], diag, nullptr);
+                if (!shared->by_mesh[id])
+                    diag.warning(obj.loc, "mesh without usable triangles: object skipped");
+            }
+            return shared->by_mesh[id];
+        }
         std::visit(
             [&](const auto& s) {
                 using T = std::decay_t<decltype(s)>;
@@ -141,7 +159,8 @@ struct Builder {
 }  // namespace
 
 std::unique_ptr<ObjectNode> ObjectNode::build(const scene::Object& obj,
-                                              const scene::Scene& scene, Diagnostics& diag) {
+                                              const scene::Scene& scene, Diagnostics& diag,
+                                              SharedMeshes* shared) {
     std::unique_ptr<ObjectNode> node(new ObjectNode());
     node->inverse_ = obj.inverse;
     node->material_ = obj.material;
@@ -165,7 +184,7 @@ std::unique_ptr<ObjectNode> ObjectNode::build(const scene::Object& obj,
         }
         if (node->children_.empty()) return nullptr;
     } else {
-        Builder b{scene, diag, false};
+        Builder b{scene, diag, false, shared};
         node->prim_ = b.primitive(obj, &frame);
         if (!node->prim_) return nullptr;
         baked = b.baked;

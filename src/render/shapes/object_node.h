@@ -15,12 +15,20 @@
 
 namespace glint::render {
 
+// Mesh primitives of the scene's meshes, each built once and shared by every object that
+// instances it (a scatter of 10,000 copies holds one BVH of the mesh, not 10,000).
+struct SharedMeshes {
+    std::vector<std::shared_ptr<const Primitive>> by_mesh;
+    std::vector<char> tried;  // built (or found unusable) already
+};
+
 class ObjectNode {
 public:
     // Builds the node for `obj`; returns nullptr (after a warning) for objects that cannot be
     // hit at all (degenerate shapes, empty meshes). Throws glint::Error on invalid input.
+    // With `shared`, meshes behind a transform are built once per mesh and shared.
     static std::unique_ptr<ObjectNode> build(const scene::Object& obj, const scene::Scene& scene,
-                                             Diagnostics& diag);
+                                             Diagnostics& diag, SharedMeshes* shared = nullptr);
 
     // A node around a primitive made outside build() (merged meshes, geometry.cpp): `like`
     // gives the transform, material and flags (no inverse, clipping or bounding); with
@@ -73,7 +81,7 @@ private:
 
     Transform xf_;
     bool identity_ = true;
-    std::unique_ptr<Primitive> prim_;  // leaf, or:
+    std::shared_ptr<const Primitive> prim_;  // leaf (shared between instances of a mesh), or:
     bool whole_hit_ = false;           // prim_->writes_whole_hit()
     bool is_csg_ = false;
     scene::CsgOp op_ = scene::CsgOp::Union;
