@@ -51,6 +51,42 @@ def export(name):
     return doc, summary, warnings, ex, secs
 
 
+def read_view(name, view):
+    """A buffer view of TMP/name/scene.bin as a numpy array (components as columns)."""
+    dt = {"f32": "<f4", "u32": "<u4", "u16": "<u2", "u8": "u1"}[view["type"]]
+    k = view.get("components", 1)
+    a = np.fromfile(os.path.join(TMP, name, "scene.bin"), dtype=dt, count=view["count"] * k,
+                    offset=view["offset"])
+    return a.reshape(-1, k) if k > 1 else a
+
+
+def blender_mesh_arrays(ob):
+    """What the exchange must hold for an object's evaluated mesh, read the slow, plain way."""
+    me = ob.evaluated_get(bpy.context.evaluated_depsgraph_get()).to_mesh()
+    me.calc_loop_triangles()
+    me.calc_normals_split()
+    out = {"positions": np.array([v.co for v in me.vertices]),
+           "loop_vertex": np.array([l.vertex_index for l in me.loops]),
+           "normals": np.array([l.normal for l in me.loops]),
+           "triangles": np.array([t.loops[:] for t in me.loop_triangles]),
+           "smooth": np.array([t.use_smooth for t in me.loop_triangles]),
+           "material_index": np.array([t.material_index for t in me.loop_triangles])}
+    ob.evaluated_get(bpy.context.evaluated_depsgraph_get()).to_mesh_clear()
+    return out
+
+
+def compare_meshes(name, doc, objects):
+    for ob in objects:
+        o = next(o for o in doc["objects"] if o["name"] == ob.name)
+        m = doc["meshes"][o["mesh"]]
+        want = blender_mesh_arrays(ob)
+        for key, expect in want.items():
+            got = read_view(name, m[key])
+            assert got.shape[0] == expect.shape[0], (ob.name, key, got.shape, expect.shape)
+            err = np.abs(got.astype(np.float64) - expect.astype(np.float64)).max()
+            assert err < 1e-6, (ob.name, key, err)
+
+
 def graph_types(g):
     return [n["type"] for n in g["nodes"]]
 
@@ -130,7 +166,21 @@ def test_default_cube():
     bpy.context.active_object.data.materials.append(nomat)
     bpy.context.active_object.data.color_attributes.new("Col", 'BYTE_COLOR', 'CORNER')
     bpy.ops.object.text_add(location=(0, 2, 0))     # text: converted to a mesh
+    bpy.ops.mesh.primitive_uv_sphere_add(location=(-2, 0, 0))
+    smooth = bpy.context.active_object             # smooth, half of it flat
+    smooth.name = "Smooth"
+    for p in smooth.data.polygons:
+        p.use_smooth = p.index % 2 == 0
+        p.material_index = p.index % 3
+    bpy.ops.mesh.primitive_cube_add(location=(-4, 0, 0))
+    custom = bpy.context.active_object             # auto smooth with custom normals
+    custom.name = "Custom"
+    custom.data.use_auto_smooth = True
+    custom.data.normals_split_custom_set_from_vertices([(0.0, 0.0, 1.0)] * 8)
+    custom.modifiers.new("bevel", 'BEVEL')
     doc, summary, warnings, ex, secs = export("default_cube")
+    compare_meshes("default_cube", doc, [cube, plane, bpy.data.objects["Sphere"],
+                                         bpy.data.objects["Text"], smooth, custom])
     names = {o["name"] for o in doc["objects"]}
     assert {"Cube", "Plane", "Sphere", "Text"} <= names, names
     cube_o = next(o for o in doc["objects"] if o["name"] == "Cube")
@@ -322,6 +372,74 @@ def test_camera_and_lights():
     assert lights["Light"]["visibility"]["glossy"] is False
 
 
+def test_object_kinds():
+    """Curves with a bevel, text, surfaces and metaballs become meshes (a curve instanced by a
+    collection instance converted once); geometry-node materials reach their instances; a
+    missing image gives one warning and no path; hair particles are warned about."""
+    reset()
+    bpy.ops.curve.primitive_bezier_circle_add(location=(0, 3, 0))
+    circle = bpy.context.active_object
+    circle.data.bevel_depth = 0.1
+    circle.data.materials.append(bpy.data.materials.new("CurveMat"))
+    col = bpy.data.collections.new("Curves")
+    bpy.context.scene.collection.children.link(col)
+    for c in list(circle.users_collection):
+        c.objects.unlink(circle)
+    col.objects.link(circle)
+    for i in range(2):
+        e = bpy.data.objects.new("CurveInst%d" % i, None)
+        e.instance_type = 'COLLECTION'
+        e.instance_collection = col
+        e.location = (i * 3, 6, 0)
+        bpy.context.scene.collection.objects.link(e)
+    bpy.ops.surface.primitive_nurbs_surface_sphere_add(location=(3, 0, 0))
+    bpy.ops.object.metaball_add(location=(-3, 0, 0))
+    # Geometry nodes: Set Material on the cube's mesh.
+    red = bpy.data.materials.new("Red")
+    cube = bpy.data.objects["Cube"]
+    mod = cube.modifiers.new("GN", 'NODES')
+    tree = bpy.data.node_groups.new("SetMat", "GeometryNodeTree")
+    tree.inputs.new("NodeSocketGeometry", "Geometry")
+    tree.outputs.new("NodeSocketGeometry", "Geometry")
+    gi, go = tree.nodes.new("NodeGroupInput"), tree.nodes.new("NodeGroupOutput")
+    sm = tree.nodes.new("GeometryNodeSetMaterial")
+    sm.inputs["Material"].default_value = red
+    tree.links.new(gi.outputs[0], sm.inputs["Geometry"])
+    tree.links.new(sm.outputs[0], go.inputs[0])
+    mod.node_group = tree
+    # A material with a missing image, used twice.
+    m = bpy.data.materials.new("Missing")
+    m.use_nodes = True
+    tex = m.node_tree.nodes.new("ShaderNodeTexImage")
+    tex.image = bpy.data.images.new("missing.png", 4, 4)
+    tex.image.source = 'FILE'
+    tex.image.filepath = "/nonexistent/missing.png"
+    m.node_tree.links.new(tex.outputs[0], m.node_tree.nodes["Principled BSDF"].inputs[0])
+    bpy.ops.mesh.primitive_plane_add(location=(0, 0, -2))
+    plane = bpy.context.active_object
+    plane.data.materials.append(m)
+    plane.modifiers.new("hair", 'PARTICLE_SYSTEM')
+    plane.particle_systems[0].settings.type = 'HAIR'
+    doc, summary, warnings, _, _ = export("kinds")
+    names = [o["name"] for o in doc["objects"]]
+    assert names.count("BezierCircle") == 3, names  # itself (in the scene) + 2 instances
+    circles = {o["mesh"] for o in doc["objects"] if o["name"] == "BezierCircle"}
+    assert len(circles) == 1, circles
+    for o in doc["objects"]:
+        if o["name"] == "BezierCircle":
+            assert [doc["materials"][k]["name"] for k in o["materials"]] == ["CurveMat"], o
+    assert "SurfSphere" in names and "Mball" in names, names
+    c = next(o for o in doc["objects"] if o["name"] == "Cube")
+    slot = int(read_view("kinds", doc["meshes"][c["mesh"]]["material_index"])[0])
+    assert doc["materials"][c["materials"][slot]]["name"] == "Red", (c["materials"], slot)
+    img = next(n for n in doc["materials"][next(
+        i for i, mm in enumerate(doc["materials"]) if mm["name"] == "Missing")]["graph"]["nodes"]
+        if n["type"] == "ShaderNodeTexImage")["props"]["image"]
+    assert img["path"] is None and "missing" in img, img
+    assert sum("missing.png" in w for w in warnings) == 1, warnings
+    assert any("hair particles" in w for w in warnings), warnings
+
+
 def test_left_out():
     reset()
     bpy.ops.object.volume_add()
@@ -404,7 +522,7 @@ def test_timing_suzannes():
 
 
 TESTS = [test_default_cube, test_muted_and_dangling, test_instances, test_motion_blur,
-         test_camera_and_lights, test_left_out]
+         test_camera_and_lights, test_object_kinds, test_left_out]
 TIMING = [test_timing_grid, test_timing_suzannes]
 
 

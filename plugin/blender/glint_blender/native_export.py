@@ -85,7 +85,8 @@ def random_float(random_id):
 
 
 class _Buffer:
-    """scene.bin, written as views are added (each 4-byte aligned)."""
+    """scene.bin, written as views are added (each 4-byte aligned). (A writer thread that
+    overlapped the writes with the reads measured slower: the GIL hand-overs cost more.)"""
     _DTYPES = {"f32": "<f4", "u32": "<u4", "u16": "<u2", "u8": "u1"}
 
     def __init__(self, path):
@@ -111,7 +112,11 @@ class _Buffer:
 
 
 def _matrix(m):
-    return [node_graphs.finite(x) for row in m for x in row]
+    """A Matrix as 16 numbers, row-major."""
+    out = [*m[0], *m[1], *m[2], *m[3]]
+    if not math.isfinite(sum(out)):
+        out = [node_graphs.finite(x) for x in out]
+    return out
 
 
 # ----------------------------------------------------------------------------- meshes
@@ -124,29 +129,80 @@ def _get(collection, attr, n, dtype):
     return out
 
 
+def _rows(a, k=3):
+    """An (n, k) float32 array seen as n opaque rows: fancy indexing moves whole rows at once
+    (several times faster than indexing the 2-D array)."""
+    return np.ascontiguousarray(a, dtype=np.float32).reshape(-1).view(
+        np.dtype((np.void, 4 * k)))
+
+
+class _Polys:
+    """Per-triangle polygon data, read only when needed."""
+
+    def __init__(self, me, nt):
+        self.me, self.nt, self._index = me, nt, None
+
+    def index(self):
+        if self._index is None:
+            self._index = _get(self.me.loop_triangles, "polygon_index", self.nt, np.uint32)
+        return self._index
+
+    def per_triangle(self, values):
+        """values per polygon -> per triangle (no read when they are all equal)."""
+        if len(values) and (values == values[0]).all():
+            return np.full(self.nt, values[0], dtype=values.dtype)
+        return values[self.index()]
+
+
+def _corner_normals(me, nl, tris, polys, smooth, loop_vertex):
+    """Blender's split normals per corner. Without Auto Smooth (so without custom normals) they
+    are the vertex normals on smooth faces and the face normal on flat ones, read raw and
+    gathered (several times faster); else the triangles' split_normals scattered to their
+    corners (every corner belongs to a triangle)."""
+    nv, npoly = len(me.vertices), len(me.polygons)
+    if not me.use_auto_smooth:
+        vn = _get(me.vertex_normals, "vector", nv * 3, np.float32)
+        normals = _rows(vn)[loop_vertex]
+        flat = ~smooth
+        if flat.any():
+            pn = _rows(_get(me.polygon_normals, "vector", npoly * 3, np.float32))
+            corners = tris.reshape(-1, 3)[flat]
+            per_tri = pn[polys.index()[flat]]
+            for k in range(3):
+                normals[corners[:, k]] = per_tri
+        return normals.view(np.float32)
+    me.calc_normals_split()
+    normals = np.zeros(nl, dtype=np.dtype((np.void, 12)))
+    normals[tris] = _rows(_get(me.loop_triangles, "split_normals", len(tris) * 3, np.float32))
+    return normals.view(np.float32)
+
+
 def mesh_entry(me, name, buf):
     """One evaluated mesh as FORMAT.md's mesh entry (arrays into buf); None without
-    triangles."""
+    triangles. Unsigned Blender fields are read into uint32 arrays (foreach_get's raw path:
+    about ten times faster than into int32)."""
     me.calc_loop_triangles()
     nt = len(me.loop_triangles)
     if nt == 0:
         return None
-    me.calc_normals_split()
     nv, nl, npoly = len(me.vertices), len(me.loops), len(me.polygons)
-    tris = _get(me.loop_triangles, "loops", nt * 3, np.int32)
-    poly = _get(me.loop_triangles, "polygon_index", nt, np.int32)
-    smooth = _get(me.polygons, "use_smooth", npoly, bool)[poly]
+    polys = _Polys(me, nt)
+    tris = _get(me.loop_triangles, "loops", nt * 3, np.uint32)
+    smooth = polys.per_triangle(_get(me.polygons, "use_smooth", npoly, bool))
     attr = me.attributes.get("material_index")
     if attr is not None and attr.domain == 'FACE' and attr.data_type == 'INT':
-        mat = np.clip(_get(attr.data, "value", npoly, np.int32), 0, 0xFFFF)[poly]
+        mat = polys.per_triangle(np.clip(_get(attr.data, "value", npoly, np.int32), 0,
+                                         0xFFFF).astype(np.uint16))
     else:
-        mat = np.zeros(nt, dtype=np.int32)
+        mat = np.zeros(nt, dtype=np.uint16)
+    loop_vertex = _get(me.loops, "vertex_index", nl, np.uint32)
     entry = {
         "name": name,
         "positions": buf.view(_get(me.vertices, "co", nv * 3, np.float32), "f32", 3),
-        "loop_vertex": buf.view(_get(me.loops, "vertex_index", nl, np.int32), "u32"),
+        "loop_vertex": buf.view(loop_vertex, "u32"),
         "triangles": buf.view(tris, "u32", 3),
-        "normals": buf.view(_get(me.loops, "normal", nl * 3, np.float32), "f32", 3),
+        "normals": buf.view(_corner_normals(me, nl, tris, polys, smooth, loop_vertex), "f32",
+                            3),
         "smooth": buf.view(smooth, "u8"),
         "material_index": buf.view(mat, "u16"),
         "uv_layers": [{"name": uv.name, "active_render": uv.active_render,
@@ -296,31 +352,17 @@ class _Exporter:
     # -- meshes and objects -------------------------------------------------------------
 
     def mesh(self, ob):
-        """The mesh index of an evaluated surface object; None when it has no triangles."""
-        if ob.type == 'MESH':
-            key = ("mesh", ob.data.as_pointer())
-        else:  # curves, text, surfaces, metaballs: converted once per object
-            key = ("object", _original(ob).as_pointer())
-        if key in self.mesh_index:
-            return self.mesh_index[key]
-        if ob.type == 'MESH':
+        """The mesh index of an evaluated object's mesh, None when it has no triangles. Curves,
+        text, surfaces and metaballs reach here as the meshes Blender evaluated them to: the
+        depsgraph lists those as instances of their object (and, as Cycles does, the curve
+        object itself is skipped: its data is not a mesh)."""
+        key = ob.data.as_pointer()
+        if key not in self.mesh_index:
             entry = mesh_entry(ob.data, ob.data.name, self.buf)
-        else:
-            real = _original(ob).evaluated_get(self.dg)
-            try:
-                me = real.to_mesh()
-            except RuntimeError:
-                me = None
-            entry = None
-            if me is not None:
-                entry = mesh_entry(me, _original(ob).data.name, self.buf)
-                real.to_mesh_clear()
-        idx = None
-        if entry is not None:
-            idx = len(self.meshes)
-            self.meshes.append(entry)
-        self.mesh_index[key] = idx
-        return idx
+            self.mesh_index[key] = None if entry is None else len(self.meshes)
+            if entry is not None:
+                self.meshes.append(entry)
+        return self.mesh_index[key]
 
     def parent(self, p):
         key = p.as_pointer()
@@ -577,7 +619,7 @@ class _Exporter:
                 cam_mats.append(_matrix(scene.camera.matrix_world))
                 for inst in self.dg.object_instances:
                     ob = inst.object
-                    if ob.type not in SURFACE_TYPES:
+                    if not isinstance(ob.data, bpy.types.Mesh):
                         continue
                     mats = obj_mats.get(_instance_key(inst, ob))
                     if mats is not None:
@@ -622,7 +664,7 @@ class _Exporter:
                     ob = inst.object
                     if ob.type == 'LIGHT':
                         self.add_light(inst, ob)
-                    elif ob.type in SURFACE_TYPES and inst.show_self:
+                    elif inst.show_self and isinstance(ob.data, bpy.types.Mesh):
                         self.add_object(inst, ob)
             finally:
                 self.buf.close()
@@ -639,8 +681,9 @@ class _Exporter:
                "world": world, "meshes": self.meshes, "materials": self.materials,
                "objects": self.objects, "lights": self.lights}
         json_path = os.path.join(self.out_dir, JSON_NAME)
-        with open(json_path, "w", encoding="utf-8") as f:
-            json.dump(doc, f, separators=(",", ":"), allow_nan=False)
+        text = json.dumps(doc, separators=(",", ":"), allow_nan=False)  # C encoder: json.dump
+        with open(json_path, "w", encoding="utf-8") as f:                # is pure Python
+            f.write(text)
         return json_path, width, height
 
 
