@@ -148,8 +148,9 @@ class Checker:
                 assert lo <= hi and curves["tables"] and all(
                     len(t) == 256 for t in curves["tables"]), w + ".props.curves"
             image = n["props"].get("image")
-            if image is not None and image.get("path"):
-                assert isinstance(image["path"], str), w + ".props.image.path"
+            if image is not None:
+                assert isinstance(image.get("path"), str) or "missing" in image, \
+                    w + ".props.image: neither a path nor missing"
 
     def check(self):
         d = self.doc

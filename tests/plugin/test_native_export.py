@@ -435,7 +435,7 @@ def test_object_kinds():
     img = next(n for n in doc["materials"][next(
         i for i, mm in enumerate(doc["materials"]) if mm["name"] == "Missing")]["graph"]["nodes"]
         if n["type"] == "ShaderNodeTexImage")["props"]["image"]
-    assert img["path"] is None and "missing" in img, img
+    assert "path" not in img and "missing" in img, img
     assert sum("missing.png" in w for w in warnings) == 1, warnings
     assert any("hair particles" in w for w in warnings), warnings
 

@@ -293,10 +293,10 @@ class _Images:
                 entry["path"] = images.image_path(image)  # glint resolves frames and tiles
             else:
                 problem = images.image_problem(image)
-                entry["path"] = None if problem else exporter.image_file(image, self.out_dir,
-                                                                         self.warn)
-                if problem:
+                if problem:  # no "path": Cycles' magenta
                     entry["missing"] = problem
+                else:
+                    entry["path"] = exporter.image_file(image, self.out_dir, self.warn)
             self.done[key] = entry
         if entry.get("missing"):
             self.missing.add(image, entry["missing"], user)
