@@ -340,6 +340,16 @@ def test_motion_blur():
                                             "shutter": 0.5}
     assert scene.frame_current == 1 and scene.frame_subframe == 0.0
     assert "motion" not in doc["camera"]  # the camera does not move
+    # Shutter opening at the frame: Cycles syncs the scene at the shutter's middle.
+    scene.cycles.motion_blur_position = 'START'
+    scene.frame_set(1, subframe=0.25)
+    x_mid = cube.evaluated_get(bpy.context.evaluated_depsgraph_get()).matrix_world[0][3]
+    scene.frame_set(1)
+    doc, _, _, _, _ = export("motion_start")
+    o = next(o for o in doc["objects"] if o["name"] == "Cube")
+    assert abs(o["matrix"][3] - x_mid) < 1e-6 and abs(o["motion"][1][3] - x_mid) < 1e-6, (
+        o["matrix"][3], x_mid)
+    assert scene.frame_current == 1 and scene.frame_subframe == 0.0
 
 
 def test_camera_and_lights():

@@ -10,9 +10,11 @@ writes into out_dir:
     command.txt   the glint command line that renders it
 
 Meshes are read with numpy and foreach_get, each evaluated mesh once however many objects (linked
-duplicates, collection / particle / geometry-node instances) use it; each instance is an object
-entry with its matrix, materials, ray visibility and Object Info values as Cycles 3.4 sets them
-(intern/cycles/blender/object.cpp). Shader graphs are flattened in node_graphs.py.
+duplicates, collection / particle / geometry-node instances) use it; curves, text, surfaces and
+metaballs are the meshes the depsgraph evaluated them to (listed as instances of their object,
+as Cycles renders them). Each instance is an object entry with its matrix, materials, ray
+visibility and Object Info values as Cycles 3.4 sets them (intern/cycles/blender/object.cpp).
+Shader graphs are flattened in node_graphs.py.
 
 With motion blur on, the frame is set to the shutter's sample times (engine.frame_set when an
 engine is given, else the scene's frame_set) and set back afterwards, as Cycles' sync does.
@@ -391,7 +393,7 @@ class _Exporter:
             label = "object '%s'" % orig.name
             data = orig.data
             if data is not None and data.name != orig.name:
-                label += " (%s '%s')" % ("mesh" if ob.type == 'MESH' else ob.type.lower(),
+                label += " (%s '%s')" % ("mesh" if orig.type == 'MESH' else orig.type.lower(),
                                          data.name)
             self.names["object"].setdefault(ob.name, label)
             info = self.object_info[key] = (mesh, mats, _visibility(ob), ob.is_shadow_catcher,
