@@ -102,8 +102,7 @@ float3 vector_rotate_node(VectorRotateType type, float3 vector, float3 center, f
         const float3 d = vector - center;
         return (invert ? rotate_direction_transposed(r, d) : rotate_direction(r, d)) + center;
     }
-    float3 unit(0.0f);
-    float length = 1.0f;
+    float3 unit;
     switch (type) {
         case VectorRotateType::X_AXIS:
             unit = {1.0f, 0.0f, 0.0f};
@@ -114,12 +113,13 @@ float3 vector_rotate_node(VectorRotateType type, float3 vector, float3 center, f
         case VectorRotateType::Z_AXIS:
             unit = {0.0f, 0.0f, 1.0f};
             break;
-        default:
-            length = len(axis);
+        default: {
+            const float length = len(axis);
+            if (length == 0.0f) return vector;  // no axis: no rotation
             unit = axis / length;
             break;
+        }
     }
-    if (length == 0.0f) return vector;
     return rotate_around_axis(vector - center, unit, invert ? -angle : angle) + center;
 }
 
