@@ -10,7 +10,6 @@ Cycles render's sync time, 10,000 linked Suzannes) and prints their times. Exits
 fails.
 """
 
-import math
 import os
 import shutil
 import sys
@@ -308,8 +307,8 @@ def test_instances():
     by_mesh = {}
     for o in doc["objects"]:
         by_mesh.setdefault(o["mesh"], []).append(o["name"])
-    print("  instances: %s, %.3f s; objects per mesh: %s" % (
-        summary, secs, {"%d:%s" % (k, doc["meshes"][k]["name"]): len(v) for k, v in by_mesh.items()}))
+    per_mesh = {"%d:%s" % (k, doc["meshes"][k]["name"]): len(v) for k, v in by_mesh.items()}
+    print("  instances: %s, %.3f s; objects per mesh: %s" % (summary, secs, per_mesh))
     # The monkey itself, 3 collection instances, 20 particles and Dup0..2 share one mesh; the 4
     # geometry-node instances share the copy geometry nodes made; Dup3 has its own (subsurf).
     counts = sorted(len(v) for v in by_mesh.values())
@@ -460,29 +459,22 @@ def test_left_out():
 # ----------------------------------------------------------------------------- timing
 
 
-def cycles_sync_seconds(label):
-    """Seconds Cycles spends before its first sample (scene sync, BVH build included): a
-    1-sample 8 x 8 render, timed from the render's start to the end minus render time."""
+def cycles_render_seconds(label):
+    """Seconds of a Cycles render of the scene at 1 sample, 8 x 8 pixels: Cycles' sync of the
+    Blender data, its device update (BVH build) and one sample. (Cycles' own sync time alone is
+    printed by `blender -b f.blend -E CYCLES --debug-cycles -f 1`: "Total time spent
+    synchronizing data".)"""
     scene = bpy.context.scene
     scene.render.engine = 'CYCLES'
     scene.cycles.samples = 1
     scene.cycles.use_denoising = False
     scene.render.resolution_x = scene.render.resolution_y = 8
     scene.render.resolution_percentage = 100
-    stamps = []
-    bpy.app.handlers.render_init.append(lambda *a: stamps.append(("init", time.perf_counter())))
-    bpy.app.handlers.render_stats.append(
-        lambda s, *a: stamps.append((str(s), time.perf_counter())))
     t0 = time.perf_counter()
     bpy.ops.render.render()
     total = time.perf_counter() - t0
-    bpy.app.handlers.render_init.clear()
-    bpy.app.handlers.render_stats.clear()
-    first_sample = next((t for s, t in stamps if "Sample" in s), None)
-    sync = (first_sample - t0) if first_sample else None
-    print("  cycles (%s): whole 1-sample render %.3f s, until the first sample %s" % (
-        label, total, "%.3f s" % sync if sync else "?"))
-    return total, sync
+    print("  cycles (%s): 1-sample render %.3f s" % (label, total))
+    return total
 
 
 def test_timing_grid():
@@ -502,7 +494,7 @@ def test_timing_grid():
         times.append(secs)
     print("  grid export: %s; %s s (best %.3f s)" % (summary, ", ".join(
         "%.3f" % t for t in times), min(times)))
-    cycles_sync_seconds("grid")
+    assert min(times) < cycles_render_seconds("grid"), "slower than Cycles' whole render"
 
 
 def test_timing_suzannes():
@@ -528,7 +520,8 @@ def test_timing_suzannes():
         ntri, summary, ", ".join("%.3f" % t for t in times)))
     assert summary["meshes"] == 1 and summary["objects"] == 10001, summary
     assert ntri == 15744, ntri
-    cycles_sync_seconds("suzannes")
+    assert min(times) < 2.0, times
+    cycles_render_seconds("suzannes")
 
 
 TESTS = [test_default_cube, test_muted_and_dangling, test_instances, test_motion_blur,
