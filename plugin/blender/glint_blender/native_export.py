@@ -565,6 +565,9 @@ class _Exporter:
 
     def left_out(self):
         exporter.left_out_warnings(self.dg, self.warn)
+        if self.motion and _original(self.scene).cycles.rolling_shutter_type != 'NONE':
+            self.warn("rolling shutter is not supported by glint: the whole frame is exposed "
+                      "at once")
         hair, adaptive, deform, seen = [], [], [], set()
         experimental = _original(self.scene).cycles.feature_set == 'EXPERIMENTAL'
         for inst in self.dg.object_instances:
