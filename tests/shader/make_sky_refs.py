@@ -1,7 +1,7 @@
 """Reference values for tests/unit/shader_sky_test.cpp, rendered by Cycles itself.
 
     blender -b --factory-startup --python tests/shader/make_sky_refs.py -- \
-        [--json DIR] [--only CASE[,CASE...]] [--every N]
+        [--json DIR] [--only CASE[,CASE...]] [--start I] [--every N]
 
 Each case is a world whose Background (strength 1) is fed by a Sky Texture node with the
 case's settings. A panoramic equirectangular camera at the origin sees the sky; every view is
@@ -16,9 +16,11 @@ Views: 'sphere' is the whole sphere (48 x 24 pixels); 'sun' (Nishita cases with 
 is a 24 x 24 window of +-1.25 sun diameters around the sun.
 
 With --json DIR every pixel of every view is written to DIR/<case>_<view>.json as
-[dx, dy, dz, r, g, b] rows (for a full comparison). On stdout the script prints C++ rows
-{dx, dy, dz, r, g, b} for every N-th pixel of each view (default 37), ready to paste into the
-test's tables.
+[dx, dy, dz, r, g, b] rows (for a full comparison). On stdout the script prints, per case, a
+C++ table of SkyRef rows {in_sun_view, dx, dy, dz, r, g, b}: every N-th pixel of the sphere
+view from pixel I on (default 67 from 300, mostly above z = -0.4, where the Nishita sky is
+black) and every other pixel of the sun view's middle scanline, ready to paste into
+the test.
 """
 
 import argparse
@@ -62,8 +64,16 @@ def parse_args():
     p = argparse.ArgumentParser()
     p.add_argument("--json", default=None)
     p.add_argument("--only", default=None)
-    p.add_argument("--every", type=int, default=37)
+    p.add_argument("--start", type=int, default=300)
+    p.add_argument("--every", type=int, default=67)
     return p.parse_args(argv)
+
+
+def float_literal(x):
+    s = f"{x:.9g}"
+    if not any(c in s for c in ".en"):
+        s += ".0"
+    return s + "f"
 
 
 def setup_scene():
@@ -154,6 +164,7 @@ def main():
     for name, settings in CASES.items():
         if only and name not in only:
             continue
+        printed = []
         for view, w, h, rot, (lat0, lat1, lon0, lon1) in views(settings):
             scene.render.resolution_x = w
             scene.render.resolution_y = h
@@ -176,9 +187,17 @@ def main():
                 os.makedirs(args.json, exist_ok=True)
                 with open(os.path.join(args.json, f"{name}_{view}.json"), "w") as f:
                     json.dump({"case": name, "view": view, "rows": rows}, f)
-            print(f"// {name} / {view}")
-            for i in range(0, len(rows), args.every):
-                print("    {" + ", ".join(f"{x:.9g}f" for x in rows[i]) + "},")
+            if view == "sphere":
+                picked = range(args.start, len(rows), args.every)
+            else:  # the middle scanline, across the disc
+                picked = range((h // 2) * w, (h // 2 + 1) * w, 2)
+            printed.extend((view, rows[i]) for i in picked)
+        cname = "".join(p.capitalize() for p in name.split("_"))
+        print(f"constexpr SkyRef kRef{cname}[] = {{")
+        for view, r in printed:
+            vals = ", ".join(float_literal(x) for x in r)
+            print(f"    {{{'true' if view == 'sun' else 'false'}, {vals}}},")
+        print("};")
     sys.stdout.flush()
 
 

@@ -55,7 +55,8 @@ float3 lerp(float3 a, float3 b, float t) { return a + t * (b - a); }
 
 // XYZ -> scene linear, negative components set to zero (Cycles' xyz_to_rgb_clamped).
 float3 xyz_to_scene_linear(float3 xyz) {
-    return {std::max(dot(kCyclesXyzToRgb.r, xyz), 0.0f), std::max(dot(kCyclesXyzToRgb.g, xyz), 0.0f),
+    return {std::max(dot(kCyclesXyzToRgb.r, xyz), 0.0f),
+            std::max(dot(kCyclesXyzToRgb.g, xyz), 0.0f),
             std::max(dot(kCyclesXyzToRgb.b, xyz), 0.0f)};
 }
 
@@ -119,10 +120,10 @@ double blend_albedo_turbidity(double turbidity, double albedo, F value) {
 
 // ---- Nishita (single scattering, Blender's intern/sky) ---------------------------------------
 
-constexpr float kRayleighScale = 8e3f;        // scale height (m)
-constexpr float kMieScale = 1.2e3f;           // scale height (m)
-constexpr float kMieCoeff = 2e-5f;            // scattering coefficient (1/m)
-constexpr float kMieG = 0.76f;                // aerosol anisotropy
+constexpr float kRayleighScale = 8e3f;  // scale height (m)
+constexpr float kMieScale = 1.2e3f;     // scale height (m)
+constexpr float kMieCoeff = 2e-5f;      // scattering coefficient (1/m)
+constexpr float kMieG = 0.76f;          // aerosol anisotropy
 constexpr float kMieG2 = kMieG * kMieG;
 constexpr float kEarthRadius = 6360e3f;       // m
 constexpr float kAtmosphereRadius = 6420e3f;  // m
@@ -156,28 +157,27 @@ constexpr float kOzoneCoeff[kWavelengths] = {
     0.00000215125863128643f, 0.00000159051840791988f, 0.00000112356197979857f,
     0.00000073527551487574f, 0.00000046450130357806f, 0.00000033096079921048f,
     0.00000022512612292678f, 0.00000014879129266490f, 0.00000016828623364192f};
-constexpr float kCmf[kWavelengths][3] = {
-    {0.00136800000f, 0.00003900000f, 0.00645000100f},
-    {0.01431000000f, 0.00039600000f, 0.06785001000f},
-    {0.13438000000f, 0.00400000000f, 0.64560000000f},
-    {0.34828000000f, 0.02300000000f, 1.74706000000f},
-    {0.29080000000f, 0.06000000000f, 1.66920000000f},
-    {0.09564000000f, 0.13902000000f, 0.81295010000f},
-    {0.00490000000f, 0.32300000000f, 0.27200000000f},
-    {0.06327000000f, 0.71000000000f, 0.07824999000f},
-    {0.29040000000f, 0.95400000000f, 0.02030000000f},
-    {0.59450000000f, 0.99500000000f, 0.00390000000f},
-    {0.91630000000f, 0.87000000000f, 0.00165000100f},
-    {1.06220000000f, 0.63100000000f, 0.00080000000f},
-    {0.85444990000f, 0.38100000000f, 0.00019000000f},
-    {0.44790000000f, 0.17500000000f, 0.00002000000f},
-    {0.16490000000f, 0.06100000000f, 0.00000000000f},
-    {0.04677000000f, 0.01700000000f, 0.00000000000f},
-    {0.01135916000f, 0.00410200000f, 0.00000000000f},
-    {0.00289932700f, 0.00104700000f, 0.00000000000f},
-    {0.00069007860f, 0.00024920000f, 0.00000000000f},
-    {0.00016615050f, 0.00006000000f, 0.00000000000f},
-    {0.00004150994f, 0.00001499000f, 0.00000000000f}};
+constexpr float kCmf[kWavelengths][3] = {{0.00136800000f, 0.00003900000f, 0.00645000100f},
+                                         {0.01431000000f, 0.00039600000f, 0.06785001000f},
+                                         {0.13438000000f, 0.00400000000f, 0.64560000000f},
+                                         {0.34828000000f, 0.02300000000f, 1.74706000000f},
+                                         {0.29080000000f, 0.06000000000f, 1.66920000000f},
+                                         {0.09564000000f, 0.13902000000f, 0.81295010000f},
+                                         {0.00490000000f, 0.32300000000f, 0.27200000000f},
+                                         {0.06327000000f, 0.71000000000f, 0.07824999000f},
+                                         {0.29040000000f, 0.95400000000f, 0.02030000000f},
+                                         {0.59450000000f, 0.99500000000f, 0.00390000000f},
+                                         {0.91630000000f, 0.87000000000f, 0.00165000100f},
+                                         {1.06220000000f, 0.63100000000f, 0.00080000000f},
+                                         {0.85444990000f, 0.38100000000f, 0.00019000000f},
+                                         {0.44790000000f, 0.17500000000f, 0.00002000000f},
+                                         {0.16490000000f, 0.06100000000f, 0.00000000000f},
+                                         {0.04677000000f, 0.01700000000f, 0.00000000000f},
+                                         {0.01135916000f, 0.00410200000f, 0.00000000000f},
+                                         {0.00289932700f, 0.00104700000f, 0.00000000000f},
+                                         {0.00069007860f, 0.00024920000f, 0.00000000000f},
+                                         {0.00016615050f, 0.00006000000f, 0.00000000000f},
+                                         {0.00004150994f, 0.00001499000f, 0.00000000000f}};
 
 // Optical depth towards the top of the atmosphere by 8-point Gauss-Laguerre quadrature over
 // the ray scaled to length 25 (nodes / 25; weights with exp(node) folded in, / 25).
@@ -275,7 +275,8 @@ void scatter_along_ray(float3 view_dir, float3 sun_dir, float3 origin, const Atm
         const float3 density = atm.density_scale * densities(len(p) - kEarthRadius);
         view_depth += step_length * density;
         if (!hits_ground(p, sun_dir)) {
-            const float3 total = view_depth + atm.density_scale * optical_depth_to_space(p, sun_dir);
+            const float3 total =
+                view_depth + atm.density_scale * optical_depth_to_space(p, sun_dir);
             for (int w = 0; w < kWavelengths; w++) {
                 const float3 extinction =
                     total * float3(kRayleighCoeff[w], 1.11f * kMieCoeff, kOzoneCoeff[w]);
@@ -321,8 +322,7 @@ float3 sun_radiance(float elevation, float altitude, float air, float dust, floa
     const float3 depth = optical_depth_to_space(origin, geographic_direction(elevation, 0.0f));
     float spectrum[kWavelengths];
     for (int i = 0; i < kWavelengths; i++) {
-        const float tau =
-            kRayleighCoeff[i] * depth.x * air + 1.11f * kMieCoeff * depth.y * dust;
+        const float tau = kRayleighCoeff[i] * depth.x * air + 1.11f * kMieCoeff * depth.y * dust;
         spectrum[i] = kIrradiance[i] * std::exp(-tau) / solid_angle;
     }
     return spectrum_to_xyz(spectrum);
@@ -360,12 +360,21 @@ SkyModel SkyModel::prepare(const SkyParams& params) {
                 (0.15346f * th3 - 0.26756f * th2 + 0.06670f * theta + 0.26688f);
             // Perez coefficients A..E for Y, x, y (linear in turbidity).
             const float coef[3][5][2] = {
-                {{0.1787f, -1.4630f}, {-0.3554f, 0.4275f}, {-0.0227f, 5.3251f},
-                 {0.1206f, -2.5771f}, {-0.0670f, 0.3703f}},
-                {{-0.0193f, -0.2592f}, {-0.0665f, 0.0008f}, {-0.0004f, 0.2125f},
-                 {-0.0641f, -0.8989f}, {-0.0033f, 0.0452f}},
-                {{-0.0167f, -0.2608f}, {-0.0950f, 0.0092f}, {-0.0079f, 0.2102f},
-                 {-0.0441f, -1.6537f}, {-0.0109f, 0.0529f}},
+                {{0.1787f, -1.4630f},
+                 {-0.3554f, 0.4275f},
+                 {-0.0227f, 5.3251f},
+                 {0.1206f, -2.5771f},
+                 {-0.0670f, 0.3703f}},
+                {{-0.0193f, -0.2592f},
+                 {-0.0665f, 0.0008f},
+                 {-0.0004f, 0.2125f},
+                 {-0.0641f, -0.8989f},
+                 {-0.0033f, 0.0452f}},
+                {{-0.0167f, -0.2608f},
+                 {-0.0950f, 0.0092f},
+                 {-0.0079f, 0.2102f},
+                 {-0.0441f, -1.6537f},
+                 {-0.0109f, 0.0529f}},
             };
             const float zenith[3] = {zenith_lum, zenith_x, zenith_y};
             for (int c = 0; c < 3; c++) {
@@ -377,7 +386,9 @@ SkyModel SkyModel::prepare(const SkyParams& params) {
                 m.scale_[c] = zenith[c] / perez(m.config_[c], 0.0f, theta);
             }
         } else {
-            const float turbidity = std::clamp(params.turbidity, 1.0f, 10.0f);
+            // Cycles clamps to [0, 10]; Blender's property range starts at 1, the lowest the
+            // data covers (NaN is taken as 1).
+            const float turbidity = std::fmin(std::fmax(params.turbidity, 1.0f), 10.0f);
             const float sun_theta = std::clamp(theta, 0.0f, kHalfPi);
             m.sun_theta_ = sun_theta;
             const double elevation = static_cast<double>(kHalfPi - sun_theta);
@@ -473,13 +484,17 @@ float3 SkyModel::hosek_wilkie(float3 dir) const {
 // Cycles' bilinear image lookup (INTERPOLATION_LINEAR, EXTENSION_EXTEND) of the table at
 // normalized (x, y).
 float3 SkyModel::table_lookup(float x, float y) const {
-    const auto split = [](float v, int* i) {
+    // Integer part (rounded down) and fraction, as Cycles' frac(). Coordinates are first
+    // limited to just beyond the table, which changes no result (the texel indices are clamped
+    // to the edge anyway) but keeps the conversion defined for any input, NaN included.
+    const auto split = [](float v, int size, int* i) {
+        v = std::fmin(std::fmax(v, -2.0f), static_cast<float>(size + 1));
         *i = static_cast<int>(v) - (v < 0.0f ? 1 : 0);
         return v - static_cast<float>(*i);
     };
     int ix, iy;
-    const float tx = split(x * static_cast<float>(kTableWidth) - 0.5f, &ix);
-    const float ty = split(y * static_cast<float>(kTableHeight) - 0.5f, &iy);
+    const float tx = split(x * static_cast<float>(kTableWidth) - 0.5f, kTableWidth, &ix);
+    const float ty = split(y * static_cast<float>(kTableHeight) - 0.5f, kTableHeight, &iy);
     const int x0 = std::clamp(ix, 0, kTableWidth - 1);
     const int x1 = std::clamp(ix + 1, 0, kTableWidth - 1);
     const int y0 = std::clamp(iy, 0, kTableHeight - 1);

@@ -15,10 +15,11 @@
 //                 darkening; below the horizon the horizon row fades to black at z = -0.4.
 //
 // Results are in scene-linear Rec.709 (Blender's default colour configuration): XYZ goes
-// through Cycles' film XYZ -> RGB matrix (converter_nodes.h kCyclesXyzToRgb) without clamping,
-// as Cycles 3.4 does. The arithmetic follows Blender's code in single precision (double where
-// Blender's Hosek-Wilkie code uses double), so values agree with Blender 3.4.1's renders to
-// about 1e-6 relative.
+// through Cycles' film XYZ -> RGB matrix (converter_nodes.h kCyclesXyzToRgb) and negative
+// channels become zero, as Cycles 3.4 does for all three types. The arithmetic follows
+// Blender's code in single precision (double where Blender's Hosek-Wilkie code uses double),
+// so values agree with Blender 3.4.1's renders to about 1e-5 relative
+// (tests/unit/shader_sky_test.cpp).
 #pragma once
 
 #include <memory>
@@ -59,7 +60,7 @@ struct SkyParams {
 // A Sky Texture ready to evaluate: what Cycles computes at sync/compile time, then its SVM
 // kernel per direction. Copies share the Nishita table. Thread-safe to evaluate.
 class SkyModel {
-public:
+  public:
     // Size of the precomputed Nishita table (Cycles' SkyLoader image).
     static constexpr int kTableWidth = 512;
     static constexpr int kTableHeight = 128;
@@ -79,7 +80,7 @@ public:
     // sky types.
     float3 table_texel(int x, int y) const;
 
-private:
+  private:
     SkyType type_ = SkyType::NISHITA;
 
     // PREETHAM / HOSEK_WILKIE: the sun's spherical angles (theta from +Z, phi = atan2(x, y)),
