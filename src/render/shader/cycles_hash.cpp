@@ -13,26 +13,44 @@ constexpr u32 rotl(u32 v, int k) { return (v << k) | (v >> (32 - k)); }
 struct Lookup3 {
     u32 a, b, c;
 
-    explicit constexpr Lookup3(u32 words)
-        : a(0xdeadbeefu + (words << 2) + 13u), b(a), c(a) {}
+    explicit constexpr Lookup3(u32 words) : a(0xdeadbeefu + (words << 2) + 13u), b(a), c(a) {}
 
     void mix() {
-        a -= c; a ^= rotl(c, 4); c += b;
-        b -= a; b ^= rotl(a, 6); a += c;
-        c -= b; c ^= rotl(b, 8); b += a;
-        a -= c; a ^= rotl(c, 16); c += b;
-        b -= a; b ^= rotl(a, 19); a += c;
-        c -= b; c ^= rotl(b, 4); b += a;
+        a -= c;
+        a ^= rotl(c, 4);
+        c += b;
+        b -= a;
+        b ^= rotl(a, 6);
+        a += c;
+        c -= b;
+        c ^= rotl(b, 8);
+        b += a;
+        a -= c;
+        a ^= rotl(c, 16);
+        c += b;
+        b -= a;
+        b ^= rotl(a, 19);
+        a += c;
+        c -= b;
+        c ^= rotl(b, 4);
+        b += a;
     }
 
     void finish() {
-        c ^= b; c -= rotl(b, 14);
-        a ^= c; a -= rotl(c, 11);
-        b ^= a; b -= rotl(a, 25);
-        c ^= b; c -= rotl(b, 16);
-        a ^= c; a -= rotl(c, 4);
-        b ^= a; b -= rotl(a, 14);
-        c ^= b; c -= rotl(b, 24);
+        c ^= b;
+        c -= rotl(b, 14);
+        a ^= c;
+        a -= rotl(c, 11);
+        b ^= a;
+        b -= rotl(a, 25);
+        c ^= b;
+        c -= rotl(b, 16);
+        a ^= c;
+        a -= rotl(c, 4);
+        b ^= a;
+        b -= rotl(a, 14);
+        c ^= b;
+        c -= rotl(b, 24);
     }
 };
 

@@ -251,8 +251,10 @@ template <class P>
 float musgrave_at(P p, const MusgraveTextureParams& params, float H, float lacunarity,
                   float octaves, float offset, float gain) {
     switch (params.type) {
-        case MusgraveType::MULTIFRACTAL: return musgrave_multifractal(p, H, lacunarity, octaves);
-        case MusgraveType::FBM: return musgrave_fbm(p, H, lacunarity, octaves);
+        case MusgraveType::MULTIFRACTAL:
+            return musgrave_multifractal(p, H, lacunarity, octaves);
+        case MusgraveType::FBM:
+            return musgrave_fbm(p, H, lacunarity, octaves);
         case MusgraveType::HYBRID_MULTIFRACTAL:
             return musgrave_hybrid_multifractal(p, H, lacunarity, octaves, offset, gain);
         case MusgraveType::RIDGED_MULTIFRACTAL:
@@ -297,9 +299,8 @@ float perlin_3d(float x, float y, float z) {
     for (u32 i = 0; i < 2; ++i)
         for (u32 j = 0; j < 2; ++j)
             for (u32 k = 0; k < 2; ++k)
-                g[i][j][k] = grad3(hash_uint3(C[0] + i, C[1] + j, C[2] + k),
-                                   i ? f[0] - 1.0f : f[0], j ? f[1] - 1.0f : f[1],
-                                   k ? f[2] - 1.0f : f[2]);
+                g[i][j][k] = grad3(hash_uint3(C[0] + i, C[1] + j, C[2] + k), i ? f[0] - 1.0f : f[0],
+                                   j ? f[1] - 1.0f : f[1], k ? f[2] - 1.0f : f[2]);
     // Along x, then y, then z.
     float along_y[2];
     for (int k = 0; k < 2; ++k)
@@ -321,10 +322,10 @@ float perlin_4d(float x, float y, float z, float w) {
                 const float gx = i ? f[0] - 1.0f : f[0];
                 const float gy = j ? f[1] - 1.0f : f[1];
                 const float gz = k ? f[2] - 1.0f : f[2];
-                const float w0 = grad4(hash_uint4(C[0] + i, C[1] + j, C[2] + k, C[3]), gx, gy,
-                                       gz, f[3]);
-                const float w1 = grad4(hash_uint4(C[0] + i, C[1] + j, C[2] + k, C[3] + 1u), gx,
-                                       gy, gz, f[3] - 1.0f);
+                const float w0 =
+                    grad4(hash_uint4(C[0] + i, C[1] + j, C[2] + k, C[3]), gx, gy, gz, f[3]);
+                const float w1 = grad4(hash_uint4(C[0] + i, C[1] + j, C[2] + k, C[3] + 1u), gx, gy,
+                                       gz, f[3] - 1.0f);
                 g[i][j][k] = blend(w0, w1, s);
             }
     float along_y[2];
@@ -431,12 +432,12 @@ MusgraveTextureOutput musgrave_texture(const MusgraveTextureInputs& in,
             out.fac = musgrave_at(in.w * s, params, H, lacunarity, octaves, in.offset, in.gain);
             break;
         case NoiseDimensions::D2:
-            out.fac = musgrave_at(V2{in.vector.x, in.vector.y} * s, params, H, lacunarity,
-                                  octaves, in.offset, in.gain);
+            out.fac = musgrave_at(V2{in.vector.x, in.vector.y} * s, params, H, lacunarity, octaves,
+                                  in.offset, in.gain);
             break;
         case NoiseDimensions::D3:
-            out.fac = musgrave_at(in.vector * s, params, H, lacunarity, octaves, in.offset,
-                                  in.gain);
+            out.fac =
+                musgrave_at(in.vector * s, params, H, lacunarity, octaves, in.offset, in.gain);
             break;
         case NoiseDimensions::D4:
             out.fac = musgrave_at(V4{in.vector.x, in.vector.y, in.vector.z, in.w} * s, params, H,

@@ -72,7 +72,13 @@ NoiseTextureOutput noise_texture(const NoiseTextureInputs& in, const NoiseTextur
 
 // ---- Musgrave Texture (ShaderNodeTexMusgrave) ----
 
-enum class MusgraveType { MULTIFRACTAL, RIDGED_MULTIFRACTAL, HYBRID_MULTIFRACTAL, FBM, HETERO_TERRAIN };
+enum class MusgraveType {
+    MULTIFRACTAL,
+    RIDGED_MULTIFRACTAL,
+    HYBRID_MULTIFRACTAL,
+    FBM,
+    HETERO_TERRAIN,
+};
 
 struct MusgraveTextureParams {
     MusgraveType type = MusgraveType::FBM;             // musgrave_type

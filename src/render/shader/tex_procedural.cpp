@@ -37,24 +37,39 @@ float3 scaled_nudged(float3 co, float scale) {
            0.999999f;
 }
 
-float wave(const WaveTextureParams& params, float3 co, float scale, float distortion,
-           float detail, float detail_scale, float detail_roughness, float phase) {
+float wave(const WaveTextureParams& params, float3 co, float scale, float distortion, float detail,
+           float detail_scale, float detail_roughness, float phase) {
     float3 p = scaled_nudged(co, scale);
     float n;
     if (params.type == WaveType::BANDS) {
         switch (params.bands_direction) {
-            case WaveBandsDirection::X: n = p.x * 20.0f; break;
-            case WaveBandsDirection::Y: n = p.y * 20.0f; break;
-            case WaveBandsDirection::Z: n = p.z * 20.0f; break;
-            default: n = (p.x + p.y + p.z) * 10.0f; break;
+            case WaveBandsDirection::X:
+                n = p.x * 20.0f;
+                break;
+            case WaveBandsDirection::Y:
+                n = p.y * 20.0f;
+                break;
+            case WaveBandsDirection::Z:
+                n = p.z * 20.0f;
+                break;
+            default:
+                n = (p.x + p.y + p.z) * 10.0f;
+                break;
         }
     } else {
         float3 r = p;
         switch (params.rings_direction) {
-            case WaveRingsDirection::X: r *= float3(0.0f, 1.0f, 1.0f); break;
-            case WaveRingsDirection::Y: r *= float3(1.0f, 0.0f, 1.0f); break;
-            case WaveRingsDirection::Z: r *= float3(1.0f, 1.0f, 0.0f); break;
-            default: break;
+            case WaveRingsDirection::X:
+                r *= float3(0.0f, 1.0f, 1.0f);
+                break;
+            case WaveRingsDirection::Y:
+                r *= float3(1.0f, 0.0f, 1.0f);
+                break;
+            case WaveRingsDirection::Z:
+                r *= float3(1.0f, 1.0f, 0.0f);
+                break;
+            default:
+                break;
         }
         n = length3(r) * 20.0f;
     }
@@ -64,9 +79,14 @@ float wave(const WaveTextureParams& params, float3 co, float scale, float distor
         n = madd(distortion, madd(turbulence, 2.0f, -1.0f), n);
     }
     switch (params.profile) {
-        case WaveProfile::SIN: return 0.5f + 0.5f * std::sin(n - kHalfPi);
-        case WaveProfile::SAW: n /= kTwoPi; return n - std::floor(n);
-        case WaveProfile::TRI: n /= kTwoPi; return std::fabs(n - std::floor(n + 0.5f)) * 2.0f;
+        case WaveProfile::SIN:
+            return 0.5f + 0.5f * std::sin(n - kHalfPi);
+        case WaveProfile::SAW:
+            n /= kTwoPi;
+            return n - std::floor(n);
+        case WaveProfile::TRI:
+            n /= kTwoPi;
+            return std::fabs(n - std::floor(n + 0.5f)) * 2.0f;
     }
     return 0.0f;
 }
@@ -107,7 +127,8 @@ float3 magic(float3 p, float scale, int depth, float distortion) {
 float gradient(float3 p, GradientType type) {
     const float x = p.x, y = p.y, z = p.z;
     switch (type) {
-        case GradientType::LINEAR: return x;
+        case GradientType::LINEAR:
+            return x;
         case GradientType::QUADRATIC: {
             const float r = std::fmax(x, 0.0f);
             return r * r;
@@ -117,8 +138,10 @@ float gradient(float3 p, GradientType type) {
             const float t = r * r;
             return madd(3.0f, t, -(2.0f * t * r));
         }
-        case GradientType::DIAGONAL: return (x + y) * 0.5f;
-        case GradientType::RADIAL: return std::atan2(y, x) / kTwoPi + 0.5f;
+        case GradientType::DIAGONAL:
+            return (x + y) * 0.5f;
+        case GradientType::RADIAL:
+            return std::atan2(y, x) / kTwoPi + 0.5f;
         case GradientType::SPHERICAL:
         case GradientType::QUADRATIC_SPHERE: {
             // Biased so that a unit vector gives exactly 0.
@@ -158,8 +181,7 @@ BrickSample brick(float3 p, const BrickTextureInputs& in, const BrickTexturePara
     const int column = floor_to_int(shifted / brick_width);
     const float x = shifted - brick_width * static_cast<float>(column);
     const float y = p.y - row_height * static_cast<float>(row);
-    const unsigned id =
-        (static_cast<unsigned>(row) << 16) + static_cast<unsigned>(column & 0xFFFF);
+    const unsigned id = (static_cast<unsigned>(row) << 16) + static_cast<unsigned>(column & 0xFFFF);
     const float tint = saturate(brick_noise(id) + in.bias);
     float edge = min_c(min_c(x, y), min_c(brick_width - x, row_height - y));
     float mortar;

@@ -17,10 +17,10 @@ enum class WaveRingsDirection { X, Y, Z, SPHERICAL };
 enum class WaveProfile { SIN, SAW, TRI };
 
 struct WaveTextureParams {
-    WaveType type = WaveType::BANDS;                                // wave_type
-    WaveBandsDirection bands_direction = WaveBandsDirection::X;     // bands_direction
-    WaveRingsDirection rings_direction = WaveRingsDirection::X;     // rings_direction
-    WaveProfile profile = WaveProfile::SIN;                         // wave_profile
+    WaveType type = WaveType::BANDS;                             // wave_type
+    WaveBandsDirection bands_direction = WaveBandsDirection::X;  // bands_direction
+    WaveRingsDirection rings_direction = WaveRingsDirection::X;  // rings_direction
+    WaveProfile profile = WaveProfile::SIN;                      // wave_profile
 };
 
 struct WaveTextureInputs {
@@ -61,7 +61,15 @@ MagicTextureOutput magic_texture(const MagicTextureInputs& in, const MagicTextur
 
 // ---- Gradient Texture (ShaderNodeTexGradient) ----
 
-enum class GradientType { LINEAR, QUADRATIC, EASING, DIAGONAL, SPHERICAL, QUADRATIC_SPHERE, RADIAL };
+enum class GradientType {
+    LINEAR,
+    QUADRATIC,
+    EASING,
+    DIAGONAL,
+    SPHERICAL,
+    QUADRATIC_SPHERE,
+    RADIAL,
+};
 
 struct GradientTextureParams {
     GradientType type = GradientType::LINEAR;  // gradient_type
@@ -72,7 +80,7 @@ struct GradientTextureInputs {
 };
 
 struct GradientTextureOutput {
-    float3 color;  // (fac, fac, fac)
+    float3 color;      // (fac, fac, fac)
     float fac = 0.0f;  // clamped to [0, 1]
 };
 
@@ -98,10 +106,10 @@ CheckerTextureOutput checker_texture(const CheckerTextureInputs& in);
 // ---- Brick Texture (ShaderNodeTexBrick) ----
 
 struct BrickTextureParams {
-    float offset = 0.5f;        // offset: shift of every offset_frequency-th row, in bricks
-    int offset_frequency = 2;   // 1 .. 99
-    float squash = 1.0f;        // squash: brick width factor of every squash_frequency-th row
-    int squash_frequency = 2;   // 1 .. 99
+    float offset = 0.5f;       // offset: shift of every offset_frequency-th row, in bricks
+    int offset_frequency = 2;  // 1 .. 99
+    float squash = 1.0f;       // squash: brick width factor of every squash_frequency-th row
+    int squash_frequency = 2;  // 1 .. 99
 };
 
 struct BrickTextureInputs {

@@ -112,7 +112,8 @@ float metric_distance(Pt<N> a, Pt<N> b, VoronoiMetric metric, float exponent) {
     const Pt<N> d = a - b;
     if constexpr (N == 1) return std::fabs(d.c[0]);
     switch (metric) {
-        case VoronoiMetric::EUCLIDEAN: return length(d);
+        case VoronoiMetric::EUCLIDEAN:
+            return length(d);
         case VoronoiMetric::MANHATTAN: {
             float s = std::fabs(d.c[0]);
             for (int i = 1; i < N; ++i) s += std::fabs(d.c[i]);
@@ -225,8 +226,7 @@ Found<N> search_smooth_f1(Pt<N> coord, float smoothness, float exponent, float r
         dist = mix1(dist, d, h) - correction;
         correction /= 1.0f + 3.0f * smoothness;
         color = mix3(color, cell_color(cell + offset), h) - float3(correction);
-        for (int i = 0; i < N; ++i)
-            position.c[i] = mix1(position.c[i], point.c[i], h) - correction;
+        for (int i = 0; i < N; ++i) position.c[i] = mix1(position.c[i], point.c[i], h) - correction;
     });
     return {dist, color, cell + position, 0.0f};
 }
@@ -301,11 +301,13 @@ float search_radius(Pt<N> coord, float randomness) {
 }
 
 template <int N>
-Found<N> evaluate(Pt<N> coord, const VoronoiTextureParams& params, float smoothness,
-                  float exponent, float randomness) {
+Found<N> evaluate(Pt<N> coord, const VoronoiTextureParams& params, float smoothness, float exponent,
+                  float randomness) {
     switch (params.feature) {
-        case VoronoiFeature::F1: return search_f1(coord, exponent, randomness, params.metric);
-        case VoronoiFeature::F2: return search_f2(coord, exponent, randomness, params.metric);
+        case VoronoiFeature::F1:
+            return search_f1(coord, exponent, randomness, params.metric);
+        case VoronoiFeature::F2:
+            return search_f2(coord, exponent, randomness, params.metric);
         case VoronoiFeature::SMOOTH_F1:
             return search_smooth_f1(coord, smoothness, exponent, randomness, params.metric);
         case VoronoiFeature::DISTANCE_TO_EDGE: {

@@ -14,9 +14,9 @@ enum class VoronoiFeature { F1, F2, SMOOTH_F1, DISTANCE_TO_EDGE, N_SPHERE_RADIUS
 enum class VoronoiMetric { EUCLIDEAN, MANHATTAN, CHEBYCHEV, MINKOWSKI };
 
 struct VoronoiTextureParams {
-    NoiseDimensions dimensions = NoiseDimensions::D3;      // voronoi_dimensions
-    VoronoiFeature feature = VoronoiFeature::F1;           // feature
-    VoronoiMetric metric = VoronoiMetric::EUCLIDEAN;       // distance
+    NoiseDimensions dimensions = NoiseDimensions::D3;  // voronoi_dimensions
+    VoronoiFeature feature = VoronoiFeature::F1;       // feature
+    VoronoiMetric metric = VoronoiMetric::EUCLIDEAN;   // distance
 };
 
 // The node's input sockets, with Blender's defaults. Smoothness is the socket's value (the
