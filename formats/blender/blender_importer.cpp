@@ -89,6 +89,22 @@ MeshSource read_mesh(const JsonReader& r, const Buffers& buf, const std::shared_
             for (size_t i = 0; i < loops; ++i) m.uvs[i] = {uv.get(i, 0), uv.get(i, 1)};
         }
     }
+    // Generated coordinates' space: the add-on's, else Blender's automatic one (the bounds;
+    // a flat dimension gets size 1, as BKE_mesh_texspace_calc gives it).
+    if (r.has("texspace")) {
+        const JsonReader ts = r.at("texspace");
+        m.texspace_location = ts.vec3("location", Vec3(0, 0, 0));
+        m.texspace_size = ts.vec3("size", Vec3(1, 1, 1));
+    } else if (!m.positions.empty()) {
+        Vec3 lo = m.positions[0], hi = m.positions[0];
+        for (const Vec3& p : m.positions) lo = min(lo, p), hi = max(hi, p);
+        m.texspace_location = (lo + hi) * 0.5;
+        m.texspace_size = (hi - lo) * 0.5;
+    }
+    for (int k = 0; k < 3; ++k)
+        if (m.texspace_size[k] == 0) m.texspace_size[k] = 1;
+        else if (m.texspace_size[k] > 0 && m.texspace_size[k] < 1e-5) m.texspace_size[k] = 1e-5;
+    m.has_texspace = true;
     std::vector<uint8_t> smooth;
     if (r.has("smooth")) {
         const BufferView s = read_view(r.at("smooth"), buf, 1, {T::U8});
@@ -298,6 +314,12 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
     settings.caustics_reflective = render.boolean("caustics_reflective", true);
     settings.caustics_refractive = render.boolean("caustics_refractive", true);
     scene.blender_render = settings;
+    // Settings the renderer does not have yet: said once each, rendered without.
+    if (settings.film_transparent)
+        diag.warning(loc, "Film > Transparent is not supported yet: the world is rendered "
+                          "behind the objects (alpha 1)");
+    if (render.has("motion_blur") && render.at("motion_blur").boolean("use", false))
+        diag.warning(loc, "motion blur is not supported yet: rendered without it");
 
     double aspx = 1, aspy = 1;
     if (r.has("camera")) {
@@ -359,10 +381,11 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
             if (triangles > limits.triangles)
                 throw Error(ErrorKind::Render, loc,
                             "the scene has more than " + std::to_string(limits.triangles) +
-                                " triangles (limit: --max-triangles)");
+                                " mesh triangles (limit: --max-triangles)");
         }
     }
     std::map<std::pair<int, std::vector<int>>, int> mesh_for;  // (source, slot materials) -> IR mesh
+    bool warned_holdout = false;
     if (r.has("objects")) {
         const JsonReader objects = r.at("objects");
         if (static_cast<long long>(objects.size()) > limits.objects)
@@ -427,6 +450,11 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
             o.no_image = !o.visibility.camera;
             o.no_shadow = !o.visibility.shadow;
             o.holdout = oj.boolean("holdout", false);
+            if (o.holdout && !warned_holdout) {
+                warned_holdout = true;
+                diag.warning(loc, "object '" + o.name + "': holdout is not supported yet: "
+                                  "rendered as a normal object");
+            }
             o.info_color = oj.color("color", Color(1, 1, 1));
             o.pass_index = oj.number("pass_index", 0);
             o.random = oj.number("random", 0);

@@ -71,7 +71,17 @@ scene::ShaderGraph read_graph(const JsonReader& r, const std::string& name,
         if (n.has("outputs"))
             for (size_t k = 0; k < n.at("outputs").size(); ++k) {
                 const JsonReader o = n.at("outputs").at(k);
-                node.outputs.push_back({o.at("id").string(), socket_type(o.string("type", ""))});
+                scene::ShaderOutput out;
+                out.id = o.at("id").string();
+                out.type = socket_type(o.string("type", ""));
+                if (o.has("value")) {
+                    const Json& v = o.at("value").json();
+                    if (v.is_number()) out.value[0] = v.get<double>();
+                    else if (v.is_array())
+                        for (size_t c = 0; c < v.size() && c < 4; ++c)
+                            if (v[c].is_number()) out.value[c] = v[c].get<double>();
+                }
+                node.outputs.push_back(std::move(out));
             }
         if (n.has("props") && n.at("props").json().is_object()) {
             const JsonReader props = n.at("props");

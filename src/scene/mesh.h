@@ -26,6 +26,11 @@ struct Mesh {
     // POV-Ray's inside_vector: lets a closed mesh take part in CSG.
     bool has_inside_vector = false;
     Vec3 inside_vector{0, 0, 1};
+    // Blender's texture space (Generated coordinates: (p - location) / (2 size) + 0.5 in
+    // object space); unset for POV-Ray and OBJ meshes, which then use their bounds.
+    bool has_texspace = false;
+    Vec3 texspace_location{0, 0, 0};
+    Vec3 texspace_size{1, 1, 1};
     std::string name;  // the OBJ object or group ("" for POV-Ray's meshes): named in warnings
     FileLoc loc;
 };

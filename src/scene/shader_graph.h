@@ -34,6 +34,7 @@ struct ShaderInput {
 struct ShaderOutput {
     std::string id;
     SocketType type = SocketType::Value;
+    double value[4] = {0, 0, 0, 0};  // its own value (Value and RGB nodes keep theirs here)
 };
 
 // A node's own settings: enums as their Python identifier strings, numbers and booleans

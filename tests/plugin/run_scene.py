@@ -20,8 +20,8 @@ Cycles seconds per seed image of the references from ref/cycles_times.txt if pre
 """
 
 import argparse
+import json
 import os
-import re
 import shlex
 import shutil
 import subprocess
@@ -77,19 +77,18 @@ def blender_compare(args, *rest):
 
 
 def export_frame(folder):
-    """The frame an export folder holds, from scene.pov's first line ("..., frame N."), or
-    None."""
+    """The frame an export folder holds (scene.json's render.frame), or None."""
     try:
-        with open(os.path.join(folder, "scene.pov")) as f:
-            m = re.search(r"\bframe (-?\d+)", f.readline())
-        return int(m.group(1)) if m else None
-    except OSError:
+        with open(os.path.join(folder, "scene.json")) as f:
+            frame = json.load(f).get("render", {}).get("frame")
+        return int(frame) if frame is not None else None
+    except (OSError, ValueError):
         return None
 
 
 def find_exports(tmp):
     """The kept per-render folders (every folder under tmp holding command.txt), in frame order
-    (scene.pov's header), else oldest first."""
+    (scene.json's render.frame), else oldest first."""
     found = []
     for root, _dirs, files in os.walk(tmp):
         if "command.txt" in files:

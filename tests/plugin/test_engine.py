@@ -6,9 +6,9 @@
 1. A small scene rendered with bpy.ops.render.render through the add-on: the saved image has
    the render size (resolution x percentage), is not empty, and equals bit for bit what glint
    writes when the kept folder's command.txt is run again from the shell.
-2. export_frame: an orthographic camera is written as one; a panoramic camera is an
-   ExportError; depth of field, motion blur and transparent film each give one warning; a
-   scene without meshes leaves out the obj_file.
+2. The native export (scene.json): an orthographic camera is written as one; glint rejects a
+   panoramic camera; depth of field is written and renders; motion blur and transparent film
+   each give one warning from glint; a scene without meshes renders the world alone.
 3. Animation: `blender -b f.blend -E GLINT -a` over a 3-frame camera move writes three frames
    that differ from each other and each equal the CLI re-render of its own export.
 4. make_zip.sh's zip installs through Blender's add-on installer and renders the default scene;
@@ -18,6 +18,7 @@
 
 import argparse
 import glob
+import json
 import os
 import shlex
 import shutil
@@ -122,49 +123,67 @@ def test_messages(work):
     print("messages: %d lines translated as the user reads them" % (len(cases) + 4))
 
 
-def test_export(work):
-    from glint_blender import exporter
+def glint_messages(glint, export):
+    """Runs glint on an export (1 sample, tiny) and returns (exit code, stderr lines)."""
+    r = subprocess.run([glint, "render", export.scene_path, "-o",
+                        os.path.join(export.out_dir, "check.png"), "--spp", "1", "-W", "8",
+                        "-H", "6"], capture_output=True, text=True)
+    return r.returncode, r.stderr.splitlines()
+
+
+def test_export(glint, work):
+    from glint_blender import exporter, native_export
     scene = addon_env.build_scene(width=64, height=48, light=None)
     cam = scene.camera.data
     depsgraph = bpy.context.evaluated_depsgraph_get()
+
+    def export(name):
+        return native_export.export_frame_native(depsgraph, os.path.join(work, name),
+                                                 warnings.append)
 
     cam.type = 'ORTHO'
     cam.ortho_scale = 6.0
     depsgraph.update()
     warnings = []
-    ex = exporter.export_frame(depsgraph, os.path.join(work, "ortho"), warnings.append)
-    text = open(ex.scene_path).read()
-    if "orthographic" not in text or "perspective" in text:
-        fail("an orthographic camera was not written as one:\n" + text)
-    right = [l for l in text.splitlines() if l.strip().startswith("right")][0]
-    if "<6," not in right.replace(" ", ""):
-        fail("ortho_scale 6 should give a right vector of length 6: " + right)
+    ex = export("ortho")
+    data = json.load(open(ex.scene_path))
+    if data["camera"]["type"] != "ORTHO" or abs(data["camera"]["ortho_scale"] - 6) > 1e-6:
+        fail("an orthographic camera was not written as one: %s" % data["camera"])
     if ex.argv[:2] != ["render", ex.scene_path] or ex.width != 64 or ex.height != 48:
         fail("unexpected argv/size: %s %d x %d" % (ex.argv, ex.width, ex.height))
     if not os.path.isfile(os.path.join(work, "ortho", "command.txt")):
         fail("no command.txt")
+    rc, lines = glint_messages(glint, ex)
+    if rc != 0:
+        fail("glint failed on the orthographic export: %s" % lines)
 
     cam.type = 'PANO'
     depsgraph.update()
-    try:
-        exporter.export_frame(depsgraph, os.path.join(work, "pano"), warnings.append)
-        fail("a panoramic camera exported without an error")
-    except exporter.ExportError as e:
-        print("panoramic camera: ExportError: %s" % e)
+    rc, lines = glint_messages(glint, export("pano"))
+    if rc == 0 or not any("panoramic" in l for l in lines):
+        fail("a panoramic camera rendered without an error: %d %s" % (rc, lines))
+    print("panoramic camera: %s" % [l for l in lines if "panoramic" in l][0])
 
+    # Depth of field renders; motion blur and transparent film are said once each.
     cam.type = 'PERSP'
     cam.dof.use_dof = True
     scene.render.use_motion_blur = True
     scene.render.film_transparent = True
     depsgraph.update()
     warnings = []
-    exporter.export_frame(depsgraph, os.path.join(work, "warn"), warnings.append)
-    for key in ("depth of field", "motion blur", "Transparent"):
-        n = sum(key in w for w in warnings)
-        if n != 1:
-            fail("expected one warning about %r, got %d: %s" % (key, n, warnings))
-    # A light's Camera ray visibility is written (Blender's default: off); settings glint
-    # does not have warn once.
+    ex = export("warn")
+    if not data["camera"].get("dof") or not json.load(open(ex.scene_path))["camera"]["dof"]["use"]:
+        fail("depth of field was not written")
+    rc, lines = glint_messages(glint, ex)
+    for key, count in (("depth of field", 0), ("motion blur", 1), ("Transparent", 1)):
+        n = sum(key in l for l in lines + warnings)
+        if rc != 0 or n != count:
+            fail("expected %d message(s) about %r, got %d: %s %s" % (count, key, n, lines,
+                                                                      warnings))
+    scene.render.use_motion_blur = False
+    scene.render.film_transparent = False
+    # A light's Camera ray visibility is written (Blender's default: off); Cast Shadow off,
+    # which glint does not have, is said once.
     bpy.ops.object.light_add(type='POINT', location=(0, 0, 3))
     lamp = bpy.context.active_object
     lamp.name = "lamp"
@@ -172,21 +191,26 @@ def test_export(work):
     lamp.data.cycles.cast_shadow = False
     depsgraph = bpy.context.evaluated_depsgraph_get()
     warnings = []
-    ex = exporter.export_frame(depsgraph, os.path.join(work, "lamp"), warnings.append)
-    block = open(ex.scene_path).read().split("blender_light", 1)[-1]
-    if "visible_camera on" not in block:
-        fail("a light visible to the camera was not written so:\n" + block)
-    if sum("Cast Shadow" in w for w in warnings) != 1:
-        fail("expected one warning about Cast Shadow off: %s" % warnings)
+    ex = export("lamp")
+    light = [l for l in json.load(open(ex.scene_path))["lights"] if l["name"] == "lamp"][0]
+    if not light["visibility"]["camera"]:
+        fail("a light visible to the camera was not written so: %s" % light)
+    rc, lines = glint_messages(glint, ex)
+    if sum("Cast Shadow" in l for l in lines) != 1:
+        fail("expected one warning about Cast Shadow off: %s" % lines)
     bpy.data.objects.remove(lamp)
-    for name in ("Plane", "Cube", "Sphere"):  # no meshes: world only (glint rejects an
-        bpy.data.objects.remove(bpy.data.objects[name])  # obj_file without faces)
+    for name in ("Plane", "Cube", "Sphere"):  # no meshes: the world only
+        bpy.data.objects.remove(bpy.data.objects[name])
     depsgraph = bpy.context.evaluated_depsgraph_get()
-    ex = exporter.export_frame(depsgraph, os.path.join(work, "empty"), warnings.append)
-    if "obj_file" in open(ex.scene_path).read():
-        fail("a scene without meshes still references its (empty) OBJ")
-    print("export: orthographic camera, panoramic error, %d warnings: %s, empty scene"
-          % (len(warnings), warnings))
+    ex = export("empty")
+    if json.load(open(ex.scene_path))["objects"]:
+        fail("a scene without meshes still has objects")
+    rc, lines = glint_messages(glint, ex)
+    if rc != 0:
+        fail("glint failed on a scene without meshes: %s" % lines)
+    print("export: orthographic camera, panoramic error, depth of field, warnings once, "
+          "empty scene")
+    del exporter
 
 
 def test_animation(glint, work):
@@ -206,16 +230,17 @@ def test_animation(glint, work):
     frames = [load(os.path.join(work, "anim_%04d.exr" % f)) for f in (1, 2, 3)]
     folders = {}
     for folder in glob.glob(os.path.join(tmp, "glint_render_*")):
-        first = open(os.path.join(folder, "scene.pov")).readline()
-        folders[int(first.rsplit("frame", 1)[1].strip(" .\n"))] = folder
+        frame = json.load(open(os.path.join(folder, "scene.json")))["render"]["frame"]
+        folders[int(frame)] = folder
     if sorted(folders) != [1, 2, 3]:
         fail("expected kept folders for frames 1-3, got %s" % sorted(folders))
     for f in (1, 2, 3):
         cli = rerender(folders[f], glint, os.path.join(work, "cli_%d.exr" % f))
         check_same("frame %d" % f, frames[f - 1], cli)
-    objs = [open(os.path.join(folders[f], "scene.obj")).read() for f in (1, 2, 3)]
+    objs = [(json.load(open(os.path.join(folders[f], "scene.json")))["objects"],
+             open(os.path.join(folders[f], "scene.bin"), "rb").read()) for f in (1, 2, 3)]
     if objs[0] == objs[1] or objs[1] == objs[2]:
-        fail("the animated sphere is the same in two frames' OBJ exports (stale evaluation)")
+        fail("the animated sphere is the same in two frames' exports (stale evaluation)")
     for f in (1, 2):
         d = float(np.abs(frames[f - 1] - frames[f]).mean())
         if d < 1e-3:
@@ -346,7 +371,7 @@ def main():
     addon_env.enable(glint, keep_temp=True)
     test_render(glint, work)
     test_messages(work)
-    test_export(work)
+    test_export(args.glint, work)
     test_animation(glint, work)
     test_zip_install(glint, work)
     test_install_script(glint, work)

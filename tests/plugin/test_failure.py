@@ -68,7 +68,7 @@ def main():
     # export's path itself before it).
     report = r.stdout[r.stdout.find("Error: glint: render failed"):]
     report = report[:report.find("Blender quit")]
-    for temp_name in ("scene.pov", "scene.obj", "glint_render_"):
+    for temp_name in ("scene.json", "scene.bin", "glint_render_"):
         if temp_name in report:
             fail("scene glint rejects: the message names the temporary export (%s)"
                  % temp_name)

@@ -49,7 +49,7 @@ LEFT_OUT = {"hair curves": ("Scene Hair", "Kit Hair"),
             "point clouds": ("Scene Point Cloud", "Kit Point Cloud"),
             "volume objects": ("Scene Volume", "Kit Volume"),
             "Grease Pencil": ("Scene Grease Pencil", "Kit Grease Pencil")}
-TEMP_NAMES = ("scene.obj", "scene.mtl", "scene.pov", "glint_render_")
+TEMP_NAMES = ("scene.json", "scene.bin", "glint_render_")
 
 REPORTS = {"warnings": [], "errors": []}
 

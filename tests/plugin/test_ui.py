@@ -94,7 +94,8 @@ def instrument():
     cls = engine.GlintRenderEngine
     main = threading.main_thread
 
-    orig_render, orig_error, orig_export = cls.render, cls._error, engine.exporter.export_frame
+    orig_render, orig_error = cls.render, cls._error
+    orig_export = engine.native_export.export_frame_native
 
     def render(self, depsgraph):
         STATE["render_threads"].append(threading.current_thread() is main())
@@ -128,7 +129,7 @@ def instrument():
         return orig_export(*a, **kw)
 
     cls.render, cls._error, engine.runner.run = render, error, run
-    engine.exporter.export_frame = export_frame
+    engine.native_export.export_frame_native = export_frame
 
 
 def f12(animation=False):

@@ -38,9 +38,10 @@ for f in token_stream.cpp directives.cpp file_directives.cpp scanner.cpp literal
         fail "formats/pov/$f (token layer) includes the grammar's parser_impl.h"
 done
 
-# No source file over 800 lines.
+# No source file over 800 lines (reference tables a script generates, *_refs*.inc, are data).
 while read -r count file; do
     [ "$file" = total ] && continue
+    case "$file" in *_refs*.inc) continue ;; esac
     [ "$count" -le 800 ] || fail "$file has $count lines (over 800)"
 done < <(find src formats tests bench fuzz plugin \( -name '*.cpp' -o -name '*.h' -o \
          -name '*.inc' -o -name '*.py' \) -print0 | xargs -0 wc -l)

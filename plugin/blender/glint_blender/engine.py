@@ -24,7 +24,7 @@ import traceback
 
 import bpy
 
-from . import exporter, preferences, render_dirs, runner
+from . import exporter, native_export, preferences, render_dirs, runner
 
 EXPORT_TIMEOUT_S = 600.0
 PUMP_INTERVAL_S = 0.05
@@ -180,7 +180,7 @@ class GlintRenderEngine(bpy.types.RenderEngine):
 
     def _export_on_main_thread(self, depsgraph, out_dir, warn):
         if threading.current_thread() is threading.main_thread():
-            return exporter.export_frame(depsgraph, out_dir, warn)
+            return native_export.export_frame_native(depsgraph, out_dir, warn, engine=self)
 
         state = {"abandoned": False, "started": False, "result": None, "error": None}
         done = threading.Event()
@@ -192,7 +192,8 @@ class GlintRenderEngine(bpy.types.RenderEngine):
                     return None
                 state["started"] = True
             try:
-                state["result"] = exporter.export_frame(depsgraph, out_dir, warn)
+                state["result"] = native_export.export_frame_native(depsgraph, out_dir, warn,
+                                                                      engine=self)
             except BaseException as e:  # handed to the render thread
                 state["error"] = e
             finally:

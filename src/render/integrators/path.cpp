@@ -31,18 +31,70 @@ bool finite(const Color& c) {
     return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
 }
 
+double average(const Color& c) { return (c.r + c.g + c.b) / 3; }
+
+// A node graph's closure as one of the path tracer's BSDFs (docs/pbr-mapping.md).
+Bsdf closure_bsdf(const shader::Closure& c) {
+    using shader::ClosureKind;
+    PrincipledParams p;
+    p.base = c.color;
+    p.roughness = c.roughness;
+    switch (c.kind) {
+        case ClosureKind::Diffuse:
+        case ClosureKind::Translucent: return Bsdf::lambert(c.color);
+        case ClosureKind::Principled:
+            p.metallic = c.metallic;
+            p.specular = c.specular;
+            p.ior = c.ior;
+            p.transmission = c.transmission;
+            return Bsdf::principled(p);
+        case ClosureKind::Glossy:
+            p.metallic = 1;
+            return Bsdf::principled(p);
+        case ClosureKind::Glass:
+        case ClosureKind::Refraction:
+            p.transmission = 1;
+            p.ior = c.ior;
+            return Bsdf::principled(p);
+    }
+    return Bsdf::lambert(c.color);
+}
+
 }  // namespace
 
 PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings& settings)
     : scene_(prepared.scene),
       geometry_(*prepared.geometry),
       materials_(prepared.materials),
+      graphs_(prepared.graphs.get()),
       pigments_(prepared.textures.get(),
                 PatternContext{scene_.global.noise_generator, 10, &scene_.functions}),
       settings_(settings),
       rays_(64) {
+    int world = 0;
+    if (graphs_ && graphs_->world()) world = graphs_->world()->constant() ? 1 : 2;
     lights_.emplace(scene_, materials_.emission(),
-                    [this](const Vec3& d) { return environment(d); }, prepared.textures.get());
+                    [this](const Vec3& d) { return environment(d); }, prepared.textures.get(),
+                    world);
+}
+
+void PathIntegrator::graph_closures(const PathMaterial& row, const Hit& hit, const Vec3& dir,
+                                    const shader::RayState& state,
+                                    shader::ClosureList* out) const {
+    if (row.constant_closures) {
+        *out = *row.constant_closures;
+        return;
+    }
+    row.program->evaluate(graphs_->globals(hit, dir, state), out);
+}
+
+Color PathIntegrator::environment(const Vec3& dir, const shader::RayState& state) const {
+    if (graphs_ && graphs_->world()) {
+        shader::ClosureList cl;
+        graphs_->world()->evaluate(graphs_->world_globals(dir, state), &cl);
+        return cl.emission;
+    }
+    return environment(dir);
 }
 
 SurfacePbr PathIntegrator::surface(Hit& hit) const {
@@ -71,6 +123,13 @@ SurfacePbr PathIntegrator::surface(Hit& hit) const {
 }
 
 Color PathIntegrator::environment(const Vec3& dir) const {
+    if (graphs_ && graphs_->world()) {
+        shader::RayState state;
+        state.camera = false;
+        state.diffuse = true;
+        state.reflection = true;
+        return environment(dir, state);
+    }
     return sky_radiance(scene_, pigments_, dir);
 }
 
@@ -93,6 +152,22 @@ Color PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dis
         if (!(h.flags & kNoShadow)) {
             const PathMaterial* pm = materials_.path(h.material);
             if (!pm || !pm->has_alpha) return Color();
+            if (pm->program) {
+                // A node graph lets through its transparent closures' weight.
+                shader::RayState state;
+                state.camera = false;
+                state.shadow = true;
+                shader::ClosureList cl;
+                graph_closures(*pm, h, dir, state, &cl);
+                t *= cl.transparent;
+                if (t.is_black()) return Color();
+                const Vec3 o = offset_ray_origin(h.p, h.p_error, h.ng, dir);
+                travelled += length(o - r.origin);
+                r.origin = o;
+                r.tmax = std::isinf(tmax) ? kInfinity : tmax - travelled;
+                if (!(r.tmax > 0)) return t;
+                continue;
+            }
             // What passes: the uncovered fraction, and through an index-matched (IOR 1)
             // transmissive surface the transmitted part, tinted; refraction at any other IOR
             // bends the light, which only BSDF sampling can follow.
@@ -137,6 +212,8 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
     uint32_t alpha_tests = 0;
     uint32_t scatterings = 0;  // BSDF samples so far (bounces and pass-throughs)
     int skips = 0;             // alpha holes and pass-throughs: they do not count as bounces
+    double travelled = 0;      // path length from the camera to the last scattering vertex
+    bool last_diffuse = false, last_reflected = true;  // the last bounce (Light Path node)
     for (int v = 0; v < max_vertices; ++v) {
         const uint32_t base = 1 + scatterings * kPairsPerVertex;
         Hit hit;
@@ -155,58 +232,114 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             }
             break;
         }
-        const SurfacePbr s = surface(hit);
+        const PathMaterial* row = materials_.path(hit.material);
         const Sample2 ua = sampler.get2(base + 2);
-        if (s.alpha < 1 && sampler.get2(alpha_base + alpha_tests++).u >= s.alpha) {
-            if (++skips > kMaxAlphaSkips) break;
-            const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
-            seg_dist += length(o - r.origin);
-            r.origin = o;
-            r.tmax = kInfinity;
-            continue;
+        // The BSDFs here (several for a node graph), around the viewer's side.
+        ClosureSet set(hit.ng, -r.dir);
+        Color emission;
+        Color albedo;
+        if (row && row->program) {
+            shader::RayState state;
+            state.camera = scatterings == 0;
+            state.singular = specular && scatterings > 0;
+            state.diffuse = last_diffuse;
+            state.glossy = !last_diffuse && scatterings > 0;
+            state.reflection = last_reflected && scatterings > 0;
+            state.transmission = !last_reflected && scatterings > 0;
+            state.length = seg_dist;
+            state.travelled = travelled + seg_dist;
+            state.depth = depth;
+            state.transparent_depth = skips;
+            shader::ClosureList cl;
+            graph_closures(*row, hit, r.dir, state, &cl);
+            // Transparency (transparent closures, Principled alpha): straight through with the
+            // probability of its share against the BSDFs', as Cycles picks among closures.
+            double shade = 1;
+            const double tw = average(cl.transparent);
+            if (tw > 0) {
+                double sw = 0;
+                for (int i = 0; i < cl.count; ++i) sw += cl.items[i].sample_weight;
+                const double q = sw > 0 ? tw / (tw + sw) : 1.0;
+                if (!cl.emission.is_black()) L += beta * cl.emission;
+                if (sampler.get2(alpha_base + alpha_tests++).u < q) {
+                    if (++skips > kMaxAlphaSkips) break;
+                    beta *= cl.transparent * (1 / q);
+                    if (beta.is_black() || !finite(beta)) break;
+                    const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
+                    seg_dist += length(o - r.origin);
+                    r.origin = o;
+                    r.tmax = kInfinity;
+                    continue;
+                }
+                shade = 1 / (1 - q);
+                cl.emission = Color();  // counted above
+            }
+            emission = cl.emission;
+            const bool back = dot(hit.ng, r.dir) > 0;
+            for (int i = 0; i < cl.count; ++i) {
+                const shader::Closure& c = cl.items[i];
+                Vec3 n = length_squared(c.N) > 0 ? normalize(c.N) : hit.n;
+                if (back) n = -n;  // the closures' normals face the viewer; the set's the outside
+                // Which rays the Light Path node calls diffuse: those from diffuse closures, and
+                // from a Principled BSDF that is mostly diffuse (glint samples its lobes as one).
+                const bool diffuse_like =
+                    c.kind == shader::ClosureKind::Diffuse ||
+                    c.kind == shader::ClosureKind::Translucent ||
+                    (c.kind == shader::ClosureKind::Principled && c.metallic < 0.5 &&
+                     c.transmission < 0.5);
+                set.add(closure_bsdf(c), c.weight * shade, n, c.sample_weight * shade,
+                        diffuse_like);
+                albedo += c.weight * c.color;
+            }
+        } else {
+            const SurfacePbr s = surface(hit);
+            if (s.alpha < 1 && sampler.get2(alpha_base + alpha_tests++).u >= s.alpha) {
+                if (++skips > kMaxAlphaSkips) break;
+                const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
+                seg_dist += length(o - r.origin);
+                r.origin = o;
+                r.tmax = kInfinity;
+                continue;
+            }
+            emission = s.emission;
+            albedo = s.bsdf.base;
+            // Made once per material where the surface is constant (most hits): building one
+            // costs Fresnel terms and a square root.
+            set.add(row && row->constant_bsdf ? *row->constant_bsdf : Bsdf::principled(s.bsdf),
+                    Color(1, 1, 1), hit.n, 1, true);
         }
         if (first && !first->hit) {
             first->hit = true;
-            first->albedo = s.bsdf.base.is_black() ? s.emission : s.bsdf.base;
+            first->albedo = albedo.is_black() ? emission : albedo;
             first->normal = dot(hit.ng, r.dir) > 0 ? -hit.n : hit.n;
             first->depth = seg_dist + hit.t;
         }
-        if (!s.emission.is_black()) {
+        if (!emission.is_black()) {
             double w = 1;
             if (!specular && lights.emitter_object(hit.object)) {
-                const double pl =
-                    lights.emitter_pdf(hit.object, prev_p, hit.p, hit.ng, s.emission);
+                const double pl = lights.emitter_pdf(hit.object, prev_p, hit.p, hit.ng, emission);
                 w = power_heuristic(prev_pdf, pl);
             }
-            L += beta * s.emission * w;
+            L += beta * emission * w;
         }
         if (depth >= settings_.max_depth) break;
-
-        // Made once per material where the surface is constant (most hits): building one
-        // costs Fresnel terms and a square root.
-        const PathMaterial* row = materials_.path(hit.material);
-        const Bsdf bsdf = row && row->constant_bsdf ? *row->constant_bsdf
-                                                    : Bsdf::principled(s.bsdf);
-        // The shading normal bent, where it must be, so that the view's mirror direction
-        // leaves the surface (Cycles does this for every closure).
-        const Frame frame = Frame::from_normal(valid_reflection_normal(hit.ng, -r.dir, hit.n));
-        const Vec3 wo = frame.to_local(-r.dir);
+        if (set.count() == 0) break;
 
         // Next-event estimation.
-        if (!bsdf.all_delta() && lights.count() > 0) {
+        if (!set.all_delta() && lights.count() > 0) {
             auto light = [&](int slot, Sample2 u) {
                 PathLightSample ls;
                 if (!lights.sample(slot, hit.p, u, &ls)) return;
                 // Which side a light is on is the shading normal's call, as in Cycles: the
-                // BSDF, evaluated in the shading frame, says whether it reflects or transmits.
-                const Vec3 wi = frame.to_local(ls.wi);
-                const Color f = bsdf.eval(wo, wi);
+                // BSDFs, each in its own shading frame, say whether they reflect or transmit.
+                double bsdf_pdf = 0;
+                const Color f = set.eval(ls.wi, &bsdf_pdf);
                 if (f.is_black()) return;
                 const Color tr = transmittance(hit, ls.wi, ls.dist, &rays);
                 if (tr.is_black()) return;
-                Color c = f * ls.value * tr * std::fabs(wi.z);
+                Color c = f * ls.value * tr;
                 if (ls.environment) c *= environment(ls.wi);
-                if (ls.pdf > 0) c *= power_heuristic(ls.pdf, bsdf.pdf(wo, wi));
+                if (ls.pdf > 0) c *= power_heuristic(ls.pdf, bsdf_pdf);
                 L += beta * c;
             };
             if (lights.sample_all()) {
@@ -218,16 +351,15 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             }
         }
 
-        // Continue the path by sampling the BSDF: one 2D point picks the lobe and the
-        // direction (Bsdf::sample); ul.v is the roulette's.
+        // Continue the path by sampling the BSDFs: one 2D point picks the closure, the lobe and
+        // the direction (ClosureSet::sample, Bsdf::sample); ul.v is the roulette's.
         const Sample2 ul = sampler.get2(base);
         const Sample2 ud = sampler.get2(base + 1);
-        BsdfSample bs;
-        if (!bsdf.sample(wo, ud.u, ud.v, &bs)) break;
+        ClosureSample bs;
+        if (!set.sample(ud.u, ud.v, &bs)) break;
         ++scatterings;
         beta *= bs.weight;
-        if (bs.delta && s.bsdf.ior == 1.0 && bs.wi.x == -wo.x && bs.wi.y == -wo.y &&
-            bs.wi.z == -wo.z) {
+        if (bs.straight) {
             // Straight through an index-matched surface: like an alpha hole, not a bounce.
             // Shadow rays pass it too (transmittance), so what lies beyond keeps the MIS
             // weights of the last real bounce instead of being counted twice.
@@ -239,6 +371,8 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             continue;
         }
         specular = bs.delta;
+        last_diffuse = !bs.delta && bs.diffuse;
+        last_reflected = bs.reflected;
         prev_pdf = bs.pdf;
         ++depth;
         if (depth >= settings_.rr_start) {
@@ -247,15 +381,15 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             beta *= 1.0 / p;
         }
         if (beta.is_black() || !finite(beta)) break;
-        const Vec3 wi = normalize(frame.to_world(bs.wi));
+        const Vec3 wi = bs.wi;
         // A reflection the shading normal allows but that points into the surface (or a
         // refraction that stays outside) ends the path, as in Cycles: following it would
         // leak light through the geometry.
-        const bool reflected = bs.wi.z * wo.z > 0;
-        if ((dot(wi, hit.ng) * dot(r.dir, hit.ng) < 0) != reflected) break;
+        if ((dot(wi, hit.ng) * dot(r.dir, hit.ng) < 0) != bs.reflected) break;
         r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, wi);
         r.dir = wi;
         r.tmax = kInfinity;
+        travelled += seg_dist + hit.t;
         seg_dist = 0;
         prev_p = hit.p;
     }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "render/bsdf/bsdf.h"
+#include "render/bsdf/closure_set.h"
 #include "render/bsdf/pov_to_pbr.h"
 #include "render/film/aov.h"
 #include "render/lights/path_lights.h"
@@ -47,7 +48,13 @@ private:
     SurfacePbr surface(Hit& hit) const;
     // Radiance from the environment along a direction: the background with the sky_sphere's
     // layers over it (POV-Ray 3.7's sky).
+    // With a world node graph (Blender), its emission for a ray in `state`.
     Color environment(const Vec3& dir) const;
+    Color environment(const Vec3& dir, const shader::RayState& state) const;
+    // A node graph's closures at `hit` for a ray along `dir` in `state`, into `set` (the
+    // BSDFs), with the emission, transparency; false when the material has no graph.
+    void graph_closures(const PathMaterial& row, const Hit& hit, const Vec3& dir,
+                        const shader::RayState& state, shader::ClosureList* out) const;
     // Light passing from `from` along `dir` for `dist`: through alpha holes and index-matched
     // (IOR 1) transmissive surfaces, tinted; any other surface blocks it.
     Color transmittance(const Hit& from, const Vec3& dir, double dist, uint64_t* rays) const;
@@ -55,6 +62,7 @@ private:
     const scene::Scene& scene_;
     const Geometry& geometry_;
     const MaterialTable& materials_;
+    const shader::GraphShading* graphs_;
     PigmentEvaluator pigments_;
     PathSettings settings_;
     std::optional<PathLights> lights_;

@@ -126,7 +126,7 @@ double PathLights::tri_solid_angle(const Tri& t, const Vec3& p, Vec3 dirs[3]) {
 
 PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emission,
                        const EnvironmentDistribution::Radiance& environment,
-                       const TextureCache* textures)
+                       const TextureCache* textures, int world)
     : scene_(scene) {
     for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
         const scene::Light& l = scene.lights[i];
@@ -174,6 +174,15 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
         for (double& v : emitter_cdf_) v /= sum;
         emitter_total_ = sum;
         slots_.push_back({SlotKind::Emitters, -1});
+    }
+    if (world != 0) {
+        // A node graph: importance-sampled by its radiance unless it is the same everywhere.
+        has_env_ = world == 2 || (environment && average(environment(Vec3(0, 0, 1))) > 0);
+        if (has_env_) {
+            slots_.push_back({SlotKind::Environment, -1});
+            if (world == 2 && environment) env_.emplace(environment, EnvironmentGrid{256, 128, 2});
+        }
+        return;
     }
     has_env_ = average(scene.background.rgb) > 0 ||
                (scene.sky_sphere && !scene.sky_sphere->pigments.empty());

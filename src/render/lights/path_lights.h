@@ -56,9 +56,11 @@ public:
     // `environment`: the integrator's environment radiance along a unit world direction; with
     // `textures`, the sky_sphere's images size its sampling table. Without `environment` a
     // non-uniform environment is sampled uniformly.
+    // `world`: the scene's world is a node graph (Blender) that emits everywhere alike (1) or
+    // varies over the sphere (2); 0: the IR's background and sky sphere say.
     PathLights(const scene::Scene& scene, const std::vector<Color>& emission,
                const EnvironmentDistribution::Radiance& environment = {},
-               const TextureCache* textures = nullptr);
+               const TextureCache* textures = nullptr, int world = 0);
 
     // Light slots: each POV-Ray or Blender light, all emitting shapes together, the
     // environment.

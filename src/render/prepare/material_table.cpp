@@ -57,6 +57,20 @@ PathMaterial prepare_path(const scene::Material& m, TextureCache* textures,
     return row;
 }
 
+// A node graph's row: evaluated once where nothing in it varies (then its emission is
+// light-sampled and its transparency known), else at every hit.
+PathMaterial prepare_graph(const shader::ShaderProgram& program) {
+    PathMaterial row;
+    row.program = &program;
+    if (!program.constant()) return row;  // has_alpha stays: it may let shadow rays through
+    auto closures = std::make_shared<shader::ClosureList>();
+    program.evaluate(shader::ShaderGlobals(), closures.get());
+    row.emission = closures->emission;
+    row.has_alpha = !closures->transparent.is_black();
+    row.constant_closures = std::move(closures);
+    return row;
+}
+
 }  // namespace
 
 bool needs_pbr_maps(const scene::Scene& scene) {
@@ -72,12 +86,15 @@ MaterialTable::MaterialTable(const scene::Scene& scene, const TextureCache* text
 }
 
 void MaterialTable::prepare_for(const scene::Scene& scene, IntegratorKind integrator,
-                                TextureCache* textures) {
+                                TextureCache* textures, const shader::GraphShading* graphs) {
     const size_t n = scene.materials.size();
     if (integrator == IntegratorKind::Path) {
         path_.reserve(n);
-        for (const scene::Material& m : scene.materials) {
-            path_.push_back(prepare_path(m, textures, &maps_));
+        for (size_t i = 0; i < n; ++i) {
+            const shader::ShaderProgram* program =
+                graphs ? graphs->material(static_cast<int>(i)) : nullptr;
+            path_.push_back(program ? prepare_graph(*program)
+                                    : prepare_path(scene.materials[i], textures, &maps_));
             any_alpha_ = any_alpha_ || path_.back().has_alpha;
         }
         return;

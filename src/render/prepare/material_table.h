@@ -5,6 +5,7 @@
 // geometry's shadow queries use too.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "render/bsdf/pov_to_pbr.h"
 #include "render/materials/classic_finish.h"
 #include "render/options.h"
+#include "render/shader/shading.h"
 #include "scene/scene.h"
 
 namespace glint::render {
@@ -28,6 +30,9 @@ struct PathMaterial {
     Color emission;         // emitted radiance where constant (black otherwise): light-sampled
     bool has_alpha = true;  // shadow rays may pass: alpha below 1, or a transmissive IOR 1
     int maps = -1;          // its OBJ/MTL image maps (MaterialTable::maps), -1 for none
+    // A node graph (Blender), and its closures where they are the same everywhere.
+    const shader::ShaderProgram* program = nullptr;
+    std::shared_ptr<const shader::ClosureList> constant_closures;
 };
 
 // Per material, each half in an array of its own, so that a render keeps only what its
@@ -43,7 +48,7 @@ public:
     // non-null when needs_pbr_maps() says so. Called after the geometry is built, so that
     // its build's temporaries are gone before these arrays are made.
     void prepare_for(const scene::Scene& scene, IntegratorKind integrator,
-                     TextureCache* textures);
+                     TextureCache* textures, const shader::GraphShading* graphs = nullptr);
 
     size_t size() const { return opaque_.size(); }
     // No pigment of the material's POV-Ray texture can ever let light through

@@ -12,17 +12,26 @@ std::unique_ptr<PreparedScene> prepare_with(const scene::Scene& scene,
                                             std::unique_ptr<Geometry> geometry) {
     scene::Features features = scene::analyze(scene);
     std::unique_ptr<TextureCache> textures;
-    const bool pbr_maps = options.integrator == IntegratorKind::Path && needs_pbr_maps(scene);
-    if (features.image_textures || pbr_maps) {
+    const bool path = options.integrator == IntegratorKind::Path;
+    const bool graphs = path && !scene.shader_graphs.empty();
+    const bool pbr_maps = path && needs_pbr_maps(scene);
+    if (features.image_textures || pbr_maps || graphs) {
+        // (A cache opens the image library only when an image is added.)
         textures = std::make_unique<TextureCache>(image_gamma(scene));
         if (features.image_textures) textures->preload(scene);
     }
+    Diagnostics quiet;
+    std::unique_ptr<shader::GraphShading> programs;
+    if (graphs)
+        programs = std::make_unique<shader::GraphShading>(scene, options.width, options.height,
+                                                          textures.get(), diag ? *diag : quiet);
     MaterialTable materials(scene, textures.get());
-    if (!geometry) geometry = build_geometry(scene, features, materials, *diag);
-    materials.prepare_for(scene, options.integrator, textures.get());
+    if (!geometry) geometry = build_geometry(scene, features, materials, diag ? *diag : quiet);
+    materials.prepare_for(scene, options.integrator, textures.get(), programs.get());
     return std::unique_ptr<PreparedScene>(new PreparedScene{
-        scene, std::move(features), std::move(textures), std::move(materials),
-        std::move(geometry), Camera(scene.camera, options.width, options.height)});
+        scene, std::move(features), std::move(textures), std::move(programs),
+        std::move(materials), std::move(geometry),
+        Camera(scene.camera, options.width, options.height)});
 }
 
 }  // namespace

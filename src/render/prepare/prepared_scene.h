@@ -12,6 +12,7 @@
 #include "render/options.h"
 #include "render/prepare/geometry.h"
 #include "render/prepare/material_table.h"
+#include "render/shader/shading.h"
 #include "render/textures/image_texture.h"
 #include "scene/features.h"
 #include "scene/scene.h"
@@ -24,6 +25,9 @@ struct PreparedScene {
     // Every image a render reads (POV-Ray image maps, the sky's, PBR maps); null for scenes
     // without any, so that they never open the texture system.
     std::unique_ptr<TextureCache> textures;
+    // The scene's node graphs compiled (Blender materials and world), for the path tracer;
+    // null when it has none.
+    std::unique_ptr<shader::GraphShading> graphs;
     MaterialTable materials;
     std::unique_ptr<Geometry> geometry;
     Camera camera;

@@ -1,0 +1,77 @@
+#include "render/bsdf/closure_set.h"
+
+#include <cmath>
+
+#include "render/bsdf/shading_normal.h"
+
+namespace glint::render {
+
+void ClosureSet::add(const Bsdf& bsdf, const Color& weight, const Vec3& n, double sample_weight,
+                     bool diffuse) {
+    if (count_ >= kMax || !(sample_weight > 0)) return;
+    Item& it = items_[count_++];
+    it.bsdf = bsdf;
+    it.weight = weight;
+    it.frame = Frame::from_normal(valid_reflection_normal(ng_, wo_, n));
+    it.wo = it.frame.to_local(wo_);
+    it.share = sample_weight;
+    it.diffuse = diffuse;
+    total_ += sample_weight;
+}
+
+bool ClosureSet::all_delta() const {
+    for (int i = 0; i < count_; ++i)
+        if (!items_[i].bsdf.all_delta()) return false;
+    return true;
+}
+
+Color ClosureSet::eval(const Vec3& wi, double* pdf) const {
+    Color f;
+    double p = 0;
+    for (int i = 0; i < count_; ++i) {
+        const Item& it = items_[i];
+        const Vec3 w = it.frame.to_local(wi);
+        const Color fi = it.bsdf.eval(it.wo, w);
+        if (!fi.is_black()) f += it.weight * fi * std::fabs(w.z);
+        p += it.share / total_ * it.bsdf.pdf(it.wo, w);
+    }
+    *pdf = p;
+    return f;
+}
+
+bool ClosureSet::sample(double u1, double u2, ClosureSample* out) const {
+    if (count_ == 0) return false;
+    // The closure by its share; u1 rescaled within it keeps the sampler's stratification.
+    int k = 0;
+    double u = u1 * total_;
+    while (k < count_ - 1 && u >= items_[k].share) u -= items_[k++].share;
+    const Item& it = items_[k];
+    const double uk = std::min(u / it.share, 0x1.fffffffffffffp-1);
+    BsdfSample bs;
+    if (!it.bsdf.sample(it.wo, uk, u2, &bs)) return false;
+    out->wi = normalize(it.frame.to_world(bs.wi));
+    out->delta = bs.delta;
+    out->diffuse = it.diffuse;
+    out->reflected = bs.wi.z * it.wo.z > 0;
+    out->straight = bs.delta && bs.wi.x == -it.wo.x && bs.wi.y == -it.wo.y && bs.wi.z == -it.wo.z;
+    const double pick = it.share / total_;
+    if (count_ == 1) {
+        out->weight = it.weight * bs.weight;
+        out->pdf = bs.pdf;
+        return true;
+    }
+    if (bs.delta) {
+        out->weight = it.weight * bs.weight * (1 / pick);
+        out->pdf = bs.pdf * pick;
+        return true;
+    }
+    // The whole mixture at the sampled direction (delta lobes add nothing there).
+    double pdf = 0;
+    const Color f = eval(out->wi, &pdf);
+    if (!(pdf > 0)) return false;
+    out->weight = f * (1 / pdf);
+    out->pdf = pdf;
+    return true;
+}
+
+}  // namespace glint::render

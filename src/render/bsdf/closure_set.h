@@ -1,0 +1,57 @@
+// Several BSDFs at one shading point, each with its own weight and shading normal: what a
+// Blender node graph leaves (a Mix Shader of a Diffuse and a Glossy, a bumped Principled), and
+// a single BSDF for everything else. As in Cycles (kernel/integrator/shader_eval.h), a sample
+// picks one closure by its sample weight, and evaluation and pdf sum over all of them, so MIS
+// with light sampling sees the whole mixture. Directions are world space.
+#pragma once
+
+#include "render/bsdf/bsdf.h"
+
+namespace glint::render {
+
+struct ClosureSample {
+    Vec3 wi;           // world space, unit
+    Color weight;      // sum of f |cos| over the closures / mixture pdf (delta: the lobe's)
+    double pdf = 0;    // mixture pdf; for a delta lobe its discrete probability
+    bool delta = false;
+    bool reflected = true;  // wi on wo's side of the chosen closure's normal
+    bool straight = false;  // a delta lobe that continued wo unchanged (index-matched)
+    bool diffuse = false;   // the chosen closure was added as diffuse
+};
+
+class ClosureSet {
+public:
+    static constexpr int kMax = 16;
+
+    // `ng` the geometric normal, `wo` towards the viewer; each closure's normal is bent where
+    // it must be (valid_reflection_normal) as Cycles bends it.
+    ClosureSet(const Vec3& ng, const Vec3& wo) : ng_(ng), wo_(wo) {}
+
+    // Adds `bsdf` scaled by `weight` around the unit normal `n`; `sample_weight` its share of
+    // the samples (Cycles: the average of the weight). Closures past kMax are dropped.
+    void add(const Bsdf& bsdf, const Color& weight, const Vec3& n, double sample_weight,
+             bool diffuse = false);
+    int count() const { return count_; }
+    bool all_delta() const;
+
+    // Sum over the closures of weight f |cos wi| (about each closure's normal), and the
+    // mixture pdf of sample() for wi.
+    Color eval(const Vec3& wi, double* pdf) const;
+    bool sample(double u1, double u2, ClosureSample* out) const;
+
+private:
+    struct Item {
+        Bsdf bsdf;
+        Color weight;
+        Frame frame;
+        Vec3 wo;  // local
+        double share = 0;
+        bool diffuse = false;
+    };
+    Vec3 ng_, wo_;
+    Item items_[kMax];
+    int count_ = 0;
+    double total_ = 0;
+};
+
+}  // namespace glint::render

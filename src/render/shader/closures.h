@@ -1,0 +1,93 @@
+// What a shader graph is evaluated at (ShaderGlobals) and what it gives back (ClosureList):
+// the BSDF closures with their weights and normals, emission, transparency and holdout, as
+// Cycles' SVM leaves them in its closure array (kernel/closure, kernel/svm/closure.h).
+#pragma once
+
+#include <cstdint>
+
+#include "core/math.h"
+#include "render/shader/float3.h"
+
+namespace glint::render::shader {
+
+// The shading point. Directions are unit, world space. Coordinates as Cycles' Texture
+// Coordinate and Geometry nodes give them.
+struct ShaderGlobals {
+    float3 P;          // world position
+    float3 N;          // shading normal (smooth), facing the viewer's side
+    float3 Ng;         // geometric normal, facing the viewer's side
+    float3 I;          // towards the viewer (the incoming ray reversed)
+    float3 uv;         // the active UV map (z = 0)
+    float3 generated;  // the object's texture space (its bounds) mapped to [0, 1]^3
+    float3 object;     // object-space position
+    float3 dPdu, dPdv; // world-space uv tangents where the mesh has uvs, else zero
+    // Bump's finite differences: two small steps in the surface, about a tenth of the
+    // pixel's footprint, and Generated's scale (object units -> texture space).
+    float3 dPdx, dPdy;
+    float3 generated_scale{1, 1, 1};
+    float3 tangent;    // Cycles' tangent (dPdu, or around the object's Z axis)
+    bool backfacing = false;
+    // Object Info.
+    float3 object_location;
+    float3 object_color{1, 1, 1};
+    float object_pass_index = 0;
+    float object_random = 0;
+    // Light Path: what kind of ray reached this point, and how far it travelled.
+    bool camera_ray = true, shadow_ray = false, diffuse_ray = false, glossy_ray = false,
+         singular_ray = false, reflection_ray = false, transmission_ray = false;
+    float ray_length = 0;
+    int ray_depth = 0, diffuse_depth = 0, glossy_depth = 0, transparent_depth = 0,
+        transmission_depth = 0;
+    // Camera Data and the Texture Coordinate node's Camera/Window outputs need the camera:
+    // world -> camera-space point, and the image position of P.
+    float3 camera_position;  // P in camera space (Blender: -Z forward)
+    float3 window;           // P's position on the image, [0, 1]^2
+    float view_distance = 0;
+    // The object's transform (world -> object) for vector transforms and the object space
+    // Normal output: rows of the 3x4 inverse and of the forward matrix.
+    float world_to_object[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+    float object_to_world[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+};
+
+// The BSDF closures glint renders. Each is mapped onto the path tracer's Bsdf models
+// (render/bsdf/bsdf.h) by the integrator.
+enum class ClosureKind : uint8_t {
+    Diffuse,      // color
+    Principled,   // base, metallic, roughness, specular, ior, transmission, ...
+    Glossy,       // color tint, roughness (GGX): a metal without Fresnel tint
+    Glass,        // color, roughness, ior
+    Refraction,   // color, roughness, ior: the refracted half of Glass
+    Translucent,  // color: Lambert transmission
+};
+
+struct Closure {
+    ClosureKind kind = ClosureKind::Diffuse;
+    Color weight;  // the closure's weight (mix factors and colours multiplied in)
+    Vec3 N;        // its own shading normal (bump and normal maps are per closure)
+    Color color{1, 1, 1};
+    double roughness = 0;
+    double metallic = 0;
+    double specular = 0.5;
+    double ior = 1.45;
+    double transmission = 0;
+    double sample_weight = 0;  // |average(weight)|: the share of BSDF samples it gets
+};
+
+// What one evaluation leaves: at most kMax closures (Cycles' default is 64; real graphs have a
+// handful), the emitted radiance, the transparent (straight-through) weight and the holdout.
+struct ClosureList {
+    static constexpr int kMax = 16;
+    Closure items[kMax];
+    int count = 0;
+    Color emission;
+    Color transparent;
+    Color holdout;
+    bool overflow = false;  // a closure past kMax was dropped
+
+    void add(const Closure& c) {
+        if (count < kMax) items[count++] = c;
+        else overflow = true;
+    }
+};
+
+}  // namespace glint::render::shader

@@ -1,0 +1,378 @@
+// The compiler's framework (compiler.h) and the program's interpreter (program.h). Nodes are
+// taught in compile_nodes.cpp (inputs, converters, colour, vector), compile_textures.cpp and
+// compile_closures.cpp.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "render/shader/color_nodes.h"
+#include "render/shader/compiler.h"
+
+namespace glint::render::shader {
+
+namespace {
+
+const NodeTables& node_tables() {
+    static const NodeTables tables = [] {
+        NodeTables t;
+        add_basic_nodes(t);
+        add_texture_nodes(t);
+        add_shader_nodes(t);
+        return t;
+    }();
+    return tables;
+}
+
+// Blender's node types that draw nothing and need no warning when they are left unconnected
+// or reached (frames and the like never reach the compiler).
+bool is_output(const std::string& type) {
+    return type == "ShaderNodeOutputMaterial" || type == "ShaderNodeOutputWorld" ||
+           type == "ShaderNodeOutputLight";
+}
+
+}  // namespace
+
+void load_globals(const ShaderGlobals& sg, float3* r) {
+    r[kRegP] = sg.P;
+    r[kRegN] = sg.N;
+    r[kRegNg] = sg.Ng;
+    r[kRegI] = sg.I;
+    r[kRegUV] = sg.uv;
+    r[kRegGenerated] = sg.generated;
+    r[kRegObject] = sg.object;
+    r[kRegTangent] = sg.tangent;
+    r[kRegBackfacing] = float3(sg.backfacing ? 1.0f : 0.0f, 0, 0);
+    r[kRegObjectLocation] = sg.object_location;
+    r[kRegObjectColor] = sg.object_color;
+    r[kRegObjectInfo] = float3(sg.object_pass_index, sg.object_random, 0);
+    r[kRegRay] = float3(sg.camera_ray ? 1.0f : 0.0f, sg.shadow_ray ? 1.0f : 0.0f, sg.ray_length);
+    r[kRegRay2] = float3(sg.diffuse_ray ? 1.0f : 0.0f, sg.glossy_ray ? 1.0f : 0.0f,
+                         sg.singular_ray ? 1.0f : 0.0f);
+    r[kRegRay3] = float3(sg.reflection_ray ? 1.0f : 0.0f, sg.transmission_ray ? 1.0f : 0.0f,
+                         static_cast<float>(sg.ray_depth));
+    r[kRegDepths] = float3(static_cast<float>(sg.diffuse_depth),
+                           static_cast<float>(sg.glossy_depth),
+                           static_cast<float>(sg.transmission_depth));
+    r[kRegTransparentDepth] = float3(static_cast<float>(sg.transparent_depth), 0, 0);
+    r[kRegCamera] = sg.camera_position;
+    r[kRegWindow] = sg.window;
+    r[kRegViewDistance] = float3(sg.view_distance, 0, 0);
+    r[kRegReflection] = sg.N * (2.0f * dot(sg.N, sg.I)) - sg.I;
+}
+
+Compiler::Compiler(const scene::ShaderGraph& graph, ShaderProgram& program,
+                   TextureCache* textures, Diagnostics& diag)
+    : graph_(graph),
+      program_(program),
+      textures_(textures),
+      diag_(diag),
+      tables_(node_tables()),
+      outputs_(graph.nodes.size()),
+      shader_of_(graph.nodes.size(), -2),
+      state_(graph.nodes.size(), 0) {
+    program_.init_.assign(kGlobalCount, float3());
+    is_const_.assign(kGlobalCount, 0);
+}
+
+int Compiler::constant(float3 v) {
+    // Constants are few; sharing equal ones keeps the register file small.
+    for (size_t i = kGlobalCount; i < program_.init_.size(); ++i)
+        if (is_const_[i] && program_.init_[i] == v) return static_cast<int>(i);
+    program_.init_.push_back(v);
+    is_const_.push_back(1);
+    return static_cast<int>(program_.init_.size()) - 1;
+}
+
+int Compiler::fresh() {
+    program_.init_.push_back(float3());
+    is_const_.push_back(0);
+    return static_cast<int>(program_.init_.size()) - 1;
+}
+
+void Compiler::set_out(int node, const char* id, int reg) { outputs_[node][id] = reg; }
+
+void Compiler::emit(const Op& op, bool foldable) {
+    bool all_const = foldable && op.sub_end == 0;
+    for (int r : op.in)
+        if (r >= 0 && !is_const_[r]) all_const = false;
+    if (all_const) {
+        // Folded: run now on the constant registers; the outputs become constants. (An op
+        // reads only its own input registers, so the globals' zeros do not matter.)
+        ShaderGlobals none;
+        op.fn(op, program_.init_.data(), none);
+        for (int r : op.out)
+            if (r >= 0) is_const_[r] = 1;
+        return;
+    }
+    for (int r : op.out)
+        if (r >= 0) is_const_[r] = 0;
+    program_.ops_.push_back(op);
+}
+
+std::vector<Op> Compiler::cut(size_t from) {
+    std::vector<Op> ops(program_.ops_.begin() + static_cast<std::ptrdiff_t>(from),
+                        program_.ops_.end());
+    program_.ops_.resize(from);
+    return ops;
+}
+
+const float* Compiler::keep(const std::vector<float>& table) {
+    program_.tables_.push_back(std::make_unique<std::vector<float>>(table));
+    return program_.tables_.back()->data();
+}
+
+std::string Compiler::enum_prop(int node, const char* key, const std::string& fallback) const {
+    const scene::ShaderProp* p = graph_.nodes[node].prop(key);
+    return p && p->is_text ? p->text : fallback;
+}
+
+double Compiler::number_prop(int node, const char* key, double fallback) const {
+    const scene::ShaderProp* p = graph_.nodes[node].prop(key);
+    return p && !p->is_text && !p->numbers.empty() ? p->numbers[0] : fallback;
+}
+
+void Compiler::unsupported(int node, const std::string& why) {
+    const scene::ShaderNode& n = graph_.nodes[node];
+    const std::string key = n.type + "|" + why;
+    if (warned_[key]) return;
+    warned_[key] = true;
+    std::string what = "node '" + n.name + "' (" + n.type + ")";
+    diag_.warning(graph_.loc, "'" + graph_.name + "': " + what +
+                                  (why.empty() ? " is not supported yet: its outputs are "
+                                                 "their defaults (zero), it adds no shader"
+                                               : ": " + why));
+}
+
+bool Compiler::linked(int node, const char* id) const {
+    const scene::ShaderInput* in = graph_.nodes[node].input(id);
+    return in && in->link.linked();
+}
+
+int Compiler::convert(int reg, scene::SocketType from, char want) {
+    using S = scene::SocketType;
+    const bool from_float = from == S::Value || from == S::Int || from == S::Boolean;
+    const bool from_color = from == S::Rgba;
+    if (want == 'f') {
+        if (from_float) return reg;
+        Op op;
+        op.in[0] = reg;
+        op.out[0] = fresh();
+        if (from_color)
+            op.fn = [](const Op& o, float3* r, const ShaderGlobals&) {
+                r[o.out[0]] = float3(rgb_to_bw_node(r[o.in[0]]), 0, 0);
+            };
+        else
+            op.fn = [](const Op& o, float3* r, const ShaderGlobals&) {
+                const float3 v = r[o.in[0]];
+                r[o.out[0]] = float3((v.x + v.y + v.z) * (1.0f / 3.0f), 0, 0);
+            };
+        emit(op);
+        return op.out[0];
+    }
+    if (from_float) {
+        Op op;
+        op.in[0] = reg;
+        op.out[0] = fresh();
+        op.fn = [](const Op& o, float3* r, const ShaderGlobals&) {
+            r[o.out[0]] = float3(r[o.in[0]].x);
+        };
+        emit(op);
+        return op.out[0];
+    }
+    return reg;  // colour <-> vector: the same three numbers
+}
+
+int Compiler::in(int node, const char* id, char want, float3 fallback) {
+    const scene::ShaderInput* in = graph_.nodes[node].input(id);
+    if (!in) return constant(fallback);
+    if (in->link.linked()) {
+        const int from = in->link.node;
+        const int reg = output_of(from, in->link.output);
+        scene::SocketType type = scene::SocketType::Value;
+        for (const scene::ShaderOutput& o : graph_.nodes[from].outputs)
+            if (o.id == in->link.output) type = o.type;
+        if (type == scene::SocketType::Shader) {
+            unsupported(node, "input '" + std::string(id) + "' is fed by a shader: read as 0");
+            return constant(float3(0));
+        }
+        return convert(reg, type, want);
+    }
+    const double* v = in->value;
+    switch (in->type) {
+        case scene::SocketType::Rgba:
+        case scene::SocketType::Vector:
+            return convert(constant(float3(static_cast<float>(v[0]), static_cast<float>(v[1]),
+                                           static_cast<float>(v[2]))),
+                           in->type, want);
+        default:
+            return convert(constant(static_cast<float>(v[0])), scene::SocketType::Value, want);
+    }
+}
+
+int Compiler::output_of(int node, const std::string& output) {
+    compile_node(node);
+    auto it = outputs_[node].find(output);
+    if (it != outputs_[node].end()) return it->second;
+    return constant(float3(0));
+}
+
+void Compiler::compile_node(int node) {
+    if (state_[node] == 2) return;
+    if (state_[node] == 1) {
+        unsupported(node, "is part of a cycle of links: cut there");
+        return;
+    }
+    state_[node] = 1;
+    const scene::ShaderNode& n = graph_.nodes[node];
+    auto v = tables_.values.find(n.type);
+    if (v != tables_.values.end()) {
+        v->second(*this, node);
+    } else if (tables_.shaders.find(n.type) == tables_.shaders.end() && !is_output(n.type)) {
+        unsupported(node);
+    }
+    state_[node] = 2;
+}
+
+int Compiler::closure(int node, const char* id) {
+    const scene::ShaderInput* in = graph_.nodes[node].input(id);
+    if (!in || !in->link.linked()) return -1;
+    const int from = in->link.node;
+    if (shader_of_[from] != -2) return shader_of_[from];
+    shader_of_[from] = -1;  // a cycle through shaders ends here
+    const scene::ShaderNode& n = graph_.nodes[from];
+    auto s = tables_.shaders.find(n.type);
+    if (s == tables_.shaders.end()) {
+        // A value node plugged into a shader socket: Cycles renders it as emission of its
+        // colour. Anything else glint lacks is warned.
+        if (tables_.values.count(n.type) && !n.outputs.empty()) {
+            ClosureNode e;
+            e.kind = ClosureNode::Kind::Emission;
+            e.in[0] = output_of(from, in->link.output);
+            e.in[1] = constant(1.0f);
+            shader_of_[from] = add_closure(e);
+        } else {
+            compile_node(from);  // warns
+            unsupported(from);
+        }
+        return shader_of_[from];
+    }
+    shader_of_[from] = s->second(*this, from);
+    return shader_of_[from];
+}
+
+int Compiler::add_closure(const ClosureNode& n) {
+    program_.closures_.push_back(n);
+    return static_cast<int>(program_.closures_.size()) - 1;
+}
+
+int Compiler::compile_output() {
+    const int out = graph_.output;
+    if (out < 0) return -1;
+    return closure(out, "Surface");
+}
+
+std::unique_ptr<ShaderProgram> ShaderProgram::compile(const scene::ShaderGraph& graph,
+                                                      TextureCache* textures, Diagnostics& diag,
+                                                      bool world) {
+    (void)world;
+    auto program = std::make_unique<ShaderProgram>();
+    program->name_ = graph.name;
+    Compiler c(graph, *program, textures, diag);
+    program->root_ = c.compile_output();
+    if (graph.output >= 0) {
+        const scene::ShaderNode& out = graph.nodes[graph.output];
+        const scene::ShaderInput* vol = out.input("Volume");
+        if (vol && vol->link.linked())
+            diag.warning(graph.loc, "'" + graph.name + "': volume shaders are not supported "
+                                                       "yet: the volume is left out");
+        const scene::ShaderInput* disp = out.input("Displacement");
+        if (disp && disp->link.linked())
+            diag.warning(graph.loc, "'" + graph.name + "': displacement is not supported yet: "
+                                                       "left out");
+    }
+    program->main_end_ = program->ops_.size();
+    program->varying_ops_ = static_cast<int>(program->ops_.size());
+    for (const ClosureNode& n : program->closures_)
+        for (int r : n.in)
+            if (c.varying(r)) program->closure_varying_ = true;
+    for (const ClosureNode& n : program->closures_)
+        if (c.varying(n.fac)) program->closure_varying_ = true;
+    return program;
+}
+
+void ShaderProgram::run(const Op* begin, const Op* end, float3* regs,
+                        const ShaderGlobals& sg) const {
+    for (const Op* op = begin; op != end; ++op) op->fn(*op, regs, sg);
+}
+
+namespace {
+Color to_color(float3 v) { return Color(v.x, v.y, v.z); }
+}  // namespace
+
+void ShaderProgram::walk(int index, const Color& weight, const float3* r,
+                         ClosureList* out) const {
+    if (index < 0 || weight.is_black()) return;
+    const ClosureNode& n = closures_[static_cast<size_t>(index)];
+    switch (n.kind) {
+        case ClosureNode::Kind::Mix: {
+            const float fac = std::clamp(r[n.fac].x, 0.0f, 1.0f);
+            walk(n.a, weight * (1.0 - fac), r, out);
+            walk(n.b, weight * static_cast<double>(fac), r, out);
+            return;
+        }
+        case ClosureNode::Kind::Add:
+            walk(n.a, weight, r, out);
+            walk(n.b, weight, r, out);
+            return;
+        case ClosureNode::Kind::Emission:
+            out->emission += weight * to_color(r[n.in[0]]) * static_cast<double>(r[n.in[1]].x);
+            return;
+        case ClosureNode::Kind::Transparent:
+            out->transparent += weight * to_color(r[n.in[0]]);
+            return;
+        case ClosureNode::Kind::Holdout:
+            out->holdout += weight;
+            return;
+        case ClosureNode::Kind::Bsdf: break;
+    }
+    // A BSDF: in[] = color, normal, roughness, ior, metallic, specular, transmission, alpha,
+    // emission color, emission strength.
+    Closure c;
+    c.kind = n.bsdf;
+    Color w = weight;
+    if (n.bsdf == ClosureKind::Principled && n.in[7] >= 0) {
+        // Alpha: the uncovered part passes straight through (Cycles' transparent closure).
+        const double alpha = std::clamp(static_cast<double>(r[n.in[7]].x), 0.0, 1.0);
+        if (alpha < 1) out->transparent += weight * (1 - alpha);
+        w = weight * alpha;
+        if (n.in[8] >= 0)
+            out->emission += w * to_color(r[n.in[8]]) * static_cast<double>(r[n.in[9]].x);
+    }
+    c.weight = w;
+    c.color = n.in[0] >= 0 ? to_color(r[n.in[0]]) : Color(1, 1, 1);
+    c.N = n.in[1] >= 0 ? r[n.in[1]].to_vec3() : Vec3();
+    c.roughness = n.in[2] >= 0 ? std::clamp(static_cast<double>(r[n.in[2]].x), 0.0, 1.0) : 0;
+    c.ior = n.in[3] >= 0 ? std::max(static_cast<double>(r[n.in[3]].x), 1e-5) : 1.45;
+    c.metallic = n.in[4] >= 0 ? std::clamp(static_cast<double>(r[n.in[4]].x), 0.0, 1.0) : 0;
+    c.specular = n.in[5] >= 0 ? std::max(static_cast<double>(r[n.in[5]].x), 0.0) : 0.5;
+    c.transmission =
+        n.in[6] >= 0 ? std::clamp(static_cast<double>(r[n.in[6]].x), 0.0, 1.0) : 0;
+    c.sample_weight = std::fabs((w.r + w.g + w.b) / 3);
+    if (c.sample_weight > 0) out->add(c);
+}
+
+void ShaderProgram::rerun(size_t end, float3* regs, const ShaderGlobals& sg) const {
+    load_globals(sg, regs);
+    run(ops_.data(), ops_.data() + std::min(end, ops_.size()), regs, sg);
+}
+
+void ShaderProgram::evaluate(const ShaderGlobals& sg, ClosureList* out) const {
+    *out = ClosureList();
+    thread_local std::vector<float3> regs;
+    regs.assign(init_.begin(), init_.end());
+    load_globals(sg, regs.data());
+    run(ops_.data(), ops_.data() + main_end_, regs.data(), sg);
+    walk(root_, Color(1, 1, 1), regs.data(), out);
+}
+
+}  // namespace glint::render::shader

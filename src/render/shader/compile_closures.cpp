@@ -1,0 +1,281 @@
+// Shader nodes (BSDFs, Emission, Background, Transparent, Holdout, Mix and Add Shader) into
+// the closure tree, and the nodes that bend normals (Bump, Normal Map). BSDFs glint does not
+// have yet are warned and drawn as the nearest one it has.
+#include <algorithm>
+#include <cmath>
+
+#include "render/shader/compiler.h"
+
+namespace glint::render::shader {
+
+namespace {
+
+using R = float3*;
+using G = const ShaderGlobals&;
+
+int normal_in(Compiler& c, int n, const char* id = "Normal") {
+    return c.linked(n, id) ? c.in(n, id, 'v') : static_cast<int>(kRegN);
+}
+
+// Warns when an input that glint ignores is linked or differs from `neutral`.
+void ignored(Compiler& c, int n, const char* id, float neutral, const char* what) {
+    const scene::ShaderInput* in = c.node(n).input(id);
+    if (!in) return;
+    if (in->link.linked() || std::fabs(in->value[0] - neutral) > 1e-6)
+        c.unsupported(n, std::string(what) + " is not supported yet: ignored");
+}
+
+int bsdf(Compiler& c, ClosureKind kind, std::initializer_list<int> regs) {
+    ClosureNode node;
+    node.kind = ClosureNode::Kind::Bsdf;
+    node.bsdf = kind;
+    int k = 0;
+    for (int r : regs) node.in[k++] = r;
+    return c.add_closure(node);
+}
+
+int diffuse(Compiler& c, int n) {
+    ignored(c, n, "Roughness", 0, "Oren-Nayar roughness");
+    return bsdf(c, ClosureKind::Diffuse, {c.in(n, "Color", 'c', float3(0.8f)), normal_in(c, n)});
+}
+
+int principled(Compiler& c, int n) {
+    ignored(c, n, "Subsurface", 0, "subsurface (the next issue's)");
+    ignored(c, n, "Sheen", 0, "sheen");
+    ignored(c, n, "Clearcoat", 0, "clearcoat");
+    ignored(c, n, "Anisotropic", 0, "anisotropy");
+    ignored(c, n, "Specular Tint", 0, "specular tint");
+    ignored(c, n, "Transmission Roughness", 0, "transmission roughness");
+    // in[]: color, normal, roughness, ior, metallic, specular, transmission, alpha, emission
+    // colour, emission strength (ShaderProgram::walk).
+    return bsdf(c, ClosureKind::Principled,
+                {c.in(n, "Base Color", 'c', float3(0.8f)), normal_in(c, n),
+                 c.in(n, "Roughness", 'f', float3(0.5f)), c.in(n, "IOR", 'f', float3(1.45f)),
+                 c.in(n, "Metallic", 'f'), c.in(n, "Specular", 'f', float3(0.5f)),
+                 c.in(n, "Transmission", 'f'), c.in(n, "Alpha", 'f', float3(1)),
+                 c.in(n, "Emission", 'c'), c.in(n, "Emission Strength", 'f', float3(1))});
+}
+
+void distribution(Compiler& c, int n) {
+    const std::string d = c.enum_prop(n, "distribution", "GGX");
+    if (d != "GGX" && d != "SHARP")
+        c.unsupported(n, "distribution " + d + " is rendered as GGX");
+}
+
+int glossy(Compiler& c, int n) {
+    distribution(c, n);
+    if (c.node(n).type == "ShaderNodeBsdfAnisotropic")
+        ignored(c, n, "Anisotropy", 0, "anisotropy");
+    const int rough = c.enum_prop(n, "distribution", "GGX") == "SHARP"
+                          ? c.constant(0.0f) : c.in(n, "Roughness", 'f', float3(0.5f));
+    return bsdf(c, ClosureKind::Glossy,
+                {c.in(n, "Color", 'c', float3(0.8f)), normal_in(c, n), rough});
+}
+
+int glass(Compiler& c, int n) {
+    distribution(c, n);
+    const int rough = c.enum_prop(n, "distribution", "GGX") == "SHARP"
+                          ? c.constant(0.0f) : c.in(n, "Roughness", 'f');
+    const ClosureKind kind = c.node(n).type == "ShaderNodeBsdfRefraction"
+                                 ? ClosureKind::Refraction : ClosureKind::Glass;
+    if (kind == ClosureKind::Refraction)
+        c.unsupported(n, "is drawn as a Glass BSDF (its reflection included)");
+    return bsdf(c, kind, {c.in(n, "Color", 'c', float3(1)), normal_in(c, n), rough,
+                          c.in(n, "IOR", 'f', float3(1.45f))});
+}
+
+int translucent(Compiler& c, int n) {
+    c.unsupported(n, "is drawn as a Diffuse BSDF (glint has no translucent lobe yet)");
+    return bsdf(c, ClosureKind::Translucent, {c.in(n, "Color", 'c', float3(0.8f)), normal_in(c, n)});
+}
+
+// Toon and Velvet: drawn as the Diffuse (or Glossy) closure they resemble, with a warning.
+int toon(Compiler& c, int n) {
+    const bool glossy_part = c.enum_prop(n, "component", "DIFFUSE") == "GLOSSY";
+    c.unsupported(n, std::string("is drawn as a ") + (glossy_part ? "Glossy" : "Diffuse") +
+                         " BSDF");
+    if (glossy_part)
+        return bsdf(c, ClosureKind::Glossy, {c.in(n, "Color", 'c', float3(0.8f)), normal_in(c, n),
+                                             c.in(n, "Smooth", 'f')});
+    return bsdf(c, ClosureKind::Diffuse, {c.in(n, "Color", 'c', float3(0.8f)), normal_in(c, n)});
+}
+
+int as_diffuse(Compiler& c, int n) {
+    c.unsupported(n, "is drawn as a Diffuse BSDF of its colour");
+    const char* color = c.node(n).input("Color") ? "Color" : "Base Color";
+    return bsdf(c, ClosureKind::Diffuse, {c.in(n, color, 'c', float3(0.8f)), normal_in(c, n)});
+}
+
+int emission(Compiler& c, int n) {
+    ClosureNode e;
+    e.kind = ClosureNode::Kind::Emission;
+    e.in[0] = c.in(n, "Color", 'c', float3(1));
+    e.in[1] = c.in(n, "Strength", 'f', float3(1));
+    return c.add_closure(e);
+}
+
+int transparent(Compiler& c, int n) {
+    ClosureNode e;
+    e.kind = ClosureNode::Kind::Transparent;
+    e.in[0] = c.in(n, "Color", 'c', float3(1));
+    return c.add_closure(e);
+}
+
+int holdout(Compiler& c, int n) {
+    c.unsupported(n, "holdout is not supported yet: it adds nothing (black)");
+    ClosureNode e;
+    e.kind = ClosureNode::Kind::Holdout;
+    return c.add_closure(e);
+}
+
+int mix_shader(Compiler& c, int n) {
+    ClosureNode m;
+    m.kind = ClosureNode::Kind::Mix;
+    m.fac = c.in(n, "Fac", 'f', float3(0.5f));
+    m.a = c.closure(n, "Shader");
+    m.b = c.closure(n, "Shader_001");
+    return c.add_closure(m);
+}
+
+int add_shader(Compiler& c, int n) {
+    ClosureNode m;
+    m.kind = ClosureNode::Kind::Add;
+    m.a = c.closure(n, "Shader");
+    m.b = c.closure(n, "Shader_001");
+    return c.add_closure(m);
+}
+
+// ---------------------------------------------------------------- normals
+
+// Cycles' Bump (svm_node_set_bump): the height at P and at two points a small step away in
+// the surface gives its gradient; the normal leans against it by `distance`.
+void bump(Compiler& c, int n) {
+    const int height = c.in(n, "Height", 'f', float3(1));
+    const int out = c.fresh();
+    Op op;
+    op.in[0] = height;
+    op.in[1] = normal_in(c, n);
+    op.in[2] = c.in(n, "Strength", 'f', float3(1));
+    op.in[3] = c.in(n, "Distance", 'f', float3(1));
+    op.out[0] = out;
+    op.i[0] = c.number_prop(n, "invert", 0) != 0;
+    op.sub_end = static_cast<int>(c.mark());
+    op.data = &c.program();
+    op.fn = [](const Op& o, R r, G sg) {
+        const auto* program = static_cast<const ShaderProgram*>(o.data);
+        const float h_c = r[o.in[0]].x;
+        const float3 normal_in = r[o.in[1]];
+        // The height at P + dPdx and P + dPdy, from a copy of the registers.
+        thread_local std::vector<float3> scratch;
+        const size_t count = program->register_count();
+        float h[2];
+        for (int k = 0; k < 2; ++k) {
+            const float3 d = k == 0 ? sg.dPdx : sg.dPdy;
+            ShaderGlobals moved = sg;
+            moved.P = sg.P + d;
+            float3 od;
+            for (int i = 0; i < 3; ++i)
+                od[i] = sg.world_to_object[i][0] * d.x + sg.world_to_object[i][1] * d.y +
+                        sg.world_to_object[i][2] * d.z;
+            moved.object = sg.object + od;
+            moved.generated = sg.generated + od * sg.generated_scale;
+            // uv moves by the step's components along dPdu and dPdv.
+            const float uu = dot(sg.dPdu, sg.dPdu), vv = dot(sg.dPdv, sg.dPdv),
+                        uvd = dot(sg.dPdu, sg.dPdv);
+            const float det = uu * vv - uvd * uvd;
+            if (det > 0) {
+                const float a = dot(d, sg.dPdu), b = dot(d, sg.dPdv);
+                moved.uv = sg.uv + float3((a * vv - b * uvd) / det, (b * uu - a * uvd) / det, 0);
+            }
+            scratch.assign(r, r + count);
+            program->rerun(static_cast<size_t>(o.sub_end), scratch.data(), moved);
+            h[k] = scratch[static_cast<size_t>(o.in[0])].x;
+        }
+        const float3 dPdx = sg.dPdx, dPdy = sg.dPdy;
+        const float3 Rx = cross(dPdy, normal_in), Ry = cross(normal_in, dPdx);
+        const float det = dot(dPdx, Rx);
+        const float3 surfgrad = Rx * (h[0] - h_c) + Ry * (h[1] - h_c);
+        const float absdet = std::fabs(det);
+        float strength = std::max(r[o.in[2]].x, 0.0f);
+        float distance = r[o.in[3]].x;
+        if (o.i[0]) distance = -distance;
+        float3 normal_out =
+            safe_normalize(normal_in * absdet - surfgrad * (distance * (det < 0 ? -1.0f : 1.0f)));
+        normal_out = safe_normalize(normal_out * strength + normal_in * (1.0f - strength));
+        r[o.out[0]] = normal_out;
+    };
+    if (!c.varying(height)) {
+        // A constant height bends nothing.
+        c.set_out(n, "Normal", op.in[1]);
+        return;
+    }
+    c.emit(op, false);
+    c.set_out(n, "Normal", out);
+}
+
+// Cycles' Normal Map: tangent space along the uv tangent (glint has no MikkTSpace tangents
+// yet: dPdu stands in), object and world space.
+void normal_map(Compiler& c, int n) {
+    const std::string space = c.enum_prop(n, "space", "TANGENT");
+    const int out = c.fresh();
+    Op op;
+    op.in[0] = c.in(n, "Color", 'c', float3(0.5f, 0.5f, 1.0f));
+    op.in[1] = c.in(n, "Strength", 'f', float3(1));
+    op.in[2] = kRegN;
+    op.in[3] = kRegTangent;
+    op.out[0] = out;
+    op.i[0] = space == "TANGENT" ? 0 : (space == "OBJECT" || space == "BLENDER_OBJECT") ? 1 : 2;
+    op.i[1] = space == "BLENDER_OBJECT" || space == "BLENDER_WORLD";
+    op.fn = [](const Op& o, R r, G sg) {
+        float3 col = r[o.in[0]];
+        const float3 N = r[o.in[2]];
+        if (o.i[1]) col = float3(col.x, col.z, col.y);  // Blender's own space: y and z swapped
+        col = col * 2.0f - float3(1.0f);
+        float3 res;
+        if (o.i[0] == 0) {
+            const float3 T = safe_normalize(r[o.in[3]] - N * dot(N, r[o.in[3]]));
+            const float3 B = cross(N, T);
+            res = safe_normalize(T * col.x + B * col.y + N * col.z);
+        } else if (o.i[0] == 1) {
+            for (int i = 0; i < 3; ++i)
+                res[i] = sg.world_to_object[0][i] * col.x + sg.world_to_object[1][i] * col.y +
+                         sg.world_to_object[2][i] * col.z;
+            res = safe_normalize(res);
+        } else {
+            res = safe_normalize(col);
+        }
+        const float strength = std::max(r[o.in[1]].x, 0.0f);
+        if (strength != 1.0f) res = safe_normalize(N + (res - N) * strength);
+        if (dot(res, N) < 0 && sg.backfacing) res = -res;
+        r[o.out[0]] = res;
+    };
+    c.emit(op, false);
+    c.set_out(n, "Normal", out);
+}
+
+}  // namespace
+
+void add_shader_nodes(NodeTables& t) {
+    auto& s = t.shaders;
+    s["ShaderNodeBsdfDiffuse"] = diffuse;
+    s["ShaderNodeBsdfPrincipled"] = principled;
+    s["ShaderNodeBsdfGlossy"] = glossy;
+    s["ShaderNodeBsdfAnisotropic"] = glossy;
+    s["ShaderNodeBsdfGlass"] = glass;
+    s["ShaderNodeBsdfRefraction"] = glass;
+    s["ShaderNodeBsdfTranslucent"] = translucent;
+    s["ShaderNodeBsdfToon"] = toon;
+    s["ShaderNodeBsdfVelvet"] = as_diffuse;
+    s["ShaderNodeSubsurfaceScattering"] = as_diffuse;
+    s["ShaderNodeEeveeSpecular"] = as_diffuse;
+    s["ShaderNodeEmission"] = emission;
+    s["ShaderNodeBackground"] = emission;
+    s["ShaderNodeBsdfTransparent"] = transparent;
+    s["ShaderNodeHoldout"] = holdout;
+    s["ShaderNodeMixShader"] = mix_shader;
+    s["ShaderNodeAddShader"] = add_shader;
+    t.values["ShaderNodeBump"] = bump;
+    t.values["ShaderNodeNormalMap"] = normal_map;
+}
+
+}  // namespace glint::render::shader
