@@ -308,6 +308,7 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
     }
     settings.film_transparent = render.boolean("film_transparent", false);
     settings.filter_width = render.number("filter_width", 1.5);
+    settings.pixel_filter = render.string("pixel_filter", "BLACKMAN_HARRIS");
     settings.clamp_direct = render.number("clamp_direct", 0);
     settings.clamp_indirect = render.number("clamp_indirect", 10);
     settings.filter_glossy = render.number("filter_glossy", 1);

@@ -594,6 +594,10 @@ int render_frame(const RenderArgs& args) {
         if (!args.given.spp) options.spp = b.samples;
         if (!args.given.seed) options.seed = static_cast<uint32_t>(b.seed);
         if (!args.given.max_depth) options.max_depth = b.max_bounces + 1;
+        options.pixel_filter = b.pixel_filter == "BOX"        ? render::PixelFilterKind::Box
+                               : b.pixel_filter == "GAUSSIAN" ? render::PixelFilterKind::Gaussian
+                                                              : render::PixelFilterKind::BlackmanHarris;
+        options.filter_width = b.filter_width;
     }
     double parse_seconds = seconds_since(start);
     if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <functional>
 
+#include "render/film/pixel_filter.h"
+
 namespace glint::render {
 
 enum class AaMode {
@@ -54,6 +56,10 @@ struct RenderOptions {
     // estimate the variance of each pixel's mean (RenderResult::albedo ... variance).
     bool aovs = false;
     bool variance = false;
+    // Path tracer: the pixel filter samples follow (film/pixel_filter.h): glint's box over the
+    // pixel unless a Blender scene brings Cycles' filter and width.
+    PixelFilterKind pixel_filter = PixelFilterKind::GlintBox;
+    double filter_width = 1.5;
     // Called with the finished fraction in [0, 1], from any thread, at most every tile.
     std::function<void(double)> progress;
     const std::atomic<bool>* cancel = nullptr;  // render throws Error(Cancelled) when set

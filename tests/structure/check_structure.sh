@@ -23,8 +23,13 @@ beyond=$(grep -Hn '#include "render/' src/app/* | grep -v '"render/render.h"\|"r
 $beyond"
 
 # The renderer's stages, each in its room; the integrators alone in theirs.
-for d in prepare lights film integrators sampling; do
+for d in prepare lights film integrators sampling shader; do
     [ -d "src/render/$d" ] || fail "src/render/$d is missing"
+done
+# Shader graphs are evaluated without knowing who asks: render/shader includes no integrator,
+# light or film header.
+for f in $(grep -l '#include "render/\(integrators\|lights\|film\)/' src/render/shader/* 2>/dev/null); do
+    fail "$f includes an integrator, light or film header (render/shader must not)"
 done
 n=$(ls src/render/integrators/*.cpp 2>/dev/null | wc -l)
 [ "$n" -le 4 ] || fail "src/render/integrators holds $n .cpp files (at most 4: integrators only)"

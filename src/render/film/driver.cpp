@@ -309,6 +309,7 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
         extra.m2.assign(pixels * 3, 0.0);
     }
     const std::vector<Tile> tiles = make_tiles(options.width, options.height, region);
+    const PixelFilter filter(options.pixel_filter, options.filter_width);
     const int total = std::max(1, options.spp);
     int done = 0;
     std::atomic<bool> cancelled{false};
@@ -368,13 +369,14 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
                             const uint32_t index = static_cast<uint32_t>(s);
                             const PixelSampler ps(x, y, index, options.seed);
                             const Sample2 j = ps.get2(0);
+                            const double fx = x + filter.offset(j.u), fy = y + filter.offset(j.v);
                             std::optional<Ray> ray;
                             if (camera.has_lens()) {
                                 // A pair no bounce uses: the aperture's point.
                                 const Sample2 l = ps.get2(kLensPair);
-                                ray = camera.generate(x + j.u - 0.5, y + j.v - 0.5, l.u, l.v);
+                                ray = camera.generate(fx, fy, l.u, l.v);
                             } else {
-                                ray = camera.generate(x + j.u - 0.5, y + j.v - 0.5);
+                                ray = camera.generate(fx, fy);
                             }
                             float value[3] = {0, 0, 0};
                             FirstHit first;

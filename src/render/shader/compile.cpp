@@ -357,7 +357,10 @@ void ShaderProgram::walk(int index, const Color& weight, const float3* r,
     c.specular = n.in[5] >= 0 ? std::max(static_cast<double>(r[n.in[5]].x), 0.0) : 0.5;
     c.transmission =
         n.in[6] >= 0 ? std::clamp(static_cast<double>(r[n.in[6]].x), 0.0, 1.0) : 0;
-    c.sample_weight = std::fabs((w.r + w.g + w.b) / 3);
+    // Cycles' sample weight: the closure's weight with its colour multiplied in (a Principled
+    // BSDF keeps its specular lobe whatever its base colour).
+    const Color sw = n.bsdf == ClosureKind::Principled ? w : w * c.color;
+    c.sample_weight = std::fabs((sw.r + sw.g + sw.b) / 3);
     if (c.sample_weight > 0) out->add(c);
 }
 

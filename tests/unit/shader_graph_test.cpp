@@ -1,0 +1,260 @@
+// The shader graph compiler and its program (render/shader/program.h): folding, varying
+// inputs, the closure tree, transparency, Bump, and what a node glint lacks does.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "render/shader/program.h"
+
+namespace glint::render::shader {
+namespace {
+
+using scene::ShaderGraph;
+using scene::ShaderInput;
+using scene::ShaderNode;
+using scene::SocketType;
+
+// A small builder: nodes by type with their inputs' values and links.
+struct G {
+    ShaderGraph g;
+    int node(const std::string& type, std::vector<std::pair<std::string, SocketType>> outs = {}) {
+        ShaderNode n;
+        n.type = type;
+        n.name = type + "." + std::to_string(g.nodes.size());
+        for (auto& [id, t] : outs) {
+            scene::ShaderOutput o;
+            o.id = id;
+            o.type = t;
+            n.outputs.push_back(o);
+        }
+        g.nodes.push_back(n);
+        return static_cast<int>(g.nodes.size()) - 1;
+    }
+    ShaderInput& in(int node, const std::string& id, SocketType type, double a, double b = 0,
+                    double c = 0) {
+        ShaderInput i;
+        i.id = id;
+        i.type = type;
+        i.value[0] = a;
+        i.value[1] = b;
+        i.value[2] = c;
+        g.nodes[node].inputs.push_back(i);
+        return g.nodes[node].inputs.back();
+    }
+    void link(int to, const std::string& input, int from, const std::string& output) {
+        for (ShaderInput& i : g.nodes[to].inputs)
+            if (i.id == input) {
+                i.link = {from, output};
+                return;
+            }
+        ShaderInput i;
+        i.id = input;
+        i.type = SocketType::Shader;
+        i.link = {from, output};
+        g.nodes[to].inputs.push_back(i);
+    }
+    void prop(int node, const std::string& key, const std::string& text) {
+        scene::ShaderProp p;
+        p.text = text;
+        p.is_text = true;
+        g.nodes[node].props[key] = p;
+    }
+    int output() {
+        const int o = node("ShaderNodeOutputMaterial");
+        g.output = o;
+        return o;
+    }
+    // An Emission whose colour comes from `from`'s `output`, into the output node.
+    void emit(int from, const std::string& output) {
+        const int e = node("ShaderNodeEmission", {{"Emission", SocketType::Shader}});
+        in(e, "Color", SocketType::Rgba, 1, 1, 1);
+        in(e, "Strength", SocketType::Value, 1);
+        link(e, "Color", from, output);
+        link(output_node(), "Surface", e, "Emission");
+    }
+    int output_node() {
+        if (g.output < 0) output();
+        return g.output;
+    }
+};
+
+TEST(ShaderGraph, ConstantMathFoldsToOneEvaluation) {
+    G b;
+    b.g.name = "folded";
+    const int v = b.node("ShaderNodeValue", {{"Value", SocketType::Value}});
+    b.g.nodes[v].outputs[0].value[0] = 0.25;
+    const int m = b.node("ShaderNodeMath", {{"Value", SocketType::Value}});
+    b.prop(m, "operation", "MULTIPLY");
+    b.in(m, "Value", SocketType::Value, 0);
+    b.in(m, "Value_001", SocketType::Value, 2);
+    b.link(m, "Value", v, "Value");
+    b.emit(m, "Value");
+    Diagnostics diag;
+    auto p = ShaderProgram::compile(b.g, nullptr, diag);
+    EXPECT_EQ(diag.warning_count(), 0);
+    EXPECT_TRUE(p->constant());
+    EXPECT_EQ(p->op_count(), 0u);  // everything folded
+    ClosureList cl;
+    p->evaluate(ShaderGlobals(), &cl);
+    EXPECT_DOUBLE_EQ(cl.emission.r, 0.5);  // float to colour: (f, f, f)
+    EXPECT_DOUBLE_EQ(cl.emission.b, 0.5);
+}
+
+TEST(ShaderGraph, CoordinatesVaryAndConvertAsCycles) {
+    G b;
+    const int tc = b.node("ShaderNodeTexCoord", {{"Object", SocketType::Vector}});
+    const int sep = b.node("ShaderNodeSeparateXYZ", {{"X", SocketType::Value},
+                                                      {"Y", SocketType::Value},
+                                                      {"Z", SocketType::Value}});
+    b.in(sep, "Vector", SocketType::Vector, 0);
+    b.link(sep, "Vector", tc, "Object");
+    const int m = b.node("ShaderNodeMath", {{"Value", SocketType::Value}});
+    b.prop(m, "operation", "ADD");
+    b.in(m, "Value", SocketType::Value, 0);
+    b.in(m, "Value_001", SocketType::Value, 0);
+    b.link(m, "Value", sep, "X");
+    b.link(m, "Value_001", sep, "Z");
+    b.emit(m, "Value");
+    Diagnostics diag;
+    auto p = ShaderProgram::compile(b.g, nullptr, diag);
+    EXPECT_FALSE(p->constant());
+    ShaderGlobals sg;
+    sg.object = float3(0.25f, 7.0f, 0.5f);
+    ClosureList cl;
+    p->evaluate(sg, &cl);
+    EXPECT_FLOAT_EQ(static_cast<float>(cl.emission.g), 0.75f);
+}
+
+TEST(ShaderGraph, ColourIntoAFloatSocketIsItsLuminance) {
+    G b;
+    const int rgb = b.node("ShaderNodeRGB", {{"Color", SocketType::Rgba}});
+    b.g.nodes[rgb].outputs[0].value[0] = 1;  // pure red
+    const int m = b.node("ShaderNodeMath", {{"Value", SocketType::Value}});
+    b.prop(m, "operation", "ADD");
+    b.in(m, "Value", SocketType::Value, 0);
+    b.in(m, "Value_001", SocketType::Value, 0);
+    b.link(m, "Value", rgb, "Color");
+    b.emit(m, "Value");
+    Diagnostics diag;
+    auto p = ShaderProgram::compile(b.g, nullptr, diag);
+    ClosureList cl;
+    p->evaluate(ShaderGlobals(), &cl);
+    EXPECT_NEAR(cl.emission.r, 0.2126, 1e-3);  // Rec.709's red weight
+}
+
+TEST(ShaderGraph, MixShaderKeepsBothClosuresWeighted) {
+    G b;
+    const int d = b.node("ShaderNodeBsdfDiffuse", {{"BSDF", SocketType::Shader}});
+    b.in(d, "Color", SocketType::Rgba, 1, 0, 0);
+    const int gl = b.node("ShaderNodeBsdfGlossy", {{"BSDF", SocketType::Shader}});
+    b.in(gl, "Color", SocketType::Rgba, 1, 1, 1);
+    b.in(gl, "Roughness", SocketType::Value, 0.3);
+    const int mix = b.node("ShaderNodeMixShader", {{"Shader", SocketType::Shader}});
+    b.in(mix, "Fac", SocketType::Value, 0.25);
+    b.link(mix, "Shader", d, "BSDF");
+    b.link(mix, "Shader_001", gl, "BSDF");
+    b.link(b.output_node(), "Surface", mix, "Shader");
+    Diagnostics diag;
+    auto p = ShaderProgram::compile(b.g, nullptr, diag);
+    ClosureList cl;
+    p->evaluate(ShaderGlobals(), &cl);
+    ASSERT_EQ(cl.count, 2);
+    EXPECT_EQ(cl.items[0].kind, ClosureKind::Diffuse);
+    EXPECT_DOUBLE_EQ(cl.items[0].weight.r, 0.75);
+    EXPECT_EQ(cl.items[1].kind, ClosureKind::Glossy);
+    EXPECT_DOUBLE_EQ(cl.items[1].weight.r, 0.25);
+    EXPECT_NEAR(cl.items[1].roughness, 0.3, 1e-6);
+}
+
+TEST(ShaderGraph, PrincipledAlphaBecomesTransparency) {
+    G b;
+    const int pr = b.node("ShaderNodeBsdfPrincipled", {{"BSDF", SocketType::Shader}});
+    b.in(pr, "Base Color", SocketType::Rgba, 0.8, 0.8, 0.8);
+    b.in(pr, "Alpha", SocketType::Value, 0.4);
+    b.link(b.output_node(), "Surface", pr, "BSDF");
+    Diagnostics diag;
+    auto p = ShaderProgram::compile(b.g, nullptr, diag);
+    ClosureList cl;
+    p->evaluate(ShaderGlobals(), &cl);
+    ASSERT_EQ(cl.count, 1);
+    EXPECT_NEAR(cl.items[0].weight.g, 0.4, 1e-6);
+    EXPECT_NEAR(cl.transparent.g, 0.6, 1e-6);
+}
+
+TEST(ShaderGraph, BumpLeansAgainstTheHeightGradient) {
+    G b;
+    const int tc = b.node("ShaderNodeTexCoord", {{"Object", SocketType::Vector}});
+    const int sep = b.node("ShaderNodeSeparateXYZ", {{"X", SocketType::Value}});
+    b.in(sep, "Vector", SocketType::Vector, 0);
+    b.link(sep, "Vector", tc, "Object");
+    const int bump = b.node("ShaderNodeBump", {{"Normal", SocketType::Vector}});
+    b.in(bump, "Strength", SocketType::Value, 1);
+    b.in(bump, "Distance", SocketType::Value, 1);
+    b.in(bump, "Height", SocketType::Value, 0);
+    b.link(bump, "Height", sep, "X");
+    const int d = b.node("ShaderNodeBsdfDiffuse", {{"BSDF", SocketType::Shader}});
+    b.in(d, "Color", SocketType::Rgba, 1, 1, 1);
+    b.in(d, "Normal", SocketType::Vector, 0);
+    b.link(d, "Normal", bump, "Normal");
+    b.link(b.output_node(), "Surface", d, "BSDF");
+    Diagnostics diag;
+    auto p = ShaderProgram::compile(b.g, nullptr, diag);
+    ShaderGlobals sg;
+    sg.N = sg.Ng = float3(0, 0, 1);
+    sg.dPdx = float3(1e-3f, 0, 0);
+    sg.dPdy = float3(0, 1e-3f, 0);
+    ClosureList cl;
+    p->evaluate(sg, &cl);
+    ASSERT_EQ(cl.count, 1);
+    // Height x, distance 1: the normal (-1, 0, 1) / sqrt(2).
+    EXPECT_NEAR(cl.items[0].N.x, -std::sqrt(0.5), 1e-3);
+    EXPECT_NEAR(cl.items[0].N.z, std::sqrt(0.5), 1e-3);
+}
+
+TEST(ShaderGraph, AMissingNodeIsOneWarningNamingItNeverACrash) {
+    G b;
+    b.g.name = "Rusty";
+    const int x = b.node("ShaderNodeTexPointDensity", {{"Color", SocketType::Rgba}});
+    b.g.nodes[x].name = "Point Density";
+    const int d = b.node("ShaderNodeBsdfDiffuse", {{"BSDF", SocketType::Shader}});
+    b.in(d, "Color", SocketType::Rgba, 0.5, 0.5, 0.5);
+    b.link(d, "Color", x, "Color");
+    const int d2 = b.node("ShaderNodeBsdfDiffuse", {{"BSDF", SocketType::Shader}});
+    b.in(d2, "Color", SocketType::Rgba, 0.5, 0.5, 0.5);
+    b.link(d2, "Color", x, "Color");
+    const int add = b.node("ShaderNodeAddShader", {{"Shader", SocketType::Shader}});
+    b.link(add, "Shader", d, "BSDF");
+    b.link(add, "Shader_001", d2, "BSDF");
+    b.link(b.output_node(), "Surface", add, "Shader");
+    Diagnostics diag;
+    auto p = ShaderProgram::compile(b.g, nullptr, diag);
+    ASSERT_EQ(diag.warning_count(), 1);
+    EXPECT_NE(diag.all()[0].message.find("Point Density"), std::string::npos);
+    EXPECT_NE(diag.all()[0].message.find("Rusty"), std::string::npos);
+    ClosureList cl;
+    p->evaluate(ShaderGlobals(), &cl);
+    EXPECT_EQ(cl.count, 0);  // black colour: no closure worth sampling
+}
+
+TEST(ShaderGraph, ALinkCycleIsCutWithAWarning) {
+    G b;
+    const int m1 = b.node("ShaderNodeMath", {{"Value", SocketType::Value}});
+    const int m2 = b.node("ShaderNodeMath", {{"Value", SocketType::Value}});
+    for (int m : {m1, m2}) {
+        b.prop(m, "operation", "ADD");
+        b.in(m, "Value", SocketType::Value, 0.5);
+        b.in(m, "Value_001", SocketType::Value, 0.5);
+    }
+    b.link(m1, "Value", m2, "Value");
+    b.link(m2, "Value", m1, "Value");
+    b.emit(m1, "Value");
+    Diagnostics diag;
+    auto p = ShaderProgram::compile(b.g, nullptr, diag);
+    EXPECT_GE(diag.warning_count(), 1);
+    ClosureList cl;
+    p->evaluate(ShaderGlobals(), &cl);
+    EXPECT_TRUE(std::isfinite(cl.emission.r));
+}
+
+}  // namespace
+}  // namespace glint::render::shader
