@@ -198,7 +198,11 @@ class _Flattener:
         if not sock.is_linked:
             return None
         link = sock.links[0]
-        if link.is_muted or not link.is_valid:
+        # Cycles 3.4 drops muted and invalid links and those that start or end at an
+        # unavailable socket (the input keeps its own default: a Nishita Sky Texture with its
+        # sun disc on reads Generated whatever is linked to its hidden Vector).
+        if link.is_muted or not link.is_valid or not link.from_socket.enabled or \
+                not sock.enabled:
             return None
         return self.from_output(link.from_node, link.from_socket, path)
 

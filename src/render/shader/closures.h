@@ -21,8 +21,9 @@ struct ShaderGlobals {
     float3 generated;  // the object's texture space (its bounds) mapped to [0, 1]^3
     float3 object;     // object-space position
     float3 dPdu, dPdv; // world-space uv tangents where the mesh has uvs, else zero
-    // Bump's finite differences: two small steps in the surface, about a tenth of the
-    // pixel's footprint, and Generated's scale (object units -> texture space).
+    // Bump's finite differences: two steps in the surface as Cycles 3.4 takes them (the
+    // pixel's footprint along make_orthonormals(Ng)), and Generated's scale (object units ->
+    // texture space).
     float3 dPdx, dPdy;
     float3 generated_scale{1, 1, 1};
     float3 tangent;    // Cycles' tangent (dPdu, or around the object's Z axis)

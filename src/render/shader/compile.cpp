@@ -361,6 +361,12 @@ void ShaderProgram::walk(int index, const Color& weight, const float3* r,
     // BSDF keeps its specular lobe whatever its base colour).
     const Color sw = n.bsdf == ClosureKind::Principled ? w : w * c.color;
     c.sample_weight = std::fabs((sw.r + sw.g + sw.b) / 3);
+    // A Principled BSDF without any lobe (black base, no metal, specular or transmission; the
+    // lobes glint ignores warned apart) gets no closure in Cycles 3.4: it must take no samples
+    // from the rest (transparency included).
+    if (n.bsdf == ClosureKind::Principled && c.color.is_black() && c.metallic == 0 &&
+        c.specular == 0 && c.transmission == 0)
+        return;
     if (c.sample_weight > 0) out->add(c);
 }
 

@@ -213,8 +213,11 @@ void bump(Compiler& c, int n) {
     c.set_out(n, "Normal", out);
 }
 
-// Cycles' Normal Map: tangent space along the uv tangent (glint has no MikkTSpace tangents
-// yet: dPdu stands in), object and world space.
+// Cycles 3.4's Normal Map (svm_node_normal_map). Tangent space works in object space: the
+// tangent (glint has no MikkTSpace tangents yet: dPdu stands in) and the normal taken back
+// into the object (the face's normal, unflipped, through the transpose), the
+// result through the inverse transpose into the world. Blender's own spaces negate Y and Z.
+// A back face flips the result.
 void normal_map(Compiler& c, int n) {
     const std::string space = c.enum_prop(n, "space", "TANGENT");
     const int out = c.fresh();
@@ -227,26 +230,41 @@ void normal_map(Compiler& c, int n) {
     op.i[0] = space == "TANGENT" ? 0 : (space == "OBJECT" || space == "BLENDER_OBJECT") ? 1 : 2;
     op.i[1] = space == "BLENDER_OBJECT" || space == "BLENDER_WORLD";
     op.fn = [](const Op& o, R r, G sg) {
-        float3 col = r[o.in[0]];
+        float3 col = (r[o.in[0]] - float3(0.5f)) * 2.0f;
         const float3 N = r[o.in[2]];
-        if (o.i[1]) col = float3(col.x, col.z, col.y);  // Blender's own space: y and z swapped
-        col = col * 2.0f - float3(1.0f);
+        // v through the inverse transpose of object -> world (an object normal into the
+        // world), normalized.
+        auto normal_to_world = [&](float3 v) {
+            float3 w;
+            for (int i = 0; i < 3; ++i)
+                w[i] = sg.world_to_object[0][i] * v.x + sg.world_to_object[1][i] * v.y +
+                       sg.world_to_object[2][i] * v.z;
+            return safe_normalize(w);
+        };
         float3 res;
         if (o.i[0] == 0) {
-            const float3 T = safe_normalize(r[o.in[3]] - N * dot(N, r[o.in[3]]));
-            const float3 B = cross(N, T);
-            res = safe_normalize(T * col.x + B * col.y + N * col.z);
-        } else if (o.i[0] == 1) {
-            for (int i = 0; i < 3; ++i)
-                res[i] = sg.world_to_object[0][i] * col.x + sg.world_to_object[1][i] * col.y +
-                         sg.world_to_object[2][i] * col.z;
-            res = safe_normalize(res);
+            // The normal as the face has it (N is Ng on a flat face), unflipped.
+            const float3 g = sg.backfacing ? -N : N;
+            const float3 t_world = r[o.in[3]];
+            float3 t, nrm;
+            for (int i = 0; i < 3; ++i) {
+                t[i] = sg.world_to_object[i][0] * t_world.x + sg.world_to_object[i][1] * t_world.y +
+                       sg.world_to_object[i][2] * t_world.z;
+                nrm[i] = sg.object_to_world[0][i] * g.x + sg.object_to_world[1][i] * g.y +
+                         sg.object_to_world[2][i] * g.z;
+            }
+            t = safe_normalize(t);
+            nrm = safe_normalize(nrm);
+            const float3 B = cross(nrm, t);
+            res = normal_to_world(safe_normalize(t * col.x + B * col.y + nrm * col.z));
         } else {
-            res = safe_normalize(col);
+            if (o.i[1]) col = float3(col.x, -col.y, -col.z);
+            res = o.i[0] == 1 ? normal_to_world(col) : safe_normalize(col);
         }
-        const float strength = std::max(r[o.in[1]].x, 0.0f);
-        if (strength != 1.0f) res = safe_normalize(N + (res - N) * strength);
-        if (dot(res, N) < 0 && sg.backfacing) res = -res;
+        if (sg.backfacing) res = -res;
+        const float strength = r[o.in[1]].x;
+        if (strength != 1.0f) res = safe_normalize(N + (res - N) * std::max(strength, 0.0f));
+        if (res == float3(0)) res = N;
         r[o.out[0]] = res;
     };
     c.emit(op, false);

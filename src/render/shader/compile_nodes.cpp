@@ -564,7 +564,9 @@ void vector_rotate(Compiler& c, int n) {
     alias(c, n, "Vector", out);
 }
 
-// Vector Transform between world, object and camera space (point, vector or normal).
+// Vector Transform between world and object space (point, vector or normal). Cycles 3.4
+// (svm/vector_transform.h) moves a normal as a direction (the matrix itself, not its inverse
+// transpose) and normalizes it.
 void vector_transform(Compiler& c, int n) {
     const std::string type = c.enum_prop(n, "vector_type", "VECTOR");
     const std::string from = c.enum_prop(n, "convert_from", "WORLD");
@@ -579,14 +581,9 @@ void vector_transform(Compiler& c, int n) {
         const float3 v = r[o.in[0]];
         const auto& m = o.i[1] ? sg.world_to_object : sg.object_to_world;
         float3 res;
-        if (o.i[0] == 2) {  // normal: the inverse transpose
-            const auto& t = o.i[1] ? sg.object_to_world : sg.world_to_object;
-            for (int i = 0; i < 3; ++i) res[i] = t[0][i] * v.x + t[1][i] * v.y + t[2][i] * v.z;
-            res = safe_normalize(res);
-        } else {
-            for (int i = 0; i < 3; ++i)
-                res[i] = m[i][0] * v.x + m[i][1] * v.y + m[i][2] * v.z + (o.i[0] == 0 ? m[i][3] : 0);
-        }
+        for (int i = 0; i < 3; ++i)
+            res[i] = m[i][0] * v.x + m[i][1] * v.y + m[i][2] * v.z + (o.i[0] == 0 ? m[i][3] : 0);
+        if (o.i[0] == 2) res = safe_normalize(res);
         r[o.out[0]] = res;
     }, {c.in(n, "Vector", 'v')}, {out});
     op.i[0] = type == "POINT" ? 0 : (type == "NORMAL" ? 2 : 1);

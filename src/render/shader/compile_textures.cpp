@@ -381,17 +381,29 @@ void sky(Compiler& c, int n) {
 
 enum Extension { kRepeat, kExtend, kClip, kMirror };
 
+// An image as Cycles 3.4 samples it (kernel/svm/image.h, scene/image.cpp): an 8-bit sRGB
+// file stays in its sRGB bytes (compress_as_srgb), premultiplied by alpha in bytes,
+// (c * a) / 255 truncated, as Blender's loader does, interpolated there and decoded to
+// linear after; other images are linear, premultiplied in floats. Colour data (Non-Color),
+// Channel Packed and None alpha are not premultiplied (None: alpha 1). The Color output is
+// the premultiplied colour unless the node's Alpha output is linked: then it is divided by
+// the interpolated alpha (when that is neither 0 nor 1).
 struct ImageRef {
     const ImageTexture* image = nullptr;
     int extension = kRepeat;
     bool closest = false;
+    bool srgb_bytes = false;   // the sRGB bytes as stored (decoded after interpolation)
+    bool associate = true;     // premultiply by alpha
+    bool unassociate = false;  // divide the result by its alpha (Alpha output linked)
+    bool ignore_alpha = false; // alpha 1 (alpha mode None)
 };
 
 // Texel (x, y) counted from the bottom row, by the extension mode; false outside for Clip.
-bool texel(const ImageTexture& im, int x, int y, int ext, float4* out) {
+bool texel(const ImageRef& ref, int x, int y, float4* out) {
+    const ImageTexture& im = *ref.image;
     const int w = im.width(), h = im.height();
     auto wrap = [&](int v, int size) {
-        switch (ext) {
+        switch (ref.extension) {
             case kRepeat: {
                 int m = v % size;
                 return m < 0 ? m + size : m;
@@ -405,38 +417,71 @@ bool texel(const ImageTexture& im, int x, int y, int ext, float4* out) {
             default: return std::clamp(v, 0, size - 1);
         }
     };
-    if (ext == kClip && (x < 0 || y < 0 || x >= w || y >= h)) {
+    if (ref.extension == kClip && (x < 0 || y < 0 || x >= w || y >= h)) {
         *out = float4{0, 0, 0, 0};
         return false;
     }
     const float* t = im.texel(wrap(x, w), h - 1 - wrap(y, h));
-    *out = float4{t[0], t[1], t[2], 1.0f - t[4]};
+    const float alpha = ref.ignore_alpha ? 1.0f : 1.0f - t[4];
+    if (ref.srgb_bytes) {
+        const int a8 = static_cast<int>(std::lround(alpha * 255.0f));
+        int c8[3];
+        for (int k = 0; k < 3; ++k) {
+            c8[k] = static_cast<int>(std::lround(std::clamp(t[k], 0.0f, 1.0f) * 255.0f));
+            if (ref.associate) c8[k] = c8[k] * a8 / 255;
+        }
+        const float f = 1.0f / 255.0f;
+        *out = float4{c8[0] * f, c8[1] * f, c8[2] * f, a8 * f};
+        return true;
+    }
+    const float m = ref.associate ? alpha : 1.0f;
+    *out = float4{t[0] * m, t[1] * m, t[2] * m, alpha};
     return true;
 }
 
-// Cycles' image lookup at (u, v), v up: Closest or Linear (Cubic and Smart as Linear).
+// Cycles' color_srgb_to_linear.
+float srgb_to_linear(float c) {
+    if (c < 0.04045f) return c < 0.0f ? 0.0f : c * (1.0f / 12.92f);
+    return std::pow((c + 0.055f) * (1.0f / 1.055f), 2.4f);
+}
+
+// Cycles' image lookup at (u, v), v up: Closest or Linear (Cubic and Smart as Linear), then
+// unassociated and decoded as the image wants.
 float4 lookup(const ImageRef& ref, float u, float v) {
     const ImageTexture& im = *ref.image;
     const float x = u * im.width(), y = v * im.height();
     float4 s;
     if (ref.closest) {
-        texel(im, static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)), ref.extension,
-              &s);
-        return s;
+        texel(ref, static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)), &s);
+    } else {
+        const float fx = x - 0.5f, fy = y - 0.5f;
+        const int ix = static_cast<int>(std::floor(fx)), iy = static_cast<int>(std::floor(fy));
+        const float tx = fx - ix, ty = fy - iy;
+        float4 a, b, c, d;
+        texel(ref, ix, iy, &a);
+        texel(ref, ix + 1, iy, &b);
+        texel(ref, ix, iy + 1, &c);
+        texel(ref, ix + 1, iy + 1, &d);
+        auto lerp4 = [](const float4& p, const float4& q, float t) {
+            return float4{p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t, p.z + (q.z - p.z) * t,
+                          p.w + (q.w - p.w) * t};
+        };
+        s = lerp4(lerp4(a, b, tx), lerp4(c, d, tx), ty);
     }
-    const float fx = x - 0.5f, fy = y - 0.5f;
-    const int ix = static_cast<int>(std::floor(fx)), iy = static_cast<int>(std::floor(fy));
-    const float tx = fx - ix, ty = fy - iy;
-    float4 a, b, c, d;
-    texel(im, ix, iy, ref.extension, &a);
-    texel(im, ix + 1, iy, ref.extension, &b);
-    texel(im, ix, iy + 1, ref.extension, &c);
-    texel(im, ix + 1, iy + 1, ref.extension, &d);
-    auto lerp4 = [](const float4& p, const float4& q, float t) {
-        return float4{p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t, p.z + (q.z - p.z) * t,
-                      p.w + (q.w - p.w) * t};
-    };
-    return lerp4(lerp4(a, b, tx), lerp4(c, d, tx), ty);
+    if (ref.unassociate && s.w != 1.0f && s.w != 0.0f) {
+        const float inv = 1.0f / s.w;
+        s = float4{s.x * inv, s.y * inv, s.z * inv, s.w};
+    }
+    if (ref.srgb_bytes) s = float4{srgb_to_linear(s.x), srgb_to_linear(s.y), srgb_to_linear(s.z), s.w};
+    return s;
+}
+
+// Whether any node reads output `id` of node `n`.
+bool output_linked(Compiler& c, int n, const char* id) {
+    for (int k = 0; k < c.node_count(); ++k)
+        for (const scene::ShaderInput& in : c.node(k).inputs)
+            if (in.link.linked() && in.link.node == n && in.link.output == id) return true;
+    return false;
 }
 
 const ImageRef* open_image(Compiler& c, int n) {
@@ -451,26 +496,41 @@ const ImageRef* open_image(Compiler& c, int n) {
     }
     const std::string& cs = node.image.colorspace;
     const bool color = cs == "sRGB";
-    if (!color && cs != "Non-Color" && cs != "Linear" && cs != "Raw" && cs != "Linear ACES" &&
-        cs != "XYZ" && !cs.empty())
+    const bool data = cs == "Non-Color" || cs == "Raw";
+    if (!color && !data && cs != "Linear" && cs != "Linear ACES" && cs != "XYZ" && !cs.empty())
         c.unsupported(n, "colour space '" + cs + "' is read as linear");
     scene::PbrMap map;
     map.file = node.image.path;
     map.resolved_path = node.image.path;
+    auto ref = std::make_shared<ImageRef>();
     try {
-        c.textures()->add_pbr(map, color);
+        // An sRGB image is read as stored first: 8-bit files stay in their bytes.
+        c.textures()->add_pbr(map, false);
+        const ImageTexture* raw = c.textures()->find_pbr(map, false);
+        if (color && raw && raw->srgb8()) {
+            ref->image = raw;
+            ref->srgb_bytes = true;
+        } else if (color) {
+            c.textures()->add_pbr(map, true);
+            ref->image = c.textures()->find_pbr(map, true);
+        } else {
+            ref->image = raw;
+        }
     } catch (const Error& e) {
         c.unsupported(n, std::string("its image cannot be read (") + e.what() +
                              "): it renders magenta, as in Cycles");
         return nullptr;
     }
-    auto ref = std::make_shared<ImageRef>();
-    ref->image = c.textures()->find_pbr(map, color);
     if (!ref->image) {
         c.unsupported(n, "its image '" + node.image.path + "' is missing: it renders magenta, "
                          "as in Cycles");
         return nullptr;
     }
+    const std::string& am = node.image.alpha_mode;
+    ref->associate = !data && am != "CHANNEL_PACKED" && am != "NONE" && am != "PREMUL";
+    ref->ignore_alpha = am == "NONE";
+    ref->unassociate = !data && am != "CHANNEL_PACKED" && am != "NONE" &&
+                       output_linked(c, n, "Alpha");
     const std::string ext = c.enum_prop(n, "extension", "REPEAT");
     ref->extension = ext == "EXTEND" ? kExtend : ext == "CLIP" ? kClip
                    : ext == "MIRROR" ? kMirror : kRepeat;

@@ -31,6 +31,7 @@ public:
              Diagnostics& diag);
 
     const scene::ShaderNode& node(int index) const { return graph_.nodes[index]; }
+    int node_count() const { return static_cast<int>(graph_.nodes.size()); }
     TextureCache* textures() const { return textures_; }
     Diagnostics& diag() { return diag_; }
     ShaderProgram& program() { return program_; }

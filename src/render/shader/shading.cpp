@@ -84,7 +84,10 @@ GraphShading::GraphShading(const scene::Scene& scene, int width, int height,
     cam_ortho_ = c.kind == scene::CameraKind::Orthographic;
     const double along = std::max(dot(c.direction, cam_forward_), 1e-9);
     pixel_angle_ = cam_len_right_ / std::max(width, 1) / along;
-    if (cam_ortho_) pixel_angle_ = 0;
+    if (cam_ortho_) {
+        pixel_angle_ = 0;
+        ortho_pixel_ = cam_len_right_ / std::max(width, 1);
+    }
     (void)height;
 }
 
@@ -144,14 +147,18 @@ ShaderGlobals GraphShading::globals(const Hit& hit, const Vec3& dir,
     }
     if (len(sg.dPdu) > 0) sg.tangent = safe_normalize(sg.dPdu);
     camera_coords(hit.p, &sg);
-    // Bump's steps: a tenth of the pixel's footprint at this distance, in the surface.
+    // Bump's steps, as Cycles 3.4 takes them (its compact ray differentials,
+    // kernel/util/differential.h: differential_from_compact(Ng, dP)): the pixel's footprint
+    // at this distance (an orthographic camera's pixel width), along make_orthonormals(Ng).
     const double footprint =
-        std::max(pixel_angle_ * (ray.travelled + hit.t), 1e-6 * (1 + length(hit.p)));
-    const Vec3 n = hit.n;
-    Vec3 a = std::fabs(n.x) > 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
-    const Vec3 tx = normalize(cross(n, a)), ty = cross(n, tx);
-    sg.dPdx = float3(tx * (0.1 * footprint));
-    sg.dPdy = float3(ty * (0.1 * footprint));
+        std::max(ortho_pixel_ + pixel_angle_ * (ray.travelled + hit.t), 1e-6 * (1 + length(hit.p)));
+    const float3 ng = sg.Ng;
+    float3 a = ng.x != ng.y || ng.x != ng.z ? float3(ng.z - ng.y, ng.x - ng.z, ng.y - ng.x)
+                                            : float3(ng.z - ng.y, ng.x + ng.z, -ng.y - ng.x);
+    a = safe_normalize(a);
+    const float3 b = cross(ng, a);
+    sg.dPdx = a * static_cast<float>(footprint);
+    sg.dPdy = b * static_cast<float>(footprint);
     sg.camera_ray = ray.camera;
     sg.shadow_ray = ray.shadow;
     sg.diffuse_ray = ray.diffuse;

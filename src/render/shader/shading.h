@@ -62,6 +62,7 @@ private:
     double cam_len_right_ = 1, cam_len_up_ = 1;
     bool cam_ortho_ = false;
     double pixel_angle_ = 0.001;  // the pixel's width at unit distance
+    double ortho_pixel_ = 0;      // an orthographic camera's pixel width
 };
 
 }  // namespace glint::render::shader
