@@ -48,6 +48,10 @@ struct ShaderGlobals {
     // Normal output: rows of the 3x4 inverse and of the forward matrix.
     float world_to_object[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
     float object_to_world[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+    // The camera's frame (Cycles' camera space: X right, Y up, Z into the view) for Vector
+    // Transform.
+    float world_to_camera[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+    float camera_to_world[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
 };
 
 // The BSDF closures glint renders. Each is mapped onto the path tracer's Bsdf models

@@ -564,31 +564,44 @@ void vector_rotate(Compiler& c, int n) {
     alias(c, n, "Vector", out);
 }
 
-// Vector Transform between world and object space (point, vector or normal). Cycles 3.4
-// (svm/vector_transform.h) moves a normal as a direction (the matrix itself, not its inverse
-// transpose) and normalizes it.
+// Vector Transform between world, object and camera space, as Cycles 3.4 does it
+// (svm/vector_transform.h): through the world, a normal moved as a direction (the matrices
+// themselves, not their inverse transposes) and normalized.
+enum Space { kWorld, kObject, kCamera };
+
 void vector_transform(Compiler& c, int n) {
     const std::string type = c.enum_prop(n, "vector_type", "VECTOR");
-    const std::string from = c.enum_prop(n, "convert_from", "WORLD");
-    const std::string to = c.enum_prop(n, "convert_to", "OBJECT");
-    if (from == "CAMERA" || to == "CAMERA") {
-        c.unsupported(n, "camera space is not supported yet: the vector passes unchanged");
-        alias(c, n, "Vector", c.in(n, "Vector", 'v'));
-        return;
-    }
+    auto space = [&](const char* key, const char* fallback) {
+        const std::string s = c.enum_prop(n, key, fallback);
+        return s == "OBJECT" ? kObject : s == "CAMERA" ? kCamera : kWorld;
+    };
     const int out = c.fresh();
     Op op = make([](const Op& o, R r, G sg) {
-        const float3 v = r[o.in[0]];
-        const auto& m = o.i[1] ? sg.world_to_object : sg.object_to_world;
-        float3 res;
-        for (int i = 0; i < 3; ++i)
-            res[i] = m[i][0] * v.x + m[i][1] * v.y + m[i][2] * v.z + (o.i[0] == 0 ? m[i][3] : 0);
-        if (o.i[0] == 2) res = safe_normalize(res);
-        r[o.out[0]] = res;
+        float3 v = r[o.in[0]];
+        const bool dir = o.i[0] != 0;
+        auto apply = [&](const float (&m)[3][4]) {
+            float3 res;
+            for (int i = 0; i < 3; ++i)
+                res[i] = m[i][0] * v.x + m[i][1] * v.y + m[i][2] * v.z + (dir ? 0 : m[i][3]);
+            v = res;
+        };
+        const int from = o.i[1], to = o.i[2];
+        if (from == kWorld) {
+            if (to == kCamera) apply(sg.world_to_camera);
+            else if (to == kObject) apply(sg.world_to_object);
+        } else if (from == kCamera) {
+            if (to != kCamera) apply(sg.camera_to_world);
+            if (to == kObject) apply(sg.world_to_object);
+        } else {
+            if (to != kObject) apply(sg.object_to_world);
+            if (to == kCamera) apply(sg.world_to_camera);
+        }
+        r[o.out[0]] = o.i[0] == 2 ? safe_normalize(v) : v;
     }, {c.in(n, "Vector", 'v')}, {out});
     op.i[0] = type == "POINT" ? 0 : (type == "NORMAL" ? 2 : 1);
-    op.i[1] = from == "WORLD" && to == "OBJECT";
-    if (from == to) {
+    op.i[1] = space("convert_from", "WORLD");
+    op.i[2] = space("convert_to", "OBJECT");
+    if (op.i[1] == op.i[2] && op.i[0] != 2) {
         alias(c, n, "Vector", op.in[0]);
         return;
     }

@@ -84,6 +84,15 @@ GraphShading::GraphShading(const scene::Scene& scene, int width, int height,
     cam_ortho_ = c.kind == scene::CameraKind::Orthographic;
     const double along = std::max(dot(c.direction, cam_forward_), 1e-9);
     pixel_angle_ = cam_len_right_ / std::max(width, 1) / along;
+    const Vec3 axes[3] = {cam_right_, cam_up_, cam_forward_};
+    for (int i = 0; i < 3; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            w2c_[i][k] = static_cast<float>(axes[i][k]);
+            c2w_[k][i] = static_cast<float>(axes[i][k]);
+        }
+        w2c_[i][3] = static_cast<float>(-dot(axes[i], cam_location_));
+        c2w_[i][3] = static_cast<float>(cam_location_[i]);
+    }
     if (cam_ortho_) {
         pixel_angle_ = 0;
         ortho_pixel_ = cam_len_right_ / std::max(width, 1);
@@ -147,6 +156,8 @@ ShaderGlobals GraphShading::globals(const Hit& hit, const Vec3& dir,
     }
     if (len(sg.dPdu) > 0) sg.tangent = safe_normalize(sg.dPdu);
     camera_coords(hit.p, &sg);
+    std::copy(&w2c_[0][0], &w2c_[0][0] + 12, &sg.world_to_camera[0][0]);
+    std::copy(&c2w_[0][0], &c2w_[0][0] + 12, &sg.camera_to_world[0][0]);
     // Bump's steps, as Cycles 3.4 takes them (its compact ray differentials,
     // kernel/util/differential.h: differential_from_compact(Ng, dP)): the pixel's footprint
     // at this distance (an orthographic camera's pixel width), along make_orthonormals(Ng).
@@ -194,6 +205,8 @@ ShaderGlobals GraphShading::world_globals(const Vec3& dir, const RayState& ray) 
     sg.ray_depth = ray.depth;
     sg.ray_length = 3.4e38f;
     camera_coords(cam_location_ + dir, &sg);
+    std::copy(&w2c_[0][0], &w2c_[0][0] + 12, &sg.world_to_camera[0][0]);
+    std::copy(&c2w_[0][0], &c2w_[0][0] + 12, &sg.camera_to_world[0][0]);
     return sg;
 }
 

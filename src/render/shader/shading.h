@@ -63,6 +63,7 @@ private:
     bool cam_ortho_ = false;
     double pixel_angle_ = 0.001;  // the pixel's width at unit distance
     double ortho_pixel_ = 0;      // an orthographic camera's pixel width
+    float w2c_[3][4] = {}, c2w_[3][4] = {};  // Cycles' camera space (ShaderGlobals)
 };
 
 }  // namespace glint::render::shader
