@@ -598,6 +598,9 @@ int render_frame(const RenderArgs& args) {
                                : b.pixel_filter == "GAUSSIAN" ? render::PixelFilterKind::Gaussian
                                                               : render::PixelFilterKind::BlackmanHarris;
         options.filter_width = b.filter_width;
+        options.clamp_direct = b.clamp_direct;
+        options.clamp_indirect = b.clamp_indirect;
+        options.filter_glossy = b.filter_glossy;
     }
     double parse_seconds = seconds_since(start);
     if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");

@@ -60,6 +60,8 @@ struct RenderOptions {
     // pixel unless a Blender scene brings Cycles' filter and width.
     PixelFilterKind pixel_filter = PixelFilterKind::GlintBox;
     double filter_width = 1.5;
+    // Path tracer: Cycles' clamping and Filter Glossy (0: off; integrators/path.h).
+    double clamp_direct = 0, clamp_indirect = 0, filter_glossy = 0;
     // Called with the finished fraction in [0, 1], from any thread, at most every tile.
     std::function<void(double)> progress;
     const std::atomic<bool>* cancel = nullptr;  // render throws Error(Cancelled) when set

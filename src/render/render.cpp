@@ -27,6 +27,9 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
     if (options.integrator == IntegratorKind::Path) {
         PathSettings ps;
         ps.max_depth = std::max(0, options.max_depth);
+        ps.clamp_direct = options.clamp_direct;
+        ps.clamp_indirect = options.clamp_indirect;
+        ps.filter_glossy = options.filter_glossy;
         PathIntegrator path(*prepared, ps);
         result.prepare_seconds = seconds_since(t0);
         auto t1 = std::chrono::steady_clock::now();

@@ -18,12 +18,12 @@ bl_info = {
 
 if "bpy" in locals():
     import importlib
-    for _m in (preferences, properties, runner, render_dirs, images, materials,  # noqa: F821
-               exporter, engine, ui):
+    for _m in (preferences, properties, runner, render_dirs, images,  # noqa: F821
+               node_graphs, exporter, native_export, engine, ui):
         importlib.reload(_m)
 else:
-    from . import (preferences, properties, runner, render_dirs, images, materials,
-                   exporter, engine, ui)
+    from . import (preferences, properties, runner, render_dirs, images, node_graphs,
+                   exporter, native_export, engine, ui)
 
 import bpy  # noqa: E402
 

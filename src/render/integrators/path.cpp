@@ -214,6 +214,13 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
     int skips = 0;             // alpha holes and pass-throughs: they do not count as bounces
     double travelled = 0;      // path length from the camera to the last scattering vertex
     bool last_diffuse = false, last_reflected = true;  // the last bounce (Light Path node)
+    double min_pdf = kInfinity;  // the lowest BSDF pdf on the path so far (Filter Glossy)
+    // A contribution to the pixel, clamped as Cycles clamps it: direct until the first bounce.
+    auto add = [&](const Color& c) {
+        const double limit = depth == 0 ? settings_.clamp_direct : settings_.clamp_indirect;
+        const double sum = std::fabs(c.r) + std::fabs(c.g) + std::fabs(c.b);
+        L += limit > 0 && sum > limit ? c * (limit / sum) : c;
+    };
     for (int v = 0; v < max_vertices; ++v) {
         const uint32_t base = 1 + scatterings * kPairsPerVertex;
         Hit hit;
@@ -221,14 +228,14 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         const bool found = geometry_.intersect(r, &hit);
         // Blender lights on the way (Cycles' lamps: rays pass through them).
         if (lights.has_visible_blender())
-            L += beta * lights.blender_emission(prev_p, r.dir, seg_dist,
-                                                found ? seg_dist + hit.t : kInfinity,
-                                                specular ? -1.0 : prev_pdf, scatterings == 0);
+            add(beta * lights.blender_emission(prev_p, r.dir, seg_dist,
+                                               found ? seg_dist + hit.t : kInfinity,
+                                               specular ? -1.0 : prev_pdf, scatterings == 0));
         if (!found) {
             if (lights.has_environment()) {
                 const double w =
                     specular ? 1.0 : power_heuristic(prev_pdf, lights.environment_pdf(r.dir));
-                L += beta * environment(r.dir) * w;
+                add(beta * environment(r.dir) * w);
             }
             break;
         }
@@ -260,7 +267,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                 double sw = 0;
                 for (int i = 0; i < cl.count; ++i) sw += cl.items[i].sample_weight;
                 const double q = sw > 0 ? tw / (tw + sw) : 1.0;
-                if (!cl.emission.is_black()) L += beta * cl.emission;
+                if (!cl.emission.is_black()) add(beta * cl.emission);
                 if (sampler.get2(alpha_base + alpha_tests++).u < q) {
                     if (++skips > kMaxAlphaSkips) break;
                     beta *= cl.transparent * (1 / q);
@@ -276,8 +283,18 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             }
             emission = cl.emission;
             const bool back = dot(hit.ng, r.dir) > 0;
+            // Filter Glossy (Cycles' blur_glossy): after a bounce of low pdf, microfacet
+            // lobes are at least this rough (alpha; glint's roughness is its square root).
+            double blur_alpha = 0;
+            if (settings_.filter_glossy > 0 && !std::isinf(min_pdf)) {
+                const double blur_pdf = settings_.filter_glossy * min_pdf;
+                if (blur_pdf < 1) blur_alpha = std::sqrt(1 - blur_pdf) * 0.5;
+            }
             for (int i = 0; i < cl.count; ++i) {
-                const shader::Closure& c = cl.items[i];
+                shader::Closure c = cl.items[i];
+                if (blur_alpha > 0 && c.kind != shader::ClosureKind::Diffuse &&
+                    c.kind != shader::ClosureKind::Translucent)
+                    c.roughness = std::max(c.roughness, std::sqrt(blur_alpha));
                 Vec3 n = length_squared(c.N) > 0 ? normalize(c.N) : hit.n;
                 if (back) n = -n;  // the closures' normals face the viewer; the set's the outside
                 // Which rays the Light Path node calls diffuse: those from diffuse closures, and
@@ -320,7 +337,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                 const double pl = lights.emitter_pdf(hit.object, prev_p, hit.p, hit.ng, emission);
                 w = power_heuristic(prev_pdf, pl);
             }
-            L += beta * emission * w;
+            add(beta * emission * w);
         }
         if (depth >= settings_.max_depth) break;
         if (set.count() == 0) break;
@@ -340,7 +357,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                 Color c = f * ls.value * tr;
                 if (ls.environment) c *= environment(ls.wi);
                 if (ls.pdf > 0) c *= power_heuristic(ls.pdf, bsdf_pdf);
-                L += beta * c;
+                add(beta * c);
             };
             if (lights.sample_all()) {
                 for (int k = 0; k < lights.count(); ++k)
@@ -374,6 +391,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         last_diffuse = !bs.delta && bs.diffuse;
         last_reflected = bs.reflected;
         prev_pdf = bs.pdf;
+        if (!bs.delta) min_pdf = std::min(min_pdf, bs.pdf);
         ++depth;
         if (depth >= settings_.rr_start) {
             const double p = std::min(1.0, std::sqrt(beta.max()));

@@ -27,6 +27,13 @@ namespace glint::render {
 struct PathSettings {
     int max_depth = 8;       // bounces after the camera ray (1 = direct light only)
     int rr_start = 3;        // Russian roulette from this bounce on
+    // Cycles' Light Paths > Clamping and Filter Glossy (Blender scenes; 0: off, the CLI's
+    // unbiased default): a contribution whose |r| + |g| + |b| passes the limit of its bounce
+    // (direct: the camera's hit; indirect: after it) is scaled down to it; glossy closures
+    // are blurred after a bounce whose pdf was low (Cycles' blur_glossy).
+    double clamp_direct = 0;
+    double clamp_indirect = 0;
+    double filter_glossy = 0;
 };
 
 class PathIntegrator {
