@@ -2,6 +2,8 @@
 // gamma.h, invert.h, ramp.h; util/color.h), restated in single precision.
 #include "render/shader/color_nodes.h"
 
+#include "render/shader/enum_table.h"
+
 #include <array>
 #include <cmath>
 #include <utility>
@@ -92,17 +94,6 @@ float3 blend_soft_light(float t, float3 a, float3 b) {
     return (1.0f - t) * a + t * ((one - a) * b * a + a * screen);
 }
 
-template <typename E, std::size_t N>
-bool parse_enum(std::string_view id, const std::array<std::pair<std::string_view, E>, N>& table,
-                E* out) {
-    for (const auto& [name, value] : table) {
-        if (name == id) {
-            *out = value;
-            return true;
-        }
-    }
-    return false;
-}
 
 }  // namespace
 

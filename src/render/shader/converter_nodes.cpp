@@ -3,6 +3,8 @@
 // single precision.
 #include "render/shader/converter_nodes.h"
 
+#include "render/shader/enum_table.h"
+
 #include <array>
 #include <cfloat>
 #include <cmath>
@@ -101,17 +103,6 @@ float3 project(float3 v, float3 onto) {
     return l2 != 0.0f ? (dot(v, onto) / l2) * onto : float3(0.0f);
 }
 
-template <typename E, std::size_t N>
-bool parse_enum(std::string_view id, const std::array<std::pair<std::string_view, E>, N>& table,
-                E* out) {
-    for (const auto& [name, value] : table) {
-        if (name == id) {
-            *out = value;
-            return true;
-        }
-    }
-    return false;
-}
 
 }  // namespace
 

@@ -2,6 +2,8 @@
 // vector_rotate.h; util/transform.h, util/math.h), restated in single precision.
 #include "render/shader/vector_nodes.h"
 
+#include "render/shader/enum_table.h"
+
 #include <array>
 #include <cmath>
 #include <utility>
@@ -14,17 +16,6 @@ float3 safe_divide(float3 a, float3 b) {
     return {safe_divide(a.x, b.x), safe_divide(a.y, b.y), safe_divide(a.z, b.z)};
 }
 
-template <typename E, std::size_t N>
-bool parse_enum(std::string_view id, const std::array<std::pair<std::string_view, E>, N>& table,
-                E* out) {
-    for (const auto& [name, value] : table) {
-        if (name == id) {
-            *out = value;
-            return true;
-        }
-    }
-    return false;
-}
 
 }  // namespace
 
