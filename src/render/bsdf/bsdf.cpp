@@ -14,29 +14,10 @@ constexpr double kDeltaAlpha = 1e-3;
 constexpr double kIndexMatched = 1e-6;
 
 double average(const Color& c) { return (c.r + c.g + c.b) * (1.0 / 3.0); }
-double sqr(double v) { return v * v; }
 double schlick_weight(double cos) {
     const double m = std::clamp(1.0 - cos, 0.0, 1.0);
     return (m * m) * (m * m) * m;
 }
-Vec3 reflect(const Vec3& wo, const Vec3& n) { return -wo + n * (2.0 * dot(wo, n)); }
-
-// Refraction of wi through a surface with normal n; eta = inside over outside index.
-bool refract(const Vec3& wi, Vec3 n, double eta, double* etap, Vec3* wt) {
-    double cos_i = dot(n, wi);
-    if (cos_i < 0) {
-        eta = 1.0 / eta;
-        cos_i = -cos_i;
-        n = -n;
-    }
-    const double sin2_t = std::max(0.0, 1.0 - cos_i * cos_i) / (eta * eta);
-    if (sin2_t >= 1.0) return false;
-    const double cos_t = std::sqrt(1.0 - sin2_t);
-    *wt = -wi / eta + n * (cos_i / eta - cos_t);
-    *etap = eta;
-    return true;
-}
-
 Vec3 cosine_hemisphere(double u1, double u2) {
     // Concentric disk mapping (Shirley-Chiu), lifted to the hemisphere.
     const double a = 2 * u1 - 1, b = 2 * u2 - 1;
@@ -60,32 +41,6 @@ double specular_ior(double specular) {
     return 2.0 / (1.0 - r) - 1.0;
 }
 
-// The GGX microfacet refraction of a glass lobe without its Fresnel factor (Walter et al. 2007,
-// in the form Cycles evaluates: radiance is not scaled by 1 / eta^2), for o.z > 0 > i.z in the
-// frame flipped to wo's side; etap: the index on i's side over o's. Returns f and the pdf of
-// refracting a visible normal sampled from o.
-double refraction_eval(const Ggx& ggx, double etap, const Vec3& o, const Vec3& i, double* pdf) {
-    *pdf = 0;
-    Vec3 wm = i * etap + o;
-    if (!(length_squared(wm) > 0)) return 0;
-    wm = normalize(wm);
-    if (wm.z < 0) wm = -wm;
-    // Microfacets seen from behind by either direction contribute nothing.
-    const double om = dot(o, wm), im = dot(i, wm);
-    if (om <= 0 || im >= 0) return 0;
-    const double denom = sqr(im + om / etap);
-    if (!(denom > 0)) return 0;
-    *pdf = ggx.pdf_visible(o, wm) * std::fabs(im) / denom;
-    return ggx.d(wm) * ggx.g(o, i) * std::fabs(im * om / (i.z * o.z * denom));
-}
-
-// GGX reflection without Fresnel: f and the pdf of reflecting a visible normal sampled from o.
-double reflection_eval(const Ggx& ggx, const Vec3& o, const Vec3& i, double* pdf) {
-    const Vec3 wm = normalize(o + i);
-    *pdf = ggx.pdf_visible(o, wm) / (4 * dot(o, wm));
-    return ggx.d(wm) * ggx.g(o, i) / (4 * o.z * i.z);
-}
-
 // Cosine of the angle between wi and the mirror direction of wo about z, and the lobe value.
 double phong_cos(const Vec3& wo, const Vec3& wi) {
     return std::max(0.0, 2 * wo.z * wi.z - dot(wo, wi));
@@ -93,55 +48,6 @@ double phong_cos(const Vec3& wo, const Vec3& wi) {
 double phong_pow(double c, double n) { return c > 0 ? std::pow(c, n) : (n == 0 ? 1.0 : 0.0); }
 
 }  // namespace
-
-double fresnel_dielectric(double cos_i, double eta) {
-    cos_i = std::clamp(cos_i, -1.0, 1.0);
-    if (cos_i < 0) {
-        eta = 1.0 / eta;
-        cos_i = -cos_i;
-    }
-    const double sin2_t = (1 - cos_i * cos_i) / (eta * eta);
-    if (sin2_t >= 1) return 1;
-    const double cos_t = std::sqrt(std::max(0.0, 1 - sin2_t));
-    const double r_parl = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    const double r_perp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    return (r_parl * r_parl + r_perp * r_perp) / 2;
-}
-
-double Ggx::d(const Vec3& wm) const {
-    const double cos2 = wm.z * wm.z;
-    if (cos2 <= 0) return 0;
-    const double a2 = alpha * alpha;
-    const double t = cos2 * (a2 - 1) + 1;
-    return a2 / (kPi * t * t);
-}
-
-double Ggx::lambda(const Vec3& w) const {
-    const double cos2 = w.z * w.z;
-    if (cos2 <= 0) return 1e30;
-    const double tan2 = std::max(0.0, 1 - cos2) / cos2;
-    return (std::sqrt(1 + alpha * alpha * tan2) - 1) / 2;
-}
-
-double Ggx::pdf_visible(const Vec3& w, const Vec3& wm) const {
-    if (w.z == 0) return 0;
-    return g1(w) / std::fabs(w.z) * d(wm) * std::fabs(dot(w, wm));
-}
-
-Vec3 Ggx::sample_visible(const Vec3& w, double u1, double u2) const {
-    Vec3 wh = normalize(Vec3(alpha * w.x, alpha * w.y, w.z));
-    if (wh.z < 0) wh = -wh;
-    const double len2 = wh.x * wh.x + wh.y * wh.y;
-    const Vec3 t1 = len2 > 0 ? Vec3(-wh.y, wh.x, 0) / std::sqrt(len2) : Vec3(1, 0, 0);
-    const Vec3 t2 = cross(wh, t1);
-    const double r = std::sqrt(u1), phi = 2 * kPi * u2;
-    const double p1 = r * std::cos(phi);
-    double p2 = r * std::sin(phi);
-    const double s = 0.5 * (1 + wh.z);
-    p2 = (1 - s) * std::sqrt(std::max(0.0, 1 - p1 * p1)) + s * p2;
-    const Vec3 nh = t1 * p1 + t2 * p2 + wh * std::sqrt(std::max(0.0, 1 - p1 * p1 - p2 * p2));
-    return normalize(Vec3(alpha * nh.x, alpha * nh.y, std::max(1e-9, nh.z)));
-}
 
 Bsdf Bsdf::lambert(const Color& albedo) {
     Bsdf b;
@@ -167,16 +73,33 @@ Bsdf Bsdf::principled(const PrincipledParams& p) {
     const double t = tr * (1 - m);
     const double r = std::clamp(p.roughness, 0.0, 1.0);
     b.roughness_ = r;
-    b.ggx_.alpha = std::max(r * r, 1e-4);
-    b.spec_delta_ = r * r < kDeltaAlpha;
+    const double aspect = std::sqrt(std::max(0.0, 1 - 0.9 * std::clamp(p.anisotropic, 0.0, 1.0)));
+    b.spec_ = Microfacet{Microfacet::Kind::GGX, std::clamp(r * r / aspect, 1e-4, 1.0),
+                         std::max(r * r * aspect, 1e-4)};
+    b.spec_delta_ = r * r / aspect < kDeltaAlpha;
+    b.glass_refl_ = Microfacet{p.glass_distribution, std::max(r * r, 1e-4), std::max(r * r, 1e-4)};
+    b.refl_delta_ = r * r < kDeltaAlpha;
+    const double rt = p.transmission_roughness < 0 ? r
+                                                   : std::clamp(p.transmission_roughness, 0.0, 1.0);
+    b.glass_refr_ = Microfacet{p.glass_distribution, std::max(rt * rt, 1e-4),
+                               std::max(rt * rt, 1e-4)};
     b.w_diffuse_ = (1 - m) * (1 - tr);
     b.diffuse_color_ = p.base * b.w_diffuse_;
     b.burley_ = p.diffuse_model == DiffuseModel::Burley;
     if (!(average(b.diffuse_color_) > 0)) b.w_diffuse_ = 0;
-    // Cycles: cspec0 = 0.08 specular (1 - metallic) + base metallic, clamped to [0, 1], and the
-    // interpolation's IOR from `specular` (specular_tint 0: the IR carries none).
+    // Cycles: cspec0 = 0.08 specular tint (1 - metallic) + base metallic, clamped to [0, 1],
+    // tint = lerp(1, base / luminance(base), specular_tint) with Cycles' rough luminance, and
+    // the interpolation's IOR from `specular`.
     const double spec = std::max(0.0, p.specular);
-    const Color cs = Color(0.08 * spec) * (1 - m) + p.base * m;
+    const double st = p.specular_tint;
+    Color tint(1, 1, 1);
+    if (st != 0) {
+        const double lum = 0.3 * p.base.r + 0.6 * p.base.g + 0.1 * p.base.b;
+        const Color hue = lum > 0 ? p.base * (1 / lum) : Color(1, 1, 1);
+        tint = Color(1 - st) + hue * st;
+        b.glass_tint_ = p.base * st + Color(1 - st);
+    }
+    const Color cs = tint * (0.08 * spec) * (1 - m) + p.base * m;
     b.spec_color_ = Color(std::clamp(cs.r, 0.0, 1.0), std::clamp(cs.g, 0.0, 1.0),
                           std::clamp(cs.b, 0.0, 1.0));
     b.spec_ior_ = specular_ior(spec);
@@ -187,7 +110,7 @@ Bsdf Bsdf::principled(const PrincipledParams& p) {
     b.w_trans_ = t;
     b.trans_tint_ = p.base;
     b.eta_ = p.ior > 0 ? p.ior : 1.45;
-    b.trans_delta_ = b.spec_delta_ || std::fabs(b.eta_ - 1) < kIndexMatched;
+    b.trans_delta_ = rt * rt < kDeltaAlpha || std::fabs(b.eta_ - 1) < kIndexMatched;
     if (average(p.phong_ks) > 0) {
         b.phong_ks_ = p.phong_ks;
         b.phong_n_ = std::max(0.0, p.phong_exponent);
@@ -201,6 +124,15 @@ Color Bsdf::spec_fresnel(double cos_h) const {
     const double fh = std::clamp(
         (fresnel_dielectric(std::fabs(cos_h), spec_ior_) - spec_f0_) / (1 - spec_f0_), 0.0, 1.0);
     return spec_color_ * (1 - fh) + Color(fh);
+}
+
+Color Bsdf::glass_reflection_color(double cos_h) const {
+    if (glass_tint_.r == 1 && glass_tint_.g == 1 && glass_tint_.b == 1) return Color(1, 1, 1);
+    const double f0 = fresnel_dielectric(1.0, eta_);
+    if (f0 >= 1) return Color(1, 1, 1);
+    const double fh =
+        std::clamp((fresnel_dielectric(std::fabs(cos_h), eta_) - f0) / (1 - f0), 0.0, 1.0);
+    return glass_tint_ * (1 - fh) + Color(fh);
 }
 
 double Bsdf::glass_fresnel(const Vec3& wo) const {
@@ -249,18 +181,19 @@ Color Bsdf::eval(const Vec3& wo, const Vec3& wi) const {
         f += phong_ks_ * ((phong_n_ + 2) / (2 * kPi) * phong_pow(phong_cos(o, i), phong_n_));
     if (w_spec_ > 0 && same_side && !spec_delta_) {
         double pdf;
-        const double g = reflection_eval(ggx_, o, i, &pdf);
+        const double g = microfacet_reflection(spec_, o, i, &pdf);
         f += spec_fresnel(dot(i, normalize(o + i))) * (w_spec_ * g);
     }
-    if (w_trans_ > 0 && !trans_delta_ && o.z > 0 && i.z != 0) {
+    if (w_trans_ > 0 && o.z > 0 && i.z != 0 && !(i.z > 0 ? refl_delta_ : trans_delta_)) {
         const double F = glass_fresnel(wo);
         double pdf;
         if (i.z > 0) {
-            f += Color(w_trans_ * F * reflection_eval(ggx_, o, i, &pdf));
+            f += glass_reflection_color(dot(i, normalize(o + i))) *
+                 (w_trans_ * F * microfacet_reflection(glass_refl_, o, i, &pdf));
         } else {
             const double etap = wo.z > 0 ? eta_ : 1.0 / eta_;
             f += trans_tint_ *
-                 (w_trans_ * refraction_share(F) * refraction_eval(ggx_, etap, o, i, &pdf));
+                 (w_trans_ * refraction_share(F) * microfacet_refraction(glass_refr_, etap, o, i, &pdf));
         }
     }
     return f;
@@ -278,13 +211,16 @@ double Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
     if (l.p > 0 && same_side)
         pdf += l.p * (phong_n_ + 1) / (2 * kPi) * phong_pow(phong_cos(o, i), phong_n_);
     double p;
-    if (same_side && ((l.s > 0 && !spec_delta_) || (l.gr > 0 && !trans_delta_))) {
-        reflection_eval(ggx_, o, i, &p);
-        if (!spec_delta_) pdf += l.s * p;
-        if (!trans_delta_) pdf += l.gr * p;
+    if (same_side && l.s > 0 && !spec_delta_) {
+        microfacet_reflection(spec_, o, i, &p);
+        pdf += l.s * p;
+    }
+    if (same_side && l.gr > 0 && !refl_delta_) {
+        microfacet_reflection(glass_refl_, o, i, &p);
+        pdf += l.gr * p;
     }
     if (l.gt > 0 && !trans_delta_ && o.z > 0 && i.z < 0) {
-        refraction_eval(ggx_, wo.z > 0 ? eta_ : 1.0 / eta_, o, i, &p);
+        microfacet_refraction(glass_refr_, wo.z > 0 ? eta_ : 1.0 / eta_, o, i, &p);
         pdf += l.gt * p;
     }
     return pdf / sum;
@@ -314,12 +250,13 @@ bool Bsdf::sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const {
         i = cosine_hemisphere(rescaled(0, l.d), u2);
     } else if (u < l.d + l.s) {
         if (spec_delta_) return delta(Vec3(-o.x, -o.y, o.z), spec_fresnel(o.z) * w_spec_, l.s / sum);
-        i = reflect(o, ggx_.sample_visible(o, rescaled(l.d, l.s), u2));
+        i = reflect(o, spec_.sample_normal(o, rescaled(l.d, l.s), u2));
         if (i.z <= 0) return false;
     } else if (u < l.d + l.s + l.gr) {
-        if (trans_delta_)
-            return delta(Vec3(-o.x, -o.y, o.z), Color(w_trans_ * glass_fresnel(wo)), l.gr / sum);
-        i = reflect(o, ggx_.sample_visible(o, rescaled(l.d + l.s, l.gr), u2));
+        if (refl_delta_)
+            return delta(Vec3(-o.x, -o.y, o.z),
+                         glass_reflection_color(o.z) * (w_trans_ * glass_fresnel(wo)), l.gr / sum);
+        i = reflect(o, glass_refl_.sample_normal(o, rescaled(l.d + l.s, l.gr), u2));
         if (i.z <= 0) return false;
     } else if (u < l.d + l.s + l.gr + l.gt) {
         const double etap = wo.z > 0 ? eta_ : 1.0 / eta_;
@@ -327,10 +264,9 @@ bool Bsdf::sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const {
         if (std::fabs(eta_ - 1) < kIndexMatched)  // straight on: an IOR 1 object leaves no trace
             return delta(-o, trans_tint_ * (w_trans_ * share), l.gt / sum);
         const Vec3 wm = trans_delta_ ? Vec3(0, 0, 1)
-                                     : ggx_.sample_visible(o, rescaled(l.d + l.s + l.gr, l.gt), u2);
-        double unused;
+                                     : glass_refr_.sample_normal(o, rescaled(l.d + l.s + l.gr, l.gt), u2);
         if (dot(o, wm) <= 0) return false;
-        if (!refract(o, wm, etap, &unused, &i) || i.z >= 0) return false;
+        if (!refract(o, wm, etap, &i) || i.z >= 0) return false;
         if (trans_delta_) return delta(i, trans_tint_ * (w_trans_ * share), l.gt / sum);
     } else {
         // Phong lobe: cos^n around the mirror direction.

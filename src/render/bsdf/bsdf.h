@@ -22,6 +22,7 @@
 #pragma once
 
 #include "core/math.h"
+#include "render/bsdf/microfacet.h"
 
 namespace glint::render {
 
@@ -54,6 +55,16 @@ struct PrincipledParams {
     // highlight, which is the same cos^n of the angle to the mirror direction. Off when black.
     Color phong_ks{0, 0, 0};
     double phong_exponent = 0;
+    // Blender's Principled BSDF beyond the above (0: off). Specular tint pulls the dielectric
+    // reflection towards the base colour's hue; anisotropic stretches the reflection lobe
+    // along the tangent of the frame it is evaluated in (alpha_x = r^2 / aspect, alpha_y =
+    // r^2 aspect, aspect = sqrt(1 - 0.9 anisotropic)).
+    double specular_tint = 0;
+    double anisotropic = 0;
+    // The refraction lobe's roughness; negative: the same as `roughness`.
+    double transmission_roughness = -1;
+    // The glass lobes' distribution (Blender's Glass BSDF defaults to Beckmann).
+    Microfacet::Kind glass_distribution = Microfacet::Kind::GGX;
 };
 
 struct BsdfSample {
@@ -61,24 +72,6 @@ struct BsdfSample {
     Color weight;  // f * |cos wi| / pdf
     double pdf = 0;  // for delta lobes: the discrete probability (not usable for MIS)
     bool delta = false;
-};
-
-// Fresnel reflectance of a dielectric interface; cos_i < 0 means arriving from inside.
-// `eta` is the interior over the exterior index of refraction.
-double fresnel_dielectric(double cos_i, double eta);
-
-// GGX (Trowbridge-Reitz) isotropic microfacet distribution.
-struct Ggx {
-    double alpha = 0.25;
-    double d(const Vec3& wm) const;
-    double lambda(const Vec3& w) const;
-    double g1(const Vec3& w) const { return 1.0 / (1.0 + lambda(w)); }
-    // Separable Smith masking-shadowing, as Cycles 3.4 uses (not the height-correlated form).
-    double g(const Vec3& wo, const Vec3& wi) const { return g1(wo) * g1(wi); }
-    // Density of visible normals seen from w (integrates to 1 over wm).
-    double pdf_visible(const Vec3& w, const Vec3& wm) const;
-    // Visible-normal sample (Heitz 2018) for w on either side; returns wm with wm.z > 0.
-    Vec3 sample_visible(const Vec3& w, double u1, double u2) const;
 };
 
 class Bsdf {
@@ -102,7 +95,7 @@ public:
     // True when every lobe is a delta (then light sampling is pointless).
     bool all_delta() const {
         return w_diffuse_ == 0 && w_phong_ == 0 && (w_spec_ == 0 || spec_delta_) &&
-               (w_trans_ == 0 || trans_delta_);
+               (w_trans_ == 0 || (refl_delta_ && trans_delta_));
     }
 
 private:
@@ -115,6 +108,8 @@ private:
     LobeProbs lobe_probs(const Vec3& wo) const;
     // Cycles' interpolated Fresnel of the reflection lobe at cos(wi, wm).
     Color spec_fresnel(double cos_h) const;
+    // The glass reflection's tint (specular tint) at cos(wi, wm), interpolated as spec_fresnel.
+    Color glass_reflection_color(double cos_h) const;
     // The glass lobe's split at the shading normal: F(n . wo) (wo as given, either side).
     double glass_fresnel(const Vec3& wo) const;
     double refraction_share(double F) const;
@@ -127,13 +122,17 @@ private:
     double spec_ior_ = 1.5;  // IOR implied by `specular`
     double spec_f0_ = 0.04;  // its Fresnel at normal incidence
     Color trans_tint_;     // tint of the refraction lobe (the base color)
+    Color glass_tint_{1, 1, 1};  // cspec0 of the glass reflection (specular tint)
     double w_diffuse_ = 0, w_spec_ = 0, w_trans_ = 0;
     Color phong_ks_;  // modified Phong glossy lobe (w_phong_ = 1 when present)
     double phong_n_ = 0;
     double w_phong_ = 0;
-    Ggx ggx_;
+    Microfacet spec_;       // the reflection lobe
+    Microfacet glass_refl_;  // the glass lobe's reflection and refraction
+    Microfacet glass_refr_;
     bool spec_delta_ = false;
-    // The dielectric lobe is a delta when smooth, and also when index-matched (eta = 1): then
+    bool refl_delta_ = false;  // the glass reflection is a mirror
+    // The refraction is a delta when smooth, and also when index-matched (eta = 1): then
     // no microfacet bends or reflects light, whatever the roughness, and the rough model's
     // half vector (wi + wo) would vanish.
     bool trans_delta_ = false;

@@ -6,22 +6,54 @@
 
 namespace glint::render {
 
-void ClosureSet::add(const Bsdf& bsdf, const Color& weight, const Vec3& n, double sample_weight,
-                     bool diffuse) {
-    if (count_ >= kMax || !(sample_weight > 0)) return;
-    Item& it = items_[count_++];
-    it.bsdf = bsdf;
-    it.weight = weight;
-    it.frame = Frame::from_normal(valid_reflection_normal(ng_, wo_, n));
+ClosureSet::Item* ClosureSet::push(const Vec3& n, double sample_weight, bool diffuse,
+                                   const Vec3* tangent) {
+    if (count_ >= kMax || !(sample_weight > 0)) return nullptr;
+    Item& it = items_[count_];
+    const Vec3 nv = valid_reflection_normal(ng_, wo_, n);
+    it.frame = Frame::from_normal(nv);
+    if (tangent) {
+        // x along the tangent projected into the surface (Cycles' make_orthonormals_tangent).
+        const Vec3 t = *tangent - nv * dot(nv, *tangent);
+        if (length_squared(t) > 1e-20) {
+            const Vec3 x = normalize(t);
+            it.frame = Frame{x, cross(nv, x), nv};
+        }
+    }
     it.wo = it.frame.to_local(wo_);
     it.share = sample_weight;
     it.diffuse = diffuse;
-    total_ += sample_weight;
+    return &it;
+}
+
+void ClosureSet::add(const Bsdf& bsdf, const Color& weight, const Vec3& n, double sample_weight,
+                     bool diffuse, const Vec3* tangent) {
+    Item* it = push(n, sample_weight, diffuse, tangent);
+    if (!it) return;
+    it->is_lobe = false;
+    it->bsdf = bsdf;
+    it->weight = weight;
+    total_ += it->share;
+    ++count_;
+}
+
+void ClosureSet::add(const Lobe& lobe, const Color& weight, const Vec3& n, double sample_weight,
+                     bool diffuse, const Vec3* tangent) {
+    Item* it = push(n, sample_weight, diffuse, tangent);
+    if (!it) return;
+    it->share *= lobe.sample_scale(it->wo);
+    if (!(it->share > 0)) return;
+    it->is_lobe = true;
+    it->lobe = lobe;
+    it->weight = weight;
+    total_ += it->share;
+    ++count_;
 }
 
 bool ClosureSet::all_delta() const {
     for (int i = 0; i < count_; ++i)
-        if (!items_[i].bsdf.all_delta()) return false;
+        if (items_[i].is_lobe ? !items_[i].lobe.delta() : !items_[i].bsdf.all_delta())
+            return false;
     return true;
 }
 
@@ -31,6 +63,13 @@ Color ClosureSet::eval(const Vec3& wi, double* pdf) const {
     for (int i = 0; i < count_; ++i) {
         const Item& it = items_[i];
         const Vec3 w = it.frame.to_local(wi);
+        if (it.is_lobe) {
+            double pl;
+            const Color fi = it.lobe.eval(it.wo, w, &pl);
+            if (!fi.is_black()) f += it.weight * fi;
+            p += it.share / total_ * pl;
+            continue;
+        }
         const Color fi = it.bsdf.eval(it.wo, w);
         if (!fi.is_black()) f += it.weight * fi * std::fabs(w.z);
         p += it.share / total_ * it.bsdf.pdf(it.wo, w);
@@ -48,7 +87,8 @@ bool ClosureSet::sample(double u1, double u2, ClosureSample* out) const {
     const Item& it = items_[k];
     const double uk = std::min(u / it.share, 0x1.fffffffffffffp-1);
     BsdfSample bs;
-    if (!it.bsdf.sample(it.wo, uk, u2, &bs)) return false;
+    if (!(it.is_lobe ? it.lobe.sample(it.wo, uk, u2, &bs) : it.bsdf.sample(it.wo, uk, u2, &bs)))
+        return false;
     out->wi = normalize(it.frame.to_world(bs.wi));
     out->delta = bs.delta;
     out->diffuse = it.diffuse;

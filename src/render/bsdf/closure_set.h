@@ -6,6 +6,7 @@
 #pragma once
 
 #include "render/bsdf/bsdf.h"
+#include "render/bsdf/lobe.h"
 
 namespace glint::render {
 
@@ -29,8 +30,12 @@ public:
 
     // Adds `bsdf` scaled by `weight` around the unit normal `n`; `sample_weight` its share of
     // the samples (Cycles: the average of the weight). Closures past kMax are dropped.
+    // `tangent` (optional, world space) orients an anisotropic lobe's x axis.
     void add(const Bsdf& bsdf, const Color& weight, const Vec3& n, double sample_weight,
-             bool diffuse = false);
+             bool diffuse = false, const Vec3* tangent = nullptr);
+    // A single lobe; its share is also scaled by the lobe's view-dependent sample_scale().
+    void add(const Lobe& lobe, const Color& weight, const Vec3& n, double sample_weight,
+             bool diffuse = false, const Vec3* tangent = nullptr);
     int count() const { return count_; }
     bool all_delta() const;
 
@@ -41,13 +46,17 @@ public:
 
 private:
     struct Item {
+        bool is_lobe = false;
         Bsdf bsdf;
+        Lobe lobe;
         Color weight;
         Frame frame;
         Vec3 wo;  // local
         double share = 0;
         bool diffuse = false;
     };
+    Item* push(const Vec3& n, double sample_weight, bool diffuse, const Vec3* tangent);
+
     Vec3 ng_, wo_;
     Item items_[kMax];
     int count_ = 0;

@@ -33,31 +33,93 @@ bool finite(const Color& c) {
 
 double average(const Color& c) { return (c.r + c.g + c.b) / 3; }
 
-// A node graph's closure as one of the path tracer's BSDFs (docs/pbr-mapping.md).
-Bsdf closure_bsdf(const shader::Closure& c) {
+// One closure of a node graph into the set, split as Cycles 3.4 splits it
+// (svm_node_closure_bsdf): the Principled BSDF's diffuse, reflection and glass lobes as one
+// Bsdf, its sheen and clearcoat as lobes of their own; the other BSDFs as single lobes
+// (docs/pbr-mapping.md). `n` is the closure's normal turned to the outside, `outside` the
+// sign that turns the closure's vectors there; `shade` rescales for alpha skipping.
+void add_closure(ClosureSet& set, const shader::Closure& c, const Vec3& n, double outside,
+                 double shade, bool diffuse_like) {
     using shader::ClosureKind;
+    using shader::Distribution;
+    const Color w = c.weight * shade;
+    const Color wc = w * c.color;
+    const double share = c.sample_weight * shade;
+    const Vec3* tangent = length_squared(c.T) > 0 ? &c.T : nullptr;
+    const Microfacet::Kind mf = c.distribution == Distribution::Beckmann
+                                    ? Microfacet::Kind::Beckmann : Microfacet::Kind::GGX;
+    const double alpha = c.roughness * c.roughness;
+    switch (c.kind) {
+        case ClosureKind::Diffuse:
+            if (c.roughness > 0) set.add(Lobe::oren_nayar(c.roughness), wc, n, share, true);
+            else set.add(Bsdf::lambert(c.color), w, n, share, true);
+            return;
+        case ClosureKind::Translucent: set.add(Lobe::translucent(), wc, n, share, true); return;
+        case ClosureKind::Toon:
+            set.add(Lobe::toon(c.glossy, c.roughness, c.smooth), wc, n, share, !c.glossy);
+            return;
+        case ClosureKind::Velvet: set.add(Lobe::velvet(c.roughness), wc, n, share, true); return;
+        case ClosureKind::Glossy: {
+            // Cycles' Anisotropic BSDF: alpha shrinks along one axis and grows along the other.
+            const double an = std::clamp(c.anisotropy, -0.99, 0.99);
+            double ax = alpha, ay = alpha;
+            if (tangent && an < 0) {
+                ax = alpha / (1 + an);
+                ay = alpha * (1 + an);
+            } else if (tangent) {
+                ax = alpha * (1 - an);
+                ay = alpha / (1 - an);
+            }
+            if (c.distribution == Distribution::AshikhminShirley)
+                set.add(Lobe::ashikhmin_shirley(ax, ay), wc, n, share, false, tangent);
+            else
+                set.add(Lobe::reflection(Microfacet{mf, ax, ay}), wc, n, share, false, tangent);
+            return;
+        }
+        case ClosureKind::Refraction:
+            set.add(Lobe::refraction(Microfacet{mf, alpha, alpha}, c.ior), wc, n, share);
+            return;
+        case ClosureKind::Glass: {
+            PrincipledParams p;
+            p.base = Color(1, 1, 1);
+            p.roughness = c.roughness;
+            p.transmission = 1;
+            p.ior = c.ior;
+            p.glass_distribution = mf;
+            set.add(Bsdf::principled(p), wc, n, share);
+            return;
+        }
+        case ClosureKind::Principled: break;
+    }
     PrincipledParams p;
     p.base = c.color;
     p.roughness = c.roughness;
-    switch (c.kind) {
-        case ClosureKind::Diffuse:
-        case ClosureKind::Translucent: return Bsdf::lambert(c.color);
-        case ClosureKind::Principled:
-            p.metallic = c.metallic;
-            p.specular = c.specular;
-            p.ior = c.ior;
-            p.transmission = c.transmission;
-            return Bsdf::principled(p);
-        case ClosureKind::Glossy:
-            p.metallic = 1;
-            return Bsdf::principled(p);
-        case ClosureKind::Glass:
-        case ClosureKind::Refraction:
-            p.transmission = 1;
-            p.ior = c.ior;
-            return Bsdf::principled(p);
+    p.metallic = c.metallic;
+    p.specular = c.specular;
+    p.ior = c.ior;
+    p.transmission = c.transmission;
+    p.specular_tint = c.specular_tint;
+    p.anisotropic = c.anisotropy;
+    // Transmission roughness counts with the "GGX" distribution only (Cycles 3.4).
+    p.transmission_roughness =
+        c.distribution == Distribution::GGX
+            ? 1 - (1 - c.roughness) * (1 - std::clamp(c.transmission_roughness, 0.0, 1.0))
+            : c.roughness;
+    set.add(Bsdf::principled(p), w, n, share, diffuse_like, tangent);
+    const double diffuse_weight = (1 - c.metallic) * (1 - c.transmission);
+    if (diffuse_weight > 1e-5 && c.sheen > 1e-5) {
+        // Sheen tinted towards the base colour's hue (luminance by Rec. 709).
+        const double lum = 0.2126729 * c.color.r + 0.7151522 * c.color.g + 0.0721750 * c.color.b;
+        const Color hue = lum > 0 ? c.color * (1 / lum) : Color(1, 1, 1);
+        const Color tint = Color(1 - c.sheen_tint) + hue * c.sheen_tint;
+        const Color sw = w * tint * (c.sheen * diffuse_weight);
+        set.add(Lobe::sheen(), sw, n, std::fabs(average(sw)), true);
     }
-    return Bsdf::lambert(c.color);
+    if (c.clearcoat > 1e-5) {
+        const Vec3 cn = length_squared(c.clearcoat_N) > 0 ? normalize(c.clearcoat_N) * outside : n;
+        set.add(Lobe::clearcoat(c.clearcoat, c.clearcoat_roughness), w, cn,
+                std::fabs(average(w)));
+    }
 }
 
 }  // namespace
@@ -292,20 +354,20 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             }
             for (int i = 0; i < cl.count; ++i) {
                 shader::Closure c = cl.items[i];
-                if (blur_alpha > 0 && c.kind != shader::ClosureKind::Diffuse &&
-                    c.kind != shader::ClosureKind::Translucent)
+                if (blur_alpha > 0 && (c.kind == shader::ClosureKind::Principled ||
+                                       c.kind == shader::ClosureKind::Glossy ||
+                                       c.kind == shader::ClosureKind::Glass ||
+                                       c.kind == shader::ClosureKind::Refraction)) {
                     c.roughness = std::max(c.roughness, std::sqrt(blur_alpha));
+                    c.clearcoat_roughness = std::max(c.clearcoat_roughness, std::sqrt(blur_alpha));
+                }
                 Vec3 n = length_squared(c.N) > 0 ? normalize(c.N) : hit.n;
                 if (back) n = -n;  // the closures' normals face the viewer; the set's the outside
                 // Which rays the Light Path node calls diffuse: those from diffuse closures, and
                 // from a Principled BSDF that is mostly diffuse (glint samples its lobes as one).
-                const bool diffuse_like =
-                    c.kind == shader::ClosureKind::Diffuse ||
-                    c.kind == shader::ClosureKind::Translucent ||
-                    (c.kind == shader::ClosureKind::Principled && c.metallic < 0.5 &&
-                     c.transmission < 0.5);
-                set.add(closure_bsdf(c), c.weight * shade, n, c.sample_weight * shade,
-                        diffuse_like);
+                const bool diffuse_like = c.kind == shader::ClosureKind::Principled &&
+                                          c.metallic < 0.5 && c.transmission < 0.5;
+                add_closure(set, c, n, back ? -1.0 : 1.0, shade, diffuse_like);
                 albedo += c.weight * c.color;
             }
         } else {

@@ -26,7 +26,8 @@ struct ShaderGlobals {
     // texture space).
     float3 dPdx, dPdy;
     float3 generated_scale{1, 1, 1};
-    float3 tangent;    // Cycles' tangent (dPdu, or around the object's Z axis)
+    float3 tangent;     // Cycles' tangent: around the texture space's Z axis, normal to N
+    float3 uv_tangent;  // the normal map's tangent: dPdu where the mesh has uvs
     bool backfacing = false;
     // Object Info.
     float3 object_location;
@@ -54,27 +55,42 @@ struct ShaderGlobals {
     float camera_to_world[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
 };
 
-// The BSDF closures glint renders. Each is mapped onto the path tracer's Bsdf models
-// (render/bsdf/bsdf.h) by the integrator.
+// The BSDF closures glint renders. The integrator maps each onto the path tracer's models
+// (render/bsdf/bsdf.h for Principled and Glass, lobe.h for the others).
 enum class ClosureKind : uint8_t {
-    Diffuse,      // color
-    Principled,   // base, metallic, roughness, specular, ior, transmission, ...
-    Glossy,       // color tint, roughness (GGX): a metal without Fresnel tint
-    Glass,        // color, roughness, ior
-    Refraction,   // color, roughness, ior: the refracted half of Glass
+    Diffuse,      // color, roughness (Oren-Nayar above 0)
+    Principled,   // base, metallic, roughness, specular, ior, transmission, sheen, clearcoat, ...
+    Glossy,       // color, roughness, anisotropy and rotation about the tangent, distribution
+    Glass,        // color, roughness, ior, distribution
+    Refraction,   // color, roughness, ior, distribution: the refracted half of Glass
     Translucent,  // color: Lambert transmission
+    Toon,         // color, size (roughness), smooth; `glossy` picks the component
+    Velvet,       // color, sigma (roughness)
 };
+
+// Blender's microfacet distributions (the node's `distribution`).
+enum class Distribution : uint8_t { GGX, Beckmann, AshikhminShirley, MultiGGX };
 
 struct Closure {
     ClosureKind kind = ClosureKind::Diffuse;
+    Distribution distribution = Distribution::GGX;
+    bool glossy = false;  // Toon: the glossy component
     Color weight;  // the closure's weight (mix factors and colours multiplied in)
     Vec3 N;        // its own shading normal (bump and normal maps are per closure)
+    Vec3 T;        // tangent of anisotropic lobes (rotation applied), zero when isotropic
+    Vec3 clearcoat_N;  // Principled: the clearcoat's own normal
     Color color{1, 1, 1};
     double roughness = 0;
     double metallic = 0;
     double specular = 0.5;
     double ior = 1.45;
     double transmission = 0;
+    double anisotropy = 0;  // Principled's anisotropic, Anisotropic BSDF's anisotropy
+    double specular_tint = 0;
+    double sheen = 0, sheen_tint = 0.5;
+    double clearcoat = 0, clearcoat_roughness = 0.03;
+    double transmission_roughness = 0;
+    double smooth = 0;  // Toon
     double sample_weight = 0;  // |average(weight)|: the share of BSDF samples it gets
 };
 

@@ -41,6 +41,7 @@ void load_globals(const ShaderGlobals& sg, float3* r) {
     r[kRegGenerated] = sg.generated;
     r[kRegObject] = sg.object;
     r[kRegTangent] = sg.tangent;
+    r[kRegUVTangent] = sg.uv_tangent;
     r[kRegBackfacing] = float3(sg.backfacing ? 1.0f : 0.0f, 0, 0);
     r[kRegObjectLocation] = sg.object_location;
     r[kRegObjectColor] = sg.object_color;
@@ -335,37 +336,63 @@ void ShaderProgram::walk(int index, const Color& weight, const float3* r,
             return;
         case ClosureNode::Kind::Bsdf: break;
     }
-    // A BSDF: in[] = color, normal, roughness, ior, metallic, specular, transmission, alpha,
-    // emission color, emission strength.
+    // A BSDF: its inputs by slot.
+    using S = ClosureNode;
+    auto value = [&](int slot, double fallback) {
+        return n.in[slot] >= 0 ? static_cast<double>(r[n.in[slot]].x) : fallback;
+    };
+    auto vec = [&](int slot) { return n.in[slot] >= 0 ? r[n.in[slot]].to_vec3() : Vec3(); };
     Closure c;
     c.kind = n.bsdf;
+    c.distribution = n.distribution;
+    c.glossy = n.glossy;
     Color w = weight;
-    if (n.bsdf == ClosureKind::Principled && n.in[7] >= 0) {
+    const bool principled = n.bsdf == ClosureKind::Principled;
+    if (principled && n.in[S::kAlpha] >= 0) {
         // Alpha: the uncovered part passes straight through (Cycles' transparent closure).
-        const double alpha = std::clamp(static_cast<double>(r[n.in[7]].x), 0.0, 1.0);
+        const double alpha = std::clamp(value(S::kAlpha, 1), 0.0, 1.0);
         if (alpha < 1) out->transparent += weight * (1 - alpha);
         w = weight * alpha;
-        if (n.in[8] >= 0)
-            out->emission += w * to_color(r[n.in[8]]) * static_cast<double>(r[n.in[9]].x);
+        if (n.in[S::kEmission] >= 0)
+            out->emission += w * to_color(r[n.in[S::kEmission]]) * value(S::kEmissionStrength, 1);
     }
     c.weight = w;
-    c.color = n.in[0] >= 0 ? to_color(r[n.in[0]]) : Color(1, 1, 1);
-    c.N = n.in[1] >= 0 ? r[n.in[1]].to_vec3() : Vec3();
-    c.roughness = n.in[2] >= 0 ? std::clamp(static_cast<double>(r[n.in[2]].x), 0.0, 1.0) : 0;
-    c.ior = n.in[3] >= 0 ? std::max(static_cast<double>(r[n.in[3]].x), 1e-5) : 1.45;
-    c.metallic = n.in[4] >= 0 ? std::clamp(static_cast<double>(r[n.in[4]].x), 0.0, 1.0) : 0;
-    c.specular = n.in[5] >= 0 ? std::max(static_cast<double>(r[n.in[5]].x), 0.0) : 0.5;
-    c.transmission =
-        n.in[6] >= 0 ? std::clamp(static_cast<double>(r[n.in[6]].x), 0.0, 1.0) : 0;
+    c.color = n.in[S::kColor] >= 0 ? to_color(r[n.in[S::kColor]]) : Color(1, 1, 1);
+    c.N = vec(S::kNormal);
+    c.roughness = std::clamp(value(S::kRoughness, 0), 0.0, 1.0);
+    if (n.bsdf == ClosureKind::Velvet) c.roughness = value(S::kRoughness, 1);  // sigma
+    c.ior = std::max(value(S::kIor, 1.45), 1e-5);
+    c.metallic = std::clamp(value(S::kMetallic, 0), 0.0, 1.0);
+    c.specular = std::max(value(S::kSpecular, 0.5), 0.0);
+    c.transmission = std::clamp(value(S::kTransmission, 0), 0.0, 1.0);
+    c.specular_tint = value(S::kSpecularTint, 0);
+    c.anisotropy = value(S::kAnisotropy, 0);
+    c.sheen = value(S::kSheen, 0);
+    c.sheen_tint = value(S::kSheenTint, 0.5);
+    c.clearcoat = value(S::kClearcoat, 0);
+    c.clearcoat_roughness = value(S::kClearcoatRoughness, 0.03);
+    c.clearcoat_N = vec(S::kClearcoatNormal);
+    c.transmission_roughness = value(S::kTransmissionRoughness, 0);
+    c.smooth = value(S::kSmooth, 0);
+    if (n.in[S::kTangent] >= 0 && (c.anisotropy != 0 || n.bsdf == ClosureKind::Glossy)) {
+        c.T = vec(S::kTangent);
+        // Rotation turns the tangent about the normal by that many full turns.
+        const double turns = value(S::kRotation, 0);
+        const Vec3 axis = length_squared(c.N) > 0 ? normalize(c.N) : Vec3();
+        if (turns != 0 && length_squared(axis) > 0) {
+            const double a = turns * 2 * kPi, ca = std::cos(a), sa = std::sin(a);
+            c.T = c.T * ca + cross(axis, c.T) * sa + axis * (dot(axis, c.T) * (1 - ca));
+        }
+    }
     // Cycles' sample weight: the closure's weight with its colour multiplied in (a Principled
     // BSDF keeps its specular lobe whatever its base colour).
-    const Color sw = n.bsdf == ClosureKind::Principled ? w : w * c.color;
+    const Color sw = principled ? w : w * c.color;
     c.sample_weight = std::fabs((sw.r + sw.g + sw.b) / 3);
-    // A Principled BSDF without any lobe (black base, no metal, specular or transmission; the
-    // lobes glint ignores warned apart) gets no closure in Cycles 3.4: it must take no samples
-    // from the rest (transparency included).
-    if (n.bsdf == ClosureKind::Principled && c.color.is_black() && c.metallic == 0 &&
-        c.specular == 0 && c.transmission == 0)
+    // A Principled BSDF without any lobe (black base, no metal, specular, transmission or
+    // clearcoat) gets no closure in Cycles 3.4: it must take no samples from the rest
+    // (transparency included).
+    if (principled && c.color.is_black() && c.metallic == 0 && c.specular == 0 &&
+        c.transmission == 0 && !(c.clearcoat > 1e-5))
         return;
     if (c.sample_weight > 0) out->add(c);
 }

@@ -25,85 +25,128 @@ void ignored(Compiler& c, int n, const char* id, float neutral, const char* what
         c.unsupported(n, std::string(what) + " is not supported yet: ignored");
 }
 
-int bsdf(Compiler& c, ClosureKind kind, std::initializer_list<int> regs) {
+using S = ClosureNode;
+
+ClosureNode bsdf_node(ClosureKind kind, std::initializer_list<std::pair<int, int>> slots) {
     ClosureNode node;
     node.kind = ClosureNode::Kind::Bsdf;
     node.bsdf = kind;
-    int k = 0;
-    for (int r : regs) node.in[k++] = r;
-    return c.add_closure(node);
+    for (const auto& [slot, reg] : slots) node.in[slot] = reg;
+    return node;
+}
+
+// The node's `distribution` as Cycles 3.4 takes it; SHARP (and a constant roughness of 0,
+// which Cycles simplifies to SHARP) give no roughness register.
+Distribution distribution(Compiler& c, int n, const char* fallback, bool* sharp) {
+    const std::string d = c.enum_prop(n, "distribution", fallback);
+    *sharp = d == "SHARP";
+    if (d == "BECKMANN") return Distribution::Beckmann;
+    if (d == "ASHIKHMIN_SHIRLEY") return Distribution::AshikhminShirley;
+    if (d == "MULTI_GGX") {
+        c.unsupported(n, "Multiscatter GGX is rendered as single-scatter GGX (darker when rough)");
+        return Distribution::MultiGGX;
+    }
+    return Distribution::GGX;
 }
 
 int diffuse(Compiler& c, int n) {
-    ignored(c, n, "Roughness", 0, "Oren-Nayar roughness");
-    return bsdf(c, ClosureKind::Diffuse, {c.in(n, "Color", 'c', float3(0.8f)), normal_in(c, n)});
+    return c.add_closure(bsdf_node(ClosureKind::Diffuse,
+                                   {{S::kColor, c.in(n, "Color", 'c', float3(0.8f))},
+                                    {S::kNormal, normal_in(c, n)},
+                                    {S::kRoughness, c.in(n, "Roughness", 'f')}}));
 }
 
 int principled(Compiler& c, int n) {
     ignored(c, n, "Subsurface", 0, "subsurface (the next issue's)");
-    ignored(c, n, "Sheen", 0, "sheen");
-    ignored(c, n, "Clearcoat", 0, "clearcoat");
-    ignored(c, n, "Anisotropic", 0, "anisotropy");
-    ignored(c, n, "Specular Tint", 0, "specular tint");
-    ignored(c, n, "Transmission Roughness", 0, "transmission roughness");
-    // in[]: color, normal, roughness, ior, metallic, specular, transmission, alpha, emission
-    // colour, emission strength (ShaderProgram::walk).
-    return bsdf(c, ClosureKind::Principled,
-                {c.in(n, "Base Color", 'c', float3(0.8f)), normal_in(c, n),
-                 c.in(n, "Roughness", 'f', float3(0.5f)), c.in(n, "IOR", 'f', float3(1.45f)),
-                 c.in(n, "Metallic", 'f'), c.in(n, "Specular", 'f', float3(0.5f)),
-                 c.in(n, "Transmission", 'f'), c.in(n, "Alpha", 'f', float3(1)),
-                 c.in(n, "Emission", 'c'), c.in(n, "Emission Strength", 'f', float3(1))});
+    bool sharp = false;
+    ClosureNode node = bsdf_node(
+        ClosureKind::Principled,
+        {{S::kColor, c.in(n, "Base Color", 'c', float3(0.8f))},
+         {S::kNormal, normal_in(c, n)},
+         {S::kRoughness, c.in(n, "Roughness", 'f', float3(0.5f))},
+         {S::kIor, c.in(n, "IOR", 'f', float3(1.45f))},
+         {S::kMetallic, c.in(n, "Metallic", 'f')},
+         {S::kSpecular, c.in(n, "Specular", 'f', float3(0.5f))},
+         {S::kTransmission, c.in(n, "Transmission", 'f')},
+         {S::kAlpha, c.in(n, "Alpha", 'f', float3(1))},
+         {S::kEmission, c.in(n, "Emission", 'c')},
+         {S::kEmissionStrength, c.in(n, "Emission Strength", 'f', float3(1))},
+         {S::kSpecularTint, c.in(n, "Specular Tint", 'f')},
+         {S::kAnisotropy, c.in(n, "Anisotropic", 'f')},
+         {S::kRotation, c.in(n, "Anisotropic Rotation", 'f')},
+         {S::kSheen, c.in(n, "Sheen", 'f')},
+         {S::kSheenTint, c.in(n, "Sheen Tint", 'f', float3(0.5f))},
+         {S::kClearcoat, c.in(n, "Clearcoat", 'f')},
+         {S::kClearcoatRoughness, c.in(n, "Clearcoat Roughness", 'f', float3(0.03f))},
+         {S::kClearcoatNormal, normal_in(c, n, "Clearcoat Normal")},
+         {S::kTransmissionRoughness, c.in(n, "Transmission Roughness", 'f')},
+         {S::kTangent, c.linked(n, "Tangent") ? c.in(n, "Tangent", 'v')
+                                              : static_cast<int>(kRegTangent)}});
+    node.distribution = distribution(c, n, "GGX", &sharp);
+    return c.add_closure(node);
 }
 
-void distribution(Compiler& c, int n) {
-    const std::string d = c.enum_prop(n, "distribution", "GGX");
-    if (d != "GGX" && d != "SHARP")
-        c.unsupported(n, "distribution " + d + " is rendered as GGX");
-}
-
+// Glossy and Anisotropic: microfacet reflection tinted by the colour.
 int glossy(Compiler& c, int n) {
-    distribution(c, n);
-    if (c.node(n).type == "ShaderNodeBsdfAnisotropic")
-        ignored(c, n, "Anisotropy", 0, "anisotropy");
-    const int rough = c.enum_prop(n, "distribution", "GGX") == "SHARP"
-                          ? c.constant(0.0f) : c.in(n, "Roughness", 'f', float3(0.5f));
-    return bsdf(c, ClosureKind::Glossy,
-                {c.in(n, "Color", 'c', float3(0.8f)), normal_in(c, n), rough});
+    bool sharp = false;
+    const bool aniso = c.node(n).type == "ShaderNodeBsdfAnisotropic";
+    ClosureNode node = bsdf_node(
+        ClosureKind::Glossy,
+        {{S::kColor, c.in(n, "Color", 'c', float3(0.8f))},
+         {S::kNormal, normal_in(c, n)}});
+    node.distribution = distribution(c, n, "GGX", &sharp);
+    node.in[S::kRoughness] = sharp ? c.constant(0.0f) : c.in(n, "Roughness", 'f', float3(0.5f));
+    if (aniso) {
+        node.in[S::kAnisotropy] = c.in(n, "Anisotropy", 'f', float3(0.5f));
+        node.in[S::kRotation] = c.in(n, "Rotation", 'f');
+        node.in[S::kTangent] =
+            c.linked(n, "Tangent") ? c.in(n, "Tangent", 'v') : static_cast<int>(kRegTangent);
+    }
+    return c.add_closure(node);
 }
 
+// Glass and Refraction (Blender's default distribution for both is Beckmann).
 int glass(Compiler& c, int n) {
-    distribution(c, n);
-    const int rough = c.enum_prop(n, "distribution", "GGX") == "SHARP"
-                          ? c.constant(0.0f) : c.in(n, "Roughness", 'f');
+    bool sharp = false;
     const ClosureKind kind = c.node(n).type == "ShaderNodeBsdfRefraction"
                                  ? ClosureKind::Refraction : ClosureKind::Glass;
-    if (kind == ClosureKind::Refraction)
-        c.unsupported(n, "is drawn as a Glass BSDF (its reflection included)");
-    return bsdf(c, kind, {c.in(n, "Color", 'c', float3(1)), normal_in(c, n), rough,
-                          c.in(n, "IOR", 'f', float3(1.45f))});
+    ClosureNode node = bsdf_node(kind, {{S::kColor, c.in(n, "Color", 'c', float3(1))},
+                                        {S::kNormal, normal_in(c, n)},
+                                        {S::kIor, c.in(n, "IOR", 'f', float3(1.45f))}});
+    node.distribution = distribution(c, n, "BECKMANN", &sharp);
+    node.in[S::kRoughness] = sharp ? c.constant(0.0f) : c.in(n, "Roughness", 'f');
+    return c.add_closure(node);
 }
 
 int translucent(Compiler& c, int n) {
-    c.unsupported(n, "is drawn as a Diffuse BSDF (glint has no translucent lobe yet)");
-    return bsdf(c, ClosureKind::Translucent, {c.in(n, "Color", 'c', float3(0.8f)), normal_in(c, n)});
+    return c.add_closure(bsdf_node(ClosureKind::Translucent,
+                                   {{S::kColor, c.in(n, "Color", 'c', float3(0.8f))},
+                                    {S::kNormal, normal_in(c, n)}}));
 }
 
-// Toon and Velvet: drawn as the Diffuse (or Glossy) closure they resemble, with a warning.
 int toon(Compiler& c, int n) {
-    const bool glossy_part = c.enum_prop(n, "component", "DIFFUSE") == "GLOSSY";
-    c.unsupported(n, std::string("is drawn as a ") + (glossy_part ? "Glossy" : "Diffuse") +
-                         " BSDF");
-    if (glossy_part)
-        return bsdf(c, ClosureKind::Glossy, {c.in(n, "Color", 'c', float3(0.8f)), normal_in(c, n),
-                                             c.in(n, "Smooth", 'f')});
-    return bsdf(c, ClosureKind::Diffuse, {c.in(n, "Color", 'c', float3(0.8f)), normal_in(c, n)});
+    ClosureNode node = bsdf_node(ClosureKind::Toon,
+                                 {{S::kColor, c.in(n, "Color", 'c', float3(0.8f))},
+                                  {S::kNormal, normal_in(c, n)},
+                                  {S::kRoughness, c.in(n, "Size", 'f', float3(0.5f))},
+                                  {S::kSmooth, c.in(n, "Smooth", 'f')}});
+    node.glossy = c.enum_prop(n, "component", "DIFFUSE") == "GLOSSY";
+    return c.add_closure(node);
+}
+
+int velvet(Compiler& c, int n) {
+    return c.add_closure(bsdf_node(ClosureKind::Velvet,
+                                   {{S::kColor, c.in(n, "Color", 'c', float3(0.8f))},
+                                    {S::kNormal, normal_in(c, n)},
+                                    {S::kRoughness, c.in(n, "Sigma", 'f', float3(1))}}));
 }
 
 int as_diffuse(Compiler& c, int n) {
     c.unsupported(n, "is drawn as a Diffuse BSDF of its colour");
     const char* color = c.node(n).input("Color") ? "Color" : "Base Color";
-    return bsdf(c, ClosureKind::Diffuse, {c.in(n, color, 'c', float3(0.8f)), normal_in(c, n)});
+    return c.add_closure(bsdf_node(ClosureKind::Diffuse,
+                                   {{S::kColor, c.in(n, color, 'c', float3(0.8f))},
+                                    {S::kNormal, normal_in(c, n)}}));
 }
 
 int emission(Compiler& c, int n) {
@@ -225,7 +268,7 @@ void normal_map(Compiler& c, int n) {
     op.in[0] = c.in(n, "Color", 'c', float3(0.5f, 0.5f, 1.0f));
     op.in[1] = c.in(n, "Strength", 'f', float3(1));
     op.in[2] = kRegN;
-    op.in[3] = kRegTangent;
+    op.in[3] = kRegUVTangent;
     op.out[0] = out;
     op.i[0] = space == "TANGENT" ? 0 : (space == "OBJECT" || space == "BLENDER_OBJECT") ? 1 : 2;
     op.i[1] = space == "BLENDER_OBJECT" || space == "BLENDER_WORLD";
@@ -283,7 +326,7 @@ void add_shader_nodes(NodeTables& t) {
     s["ShaderNodeBsdfRefraction"] = glass;
     s["ShaderNodeBsdfTranslucent"] = translucent;
     s["ShaderNodeBsdfToon"] = toon;
-    s["ShaderNodeBsdfVelvet"] = as_diffuse;
+    s["ShaderNodeBsdfVelvet"] = velvet;
     s["ShaderNodeSubsurfaceScattering"] = as_diffuse;
     s["ShaderNodeEeveeSpecular"] = as_diffuse;
     s["ShaderNodeEmission"] = emission;

@@ -6,6 +6,8 @@
 // after the values are computed, as Cycles' closure array is filled.
 #pragma once
 
+#include <algorithm>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,7 +24,7 @@ namespace glint::render::shader {
 
 // Registers the globals occupy, in this order, at the start of every register file.
 enum GlobalRegister : int {
-    kRegP, kRegN, kRegNg, kRegI, kRegUV, kRegGenerated, kRegObject, kRegTangent,
+    kRegP, kRegN, kRegNg, kRegI, kRegUV, kRegGenerated, kRegObject, kRegTangent, kRegUVTangent,
     kRegBackfacing, kRegObjectLocation, kRegObjectColor, kRegObjectInfo /* pass, random */,
     kRegRay /* is_camera, is_shadow, ray_length */, kRegRay2 /* diffuse, glossy, singular */,
     kRegRay3 /* reflection, transmission, depth */, kRegDepths /* diffuse, glossy, transmission */,
@@ -51,9 +53,17 @@ struct ClosureNode {
     ClosureKind bsdf = ClosureKind::Diffuse;
     int a = -1, b = -1;  // Mix: shader 1 and 2; Add: both
     int fac = -1;        // Mix: the factor register
-    // Bsdf: registers of color, normal, roughness, ior, metallic, specular, transmission,
-    // and (Principled) alpha, emission color, emission strength; Emission: color, strength.
-    int in[12] = {-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1};
+    // Bsdf: the registers of its inputs, by Slot (-1: not given); Emission: color, strength.
+    enum Slot {
+        kColor, kNormal, kRoughness /* Toon: size; Velvet: sigma */, kIor, kMetallic,
+        kSpecular, kTransmission, kAlpha, kEmission, kEmissionStrength, kSpecularTint,
+        kAnisotropy, kRotation, kSheen, kSheenTint, kClearcoat, kClearcoatRoughness,
+        kClearcoatNormal, kTransmissionRoughness, kTangent, kSmooth, kSlots
+    };
+    int in[kSlots];
+    Distribution distribution = Distribution::GGX;
+    bool glossy = false;  // Toon's glossy component
+    ClosureNode() { std::fill(std::begin(in), std::end(in), -1); }
 };
 
 class ShaderProgram {

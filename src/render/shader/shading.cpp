@@ -147,14 +147,27 @@ ShaderGlobals GraphShading::globals(const Hit& hit, const Vec3& dir,
         sg.object_color = o.color;
         sg.object_pass_index = o.pass_index;
         sg.object_random = o.random;
-        // Cycles' default tangent: around the object's Z axis through its origin.
-        const float3 po = sg.object;
-        sg.tangent = safe_normalize(xform_vector(o.o2w, float3(-po.y, po.x, 0)));
     } else {
         sg.object = sg.P;
         sg.generated = sg.P;
     }
-    if (len(sg.dPdu) > 0) sg.tangent = safe_normalize(sg.dPdu);
+    // Cycles' tangent (Geometry's Tangent, and the default of Anisotropic and Principled):
+    // around the Z axis of the texture space, through the normal transform, then made
+    // perpendicular to N.
+    {
+        const float3 g = sg.generated - float3(0.5f);
+        float3 t(-g.y, g.x, 0);
+        if (hit.object >= 0 && static_cast<size_t>(hit.object) < objects_.size()) {
+            const ObjectInfo& o = objects_[hit.object];
+            float3 w;
+            for (int i = 0; i < 3; ++i)
+                w[i] = o.w2o[0][i] * t.x + o.w2o[1][i] * t.y + o.w2o[2][i] * t.z;
+            t = w;
+        }
+        sg.tangent = cross(sg.N, safe_normalize(cross(t, sg.N)));
+    }
+    // The normal map's tangent: the uv direction (MikkTSpace's stand-in), else the above.
+    sg.uv_tangent = len(sg.dPdu) > 0 ? safe_normalize(sg.dPdu) : sg.tangent;
     camera_coords(hit.p, &sg);
     std::copy(&w2c_[0][0], &w2c_[0][0] + 12, &sg.world_to_camera[0][0]);
     std::copy(&c2w_[0][0], &c2w_[0][0] + 12, &sg.camera_to_world[0][0]);

@@ -1,0 +1,62 @@
+// The single BSDFs of Blender's shader nodes that the Principled model (bsdf.h) does not
+// cover, as Cycles 3.4 defines them (kernel/closure/bsdf_*.h): Oren-Nayar, Translucent, the
+// two Toon lobes, Ashikhmin's Velvet, the Principled BSDF's sheen and clearcoat, microfacet
+// reflection (Glossy and Anisotropic: GGX, Beckmann, Ashikhmin-Shirley) and refraction
+// (Refraction BSDF). A lobe lives in a local frame (z the shading normal, x the tangent);
+// wo points towards the viewer. eval() returns f |cos wi|, as Cycles' closures do (Toon is
+// defined by that product, not by f). Plain values, built per hit on the stack.
+#pragma once
+
+#include <cstdint>
+
+#include "render/bsdf/bsdf.h"
+#include "render/bsdf/microfacet.h"
+
+namespace glint::render {
+
+class Lobe {
+public:
+    enum class Kind : uint8_t {
+        OrenNayar, Translucent, DiffuseToon, GlossyToon, Velvet, Sheen, Clearcoat,
+        Reflection, Refraction, AshikhminShirley
+    };
+
+    // Oren-Nayar with Cycles' sigma = roughness in [0, 1] (0 is Lambert).
+    static Lobe oren_nayar(double roughness);
+    // Lambertian transmission: light from the far side.
+    static Lobe translucent();
+    // Toon: full intensity within size * 90 degrees of the normal (diffuse) or of the mirror
+    // direction (glossy), fading to 0 over a further smooth * 90 degrees.
+    static Lobe toon(bool glossy, double size, double smooth);
+    static Lobe velvet(double sigma);
+    // The Principled BSDF's sheen (Schlick's weight of the angle to the half vector).
+    static Lobe sheen();
+    // The Principled BSDF's clearcoat: GTR1 of alpha = clearcoat roughness^2, Fresnel of IOR
+    // 1.5, scaled by 0.25 clearcoat.
+    static Lobe clearcoat(double clearcoat, double roughness);
+    // Microfacet reflection without Fresnel (Glossy, Anisotropic); alpha below 1e-3 is a
+    // mirror. Ashikhmin-Shirley has its own model with exponents 2 / alpha^2 - 2.
+    static Lobe reflection(const Microfacet& m);
+    static Lobe ashikhmin_shirley(double alpha_x, double alpha_y);
+    // Microfacet refraction without Fresnel (Refraction BSDF); `eta` inside over outside.
+    static Lobe refraction(const Microfacet& m, double eta);
+
+    Kind kind() const { return kind_; }
+    bool delta() const { return delta_; }
+    // Cycles' factor on a closure's sample weight that depends on the view (sheen's average
+    // value, clearcoat's Fresnel): the weight of the lobe among the others for wo.
+    double sample_scale(const Vec3& wo) const;
+
+    Color eval(const Vec3& wo, const Vec3& wi, double* pdf) const;
+    bool sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const;
+
+private:
+    Kind kind_ = Kind::OrenNayar;
+    bool delta_ = false;
+    double a_ = 0, b_ = 0;  // Oren-Nayar's A, B; Toon's angle and smooth; Velvet 1/sigma^2;
+                            // Ashikhmin-Shirley's exponents; clearcoat's amount
+    double eta_ = 1;
+    Microfacet m_;
+};
+
+}  // namespace glint::render
