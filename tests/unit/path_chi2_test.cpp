@@ -1,7 +1,9 @@
 // VALIDATION.md case 13: chi-square goodness-of-fit tests of each BSDF's sample() against its
 // pdf() (Lambert; modified Phong n = 1 .. 1e5; GGX alpha = 1e-3 .. 1 as Principled metal,
 // dielectric reflection over a diffuse base, and rough dielectric transmission; the smooth
-// dielectric's discrete reflect/refract choice against Fresnel), with the Sidak correction
+// dielectric's discrete reflect/refract choice against Fresnel; Blender's single lobes:
+// Oren-Nayar, Translucent, both Toons, Velvet, sheen, clearcoat, Beckmann, anisotropic GGX and
+// Beckmann, Ashikhmin-Shirley, microfacet refraction), with the Sidak correction
 // over every test of the file at a family-wise significance of 0.01. Each configuration also
 // checks energy: the mean of f |cos| / pdf equals the integral of f |cos| over the same bins
 // (so sampling is unbiased), and it is at most 1.01 without a diffuse lobe (Cycles adds
@@ -17,9 +19,35 @@
 
 #include "chi2.h"
 #include "render/bsdf/bsdf.h"
+#include "render/bsdf/lobe.h"
 
 namespace glint::render {
 namespace {
+
+// A Bsdf or a single Lobe behind one interface: f (without the cosine), pdf and sample.
+struct Model {
+    Model(const Bsdf& b) : is_lobe(false), bsdf(b) {}  // NOLINT: implicit on purpose
+    Model(const Lobe& l) : is_lobe(true), lobe(l) {}   // NOLINT
+    bool is_lobe;
+    Bsdf bsdf;
+    Lobe lobe;
+    Color eval(const Vec3& wo, const Vec3& wi) const {
+        if (!is_lobe) return bsdf.eval(wo, wi);
+        double p;
+        const Color fc = lobe.eval(wo, wi, &p);
+        return wi.z != 0 ? fc * (1 / std::fabs(wi.z)) : Color();
+    }
+    double pdf(const Vec3& wo, const Vec3& wi) const {
+        if (!is_lobe) return bsdf.pdf(wo, wi);
+        double p;
+        lobe.eval(wo, wi, &p);
+        return p;
+    }
+    bool sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const {
+        return is_lobe ? lobe.sample(wo, u1, u2, out) : bsdf.sample(wo, u1, u2, out);
+    }
+    bool all_delta() const { return is_lobe ? lobe.delta() : bsdf.all_delta(); }
+};
 
 constexpr int kSamples = 1 << 17;
 constexpr double kFamilyAlpha = 0.01;
@@ -30,7 +58,7 @@ enum class Axis { Normal, Mirror, Refract };
 
 struct Config {
     std::string name;
-    Bsdf bsdf;
+    Model bsdf;
     double theta_o;  // degrees from the normal; > 90: from inside
     Axis axis;
     double width;  // angular width of the lobe (radians); >= 0.5: cos-uniform bins
@@ -112,6 +140,59 @@ std::vector<Config> configs() {
         p.specular = 0.8;
         out.push_back({"principled mix alpha 0.05", Bsdf::principled(p), th, Axis::Refract,
                        0.05, 1.5, 1.2});
+    }
+    // Blender's other BSDFs (render/bsdf/lobe.h), each about its own axis.
+    for (double th : {30.0, 70.0}) {
+        for (double r : {0.3, 1.0})
+            out.push_back({"oren-nayar sigma " + num(r), Lobe::oren_nayar(r), th, Axis::Normal, 1.0});
+        out.push_back({"translucent", Lobe::translucent(), th, Axis::Normal, 1.0});
+        out.push_back({"diffuse toon", Lobe::toon(false, 0.5, 0.2), th, Axis::Normal, 1.0});
+        out.push_back({"glossy toon", Lobe::toon(true, 0.1, 0.1), th, Axis::Mirror, 0.3});
+        out.push_back({"velvet sigma 0.5", Lobe::velvet(0.5), th, Axis::Normal, 1.0, 1.5, 2.0});
+        out.push_back({"sheen", Lobe::sheen(), th, Axis::Normal, 1.0});
+        for (double r : {0.03, 0.3})
+            out.push_back({"clearcoat roughness " + num(r), Lobe::clearcoat(1, r), th,
+                           Axis::Mirror, std::max(0.05, r * r)});
+        for (double a : {0.01, 0.2}) {
+            out.push_back({"beckmann alpha " + num(a),
+                           Lobe::reflection(Microfacet{Microfacet::Kind::Beckmann, a, a}), th,
+                           Axis::Mirror, std::min(1.0, 2 * a)});
+            out.push_back({"anisotropic ggx alpha " + num(a) + " x 4",
+                           Lobe::reflection(Microfacet{Microfacet::Kind::GGX, a, 4 * a}), th,
+                           Axis::Mirror, std::min(1.0, 8 * a)});
+            out.push_back({"anisotropic beckmann alpha " + num(a) + " x 3",
+                           Lobe::reflection(Microfacet{Microfacet::Kind::Beckmann, 3 * a, a}),
+                           th, Axis::Mirror, std::min(1.0, 6 * a)});
+            out.push_back({"ashikhmin-shirley alpha " + num(a), Lobe::ashikhmin_shirley(a, a),
+                           th, Axis::Mirror, std::min(1.0, 2 * a), 1.5, 1.2});
+            out.push_back({"ashikhmin-shirley alpha " + num(a) + " x 3",
+                           Lobe::ashikhmin_shirley(a, 3 * a), th, Axis::Mirror,
+                           std::min(1.0, 6 * a), 1.5, 1.2});
+        }
+    }
+    for (double a : {0.01, 0.2})
+        for (double th : {30.0, 150.0}) {
+            out.push_back({"ggx refraction alpha " + num(a),
+                           Lobe::refraction(Microfacet::ggx(a), 1.5), th, Axis::Refract,
+                           std::min(1.0, 2 * a), 1.5, 1.2});
+            out.push_back({"beckmann refraction alpha " + num(a),
+                           Lobe::refraction(Microfacet{Microfacet::Kind::Beckmann, a, a}, 1.5),
+                           th, Axis::Refract, std::min(1.0, 2 * a), 1.5, 1.2});
+        }
+    // The Principled model with its newer inputs: anisotropy, specular tint, a Beckmann
+    // glass with its own transmission roughness.
+    for (double th : {30.0, 70.0}) {
+        PrincipledParams p = principled(Color(0.9, 0.5, 0.2), 0.5, 0.04, 0);
+        p.anisotropic = 0.8;
+        p.specular_tint = 0.7;
+        out.push_back({"principled anisotropic tinted", Bsdf::principled(p), th, Axis::Mirror,
+                       0.5, 1.5, 1.2});
+        PrincipledParams g = principled(Color(1, 1, 1), 0, 0.01, 1);
+        g.glass_distribution = Microfacet::Kind::Beckmann;
+        g.transmission_roughness = 0.5;
+        g.specular_tint = 0.5;
+        out.push_back({"beckmann glass frosted", Bsdf::principled(g), th + 100, Axis::Refract,
+                       0.1, 1.5});
     }
     return out;
 }
