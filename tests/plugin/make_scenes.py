@@ -4,7 +4,7 @@
         --out BUILD/tests/plugin/scenes [--scenes cornell,...] \
         [--references --spp 256 --seeds 16 --ref tests/plugin/ref]
 
-For each scene NAME (cornell, principled, textured, lamps, anim) this saves --out/NAME.blend
+For each scene NAME (cornell, principled, textured, lamps, anim, bsdfs) this saves --out/NAME.blend
 (plus the generated assets it uses: texture.png, sky.exr, referenced relatively). Everything is
 built from code, so the files are the same from run to run; the CTests build them at test time
 into the build tree (the plugin.scenes fixture), and only the references are committed.
@@ -263,8 +263,95 @@ def build_anim(out_dir):
     cy.set_world_color((0.3, 0.35, 0.45))
 
 
+def node_material(name, kind, **inputs):
+    """A material whose surface is one BSDF node of type `kind`; `inputs` sets its input
+    sockets by name, and the node properties distribution and component when given."""
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    nt = mat.node_tree
+    for n in list(nt.nodes):
+        if n.type != "OUTPUT_MATERIAL":
+            nt.nodes.remove(n)
+    node = nt.nodes.new(kind)
+    for key in ("distribution", "component"):
+        if key in inputs:
+            setattr(node, key, inputs.pop(key))
+    for k, v in inputs.items():
+        node.inputs[k].default_value = v
+    nt.links.new(node.outputs[0], nt.nodes["Material Output"].inputs["Surface"])
+    return mat
+
+
+def sky_world(out_dir):
+    sky = os.path.join(out_dir, "sky.exr")
+    cy.make_sky(sky)
+    world = bpy.data.worlds.new("World")
+    world.use_nodes = True
+    nt = world.node_tree
+    env = nt.nodes.new("ShaderNodeTexEnvironment")
+    env.image = bpy.data.images.load(sky)
+    env.image.filepath = "//sky.exr"
+    env.interpolation = "Linear"
+    env.projection = "EQUIRECTANGULAR"
+    nt.links.new(env.outputs["Color"], nt.nodes["Background"].inputs["Color"])
+    nt.nodes["Background"].inputs["Strength"].default_value = 1.0
+    bpy.context.scene.world = world
+
+
+def build_bsdfs(out_dir):
+    """(issue 30) Fifteen spheres, one BSDF each beyond the plain Principled: Oren-Nayar,
+    Translucent, both Toons, Velvet, Glossy Beckmann and Ashikhmin-Shirley, Anisotropic GGX
+    (default tangent, rotated), Refraction and Glass (Beckmann, rough, tinted), and the
+    Principled BSDF's sheen, clearcoat, specular tint, anisotropy and transmission roughness;
+    under tests/cycles' HDR sky and a sun, on a grey floor."""
+    P = "ShaderNodeBsdfPrincipled"
+    mats = [
+        node_material("oren_nayar", "ShaderNodeBsdfDiffuse", Color=(0.8, 0.5, 0.3, 1),
+                      Roughness=1.0),
+        node_material("translucent", "ShaderNodeBsdfTranslucent", Color=(0.8, 0.8, 0.4, 1)),
+        node_material("toon_diffuse", "ShaderNodeBsdfToon", Color=(0.3, 0.6, 0.9, 1),
+                      Size=0.5, Smooth=0.1),
+        node_material("toon_glossy", "ShaderNodeBsdfToon", component="GLOSSY",
+                      Color=(0.9, 0.9, 0.9, 1), Size=0.2, Smooth=0.2),
+        node_material("velvet", "ShaderNodeBsdfVelvet", Color=(0.7, 0.2, 0.4, 1), Sigma=0.5),
+        node_material("beckmann", "ShaderNodeBsdfGlossy", distribution="BECKMANN",
+                      Color=(0.9, 0.7, 0.4, 1), Roughness=0.3),
+        node_material("ashikhmin", "ShaderNodeBsdfGlossy", distribution="ASHIKHMIN_SHIRLEY",
+                      Color=(0.6, 0.8, 0.9, 1), Roughness=0.3),
+        node_material("anisotropic", "ShaderNodeBsdfAnisotropic", Color=(0.9, 0.9, 0.9, 1),
+                      Roughness=0.4, Anisotropy=0.8, Rotation=0.1),
+        node_material("refraction", "ShaderNodeBsdfRefraction", Color=(1, 1, 1, 1),
+                      Roughness=0.2, IOR=1.45),
+        node_material("glass", "ShaderNodeBsdfGlass", Color=(0.6, 0.9, 0.7, 1), Roughness=0.15,
+                      IOR=1.5),
+        node_material("sheen", P, **{"Base Color": (0.6, 0.1, 0.1, 1), "Roughness": 0.6,
+                                     "Sheen": 1.0, "Sheen Tint": 0.5}),
+        node_material("clearcoat", P, **{"Base Color": (0.05, 0.1, 0.5, 1), "Roughness": 0.5,
+                                         "Clearcoat": 1.0, "Clearcoat Roughness": 0.1}),
+        node_material("specular_tint", P, **{"Base Color": (0.9, 0.4, 0.1, 1),
+                                             "Roughness": 0.2, "Specular": 1.0,
+                                             "Specular Tint": 1.0}),
+        node_material("principled_aniso", P, **{"Base Color": (0.9, 0.8, 0.6, 1),
+                                                "Metallic": 1.0, "Roughness": 0.3,
+                                                "Anisotropic": 0.8}),
+        node_material("frosted", P, **{"Base Color": (1, 1, 1, 1), "Roughness": 0.1,
+                                       "Transmission": 1.0, "Transmission Roughness": 0.5}),
+    ]
+    floor(cy.diffuse_material("floor", (0.5, 0.5, 0.5)))
+    radius = 0.4
+    for k, m in enumerate(mats):
+        row, col = divmod(k, 5)
+        add_sphere("sphere_" + m.name, ((col - 2) * 0.95, row * 0.95 - 0.6, radius), radius, m)
+    sun = add_light("sun", "SUN", (0, 0, 5), energy=2.0, angle=math.radians(3.0))
+    aim(sun, (0.5, 0.7, 0.0))
+    sun.location = (0, 0, 5)
+    cy.add_camera((0, -5.2, 3.2), (0, 0.4, 0.3), lens_mm=35.0)
+    sky_world(out_dir)
+
+
 BUILDERS = {"cornell": build_cornell, "principled": build_principled,
-            "textured": build_textured, "lamps": build_lamps, "anim": build_anim}
+            "textured": build_textured, "lamps": build_lamps, "anim": build_anim,
+            "bsdfs": build_bsdfs}
 
 
 def build(name, out_dir):

@@ -64,6 +64,9 @@ struct Config {
     double width;  // angular width of the lobe (radians); >= 0.5: cos-uniform bins
     double eta = 1.5;
     double max_energy = 1.01;  // bound on the mean weight (a diffuse lobe adds to reflection)
+    // Toon: sample() weighs as Cycles does, not by eval / pdf (lobe.cpp); only the directions
+    // are tested against the pdf.
+    bool cycles_weight = false;
 };
 
 Vec3 dir_from(double theta_deg, double phi = 0.3) {
@@ -146,8 +149,10 @@ std::vector<Config> configs() {
         for (double r : {0.3, 1.0})
             out.push_back({"oren-nayar sigma " + num(r), Lobe::oren_nayar(r), th, Axis::Normal, 1.0});
         out.push_back({"translucent", Lobe::translucent(), th, Axis::Normal, 1.0});
-        out.push_back({"diffuse toon", Lobe::toon(false, 0.5, 0.2), th, Axis::Normal, 1.0});
-        out.push_back({"glossy toon", Lobe::toon(true, 0.1, 0.1), th, Axis::Mirror, 0.3});
+        out.push_back({"diffuse toon", Lobe::toon(false, 0.5, 0.2), th, Axis::Normal, 1.0, 1.5,
+                       1.01, true});
+        out.push_back({"glossy toon", Lobe::toon(true, 0.1, 0.1), th, Axis::Mirror, 0.3, 1.5,
+                       1.01, true});
         out.push_back({"velvet sigma 0.5", Lobe::velvet(0.5), th, Axis::Normal, 1.0, 1.5, 2.0});
         out.push_back({"sheen", Lobe::sheen(), th, Axis::Normal, 1.0});
         for (double r : {0.03, 0.3})
@@ -332,6 +337,7 @@ TEST_P(BsdfChi2, SamplingMatchesPdf) {
     EXPECT_GE(o.chi2.pvalue, per_test_alpha()) << "chi2 " << o.chi2.chi2 << " dof " << o.chi2.dof;
     EXPECT_GT(o.chi2.dof, 5);
     EXPECT_LE(o.mean_weight, c.max_energy);
+    if (c.cycles_weight) return;
     EXPECT_NEAR(o.mean_weight, o.energy, 4 * o.weight_stderr + 1e-3)
         << "mean weight " << o.mean_weight << " +- " << o.weight_stderr << ", integral "
         << o.energy;
@@ -382,6 +388,26 @@ TEST(BsdfChi2Smooth, ReflectRefractChoiceFollowsFresnel) {
         EXPECT_EQ(observed[2], 0.0);
         EXPECT_GE(r.pvalue, per_test_alpha());
         EXPECT_LT(max_weight_err, 1e-12);
+    }
+}
+
+// Toon's sampled weight is Cycles': the intensity at (cone angle) * u1, where the cone is
+// size + smooth (both times 90 degrees) and the fade runs from size to size + smooth.
+TEST(ToonLobe, SampledWeightIsCyclesIntensityAtConeTimesU1) {
+    const Lobe toon = Lobe::toon(false, 0.4, 0.2);  // full to 36 degrees, zero from 54
+    const Vec3 wo = dir_from(20);
+    for (double u1 : {0.1, 0.5, 0.7, 0.8, 0.95}) {
+        BsdfSample bs;
+        ASSERT_TRUE(toon.sample(wo, u1, 0.3, &bs));
+        const double angle = 54.0 * u1;  // degrees
+        const double expect = angle < 36 ? 1.0 : 1 - (angle - 36) / 18;
+        EXPECT_NEAR(bs.weight.g, expect, 1e-9) << u1;
+        // The direction itself is uniform in cos within the cone, u1 = 0 at its rim.
+        const double zmin = std::cos(54 * kPi / 180);
+        EXPECT_NEAR(bs.wi.z, zmin + (1 - zmin) * u1, 1e-9);
+        double pdf;
+        toon.eval(wo, bs.wi, &pdf);
+        EXPECT_NEAR(bs.pdf, pdf, 1e-12);
     }
 }
 

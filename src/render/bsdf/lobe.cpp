@@ -251,7 +251,15 @@ bool Lobe::sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const {
             if (!(cone > 0)) return false;
             const Vec3 axis = kind_ == Kind::DiffuseToon ? Vec3(0, 0, 1) : Vec3(-o.x, -o.y, o.z);
             i = uniform_cone(axis, cone, u1, u2);
-            break;
+            if (i.z <= 0) return false;
+            // Cycles 3.4 weighs a sampled direction by the intensity at cone * u1, not at the
+            // direction's own angle (u1 runs in cos from the cone's rim), so BSDF-sampled light
+            // differs from what eval() says: kept, so that Toon looks as it does in Cycles.
+            out->wi = Vec3(i.x, i.y, i.z * s);
+            out->delta = false;
+            out->pdf = cone_pdf(cone);
+            out->weight = Color(toon_intensity(a_, b_, cone * u1));
+            return true;
         }
         case Kind::Clearcoat:
         case Kind::Reflection: {

@@ -26,7 +26,8 @@ public:
     // Lambertian transmission: light from the far side.
     static Lobe translucent();
     // Toon: full intensity within size * 90 degrees of the normal (diffuse) or of the mirror
-    // direction (glossy), fading to 0 over a further smooth * 90 degrees.
+    // direction (glossy), fading to 0 over a further smooth * 90 degrees. Sampled uniformly in
+    // the cone, with Cycles' weight (sample() does not agree with eval(): see lobe.cpp).
     static Lobe toon(bool glossy, double size, double smooth);
     static Lobe velvet(double sigma);
     // The Principled BSDF's sheen (Schlick's weight of the angle to the half vector).
