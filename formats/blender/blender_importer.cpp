@@ -74,19 +74,55 @@ MeshSource read_mesh(const JsonReader& r, const Buffers& buf, const std::shared_
             m.normals[i] = is_finite(n) && length_squared(n) > 0 ? normalize(n) : Vec3(0, 0, 1);
         }
     }
-    // The active render UV map is the mesh's uv; every other layer an attribute (later).
+    // The active render UV map is the mesh's uv; every layer is also an attribute by name
+    // (the UV Map and Attribute nodes), as is every colour attribute.
     if (r.has("uv_layers")) {
         const JsonReader layers = r.at("uv_layers");
         int chosen = -1;
         for (size_t k = 0; k < layers.size(); ++k)
             if (chosen < 0 || layers.at(k).boolean("active_render", false))
                 chosen = static_cast<int>(k);
-        if (chosen >= 0) {
-            const JsonReader layer = layers.at(static_cast<size_t>(chosen));
+        for (size_t k = 0; k < layers.size(); ++k) {
+            const JsonReader layer = layers.at(k);
             const BufferView uv = read_view(layer.at("data"), buf, 2, {T::F32});
             if (uv.count != loops) layer.at("data").fail("expected one uv per corner");
-            m.uvs.resize(loops);
-            for (size_t i = 0; i < loops; ++i) m.uvs[i] = {uv.get(i, 0), uv.get(i, 1)};
+            if (static_cast<int>(k) == chosen) {
+                m.uvs.resize(loops);
+                for (size_t i = 0; i < loops; ++i) m.uvs[i] = {uv.get(i, 0), uv.get(i, 1)};
+            }
+            scene::MeshAttribute a;
+            a.name = layer.string("name", "");
+            a.kind = scene::MeshAttribute::Kind::UV;
+            a.active_render = static_cast<int>(k) == chosen;
+            a.values.resize(loops);
+            for (size_t i = 0; i < loops; ++i) a.values[i] = {uv.get(i, 0), uv.get(i, 1), 0};
+            m.attributes.push_back(std::move(a));
+        }
+    }
+    if (r.has("colors")) {
+        const JsonReader layers = r.at("colors");
+        for (size_t k = 0; k < layers.size(); ++k) {
+            const JsonReader layer = layers.at(k);
+            const BufferView c = read_view(layer.at("data"), buf, 4, {T::F32});
+            const std::string domain = layer.string("domain", "CORNER");
+            const bool point = domain == "POINT";
+            if (!point && domain != "CORNER")
+                layer.at("domain").fail("expected POINT or CORNER, not " + domain);
+            if (c.count != (point ? pos.count : loops))
+                layer.at("data").fail(point ? "expected one colour per vertex"
+                                            : "expected one colour per corner");
+            scene::MeshAttribute a;
+            a.name = layer.string("name", "");
+            a.kind = scene::MeshAttribute::Kind::Color;
+            a.active_render = layer.boolean("active_render", false);
+            a.values.resize(loops);
+            a.alpha.resize(loops);
+            for (size_t i = 0; i < loops; ++i) {
+                const size_t at = point ? static_cast<size_t>(vertex_of[i]) : i;
+                a.values[i] = {c.get(at, 0), c.get(at, 1), c.get(at, 2)};
+                a.alpha[i] = static_cast<float>(c.get(at, 3));
+            }
+            m.attributes.push_back(std::move(a));
         }
     }
     // Generated coordinates' space: the add-on's, else Blender's automatic one (the bounds;
@@ -122,6 +158,7 @@ MeshSource read_mesh(const JsonReader& r, const Buffers& buf, const std::shared_
         }
     }
     m.faces.resize(tris.count);
+    if (!m.attributes.empty()) m.corners.resize(tris.count);
     for (size_t t = 0; t < tris.count; ++t) {
         scene::MeshFace& f = m.faces[t];
         for (int c = 0; c < 3; ++c) {
@@ -133,6 +170,7 @@ MeshSource read_mesh(const JsonReader& r, const Buffers& buf, const std::shared_
             const bool flat = !smooth.empty() && smooth[t] == 0;
             f.n[c] = has_normals && !flat ? static_cast<int>(l) : -1;
             f.uv[c] = m.uvs.empty() ? -1 : static_cast<int>(l);
+            if (!m.corners.empty()) m.corners[t][static_cast<size_t>(c)] = static_cast<int>(l);
         }
     }
     return src;

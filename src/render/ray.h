@@ -2,10 +2,31 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 
 #include "core/math.h"
 
 namespace glint::render {
+
+// Where a hit's named attributes come from (a mesh's UV maps and colour attributes): looked
+// up by the shading of node graphs at the face and barycentric point the hit recorded.
+class AttributeSource {
+public:
+    enum class Want { Any, UV, Color };
+    virtual ~AttributeSource() = default;
+    // The attribute `name` of kind `want` (an empty name: the active render layer of that
+    // kind) at the face's barycentric point (b1, b2 of its second and third corners); false
+    // when the mesh has none by that name.
+    virtual bool attribute(std::string_view name, Want want, int face, double b1, double b2,
+                           Vec3* value, double* alpha) const = 0;
+};
+
+// A hit's attribute lookup: the source and the point on it.
+struct AttributePoint {
+    const AttributeSource* source = nullptr;
+    int face = -1;
+    float b1 = 0, b2 = 0;
+};
 
 struct Ray {
     Vec3 origin;
@@ -38,6 +59,7 @@ struct Hit {
     Vec3 dpdu, dpdv;
     int material = -1;   // resolved Scene::materials id (CSG inheritance applied)
     uint32_t flags = 0;  // ObjectFlags
+    AttributePoint attributes;  // meshes with named attributes
     int object = -1;     // index of the top-level scene object that was hit
 };
 

@@ -18,6 +18,17 @@ struct MeshFace {
     int material = -1;                  // -1: the mesh object's material
 };
 
+// A named value per face corner beside the mesh's own: Blender's UV maps and colour
+// attributes, which the Attribute, Color Attribute and UV Map nodes read by name.
+struct MeshAttribute {
+    enum class Kind { UV, Color };
+    std::string name;
+    Kind kind = Kind::Color;
+    bool active_render = false;  // the layer a node with no name reads
+    std::vector<Vec3> values;    // per corner (Mesh::corners), uv as (u, v, 0)
+    std::vector<float> alpha;    // colours: per corner; empty means 1
+};
+
 struct Mesh {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;
@@ -31,6 +42,10 @@ struct Mesh {
     bool has_texspace = false;
     Vec3 texspace_location{0, 0, 0};
     Vec3 texspace_size{1, 1, 1};
+    // Per face, the corner of each of its three vertices into the attributes' values; empty
+    // when there are none.
+    std::vector<MeshAttribute> attributes;
+    std::vector<std::array<int, 3>> corners;
     std::string name;  // the OBJ object or group ("" for POV-Ray's meshes): named in warnings
     FileLoc loc;
 };

@@ -4,7 +4,7 @@
         --out BUILD/tests/plugin/scenes [--scenes cornell,...] \
         [--references --spp 256 --seeds 16 --ref tests/plugin/ref]
 
-For each scene NAME (cornell, principled, textured, lamps, anim, bsdfs) this saves --out/NAME.blend
+For each scene NAME (cornell, principled, textured, lamps, anim, bsdfs, attributes) this saves --out/NAME.blend
 (plus the generated assets it uses: texture.png, sky.exr, referenced relatively). Everything is
 built from code, so the files are the same from run to run; the CTests build them at test time
 into the build tree (the plugin.scenes fixture), and only the references are committed.
@@ -349,9 +349,90 @@ def build_bsdfs(out_dir):
     sky_world(out_dir)
 
 
+def emission_of(name, build):
+    """A material whose Emission (strength 1) colour is what build(nodes, links) returns."""
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    nt = mat.node_tree
+    for n in list(nt.nodes):
+        if n.type != "OUTPUT_MATERIAL":
+            nt.nodes.remove(n)
+    em = nt.nodes.new("ShaderNodeEmission")
+    nt.links.new(build(nt.nodes, nt.links), em.inputs["Color"])
+    nt.links.new(em.outputs[0], nt.nodes["Material Output"].inputs["Surface"])
+    return mat
+
+
+def build_attributes(out_dir):
+    """(issue 30) Named mesh layers through the Attribute, Color Attribute and UV Map nodes,
+    shown by Emission (no lights, black world): five 6 x 6 grids, each with a byte colour
+    attribute per corner (the active render one), a float colour per vertex ("Paint") and a
+    second UV map ("Second", turned and scaled)."""
+    import random
+    rnd = random.Random(7)
+
+    def grid(name, x, mat):
+        bpy.ops.mesh.primitive_grid_add(x_subdivisions=6, y_subdivisions=6, size=1.0,
+                                        location=(x, 0, 0))
+        ob = bpy.context.active_object
+        ob.name = name
+        me = ob.data
+        corner = me.color_attributes.new("Col", "BYTE_COLOR", "CORNER")
+        for d in corner.data:
+            d.color = (rnd.random(), rnd.random(), rnd.random(), 1.0)
+        point = me.color_attributes.new("Paint", "FLOAT_COLOR", "POINT")
+        for v, d in zip(me.vertices, point.data):
+            d.color = (0.5 + 0.5 * v.co.x, 0.5 + 0.5 * v.co.y, 0.3, 0.25 + 0.5 * (v.co.x + 0.5))
+        me.color_attributes.active_color = corner
+        me.color_attributes.render_color_index = [c.name for c in me.color_attributes].index("Col")
+        second = me.uv_layers.new(name="Second")
+        for loop, d in zip(me.loops, second.data):
+            co = me.vertices[loop.vertex_index].co
+            d.uv = (0.5 + 0.9 * co.y, 0.5 - 0.9 * co.x)
+        me.uv_layers["UVMap"].active_render = True
+        me.materials.append(mat)
+
+    def color_attr(nodes, links):
+        return nodes.new("ShaderNodeVertexColor").outputs["Color"]
+
+    def paint(nodes, links):
+        a = nodes.new("ShaderNodeAttribute")
+        a.attribute_name = "Paint"
+        return a.outputs["Color"]
+
+    def paint_alpha(nodes, links):
+        a = nodes.new("ShaderNodeAttribute")
+        a.attribute_name = "Paint"
+        c = nodes.new("ShaderNodeCombineXYZ")
+        links.new(a.outputs["Alpha"], c.inputs["X"])
+        links.new(a.outputs["Fac"], c.inputs["Y"])
+        return c.outputs["Vector"]
+
+    def second_uv(nodes, links):
+        uv = nodes.new("ShaderNodeUVMap")
+        uv.uv_map = "Second"
+        ch = nodes.new("ShaderNodeTexChecker")
+        ch.inputs["Scale"].default_value = 4.0
+        links.new(uv.outputs["UV"], ch.inputs["Vector"])
+        return ch.outputs["Color"]
+
+    def second_attr(nodes, links):
+        a = nodes.new("ShaderNodeAttribute")
+        a.attribute_name = "Second"
+        return a.outputs["Vector"]
+
+    builders = [color_attr, paint, paint_alpha, second_uv, second_attr]
+    for k, b in enumerate(builders):
+        grid("grid_" + b.__name__, (k - 2) * 1.1, emission_of(b.__name__, b))
+    cam = cy.add_camera((0, 0, 4.0), (0, 0, 0), lens_mm=35.0)
+    cam.data.type = "ORTHO"
+    cam.data.ortho_scale = 5.6
+    cy.set_world_color((0, 0, 0))
+
+
 BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "textured": build_textured, "lamps": build_lamps, "anim": build_anim,
-            "bsdfs": build_bsdfs}
+            "bsdfs": build_bsdfs, "attributes": build_attributes}
 
 
 def build(name, out_dir):

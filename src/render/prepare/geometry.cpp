@@ -150,6 +150,7 @@ private:
         hit->dpdv = h.dpdv;
         hit->material = h.material;
         hit->flags = h.flags;
+        hit->attributes = h.attributes;
         hit->object = id;
     }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "core/math.h"
+#include "render/ray.h"
 #include "render/shader/float3.h"
 
 namespace glint::render::shader {
@@ -28,6 +29,7 @@ struct ShaderGlobals {
     float3 generated_scale{1, 1, 1};
     float3 tangent;     // Cycles' tangent: around the texture space's Z axis, normal to N
     float3 uv_tangent;  // the normal map's tangent: dPdu where the mesh has uvs
+    AttributePoint attributes;  // the mesh's named layers at P (Attribute nodes)
     bool backfacing = false;
     // Object Info.
     float3 object_location;

@@ -80,7 +80,72 @@ void geometry(Compiler& c, int n) {
     alias(c, n, "Random Per Island", c.constant(0.0f));
 }
 
-void uv_map(Compiler& c, int n) { alias(c, n, "UV", kRegUV); }
+// Attribute lookups (Attribute, Color Attribute, UV Map): the mesh's named layer at the hit,
+// interpolated over the face; zero (alpha 0) where the mesh has none, as in Cycles.
+struct AttributeRequest {
+    std::string name;
+    AttributeSource::Want want;
+};
+
+int attribute_op(Compiler& c, const std::string& name, AttributeSource::Want want, int* alpha) {
+    auto req = std::make_shared<AttributeRequest>(AttributeRequest{name, want});
+    const int value = c.fresh();
+    *alpha = c.fresh();
+    Op op = make([](const Op& o, R r, G sg) {
+        const auto* q = static_cast<const AttributeRequest*>(o.data);
+        Vec3 v;
+        double a = 0;
+        const AttributePoint& at = sg.attributes;
+        if (!at.source ||
+            !at.source->attribute(q->name, q->want, at.face, at.b1, at.b2, &v, &a)) {
+            v = Vec3();
+            a = 0;
+        }
+        r[o.out[0]] = float3(v);
+        r[o.out[1]] = float3(static_cast<float>(a), 0, 0);
+    }, {}, {value, *alpha});
+    op.data = req.get();
+    c.program_keep(req);
+    c.emit(op, false);
+    return value;
+}
+
+void uv_map(Compiler& c, int n) {
+    if (c.number_prop(n, "from_instancer", 0) != 0)
+        c.unsupported(n, "UVs from the instancer are not supported: the object's own");
+    const std::string name = c.enum_prop(n, "uv_map", "");
+    if (name.empty()) {
+        alias(c, n, "UV", kRegUV);
+        return;
+    }
+    int alpha;
+    alias(c, n, "UV", attribute_op(c, name, AttributeSource::Want::UV, &alpha));
+}
+
+void color_attribute(Compiler& c, int n) {
+    int alpha;
+    alias(c, n, "Color",
+          attribute_op(c, c.enum_prop(n, "layer_name", ""), AttributeSource::Want::Color, &alpha));
+    alias(c, n, "Alpha", alpha);
+}
+
+void attribute(Compiler& c, int n) {
+    const std::string type = c.enum_prop(n, "attribute_type", "GEOMETRY");
+    if (type != "GEOMETRY")
+        c.unsupported(n, "attributes of type " + type + " are not supported: zero");
+    int alpha;
+    const int value =
+        attribute_op(c, c.enum_prop(n, "attribute_name", ""), AttributeSource::Want::Any, &alpha);
+    const int fac = c.fresh();
+    c.emit(make([](const Op& o, R r, G) {
+        const float3 v = r[o.in[0]];
+        r[o.out[0]] = float3((v.x + v.y + v.z) / 3.0f, 0, 0);
+    }, {value}, {fac}), false);
+    alias(c, n, "Color", value);
+    alias(c, n, "Vector", value);
+    alias(c, n, "Fac", fac);
+    alias(c, n, "Alpha", alpha);
+}
 
 void object_info(Compiler& c, int n) {
     alias(c, n, "Location", kRegObjectLocation);
@@ -616,6 +681,8 @@ void add_basic_nodes(NodeTables& t) {
     v["ShaderNodeTexCoord"] = tex_coord;
     v["ShaderNodeNewGeometry"] = geometry;
     v["ShaderNodeUVMap"] = uv_map;
+    v["ShaderNodeVertexColor"] = color_attribute;
+    v["ShaderNodeAttribute"] = attribute;
     v["ShaderNodeObjectInfo"] = object_info;
     v["ShaderNodeLightPath"] = light_path;
     v["ShaderNodeCameraData"] = camera_data;

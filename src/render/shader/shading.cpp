@@ -135,6 +135,7 @@ ShaderGlobals GraphShading::globals(const Hit& hit, const Vec3& dir,
     sg.uv = hit.has_uv ? float3(static_cast<float>(hit.uv.x), static_cast<float>(hit.uv.y), 0)
                        : float3();
     sg.dPdu = float3(hit.dpdu);
+    sg.attributes = hit.attributes;
     sg.dPdv = float3(hit.dpdv);
     if (hit.object >= 0 && static_cast<size_t>(hit.object) < objects_.size()) {
         const ObjectInfo& o = objects_[hit.object];

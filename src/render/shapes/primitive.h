@@ -32,6 +32,7 @@ struct LocalHit {
     Vec3 dpdu, dpdv;     // uv tangents where known (meshes with uvs), else zero
     int material = -1;   // -1: inherit from the enclosing object
     uint32_t flags = 0;  // ObjectFlags accumulated on the way up
+    AttributePoint attributes;  // meshes with named attributes
 };
 
 // Hits along one ray, kept on the stack for the usual handful (CSG asks for every hit of every

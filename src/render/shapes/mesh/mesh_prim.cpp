@@ -27,7 +27,7 @@ namespace {
 // ray is moved into that frame once, and the watertight test runs in double on the widened
 // floats. Precision follows the mesh's size, not its distance from the scene's origin, so a
 // mesh 1e5 units away keeps the detail of one at the origin.
-class MeshPrim final : public Primitive {
+class MeshPrim final : public Primitive, public AttributeSource {
 public:
     MeshPrim(const scene::Mesh& mesh, const std::vector<int>& faces, const Transform* baked) {
         if (baked) {
@@ -114,6 +114,12 @@ public:
             material_.resize(n);
             for (size_t i = 0; i < n; ++i) material_[i] = mesh.faces[face[i]].material;
         }
+        // Named attributes stay in the scene's mesh (alive while the scene renders); a hit
+        // records its scene face.
+        if (!mesh.attributes.empty() && mesh.corners.size() == mesh.faces.size()) {
+            attr_mesh_ = &mesh;
+            scene_face_ = face;
+        }
         view_.nodes = wide_.nodes().empty() ? nullptr : wide_.nodes().data();
         view_.tris = tris_.data();
         view_.count = static_cast<int>(n);
@@ -196,7 +202,7 @@ private:
     // Each field is written once, with no *h = LocalHit() first (59 of the 225 instructions
     // a hit cost): LocalHit's size is pinned below so that a new field is not left out.
     void fill(const MeshHit& mh, LocalHit* h) const {
-        static_assert(sizeof(void*) != 8 || sizeof(LocalHit) == 216,
+        static_assert(sizeof(void*) != 8 || sizeof(LocalHit) == 240,
                       "a field was added to LocalHit: fill() must set it");
         h->uv = Vec2();
         h->has_uv = false;
@@ -205,6 +211,12 @@ private:
         h->dpdu = Vec3();
         h->dpdv = Vec3();
         h->flags = 0;
+        if (attr_mesh_) {
+            h->attributes = {this, scene_face_[static_cast<size_t>(mh.index)],
+                             static_cast<float>(mh.th.b[1]), static_cast<float>(mh.th.b[2])};
+        } else {
+            h->attributes = AttributePoint();
+        }
         const size_t at = static_cast<size_t>(mh.index);
         const TriangleHit& th = mh.th;
         const Vec3 &p0 = mh.p[0], &p1 = mh.p[1], &p2 = mh.p[2];
@@ -256,6 +268,31 @@ private:
         }
     }
 
+    bool attribute(std::string_view name, Want want, int face, double b1, double b2, Vec3* value,
+                   double* alpha) const override {
+        if (!attr_mesh_ || face < 0 || static_cast<size_t>(face) >= attr_mesh_->corners.size())
+            return false;
+        using Kind = scene::MeshAttribute::Kind;
+        const scene::MeshAttribute* found = nullptr;
+        for (const scene::MeshAttribute& a : attr_mesh_->attributes) {
+            if ((want == Want::UV && a.kind != Kind::UV) ||
+                (want == Want::Color && a.kind != Kind::Color))
+                continue;
+            if (name.empty() ? a.active_render : a.name == name) {
+                found = &a;
+                break;
+            }
+        }
+        if (!found) return false;
+        const auto& c = attr_mesh_->corners[static_cast<size_t>(face)];
+        const double b0 = 1 - b1 - b2;
+        *value = found->values[c[0]] * b0 + found->values[c[1]] * b1 + found->values[c[2]] * b2;
+        *alpha = found->alpha.empty() ? 1.0
+                                      : found->alpha[c[0]] * b0 + found->alpha[c[1]] * b1 +
+                                            found->alpha[c[2]] * b2;
+        return true;
+    }
+
     using Index3 = std::array<int, 3>;
     Vec3 origin_;                // the float vertices are offsets from here
     Bounds3 bounds_;             // of the float vertices, about origin_
@@ -269,6 +306,8 @@ private:
     std::vector<Vec2> uvs_;      // empty: no uvs
     std::vector<Index3> uvidx_;  // uv indices, in leaf order
     std::vector<int> material_;  // empty: every face -1
+    const scene::Mesh* attr_mesh_ = nullptr;  // set when the mesh has named attributes
+    std::vector<int> scene_face_;              // then: the scene face at each leaf position
     std::optional<Vec3> inside_dir_;  // object space
     int dropped_ = 0;                 // faces that became degenerate as floats
     bool baked_ = false;
