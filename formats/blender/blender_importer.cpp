@@ -364,9 +364,9 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
     settings.caustics_refractive = render.boolean("caustics_refractive", true);
     scene.blender_render = settings;
     // Settings the renderer does not have yet: said once each, rendered without.
-    if (settings.film_transparent)
-        diag.warning(loc, "Film > Transparent is not supported yet: the world is rendered "
-                          "behind the objects (alpha 1)");
+    if (settings.film_transparent && render.boolean("film_transparent_glass", false))
+        diag.warning(loc, "Film > Transparent Glass is not supported yet: glass is opaque "
+                          "against the transparent film (alpha 1 behind it)");
     if (render.has("motion_blur") && render.at("motion_blur").boolean("use", false))
         diag.warning(loc, "motion blur is not supported yet: rendered without it");
 
@@ -434,7 +434,6 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
         }
     }
     std::map<std::pair<int, std::vector<int>>, int> mesh_for;  // (source, slot materials) -> IR mesh
-    bool warned_holdout = false;
     if (r.has("objects")) {
         const JsonReader objects = r.at("objects");
         if (static_cast<long long>(objects.size()) > limits.objects)
@@ -499,11 +498,6 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
             o.no_image = !o.visibility.camera;
             o.no_shadow = !o.visibility.shadow;
             o.holdout = oj.boolean("holdout", false);
-            if (o.holdout && !warned_holdout) {
-                warned_holdout = true;
-                diag.warning(loc, "object '" + o.name + "': holdout is not supported yet: "
-                                  "rendered as a normal object");
-            }
             o.info_color = oj.color("color", Color(1, 1, 1));
             o.pass_index = oj.number("pass_index", 0);
             o.random = oj.number("random", 0);
