@@ -176,6 +176,56 @@ MeshSource read_mesh(const JsonReader& r, const Buffers& buf, const std::shared_
     return src;
 }
 
+// A panoramic camera as Cycles 3.4 syncs it (blender/camera.cpp): the settings of
+// camera.cycles, the sensor fitted to the image for the equisolid and polynomial fisheyes, and
+// a frame of unit vectors (Cycles clears the matrix's scale and ignores the shift).
+void read_panorama(const JsonReader& r, double wx, double wy, const Vec3& X, const Vec3& Y,
+                   const Vec3& Z, scene::Camera* c) {
+    using scene::PanoramaType;
+    static const std::pair<const char*, PanoramaType> kTypes[] = {
+        {"EQUIRECTANGULAR", PanoramaType::Equirectangular},
+        {"FISHEYE_EQUIDISTANT", PanoramaType::FisheyeEquidistant},
+        {"FISHEYE_EQUISOLID", PanoramaType::FisheyeEquisolid},
+        {"MIRRORBALL", PanoramaType::MirrorBall},
+        {"FISHEYE_LENS_POLYNOMIAL", PanoramaType::FisheyeLensPolynomial},
+        {"EQUIANGULAR_CUBEMAP_FACE", PanoramaType::EquiangularCubemapFace},
+    };
+    scene::Panorama& p = c->panorama;
+    const std::string name = r.string("panorama_type", "FISHEYE_EQUISOLID");
+    bool known = false;
+    for (const auto& [n, t] : kTypes)
+        if (name == n) p.type = t, known = true;
+    if (!known)
+        r.at("panorama_type").fail("panorama type '" + name + "' (EQUIRECTANGULAR, "
+                                   "FISHEYE_EQUIDISTANT, FISHEYE_EQUISOLID, MIRRORBALL, "
+                                   "FISHEYE_LENS_POLYNOMIAL, EQUIANGULAR_CUBEMAP_FACE)");
+    p.fov = r.number("fisheye_fov", kPi);
+    p.lens = r.number("fisheye_lens", 10.5);
+    p.latitude_min = r.number("latitude_min", -kPi / 2);
+    p.latitude_max = r.number("latitude_max", kPi / 2);
+    p.longitude_min = r.number("longitude_min", -kPi);
+    p.longitude_max = r.number("longitude_max", kPi);
+    static const char* const kCoefficients[] = {"fisheye_polynomial_k0", "fisheye_polynomial_k1",
+                                                "fisheye_polynomial_k2", "fisheye_polynomial_k3",
+                                                "fisheye_polynomial_k4"};
+    static const double kDefaults[] = {-1.1735143743862864e-05, -0.019988736137747765,
+                                       -3.3525323033245513e-06, 3.0992753181635635e-06,
+                                       -2.60646473293491e-08};  // Blender 3.4's
+    for (int i = 0; i < 5; ++i) p.k[i] = r.number(kCoefficients[i], kDefaults[i]);
+    // The sensor: AUTO fits the sensor width to the longer side (Cycles: strictly wider is
+    // horizontal), VERTICAL the sensor height to the image height.
+    const std::string fit = r.string("sensor_fit", "AUTO");
+    const bool horizontal = fit == "AUTO" ? wx > wy : fit == "HORIZONTAL";
+    const double size =
+        fit == "VERTICAL" ? r.number("sensor_height", 24) : r.number("sensor_width", 36);
+    p.sensor_width = horizontal ? size : size * wx / wy;
+    p.sensor_height = horizontal ? size * wy / wx : size;
+    c->kind = scene::CameraKind::BlenderPanorama;
+    c->direction = -Z;
+    c->right = X;
+    c->up = Y;
+}
+
 // Blender's camera (BKE_camera_params_compute_viewplane): the fit dimension spans
 // sensor / lens at unit distance (ortho: ortho_scale), the shift is in units of it.
 scene::Camera read_camera(const JsonReader& r, int width, int height, double aspx, double aspy) {
@@ -209,9 +259,7 @@ scene::Camera read_camera(const JsonReader& r, int width, int height, double asp
     }
     c.right = X * w;
     c.up = Y * h;
-    if (type == "PANO")
-        r.at("type").fail("panoramic cameras are not supported yet (perspective and "
-                          "orthographic only)");
+    if (type == "PANO") read_panorama(r, wx, wy, X, Y, Z, &c);
     if (r.has("dof") && r.at("dof").boolean("use", false)) {
         const JsonReader d = r.at("dof");
         const double fstop = d.number("fstop", 2.8);
@@ -354,9 +402,9 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
     settings.caustics_refractive = render.boolean("caustics_refractive", true);
     scene.blender_render = settings;
     // Settings the renderer does not have yet: said once each, rendered without.
-    if (settings.film_transparent)
-        diag.warning(loc, "Film > Transparent is not supported yet: the world is rendered "
-                          "behind the objects (alpha 1)");
+    if (settings.film_transparent && render.boolean("film_transparent_glass", false))
+        diag.warning(loc, "Film > Transparent Glass is not supported yet: glass is opaque "
+                          "against the transparent film (alpha 1 behind it)");
     if (render.has("motion_blur") && render.at("motion_blur").boolean("use", false))
         diag.warning(loc, "motion blur is not supported yet: rendered without it");
 
@@ -424,7 +472,6 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
         }
     }
     std::map<std::pair<int, std::vector<int>>, int> mesh_for;  // (source, slot materials) -> IR mesh
-    bool warned_holdout = false;
     if (r.has("objects")) {
         const JsonReader objects = r.at("objects");
         if (static_cast<long long>(objects.size()) > limits.objects)
@@ -489,11 +536,6 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
             o.no_image = !o.visibility.camera;
             o.no_shadow = !o.visibility.shadow;
             o.holdout = oj.boolean("holdout", false);
-            if (o.holdout && !warned_holdout) {
-                warned_holdout = true;
-                diag.warning(loc, "object '" + o.name + "': holdout is not supported yet: "
-                                  "rendered as a normal object");
-            }
             o.info_color = oj.color("color", Color(1, 1, 1));
             o.pass_index = oj.number("pass_index", 0);
             o.random = oj.number("random", 0);

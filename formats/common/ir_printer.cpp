@@ -377,6 +377,18 @@ std::string print_ir(const scene::Scene& s) {
     p.line(1, "right " + vec(c.right));
     p.line(1, "up " + vec(c.up));
     p.line(1, "sky " + vec(c.sky) + " angle " + num(c.angle));
+    if (c.kind == CameraKind::BlenderPanorama) {
+        const Panorama& q = c.panorama;
+        static const char* const kTypes[] = {"equirectangular", "fisheye_equidistant",
+                                             "fisheye_equisolid", "mirror_ball",
+                                             "fisheye_lens_polynomial", "equiangular_cubemap_face"};
+        p.line(1, std::string("panorama ") + kTypes[static_cast<int>(q.type)] + " fov " +
+                      num(q.fov) + " lens " + num(q.lens) + " sensor " + num(q.sensor_width) +
+                      " " + num(q.sensor_height) + " latitude " + num(q.latitude_min) + " " +
+                      num(q.latitude_max) + " longitude " + num(q.longitude_min) + " " +
+                      num(q.longitude_max) + " k " + num(q.k[0]) + " " + num(q.k[1]) + " " +
+                      num(q.k[2]) + " " + num(q.k[3]) + " " + num(q.k[4]));
+    }
     p.line(0, "background " + rgbft(s.background));
     if (s.sky_sphere) {
         p.line(0, "sky_sphere emission " + rgb(s.sky_sphere->emission) + " transform " +

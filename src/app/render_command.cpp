@@ -601,6 +601,7 @@ int render_frame(const RenderArgs& args) {
         options.clamp_direct = b.clamp_direct;
         options.clamp_indirect = b.clamp_indirect;
         options.filter_glossy = b.filter_glossy;
+        options.film_transparent = b.film_transparent;
     }
     double parse_seconds = seconds_since(start);
     if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
@@ -615,6 +616,7 @@ int render_frame(const RenderArgs& args) {
     });
     io::OutputEncoding encoding = io::output_encoding_for(scene);
     encoding.view = view;
+    encoding.alpha = options.film_transparent;  // a partial render's film too
     render::RenderResult result;
     try {
         result = render::render(scene, options, diag);
@@ -631,6 +633,8 @@ int render_frame(const RenderArgs& args) {
     const bool interrupted = cancel_flag().load();
     if (interrupted && !args.save_partial) throw Error(ErrorKind::Cancelled, {}, "interrupted");
 
+    // Transparent film or holdouts: RGBA (premultiplied in EXR, as Cycles writes it).
+    encoding.alpha = result.alpha;
     Clock::time_point write_start = Clock::now();
     if (args.variance && result.samples_per_pixel < 2)
         warn("--variance: only " + std::to_string(result.samples_per_pixel) +

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "render/panorama.h"
+
 namespace glint::render {
 
 using scene::CameraKind;
@@ -21,6 +23,7 @@ Camera::Camera(const scene::Camera& camera, int width, int height)
         case CameraKind::UltraWideAngle: aspect_ = lu / lr; break;
         case CameraKind::Omnimax:
         case CameraKind::Fisheye: aspect_ = lr / lu; break;
+        case CameraKind::BlenderPanorama: break;  // a frame of unit vectors
         default:
             aspect_ = lu > 0 ? lr / lu : 1;
             unit = false;
@@ -155,6 +158,14 @@ std::optional<Ray> Camera::generate(double x, double y) const {
             ray.dir = rotate_about(v, c.up, x0);
             break;
         }
+        case CameraKind::BlenderPanorama: {
+            // Cycles' raster-to-camera for panoramas is the whole image onto [0, 1]^2 from
+            // the lower left corner, which is (sx, sy) + 0.5.
+            const Vec3 d = panorama_direction(c.panorama, sx + 0.5, sy + 0.5);
+            if (!(length_squared(d) > 0)) return std::nullopt;
+            ray.dir = panorama_to_world(c.panorama.type, d, c.direction, c.right, c.up);
+            break;
+        }
     }
     if (!(length_squared(ray.dir) > 0) || !std::isfinite(length_squared(ray.dir)))
         return std::nullopt;
@@ -203,8 +214,9 @@ void polygon_sample(int corners, double rotation, double u, double v, double* x,
 }  // namespace
 
 std::optional<Ray> Camera::generate(double x, double y, double lens_u, double lens_v) const {
-    std::optional<Ray> ray = generate(x, y);
     const scene::Camera& c = camera_;
+    if (c.kind == CameraKind::BlenderPanorama) return generate_panorama(x, y, lens_u, lens_v);
+    std::optional<Ray> ray = generate(x, y);
     const bool linear = c.kind == CameraKind::Perspective || c.kind == CameraKind::Orthographic;
     if (!ray || !linear || !(c.lens.radius > 0)) return ray;
     const Vec3 r = normalize(c.right), u = normalize(c.up);
@@ -225,6 +237,32 @@ std::optional<Ray> Camera::generate(double x, double y, double lens_u, double le
     const Vec3 d = focus - ray->origin;
     if (!(length_squared(d) > 0)) return ray;
     ray->dir = normalize(d);
+    return ray;
+}
+
+// Cycles samples the aperture as for the other cameras and moves the ray in the panorama's
+// own frame (panorama_lens); the direction without the lens is generate()'s.
+std::optional<Ray> Camera::generate_panorama(double x, double y, double lens_u,
+                                             double lens_v) const {
+    const scene::Camera& c = camera_;
+    double sx, sy;
+    screen(x, y, &sx, &sy);
+    const Vec3 d = panorama_direction(c.panorama, sx + 0.5, sy + 0.5);
+    if (!(length_squared(d) > 0) || !std::isfinite(length_squared(d))) return std::nullopt;
+    Vec3 o(0, 0, 0), dir = d;
+    if (c.lens.radius > 0) {
+        double lx, ly;
+        if (c.lens.blades >= 3)
+            polygon_sample(c.lens.blades, c.lens.rotation, lens_u, lens_v, &lx, &ly);
+        else
+            concentric_disc(lens_u, lens_v, &lx, &ly);
+        panorama_lens(d, c.lens.focal_distance, lx * c.lens.radius / c.lens.ratio,
+                      ly * c.lens.radius, &o, &dir);
+    }
+    const scene::PanoramaType t = c.panorama.type;
+    Ray ray;
+    ray.origin = c.location + panorama_to_world(t, o, c.direction, c.right, c.up);
+    ray.dir = normalize(panorama_to_world(t, dir, c.direction, c.right, c.up));
     return ray;
 }
 

@@ -21,8 +21,8 @@ public:
     std::optional<Ray> generate(double x, double y) const;
     // The same through a thin lens (scene::Lens): (lens_u, lens_v) in [0, 1)^2 pick the point
     // on the aperture, as Cycles samples it (a concentric disc, or a polygon of `blades`);
-    // the ray passes the point the pinhole ray meets on the focal plane. Perspective and
-    // orthographic cameras; the others ignore the lens.
+    // the ray passes the point the pinhole ray meets on the focal plane. Perspective,
+    // orthographic and Blender panoramic cameras; the others ignore the lens.
     std::optional<Ray> generate(double x, double y, double lens_u, double lens_v) const;
     bool has_lens() const { return camera_.lens.radius > 0; }
     // Whether every primary ray starts at the camera location (not orthographic, not the
@@ -32,6 +32,8 @@ public:
     void screen(double x, double y, double* sx, double* sy) const;
 
 private:
+    std::optional<Ray> generate_panorama(double x, double y, double lens_u, double lens_v) const;
+
     scene::Camera camera_;
     double width_;
     double height_;

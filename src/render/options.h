@@ -62,6 +62,13 @@ struct RenderOptions {
     double filter_width = 1.5;
     // Path tracer: Cycles' clamping and Filter Glossy (0: off; integrators/path.h).
     double clamp_direct = 0, clamp_indirect = 0, filter_glossy = 0;
+    // Path tracer, Blender's Film > Transparent: a camera ray that reaches the world through
+    // nothing but transparent surfaces adds no world colour, only transparency. With `alpha`
+    // the film's alpha is 1 - the camera's mean transparency (FirstHit::transparent), as
+    // Cycles' combined pass; without it alpha is 1 (render() sets it for transparent film
+    // and for holdouts).
+    bool film_transparent = false;
+    bool alpha = false;
     // Called with the finished fraction in [0, 1], from any thread, at most every tile.
     std::function<void(double)> progress;
     const std::atomic<bool>* cancel = nullptr;  // render throws Error(Cancelled) when set

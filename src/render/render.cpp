@@ -30,6 +30,15 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
         ps.clamp_direct = options.clamp_direct;
         ps.clamp_indirect = options.clamp_indirect;
         ps.filter_glossy = options.filter_glossy;
+        ps.film_transparent = options.film_transparent;
+        // The film carries alpha where something can make the camera's view transparent: a
+        // transparent film, a holdout object or a Holdout closure (as in Cycles, with or
+        // without the transparent film). Otherwise alpha stays 1 and the file has none.
+        RenderOptions film_options = options;
+        film_options.alpha = options.alpha || options.film_transparent ||
+                             prepared->materials.any_holdout();
+        for (const scene::Object& o : scene.objects) film_options.alpha |= o.holdout;
+        result.alpha = film_options.alpha;
         PathIntegrator path(*prepared, ps);
         result.prepare_seconds = seconds_since(t0);
         auto t1 = std::chrono::steady_clock::now();
@@ -39,7 +48,8 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
             return path.li(ray, PixelSampler(id.x, id.y, id.index, seed), first);
         };
         PathFilm film;
-        result.samples_per_pixel = run_path_tiles(prepared->camera, options, radiance, &film);
+        result.samples_per_pixel =
+            run_path_tiles(prepared->camera, film_options, radiance, &film);
         result.image = std::move(film.image);
         result.albedo = std::move(film.albedo);
         result.normal = std::move(film.normal);

@@ -22,6 +22,7 @@ struct RenderResult {
     int samples_per_pixel = 0;      // path tracer: samples each pixel got
     uint64_t nonfinite_paths = 0;   // path tracer: NaN/Inf paths dropped
     uint64_t rays = 0;              // path tracer: rays traced (camera, bounce, shadow)
+    bool alpha = false;             // the image's alpha means something (RenderOptions::alpha)
     // Path tracer with RenderOptions::aovs / variance (otherwise empty): see PathFilm.
     Image albedo, normal, depth, variance;
 };

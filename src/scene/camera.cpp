@@ -15,6 +15,7 @@ const char* camera_kind_name(CameraKind kind) {
         case CameraKind::Cylinder3: return "cylinder 3";
         case CameraKind::Cylinder4: return "cylinder 4";
         case CameraKind::Spherical: return "spherical";
+        case CameraKind::BlenderPanorama: return "blender_panorama";
     }
     return "?";
 }

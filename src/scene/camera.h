@@ -25,6 +25,31 @@ enum class CameraKind {
     Cylinder3,  // vertical cylinder, orthographic vertically
     Cylinder4,  // horizontal cylinder, orthographic horizontally
     Spherical,  // `angle H [, V]`
+    // Blender's panoramic camera as Cycles 3.4 renders it (Camera::panorama).
+    BlenderPanorama,
+};
+
+// Cycles' panorama projections (Blender camera type PANO, camera.cycles.panorama_type).
+enum class PanoramaType {
+    Equirectangular,
+    FisheyeEquidistant,
+    FisheyeEquisolid,
+    MirrorBall,
+    FisheyeLensPolynomial,
+    EquiangularCubemapFace,
+};
+
+// What a Cycles panorama needs (intern/cycles/kernel/camera/projection.h). Angles in radians,
+// lengths in millimetres. The camera's frame is direction (forward), right and up, unit length.
+struct Panorama {
+    PanoramaType type = PanoramaType::FisheyeEquisolid;
+    double fov = kPi;            // fisheye_fov: the image circle's full angle
+    double lens = 10.5;          // fisheye_lens (equisolid)
+    // The sensor as Cycles fits it to the image (sensor fit applied): equisolid, polynomial.
+    double sensor_width = 36, sensor_height = 24;
+    double latitude_min = -kPi / 2, latitude_max = kPi / 2;
+    double longitude_min = -kPi, longitude_max = kPi;
+    double k[5] = {0, 0, 0, 0, 0};  // fisheye_polynomial_k0..k4
 };
 
 // A thin lens in front of the camera (Blender's depth of field): rays start on the aperture
@@ -51,6 +76,7 @@ struct Camera {
     double h_angle = 360;    // spherical camera: horizontal and vertical field of view
     double v_angle = 180;
     Lens lens;
+    Panorama panorama;       // kind BlenderPanorama only
     FileLoc loc;
 };
 

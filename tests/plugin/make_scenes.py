@@ -430,9 +430,115 @@ def build_attributes(out_dir):
     cy.set_world_color((0, 0, 0))
 
 
+def pano_room():
+    """What the panoramic cameras look at (issue 30): a floor, coloured boxes and spheres all
+    around the camera's place (ahead, to each side, behind), a sun and a world colour, so every
+    part of a panorama's image shows something that moves if the projection is wrong."""
+    floor(cy.diffuse_material("floor", (0.55, 0.55, 0.55)))
+    cy.add_box("ahead", (0.0, 3.0, 0.6), (1.2, 1.2, 1.2), 20, cy.diffuse_material(
+        "red", (0.7, 0.12, 0.08)))
+    cy.add_box("left", (-3.0, 0.5, 0.9), (1.0, 1.0, 1.8), 0, cy.diffuse_material(
+        "green", (0.15, 0.55, 0.12)))
+    add_sphere("right", (2.6, 1.2, 0.7), 0.7, cy.principled_material(
+        "blue", base=(0.1, 0.2, 0.7), roughness=0.35))
+    add_sphere("behind", (-0.8, -3.0, 0.5), 0.5, cy.diffuse_material(
+        "yellow", (0.8, 0.7, 0.1)))
+    cy.add_box("pillar", (1.5, -2.0, 1.5), (0.4, 0.4, 3.0), 0, cy.diffuse_material(
+        "white", (0.8, 0.8, 0.8)))
+    sun = add_light("sun", "SUN", (0, 0, 5), energy=3.0, angle=math.radians(3.0))
+    aim(sun, (-0.4, 0.6, 0.0))
+    sun.location = (0, 0, 5)
+    cy.set_world_color((0.3, 0.35, 0.45))
+
+
+def pano_camera(location, look_at, panorama_type, **settings):
+    """The scene camera made a Cycles panorama of `panorama_type` (camera.cycles in 3.4)."""
+    cam = cy.add_camera(location, look_at)
+    cam.data.type = "PANO"
+    cam.data.cycles.panorama_type = panorama_type
+    for k, v in settings.items():
+        setattr(cam.data.cycles, k, v)
+    return cam
+
+
+def build_pano_equirect(out_dir):
+    """An equirectangular panorama over part of the sphere (longitude -150..120 degrees,
+    latitude -50..70), so the range's four settings all matter."""
+    pano_room()
+    pano_camera((0.0, 0.0, 1.2), (0.0, 1.0, 1.2), "EQUIRECTANGULAR",
+                longitude_min=math.radians(-150.0), longitude_max=math.radians(120.0),
+                latitude_min=math.radians(-50.0), latitude_max=math.radians(70.0))
+
+
+def build_pano_fisheye(out_dir):
+    """An equidistant fisheye of 200 degrees, tilted down and turned, over the same room: the
+    black corners outside the image circle, and things behind the camera's plane."""
+    pano_room()
+    pano_camera((0.3, -0.5, 1.6), (0.2, 1.0, 0.9), "FISHEYE_EQUIDISTANT",
+                fisheye_fov=math.radians(200.0))
+
+
+def build_pano_equisolid(out_dir):
+    """An equisolid fisheye (Blender's default 10.5 mm lens, 180 degrees) on a 36 mm sensor
+    fitted to the image: the circle is cut at the top and bottom."""
+    pano_room()
+    cam = pano_camera((0.3, -0.5, 1.6), (0.2, 1.0, 0.9), "FISHEYE_EQUISOLID",
+                      fisheye_lens=10.5, fisheye_fov=math.radians(180.0))
+    cam.data.sensor_width = 36.0
+
+
+def build_film_alpha(out_dir):
+    """Film > Transparent with what changes alpha (issue 30): an opaque sphere, a Principled
+    sphere of Alpha 0.4, a box that is a holdout object (Object > Visibility > Holdout), a
+    sphere whose material mixes a Diffuse BSDF and a Holdout 50/50, and a floor strip that
+    leaves the world visible above and below it. The world lights the scene but is not seen."""
+    cy.add_quad("strip", (0.0, 0.5, 0.0), 6.0, 2.2, cy.diffuse_material(
+        "strip", (0.6, 0.6, 0.6)), z_normal_down=False)
+    add_sphere("opaque", (-1.5, 0.6, 0.5), 0.5, cy.principled_material(
+        "opaque", base=(0.7, 0.25, 0.1), roughness=0.4))
+    see = cy.principled_material("see_through", base=(0.1, 0.5, 0.2), roughness=0.4)
+    see.node_tree.nodes["Principled BSDF"].inputs["Alpha"].default_value = 0.4
+    see.blend_method = "BLEND"
+    add_sphere("see_through", (-0.4, 0.2, 0.55), 0.55, see)
+    held = cy.add_box("held_out", (0.75, 0.8, 0.5), (0.8, 0.8, 1.0), 25, cy.diffuse_material(
+        "held_out", (0.2, 0.3, 0.8)))
+    held.is_holdout = True
+    half = bpy.data.materials.new("half_holdout")
+    half.use_nodes = True
+    nt = half.node_tree
+    nt.nodes.clear()
+    out = nt.nodes.new("ShaderNodeOutputMaterial")
+    diffuse = nt.nodes.new("ShaderNodeBsdfDiffuse")
+    diffuse.inputs["Color"].default_value = (0.8, 0.75, 0.2, 1.0)
+    hold = nt.nodes.new("ShaderNodeHoldout")
+    mix = nt.nodes.new("ShaderNodeMixShader")
+    mix.inputs["Fac"].default_value = 0.5
+    nt.links.new(diffuse.outputs["BSDF"], mix.inputs[1])
+    nt.links.new(hold.outputs["Holdout"], mix.inputs[2])
+    nt.links.new(mix.outputs["Shader"], out.inputs["Surface"])
+    add_sphere("half_holdout", (1.8, 0.1, 0.45), 0.45, half)
+    sun = add_light("sun", "SUN", (0, 0, 5), energy=3.0, angle=math.radians(3.0))
+    aim(sun, (-0.5, 0.8, 0.0))
+    sun.location = (0, 0, 5)
+    cy.add_camera((0.0, -5.0, 1.6), (0.0, 0.4, 0.4), lens_mm=35.0)
+    cy.set_world_color((0.3, 0.35, 0.45))
+
+
 BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "textured": build_textured, "lamps": build_lamps, "anim": build_anim,
-            "bsdfs": build_bsdfs, "attributes": build_attributes}
+            "bsdfs": build_bsdfs, "attributes": build_attributes,
+            "pano_equirect": build_pano_equirect, "pano_fisheye": build_pano_fisheye,
+            "pano_equisolid": build_pano_equisolid, "film_alpha": build_film_alpha}
+# Scenes whose film is transparent: rendered and saved as RGBA, with an alpha reference.
+ALPHA_SCENES = ("film_alpha",)
+
+
+def film_settings(name, scene):
+    """What cy.setup_render resets and a scene needs otherwise: the transparent film, saved
+    with its alpha."""
+    if name in ALPHA_SCENES:
+        scene.render.film_transparent = True
+        scene.render.image_settings.color_mode = "RGBA"
 
 
 def build(name, out_dir):
@@ -440,6 +546,7 @@ def build(name, out_dir):
     BUILDERS[name](out_dir)
     scene = bpy.context.scene
     cy.setup_render(scene, spp=SAMPLES, seed=1)
+    film_settings(name, scene)
     if name != "anim":
         scene.frame_start = scene.frame_end = 1
     scene.frame_set(scene.frame_start)
@@ -457,28 +564,52 @@ def ref_name(name, frame):
     return "%s_f%d" % (name, frame) if name == "anim" else name
 
 
+def load_alpha(path):
+    """The alpha channel of an RGBA EXR, (H, W) in Blender's bottom-up row order."""
+    import numpy as np
+    img = bpy.data.images.load(path, check_existing=False)
+    img.colorspace_settings.name = "Non-Color"
+    a = np.empty(img.size[0] * img.size[1] * img.channels, dtype=np.float32)
+    img.pixels.foreach_get(a)
+    a = a.reshape(img.size[1], img.size[0], img.channels)[:, :, 3].astype(np.float64)
+    bpy.data.images.remove(img)
+    return a
+
+
 def render_references(name, ref_dir, spp, seeds, tmp_dir, threads, time_file):
     import numpy as np
     scene = bpy.context.scene
     for frame in frames(name):
         scene.frame_set(frame)
         rn = ref_name(name, frame)
-        images = []
+        images, alphas = [], []
         for k in range(1, seeds + 1):
             path = os.path.join(tmp_dir, "%s_seed%02d.exr" % (rn, k))
             t0 = time.time()
-            cy.render_to(path, spp, k, threads=threads)
+            cy.setup_render(scene, spp, k, threads=threads)
+            film_settings(name, scene)
+            scene.render.filepath = path
+            bpy.ops.render.render(write_still=True)
             dt = time.time() - t0
             if time_file:
                 with open(time_file, "a") as f:
                     f.write("%s %d %.3f\n" % (rn, k, dt))
             images.append(cy.load_pixels(path))
+            if name in ALPHA_SCENES:
+                alphas.append(load_alpha(path))
         stack = np.stack(images)
         mean = stack.mean(axis=0)
         se = np.sqrt(stack.var(axis=0, ddof=1) / seeds)
         os.makedirs(ref_dir, exist_ok=True)
         cy.save_pixels(os.path.join(ref_dir, rn + "_mean.exr"), mean)
         cy.save_pixels(os.path.join(ref_dir, rn + "_stderr.exr"), se)
+        if alphas:
+            # Alpha's mean and standard error, each in all three channels.
+            a = np.stack(alphas)
+            a_mean = np.repeat(a.mean(axis=0)[:, :, None], 3, axis=2)
+            a_se = np.repeat(np.sqrt(a.var(axis=0, ddof=1) / seeds)[:, :, None], 3, axis=2)
+            cy.save_pixels(os.path.join(ref_dir, rn + "_alpha_mean.exr"), a_mean)
+            cy.save_pixels(os.path.join(ref_dir, rn + "_alpha_stderr.exr"), a_se)
         print("reference %s: %d x %d spp, mean %.4f, median stderr %.5f" %
               (rn, seeds, spp, mean.mean(), float(np.median(se))), flush=True)
 

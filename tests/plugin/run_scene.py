@@ -14,6 +14,8 @@ Steps (each failure is reported and makes the test fail):
     --variance added): Blender's EXR (full float) must equal that image bit for bit.
  3. cycles_ztest compare CLI.exr CLI.variance.exr REF_mean.exr REF_stderr.exr: >= 99.75% of
     the pixels accepted (tests/plugin/README.md).
+ 4. With REF_alpha_mean.exr (transparent film): compare_exr.py alpha, the CLI image's alpha
+    against Cycles' (>= 99.75% of the pixels accepted).
  anim: every frame goes through 2 and 3, and consecutive frames must differ (relMSE >= 0.01).
 Times (Blender + add-on + glint wall seconds; the CLI re-render alone) are printed, and the
 Cycles seconds per seed image of the references from ref/cycles_times.txt if present.
@@ -208,6 +210,13 @@ def main():
         print(tail(out, 50))
         if rc != 0:
             failures.append("%s: Z-test against Cycles failed (exit %d)" % (ref_name, rc))
+        # 4. Transparent film: alpha against Cycles' alpha (16 seed images).
+        alpha_mean = os.path.join(args.ref, ref_name + "_alpha_mean.exr")
+        if os.path.exists(alpha_mean):
+            if blender_compare(args, "alpha", cli_exr, alpha_mean,
+                               os.path.join(args.ref, ref_name + "_alpha_stderr.exr"),
+                               "16", "256") != 0:
+                failures.append("%s: alpha differs from Cycles'" % ref_name)
 
     if anim:
         for a, b in zip(blender_exrs, blender_exrs[1:]):

@@ -6,9 +6,10 @@
 1. A small scene rendered with bpy.ops.render.render through the add-on: the saved image has
    the render size (resolution x percentage), is not empty, and equals bit for bit what glint
    writes when the kept folder's command.txt is run again from the shell.
-2. The native export (scene.json): an orthographic camera is written as one; glint rejects a
-   panoramic camera; depth of field is written and renders; motion blur and transparent film
-   each give one warning from glint; a scene without meshes renders the world alone.
+2. The native export (scene.json): an orthographic camera is written as one; a panoramic
+   camera (equirectangular) renders without a message; depth of field is written and renders;
+   motion blur and Transparent Glass each give one warning from glint, the transparent film
+   none; a scene without meshes renders the world alone.
 3. Animation: `blender -b f.blend -E GLINT -a` over a 3-frame camera move writes three frames
    that differ from each other and each equal the CLI re-render of its own export.
 4. make_zip.sh's zip installs through Blender's add-on installer and renders the default scene;
@@ -158,11 +159,14 @@ def test_export(glint, work):
         fail("glint failed on the orthographic export: %s" % lines)
 
     cam.type = 'PANO'
+    cam.cycles.panorama_type = 'EQUIRECTANGULAR'
     depsgraph.update()
-    rc, lines = glint_messages(glint, export("pano"))
-    if rc == 0 or not any("panoramic" in l for l in lines):
-        fail("a panoramic camera rendered without an error: %d %s" % (rc, lines))
-    print("panoramic camera: %s" % [l for l in lines if "panoramic" in l][0])
+    ex = export("pano")
+    if json.load(open(ex.scene_path))["camera"].get("panorama_type") != "EQUIRECTANGULAR":
+        fail("the panorama type was not written")
+    rc, lines = glint_messages(glint, ex)
+    if rc != 0 or any("panoram" in l for l in lines):
+        fail("a panoramic camera did not render cleanly: %d %s" % (rc, lines))
 
     # Depth of field renders; motion blur and transparent film are said once each.
     cam.type = 'PERSP'
@@ -175,11 +179,17 @@ def test_export(glint, work):
     if not data["camera"].get("dof") or not json.load(open(ex.scene_path))["camera"]["dof"]["use"]:
         fail("depth of field was not written")
     rc, lines = glint_messages(glint, ex)
-    for key, count in (("depth of field", 0), ("motion blur", 1), ("Transparent", 1)):
+    for key, count in (("depth of field", 0), ("motion blur", 1), ("Transparent", 0)):
         n = sum(key in l for l in lines + warnings)
         if rc != 0 or n != count:
             fail("expected %d message(s) about %r, got %d: %s %s" % (count, key, n, lines,
                                                                       warnings))
+    scene.cycles.film_transparent_glass = True
+    depsgraph.update()
+    rc, lines = glint_messages(glint, export("glass"))
+    if rc != 0 or sum("Transparent Glass" in l for l in lines) != 1:
+        fail("expected one warning about Transparent Glass: %d %s" % (rc, lines))
+    scene.cycles.film_transparent_glass = False
     scene.render.use_motion_blur = False
     scene.render.film_transparent = False
     # A light's Camera ray visibility is written (Blender's default: off); Cast Shadow off,
@@ -208,7 +218,7 @@ def test_export(glint, work):
     rc, lines = glint_messages(glint, ex)
     if rc != 0:
         fail("glint failed on a scene without meshes: %s" % lines)
-    print("export: orthographic camera, panoramic error, depth of field, warnings once, "
+    print("export: orthographic and panoramic cameras, depth of field, warnings once, "
           "empty scene")
     del exporter
 

@@ -133,6 +133,36 @@ TEST(BlenderImporter, CameraFollowsBlendersSensorFit) {
     EXPECT_NEAR(s.camera.direction.z, -1, 1e-12);  // looks along its -Z
 }
 
+TEST(BlenderImporter, PanoramicCameraCarriesCyclesSettings) {
+    Exchange ex;
+    std::string json = Exchange::scene(object(0));
+    const std::string persp = R"("type": "PERSP", "matrix")";
+    const size_t at = json.find(persp);
+    ASSERT_NE(at, std::string::npos);
+    json.replace(at, persp.size(),
+                 R"("type": "PANO", "panorama_type": "FISHEYE_EQUISOLID", "fisheye_lens": 8,
+                    "fisheye_fov": 3.0, "sensor_fit": "AUTO", "sensor_height": 24,
+                    "latitude_min": -1, "longitude_max": 2, "matrix")");
+    const scene::Scene s = load(ex.write(json));
+    EXPECT_EQ(s.camera.kind, scene::CameraKind::BlenderPanorama);
+    const scene::Panorama& p = s.camera.panorama;
+    EXPECT_EQ(p.type, scene::PanoramaType::FisheyeEquisolid);
+    EXPECT_DOUBLE_EQ(p.lens, 8);
+    EXPECT_DOUBLE_EQ(p.fov, 3.0);
+    EXPECT_DOUBLE_EQ(p.latitude_min, -1);
+    EXPECT_DOUBLE_EQ(p.longitude_max, 2);
+    // 32 x 24 pixels, AUTO fit: the 36 mm sensor spans the width, the height is fitted to it.
+    EXPECT_DOUBLE_EQ(p.sensor_width, 36);
+    EXPECT_DOUBLE_EQ(p.sensor_height, 27);
+    EXPECT_NEAR(s.camera.direction.z, -1, 1e-12);  // the frame: looks along its -Z
+    EXPECT_NEAR(length(s.camera.right), 1, 1e-12);
+
+    std::string bad = json;
+    bad.replace(bad.find("FISHEYE_EQUISOLID"), 17, "STEREOGRAPHIC");
+    EXPECT_NE(error_of(ex.write(bad)).find("camera.panorama_type"), std::string::npos)
+        << error_of(ex.write(bad));
+}
+
 // `text` with the first `from` replaced by `to`.
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
     const size_t at = text.find(from);

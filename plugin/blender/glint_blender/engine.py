@@ -157,8 +157,9 @@ class GlintRenderEngine(bpy.types.RenderEngine):
         self._load(depsgraph, export)
 
     def _load(self, depsgraph, export):
-        """glint's EXR (RGB, linear; alpha is 1) into the render result. The result must be
-        ended whatever happens, or Blender crashes."""
+        """glint's EXR (linear RGB; RGBA, premultiplied as Cycles' combined pass, with a
+        transparent film or holdouts, else alpha is 1) into the render result, alpha included.
+        The result must be ended whatever happens, or Blender crashes."""
         r = depsgraph.scene_eval.render
         x = y = 0
         if r.use_border:
@@ -169,12 +170,35 @@ class GlintRenderEngine(bpy.types.RenderEngine):
         result = self.begin_result(0, 0, export.width, export.height,
                                    layer=depsgraph.view_layer.name)
         try:
-            result.layers[0].load_from_file(export.output_path, x=x, y=y)
+            if getattr(export, "alpha", False):
+                self._load_premultiplied(result, export.output_path, x, y)
+            else:
+                result.layers[0].load_from_file(export.output_path, x=x, y=y)
         except Exception as e:
             self.end_result(result, cancel=True)
             self._error("cannot load glint's image %s: %s" % (export.output_path, e))
             return
         self.end_result(result)
+
+    @staticmethod
+    def _load_premultiplied(result, path, x, y):
+        """An RGBA EXR into the Combined pass as stored. RenderLayer.load_from_file treats a
+        float image as straight alpha and multiplies it by alpha again (Blender 3.4's
+        imb_handle_alpha without IB_alphamode_detect), which would darken every partly
+        transparent pixel; an Image datablock reads EXR as premultiplied, as Cycles' pass is."""
+        import numpy as np
+        img = bpy.data.images.load(path, check_existing=False)
+        try:
+            img.colorspace_settings.name = "Non-Color"  # the values as stored, no transform
+            w, h = img.size[0], img.size[1]
+            pixels = np.empty(w * h * 4, dtype=np.float32)
+            img.pixels.foreach_get(pixels)
+        finally:
+            bpy.data.images.remove(img)
+        combined = result.layers[0].passes["Combined"]
+        rw, rh = result.resolution_x, result.resolution_y
+        pixels = pixels.reshape(h, w, 4)[y:y + rh, x:x + rw]
+        combined.rect = np.ascontiguousarray(pixels).reshape(-1, 4)  # a row of 4 per pixel
 
     # ------------------------------------------------------------------ export
 

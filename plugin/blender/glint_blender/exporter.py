@@ -28,6 +28,7 @@ class Export:
         self.height = height
         self.argv = argv
         self.names = names or {}
+        self.alpha = False  # the image may have alpha below 1 (transparent film, holdouts)
 
 
 _LOCATED = re.compile(r"^(?P<path>[^:]+?)(?::(?P<line>\d+):(?P<col>\d+))?: (?P<rest>.*)$")

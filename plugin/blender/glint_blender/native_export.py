@@ -689,6 +689,10 @@ class _Exporter:
         text = json.dumps(doc, separators=(",", ":"), allow_nan=False)  # C encoder: json.dump
         with open(json_path, "w", encoding="utf-8") as f:                # is pure Python
             f.write(text)
+        # What makes glint's image RGBA (its render.cpp): a transparent film or a holdout.
+        self.alpha = (doc["render"]["film_transparent"] or
+                      any(o["holdout"] for o in self.objects) or
+                      '"ShaderNodeHoldout"' in text)
         return json_path, width, height
 
 
@@ -705,4 +709,6 @@ def export_frame_native(depsgraph, out_dir, warn, engine=None):
     argv = exporter.glint_argv(settings, json_path, output_path, width, height)
     with open(os.path.join(out_dir, "command.txt"), "w", encoding="utf-8") as f:
         f.write(shlex.join(["glint"] + argv) + "\n")
-    return exporter.Export(out_dir, json_path, output_path, width, height, argv, ex.names)
+    export = exporter.Export(out_dir, json_path, output_path, width, height, argv, ex.names)
+    export.alpha = ex.alpha
+    return export

@@ -13,6 +13,11 @@ struct FirstHit {
     Color albedo;      // base color (diffuse reflectance); an emitter with a black base: emission
     Vec3 normal;       // world-space shading normal, turned toward the camera (as Cycles' pass)
     double depth = 0;  // distance along the camera ray (across alpha pass-throughs)
+    // The share of the camera's view that is background (Blender's transparent film: the
+    // world seen through nothing but transparent surfaces) or holdout: 1 - alpha, as Cycles
+    // accumulates it (the average over RGB of the path's throughput there). Filled whether
+    // or not the hit fields are.
+    double transparent = 0;
 };
 
 }  // namespace glint::render

@@ -290,6 +290,7 @@ struct PixelAccumulators {
     std::vector<double> aov;      // 7 per pixel: albedo rgb, normal xyz, depth
     std::vector<double> mean;     // 3 per pixel: Welford's running mean
     std::vector<double> m2;       // 3 per pixel: Welford's sum of squared deviations
+    std::vector<double> transparent;  // 1 per pixel: FirstHit::transparent (options.alpha)
 };
 
 }  // namespace
@@ -304,6 +305,7 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
     std::vector<double> sum(pixels * 3, 0.0);
     PixelAccumulators extra;
     if (options.aovs) extra.aov.assign(pixels * 7, 0.0);
+    if (options.alpha) extra.transparent.assign(pixels, 0.0);
     if (options.variance) {
         extra.mean.assign(pixels * 3, 0.0);
         extra.m2.assign(pixels * 3, 0.0);
@@ -323,6 +325,11 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
         const double inv = 1.0 / n;
         for (size_t i = 0; i < pixels; ++i)
             for (int c = 0; c < 3; ++c) out->image.rgba[i * 4 + c] = sanitize(sum[i * 3 + c] * inv);
+        // Cycles' film_transparency_to_alpha: clamped, since roulette can push it past 0..1.
+        if (!extra.transparent.empty())
+            for (size_t i = 0; i < pixels; ++i)
+                out->image.rgba[i * 4 + 3] = static_cast<float>(
+                    std::clamp(1.0 - extra.transparent[i] * inv, 0.0, 1.0));
         if (!extra.aov.empty()) {
             out->albedo = blank_image(fw, fh);
             out->normal = blank_image(fw, fh);
@@ -381,8 +388,9 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
                             float value[3] = {0, 0, 0};
                             FirstHit first;
                             if (ray) {
+                                const bool want = options.aovs || options.alpha;
                                 const Color c = radiance(*ray, SampleId{x, y, index},
-                                                         options.aovs ? &first : nullptr);
+                                                         want ? &first : nullptr);
                                 value[0] = sanitize(c.r);
                                 value[1] = sanitize(c.g);
                                 value[2] = sanitize(c.b);
@@ -390,6 +398,8 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
                                 acc[1] += value[1];
                                 acc[2] += value[2];
                             }
+                            if (!extra.transparent.empty() && std::isfinite(first.transparent))
+                                extra.transparent[p] += first.transparent;
                             if (!extra.aov.empty() && first.hit) {
                                 double* a = &extra.aov[p * 7];
                                 a[0] += sanitize(first.albedo.r);
@@ -462,6 +472,7 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options, const Rad
     RenderOptions o = options;
     o.aovs = false;
     o.variance = false;
+    o.alpha = false;  // a plain radiance function says nothing of transparency
     PathFilm film;
     const int done = run_path_tiles(camera, o, plain, &film);
     *image = std::move(film.image);

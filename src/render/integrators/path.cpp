@@ -277,6 +277,13 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
     double travelled = 0;      // path length from the camera to the last scattering vertex
     bool last_diffuse = false, last_reflected = true;  // the last bounce (Light Path node)
     double min_pdf = kInfinity;  // the lowest BSDF pdf on the path so far (Filter Glossy)
+    // Whether the path is still the camera's own view, through nothing but transparent
+    // surfaces (Cycles' PATH_RAY_TRANSPARENT_BACKGROUND): where such a path meets the world
+    // under a transparent film, or a holdout, the pixel becomes transparent by its throughput.
+    bool camera_view = true;
+    auto hold_out = [&](const Color& weight) {
+        if (first) first->transparent += average(beta * weight);
+    };
     // A contribution to the pixel, clamped as Cycles clamps it: direct until the first bounce.
     auto add = [&](const Color& c) {
         const double limit = depth == 0 ? settings_.clamp_direct : settings_.clamp_indirect;
@@ -294,6 +301,10 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                                                found ? seg_dist + hit.t : kInfinity,
                                                specular ? -1.0 : prev_pdf, scatterings == 0));
         if (!found) {
+            if (camera_view && settings_.film_transparent) {
+                hold_out(Color(1, 1, 1));  // the world is not drawn, only its transparency
+                break;
+            }
             if (lights.has_environment()) {
                 const double w =
                     specular ? 1.0 : power_heuristic(prev_pdf, lights.environment_pdf(r.dir));
@@ -343,6 +354,23 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                 shade = 1 / (1 - q);
                 cl.emission = Color();  // counted above
             }
+            // Holdouts seen by the camera (Cycles' integrate_surface_holdout, before any
+            // emission): a holdout object is transparent where it is not see-through and keeps
+            // only its transparency (the pick above); a Holdout closure adds its weight and
+            // ends the path when it is whole. Scaled like the BSDFs here (1 / (1 - q)).
+            if (camera_view) {
+                if (hit.object >= 0 && scene_.objects[static_cast<size_t>(hit.object)].holdout) {
+                    const Color opaque(std::max(0.0, 1 - cl.transparent.r),
+                                       std::max(0.0, 1 - cl.transparent.g),
+                                       std::max(0.0, 1 - cl.transparent.b));
+                    hold_out(opaque * shade);
+                    break;
+                }
+                if (!cl.holdout.is_black()) {
+                    hold_out(cl.holdout * shade);
+                    if (cl.holdout.r >= 1 && cl.holdout.g >= 1 && cl.holdout.b >= 1) break;
+                }
+            }
             emission = cl.emission;
             const bool back = dot(hit.ng, r.dir) > 0;
             // Filter Glossy (Cycles' blur_glossy): after a bounce of low pdf, microfacet
@@ -379,6 +407,11 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                 r.origin = o;
                 r.tmax = kInfinity;
                 continue;
+            }
+            if (camera_view && hit.object >= 0 &&
+                scene_.objects[static_cast<size_t>(hit.object)].holdout) {
+                hold_out(Color(1, 1, 1));  // what the alpha coin left of it
+                break;
             }
             emission = s.emission;
             albedo = s.bsdf.base;
@@ -437,6 +470,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         ClosureSample bs;
         if (!set.sample(ud.u, ud.v, &bs)) break;
         ++scatterings;
+        camera_view = false;  // a bounce, or a refraction even at IOR 1 (Cycles' singular)
         beta *= bs.weight;
         if (bs.straight) {
             // Straight through an index-matched surface: like an alpha hole, not a bounce.

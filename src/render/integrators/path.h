@@ -34,6 +34,8 @@ struct PathSettings {
     double clamp_direct = 0;
     double clamp_indirect = 0;
     double filter_glossy = 0;
+    // Blender's Film > Transparent (RenderOptions::film_transparent).
+    bool film_transparent = false;
 };
 
 class PathIntegrator {
@@ -42,7 +44,8 @@ public:
     PathIntegrator(const PreparedScene& prepared, const PathSettings& settings);
 
     // Radiance along a camera ray. Pair 0 of the sampler is the driver's pixel jitter. With
-    // `first`, also what the ray sees at its first visible hit (the AOVs).
+    // `first`, also what the ray sees at its first visible hit (the AOVs) and how much of its
+    // view is transparent (film_transparent's world, holdouts: FirstHit::transparent).
     Color li(const Ray& ray, const PixelSampler& sampler, FirstHit* first = nullptr) const;
 
     // Paths whose radiance was NaN or infinite (dropped, counted).

@@ -96,6 +96,7 @@ void MaterialTable::prepare_for(const scene::Scene& scene, IntegratorKind integr
             path_.push_back(program ? prepare_graph(*program)
                                     : prepare_path(scene.materials[i], textures, &maps_));
             any_alpha_ = any_alpha_ || path_.back().has_alpha;
+            any_holdout_ = any_holdout_ || (program && program->has_holdout());
         }
         return;
     }

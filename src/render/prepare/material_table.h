@@ -70,6 +70,8 @@ public:
     const PbrMaps& maps(const PathMaterial& m) const { return maps_[m.maps]; }
     // Some material may let shadow rays through.
     bool any_alpha() const { return any_alpha_; }
+    // Some material's node graph has a Holdout closure.
+    bool any_holdout() const { return any_holdout_; }
     // Per material, its constant emission (the light sampler's emitters).
     std::vector<Color> emission() const;
 
@@ -84,6 +86,7 @@ private:
     std::vector<PathMaterial> path_;
     std::vector<PbrMaps> maps_;
     bool any_alpha_ = false;
+    bool any_holdout_ = false;
 };
 
 // Whether a path render of `scene` reads image files for its PBR maps (so needs a texture

@@ -32,6 +32,12 @@ bool is_output(const std::string& type) {
 
 }  // namespace
 
+bool ShaderProgram::has_holdout() const {
+    for (const ClosureNode& n : closures_)
+        if (n.kind == ClosureNode::Kind::Holdout) return true;
+    return false;
+}
+
 void load_globals(const ShaderGlobals& sg, float3* r) {
     r[kRegP] = sg.P;
     r[kRegN] = sg.N;

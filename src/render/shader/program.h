@@ -80,6 +80,8 @@ public:
     bool constant() const { return varying_ops_ == 0 && !closure_varying_; }
     // Whether the graph has a surface at all (an output with a linked Surface).
     bool has_surface() const { return root_ >= 0; }
+    // Whether a Holdout closure is in the graph (the film then carries alpha).
+    bool has_holdout() const;
     const std::string& name() const { return name_; }
     // Re-runs the first `end` operations on `regs` for the shading point `sg` (Bump's height at
     // a shifted point: the ops before a Bump are all that its height can depend on).
