@@ -436,6 +436,12 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
                 scene.shader_graphs.back().loc = loc;
                 mat.graph = static_cast<int>(scene.shader_graphs.size()) - 1;
             }
+            if (mj.has("cycles")) {
+                const std::string method = mj.at("cycles").string("displacement_method", "BUMP");
+                if (method != "BUMP")
+                    diag.warning(loc, "material '" + name + "': displacement method " + method +
+                                          " moves no geometry in glint: rendered as bump only");
+            }
             scene.materials.push_back(std::move(mat));
             material_ids.push_back(static_cast<int>(scene.materials.size()) - 1);
         }

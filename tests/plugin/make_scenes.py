@@ -430,6 +430,51 @@ def build_attributes(out_dir):
     cy.set_world_color((0, 0, 0))
 
 
+def build_displacement(out_dir):
+    """(issue 30) Material displacement as Cycles' default "Bump Only" renders it, seen through
+    Layer Weight's Facing (which reads the bent normal) into Emission, so the image is exact:
+    a Noise height through Displacement in object space on a scaled sphere, the same in world
+    space, and a Vector Displacement in object space; black world, orthographic camera."""
+    def material(name, kind, space, scale):
+        mat = bpy.data.materials.new(name)
+        mat.use_nodes = True
+        nt = mat.node_tree
+        for n in list(nt.nodes):
+            if n.type != "OUTPUT_MATERIAL":
+                nt.nodes.remove(n)
+        out = nt.nodes["Material Output"]
+        noise = nt.nodes.new("ShaderNodeTexNoise")
+        noise.inputs["Scale"].default_value = 3.0
+        disp = nt.nodes.new(kind)
+        disp.space = space
+        disp.inputs["Scale"].default_value = scale
+        if kind == "ShaderNodeDisplacement":
+            nt.links.new(noise.outputs["Fac"], disp.inputs["Height"])
+        else:
+            nt.links.new(noise.outputs["Color"], disp.inputs["Vector"])
+            disp.inputs["Midlevel"].default_value = 0.5
+        nt.links.new(disp.outputs["Displacement"], out.inputs["Displacement"])
+        lw = nt.nodes.new("ShaderNodeLayerWeight")
+        lw.inputs["Blend"].default_value = 0.3
+        em = nt.nodes.new("ShaderNodeEmission")
+        nt.links.new(lw.outputs["Facing"], em.inputs["Color"])
+        nt.links.new(em.outputs[0], out.inputs["Surface"])
+        return mat
+
+    specs = [("disp_object", "ShaderNodeDisplacement", "OBJECT", 0.1),
+             ("disp_world", "ShaderNodeDisplacement", "WORLD", 0.1),
+             ("vector_object", "ShaderNodeVectorDisplacement", "OBJECT", 0.1)]
+    for k, (name, kind, space, scale) in enumerate(specs):
+        ob = add_sphere("sphere_" + name, ((k - 1) * 1.8, 0, 0), 0.8,
+                        material(name, kind, space, scale), segments=64, rings=32)
+        if k == 0:
+            ob.scale = (1.0, 1.0, 1.3)
+    cam = cy.add_camera((0, -6.0, 0), (0, 0, 0), lens_mm=35.0)
+    cam.data.type = "ORTHO"
+    cam.data.ortho_scale = 5.6
+    cy.set_world_color((0, 0, 0))
+
+
 def pano_room():
     """What the panoramic cameras look at (issue 30): a floor, coloured boxes and spheres all
     around the camera's place (ahead, to each side, behind), a sun and a world colour, so every
@@ -527,6 +572,7 @@ def build_film_alpha(out_dir):
 BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "textured": build_textured, "lamps": build_lamps, "anim": build_anim,
             "bsdfs": build_bsdfs, "attributes": build_attributes,
+            "displacement": build_displacement,
             "pano_equirect": build_pano_equirect, "pano_fisheye": build_pano_fisheye,
             "pano_equisolid": build_pano_equisolid, "film_alpha": build_film_alpha}
 # Scenes whose film is transparent: rendered and saved as RGBA, with an alpha reference.

@@ -275,6 +275,21 @@ int Compiler::add_closure(const ClosureNode& n) {
 int Compiler::compile_output() {
     const int out = graph_.output;
     if (out < 0) return -1;
+    if (linked(out, "Displacement")) {
+        // Displacement as bump (Cycles' "Bump Only", its default): the height is the
+        // displacement along N, and the bent normal is what every unlinked Normal reads.
+        const int d = in(out, "Displacement", 'v');
+        const int h = fresh();
+        Op op;
+        op.fn = [](const Op& o, float3* r, const ShaderGlobals&) {
+            r[o.out[0]] = float3(dot(r[o.in[0]], r[o.in[1]]), 0, 0);
+        };
+        op.in[0] = d;
+        op.in[1] = kRegN;
+        op.out[0] = h;
+        emit(op, false);
+        normal_ = bump_normal(*this, h, kRegN, constant(1.0f), constant(1.0f), false);
+    }
     return closure(out, "Surface");
 }
 
@@ -292,10 +307,6 @@ std::unique_ptr<ShaderProgram> ShaderProgram::compile(const scene::ShaderGraph& 
         if (vol && vol->link.linked())
             diag.warning(graph.loc, "'" + graph.name + "': volume shaders are not supported "
                                                        "yet: the volume is left out");
-        const scene::ShaderInput* disp = out.input("Displacement");
-        if (disp && disp->link.linked())
-            diag.warning(graph.loc, "'" + graph.name + "': displacement is not supported yet: "
-                                                       "left out");
     }
     program->main_end_ = program->ops_.size();
     program->varying_ops_ = static_cast<int>(program->ops_.size());

@@ -14,7 +14,7 @@ using R = float3*;
 using G = const ShaderGlobals&;
 
 int normal_in(Compiler& c, int n, const char* id = "Normal") {
-    return c.linked(n, id) ? c.in(n, id, 'v') : static_cast<int>(kRegN);
+    return c.linked(n, id) ? c.in(n, id, 'v') : c.normal();
 }
 
 // Warns when an input that glint ignores is linked or differs from `neutral`.
@@ -193,14 +193,22 @@ int add_shader(Compiler& c, int n) {
 // the surface gives its gradient; the normal leans against it by `distance`.
 void bump(Compiler& c, int n) {
     const int height = c.in(n, "Height", 'f', float3(1));
+    c.set_out(n, "Normal",
+              bump_normal(c, height, normal_in(c, n), c.in(n, "Strength", 'f', float3(1)),
+                          c.in(n, "Distance", 'f', float3(1)), c.number_prop(n, "invert", 0) != 0));
+}
+
+}  // namespace
+
+int bump_normal(Compiler& c, int height, int normal, int strength, int distance, bool invert) {
     const int out = c.fresh();
     Op op;
     op.in[0] = height;
-    op.in[1] = normal_in(c, n);
-    op.in[2] = c.in(n, "Strength", 'f', float3(1));
-    op.in[3] = c.in(n, "Distance", 'f', float3(1));
+    op.in[1] = normal;
+    op.in[2] = strength;
+    op.in[3] = distance;
     op.out[0] = out;
-    op.i[0] = c.number_prop(n, "invert", 0) != 0;
+    op.i[0] = invert;
     op.sub_end = static_cast<int>(c.mark());
     op.data = &c.program();
     op.fn = [](const Op& o, R r, G sg) {
@@ -246,14 +254,13 @@ void bump(Compiler& c, int n) {
         normal_out = safe_normalize(normal_out * strength + normal_in * (1.0f - strength));
         r[o.out[0]] = normal_out;
     };
-    if (!c.varying(height)) {
-        // A constant height bends nothing.
-        c.set_out(n, "Normal", op.in[1]);
-        return;
-    }
+    // A constant height bends nothing.
+    if (!c.varying(height)) return normal;
     c.emit(op, false);
-    c.set_out(n, "Normal", out);
+    return out;
 }
+
+namespace {
 
 // Cycles 3.4's Normal Map (svm_node_normal_map). Tangent space works in object space: the
 // tangent (glint has no MikkTSpace tangents yet: dPdu stands in) and the normal taken back

@@ -226,7 +226,7 @@ float fresnel_dielectric_cos(float cosi, float eta) {
 }
 
 int normal_in(Compiler& c, int n, const char* id) {
-    return c.linked(n, id) ? c.in(n, id, 'v') : static_cast<int>(kRegN);
+    return c.linked(n, id) ? c.in(n, id, 'v') : c.normal();
 }
 
 void fresnel(Compiler& c, int n) {
@@ -613,6 +613,57 @@ void mapping(Compiler& c, int n) {
     alias(c, n, "Vector", out);
 }
 
+// Displacement and Vector Displacement (svm_node_displacement, svm_node_vector_displacement):
+// the offset that the material output turns into a bump. Object space goes through the
+// object's transform as Cycles takes it (the normal back by the transpose, normalized; the
+// offset forwards, so a scaled object's offset scales with it).
+float3 object_dir(const ShaderGlobals& sg, float3 v) {
+    float3 w;
+    for (int i = 0; i < 3; ++i)
+        w[i] = sg.object_to_world[i][0] * v.x + sg.object_to_world[i][1] * v.y +
+               sg.object_to_world[i][2] * v.z;
+    return w;
+}
+
+void displacement(Compiler& c, int n) {
+    const bool object = c.enum_prop(n, "space", "OBJECT") == "OBJECT";
+    const int out = c.fresh();
+    Op op = make([](const Op& o, R r, G sg) {
+        const float h = (r[o.in[0]].x - r[o.in[1]].x) * r[o.in[2]].x;
+        float3 d = r[o.in[3]];
+        if (o.i[0]) {
+            float3 back;
+            for (int i = 0; i < 3; ++i)
+                back[i] = sg.object_to_world[0][i] * d.x + sg.object_to_world[1][i] * d.y +
+                          sg.object_to_world[2][i] * d.z;
+            d = object_dir(sg, safe_normalize(back) * h);
+        } else {
+            d = d * h;
+        }
+        r[o.out[0]] = d;
+    }, {c.in(n, "Height", 'f'), c.in(n, "Midlevel", 'f', float3(0.5f)),
+        c.in(n, "Scale", 'f', float3(1)), normal_in(c, n, "Normal")}, {out});
+    op.i[0] = object;
+    c.emit(op, false);
+    alias(c, n, "Displacement", out);
+}
+
+void vector_displacement(Compiler& c, int n) {
+    const std::string space = c.enum_prop(n, "space", "TANGENT");
+    if (space == "TANGENT")
+        c.unsupported(n, "tangent space is not supported yet: read as object space");
+    const int out = c.fresh();
+    Op op = make([](const Op& o, R r, G sg) {
+        float3 d = (r[o.in[0]] - float3(r[o.in[1]].x)) * r[o.in[2]].x;
+        if (o.i[0]) d = object_dir(sg, d);
+        r[o.out[0]] = d;
+    }, {c.in(n, "Vector", 'c'), c.in(n, "Midlevel", 'f'), c.in(n, "Scale", 'f', float3(1))},
+       {out});
+    op.i[0] = space != "WORLD";
+    c.emit(op, false);
+    alias(c, n, "Displacement", out);
+}
+
 void vector_rotate(Compiler& c, int n) {
     const VectorRotateType t = parse_or(c, n, "rotation_type", parse_vector_rotate_type,
                                         VectorRotateType::AXIS_ANGLE);
@@ -717,6 +768,8 @@ void add_basic_nodes(NodeTables& t) {
     v["ShaderNodeFloatCurve"] = float_curve;
     v["ShaderNodeMapping"] = mapping;
     v["ShaderNodeVectorRotate"] = vector_rotate;
+    v["ShaderNodeDisplacement"] = displacement;
+    v["ShaderNodeVectorDisplacement"] = vector_displacement;
     v["ShaderNodeVectorTransform"] = vector_transform;
 }
 

@@ -25,6 +25,12 @@ void add_basic_nodes(NodeTables& t);     // compile.cpp: inputs, converters, col
 void add_texture_nodes(NodeTables& t);   // compile_textures.cpp
 void add_shader_nodes(NodeTables& t);    // compile_closures.cpp: BSDFs, mixes, bump, normal map
 
+class Compiler;
+
+// Cycles' Bump over the registers given (height, the normal it bends, strength, distance):
+// the new normal's register, or `normal` itself when the height is constant.
+int bump_normal(Compiler& c, int height, int normal, int strength, int distance, bool invert);
+
 class Compiler {
 public:
     Compiler(const scene::ShaderGraph& graph, ShaderProgram& program, TextureCache* textures,
@@ -71,6 +77,10 @@ public:
     void unsupported(int node, const std::string& why = "");
     int compile_output();
 
+    // The normal that unlinked Normal inputs read: N, or N bent by the material's
+    // displacement (Cycles' bump_from_displacement).
+    int normal() const { return normal_; }
+
 private:
     int output_of(int node, const std::string& output);
     void compile_node(int node);
@@ -78,6 +88,7 @@ private:
 
     const scene::ShaderGraph& graph_;
     ShaderProgram& program_;
+    int normal_ = kRegN;
     TextureCache* textures_;
     Diagnostics& diag_;
     const NodeTables& tables_;
