@@ -30,6 +30,10 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
         ps.clamp_direct = options.clamp_direct;
         ps.clamp_indirect = options.clamp_indirect;
         ps.filter_glossy = options.filter_glossy;
+        ps.diffuse_bounces = options.diffuse_bounces;
+        ps.glossy_bounces = options.glossy_bounces;
+        ps.transmission_bounces = options.transmission_bounces;
+        ps.transparent_bounces = options.transparent_bounces;
         ps.film_transparent = options.film_transparent;
         // The film carries alpha where something can make the camera's view transparent: a
         // transparent film, a holdout object or a Holdout closure (as in Cycles, with or

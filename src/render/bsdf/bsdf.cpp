@@ -246,6 +246,7 @@ bool Bsdf::sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const {
         return true;
     };
     Vec3 i;
+    out->diffuse = u < l.d;
     if (u < l.d) {
         i = cosine_hemisphere(rescaled(0, l.d), u2);
     } else if (u < l.d + l.s) {

@@ -72,6 +72,7 @@ struct BsdfSample {
     Color weight;  // f * |cos wi| / pdf
     double pdf = 0;  // for delta lobes: the discrete probability (not usable for MIS)
     bool delta = false;
+    bool diffuse = false;  // drawn from a diffuse lobe
 };
 
 class Bsdf {

@@ -6,8 +6,7 @@
 
 namespace glint::render {
 
-ClosureSet::Item* ClosureSet::push(const Vec3& n, double sample_weight, bool diffuse,
-                                   const Vec3* tangent) {
+ClosureSet::Item* ClosureSet::push(const Vec3& n, double sample_weight, const Vec3* tangent) {
     if (count_ >= kMax || !(sample_weight > 0)) return nullptr;
     Item& it = items_[count_];
     const Vec3 nv = valid_reflection_normal(ng_, wo_, n);
@@ -22,13 +21,12 @@ ClosureSet::Item* ClosureSet::push(const Vec3& n, double sample_weight, bool dif
     }
     it.wo = it.frame.to_local(wo_);
     it.share = sample_weight;
-    it.diffuse = diffuse;
     return &it;
 }
 
 void ClosureSet::add(const Bsdf& bsdf, const Color& weight, const Vec3& n, double sample_weight,
-                     bool diffuse, const Vec3* tangent) {
-    Item* it = push(n, sample_weight, diffuse, tangent);
+                     const Vec3* tangent) {
+    Item* it = push(n, sample_weight, tangent);
     if (!it) return;
     it->is_lobe = false;
     it->bsdf = bsdf;
@@ -38,8 +36,8 @@ void ClosureSet::add(const Bsdf& bsdf, const Color& weight, const Vec3& n, doubl
 }
 
 void ClosureSet::add(const Lobe& lobe, const Color& weight, const Vec3& n, double sample_weight,
-                     bool diffuse, const Vec3* tangent) {
-    Item* it = push(n, sample_weight, diffuse, tangent);
+                     const Vec3* tangent) {
+    Item* it = push(n, sample_weight, tangent);
     if (!it) return;
     it->share *= lobe.sample_scale(it->wo);
     if (!(it->share > 0)) return;
@@ -91,7 +89,7 @@ bool ClosureSet::sample(double u1, double u2, ClosureSample* out) const {
         return false;
     out->wi = normalize(it.frame.to_world(bs.wi));
     out->delta = bs.delta;
-    out->diffuse = it.diffuse;
+    out->diffuse = bs.diffuse;
     out->reflected = bs.wi.z * it.wo.z > 0;
     out->straight = bs.delta && bs.wi.x == -it.wo.x && bs.wi.y == -it.wo.y && bs.wi.z == -it.wo.z;
     const double pick = it.share / total_;

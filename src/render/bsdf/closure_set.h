@@ -17,7 +17,7 @@ struct ClosureSample {
     bool delta = false;
     bool reflected = true;  // wi on wo's side of the chosen closure's normal
     bool straight = false;  // a delta lobe that continued wo unchanged (index-matched)
-    bool diffuse = false;   // the chosen closure was added as diffuse
+    bool diffuse = false;   // the sampled lobe is diffuse (Cycles' LABEL_DIFFUSE)
 };
 
 class ClosureSet {
@@ -32,10 +32,10 @@ public:
     // the samples (Cycles: the average of the weight). Closures past kMax are dropped.
     // `tangent` (optional, world space) orients an anisotropic lobe's x axis.
     void add(const Bsdf& bsdf, const Color& weight, const Vec3& n, double sample_weight,
-             bool diffuse = false, const Vec3* tangent = nullptr);
+             const Vec3* tangent = nullptr);
     // A single lobe; its share is also scaled by the lobe's view-dependent sample_scale().
     void add(const Lobe& lobe, const Color& weight, const Vec3& n, double sample_weight,
-             bool diffuse = false, const Vec3* tangent = nullptr);
+             const Vec3* tangent = nullptr);
     int count() const { return count_; }
     bool all_delta() const;
 
@@ -53,9 +53,8 @@ private:
         Frame frame;
         Vec3 wo;  // local
         double share = 0;
-        bool diffuse = false;
     };
-    Item* push(const Vec3& n, double sample_weight, bool diffuse, const Vec3* tangent);
+    Item* push(const Vec3& n, double sample_weight, const Vec3* tangent);
 
     Vec3 ng_, wo_;
     Item items_[kMax];

@@ -218,6 +218,9 @@ bool Lobe::sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const {
     if (wo.z == 0) return false;
     const double s = wo.z < 0 ? -1.0 : 1.0;
     const Vec3 o(wo.x, wo.y, wo.z * s);
+    // Cycles' LABEL_DIFFUSE lobes.
+    out->diffuse = kind_ == Kind::OrenNayar || kind_ == Kind::Translucent ||
+                   kind_ == Kind::DiffuseToon || kind_ == Kind::Velvet || kind_ == Kind::Sheen;
     auto finish = [&](const Vec3& i, bool is_delta, const Color& delta_weight) {
         out->wi = Vec3(i.x, i.y, i.z * s);
         out->delta = is_delta;

@@ -37,9 +37,10 @@ double average(const Color& c) { return (c.r + c.g + c.b) / 3; }
 // (svm_node_closure_bsdf): the Principled BSDF's diffuse, reflection and glass lobes as one
 // Bsdf, its sheen and clearcoat as lobes of their own; the other BSDFs as single lobes
 // (docs/pbr-mapping.md). `n` is the closure's normal turned to the outside, `outside` the
-// sign that turns the closure's vectors there; `shade` rescales for alpha skipping.
+// sign that turns the closure's vectors there; `shade` rescales for alpha skipping. Whether a
+// sampled bounce was diffuse (Light Path, bounce limits) is the sampled lobe's.
 void add_closure(ClosureSet& set, const shader::Closure& c, const Vec3& n, double outside,
-                 double shade, bool diffuse_like) {
+                 double shade) {
     using shader::ClosureKind;
     using shader::Distribution;
     const Color w = c.weight * shade;
@@ -51,14 +52,14 @@ void add_closure(ClosureSet& set, const shader::Closure& c, const Vec3& n, doubl
     const double alpha = c.roughness * c.roughness;
     switch (c.kind) {
         case ClosureKind::Diffuse:
-            if (c.roughness > 0) set.add(Lobe::oren_nayar(c.roughness), wc, n, share, true);
-            else set.add(Bsdf::lambert(c.color), w, n, share, true);
+            if (c.roughness > 0) set.add(Lobe::oren_nayar(c.roughness), wc, n, share);
+            else set.add(Bsdf::lambert(c.color), w, n, share);
             return;
-        case ClosureKind::Translucent: set.add(Lobe::translucent(), wc, n, share, true); return;
+        case ClosureKind::Translucent: set.add(Lobe::translucent(), wc, n, share); return;
         case ClosureKind::Toon:
-            set.add(Lobe::toon(c.glossy, c.roughness, c.smooth), wc, n, share, !c.glossy);
+            set.add(Lobe::toon(c.glossy, c.roughness, c.smooth), wc, n, share);
             return;
-        case ClosureKind::Velvet: set.add(Lobe::velvet(c.roughness), wc, n, share, true); return;
+        case ClosureKind::Velvet: set.add(Lobe::velvet(c.roughness), wc, n, share); return;
         case ClosureKind::Glossy: {
             // Cycles' Anisotropic BSDF: alpha shrinks along one axis and grows along the other.
             const double an = std::clamp(c.anisotropy, -0.99, 0.99);
@@ -71,9 +72,9 @@ void add_closure(ClosureSet& set, const shader::Closure& c, const Vec3& n, doubl
                 ay = alpha / (1 - an);
             }
             if (c.distribution == Distribution::AshikhminShirley)
-                set.add(Lobe::ashikhmin_shirley(ax, ay), wc, n, share, false, tangent);
+                set.add(Lobe::ashikhmin_shirley(ax, ay), wc, n, share, tangent);
             else
-                set.add(Lobe::reflection(Microfacet{mf, ax, ay}), wc, n, share, false, tangent);
+                set.add(Lobe::reflection(Microfacet{mf, ax, ay}), wc, n, share, tangent);
             return;
         }
         case ClosureKind::Refraction:
@@ -105,7 +106,7 @@ void add_closure(ClosureSet& set, const shader::Closure& c, const Vec3& n, doubl
         c.distribution == Distribution::GGX
             ? 1 - (1 - c.roughness) * (1 - std::clamp(c.transmission_roughness, 0.0, 1.0))
             : c.roughness;
-    set.add(Bsdf::principled(p), w, n, share, diffuse_like, tangent);
+    set.add(Bsdf::principled(p), w, n, share, tangent);
     const double diffuse_weight = (1 - c.metallic) * (1 - c.transmission);
     if (diffuse_weight > 1e-5 && c.sheen > 1e-5) {
         // Sheen tinted towards the base colour's hue (luminance by Rec. 709).
@@ -113,7 +114,7 @@ void add_closure(ClosureSet& set, const shader::Closure& c, const Vec3& n, doubl
         const Color hue = lum > 0 ? c.color * (1 / lum) : Color(1, 1, 1);
         const Color tint = Color(1 - c.sheen_tint) + hue * c.sheen_tint;
         const Color sw = w * tint * (c.sheen * diffuse_weight);
-        set.add(Lobe::sheen(), sw, n, std::fabs(average(sw)), true);
+        set.add(Lobe::sheen(), sw, n, std::fabs(average(sw)));
     }
     if (c.clearcoat > 1e-5) {
         const Vec3 cn = length_squared(c.clearcoat_N) > 0 ? normalize(c.clearcoat_N) * outside : n;
@@ -276,6 +277,14 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
     int skips = 0;             // alpha holes and pass-throughs: they do not count as bounces
     double travelled = 0;      // path length from the camera to the last scattering vertex
     bool last_diffuse = false, last_reflected = true;  // the last bounce (Light Path node)
+    // Bounces by kind (Cycles' counters); `last_hit`: a limit was reached, the next hit only
+    // adds its emission.
+    int diffuse_depth = 0, glossy_depth = 0, transmission_depth = 0;
+    bool last_hit = false;
+    // Cycles lets transparent_bounces + 1 pass-throughs by before it stops at a surface.
+    const int max_skips = settings_.transparent_bounces >= 0
+                              ? std::min(settings_.transparent_bounces + 1, kMaxAlphaSkips)
+                              : kMaxAlphaSkips;
     double min_pdf = kInfinity;  // the lowest BSDF pdf on the path so far (Filter Glossy)
     // Whether the path is still the camera's own view, through nothing but transparent
     // surfaces (Cycles' PATH_RAY_TRANSPARENT_BACKGROUND): where such a path meets the world
@@ -329,6 +338,9 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             state.length = seg_dist;
             state.travelled = travelled + seg_dist;
             state.depth = depth;
+            state.diffuse_depth = diffuse_depth;
+            state.glossy_depth = glossy_depth;
+            state.transmission_depth = transmission_depth;
             state.transparent_depth = skips;
             shader::ClosureList cl;
             graph_closures(*row, hit, r.dir, state, &cl);
@@ -342,7 +354,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                 const double q = sw > 0 ? tw / (tw + sw) : 1.0;
                 if (!cl.emission.is_black()) add(beta * cl.emission);
                 if (sampler.get2(alpha_base + alpha_tests++).u < q) {
-                    if (++skips > kMaxAlphaSkips) break;
+                    if (++skips > max_skips) break;
                     beta *= cl.transparent * (1 / q);
                     if (beta.is_black() || !finite(beta)) break;
                     const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
@@ -391,17 +403,13 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                 }
                 Vec3 n = length_squared(c.N) > 0 ? normalize(c.N) : hit.n;
                 if (back) n = -n;  // the closures' normals face the viewer; the set's the outside
-                // Which rays the Light Path node calls diffuse: those from diffuse closures, and
-                // from a Principled BSDF that is mostly diffuse (glint samples its lobes as one).
-                const bool diffuse_like = c.kind == shader::ClosureKind::Principled &&
-                                          c.metallic < 0.5 && c.transmission < 0.5;
-                add_closure(set, c, n, back ? -1.0 : 1.0, shade, diffuse_like);
+                add_closure(set, c, n, back ? -1.0 : 1.0, shade);
                 albedo += c.weight * c.color;
             }
         } else {
             const SurfacePbr s = surface(hit);
             if (s.alpha < 1 && sampler.get2(alpha_base + alpha_tests++).u >= s.alpha) {
-                if (++skips > kMaxAlphaSkips) break;
+                if (++skips > max_skips) break;
                 const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
                 seg_dist += length(o - r.origin);
                 r.origin = o;
@@ -418,7 +426,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             // Made once per material where the surface is constant (most hits): building one
             // costs Fresnel terms and a square root.
             set.add(row && row->constant_bsdf ? *row->constant_bsdf : Bsdf::principled(s.bsdf),
-                    Color(1, 1, 1), hit.n, 1, true);
+                    Color(1, 1, 1), hit.n, 1);
         }
         if (first && !first->hit) {
             first->hit = true;
@@ -434,7 +442,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             }
             add(beta * emission * w);
         }
-        if (depth >= settings_.max_depth) break;
+        if (depth >= settings_.max_depth || last_hit) break;
         if (set.count() == 0) break;
 
         // Next-event estimation.
@@ -476,7 +484,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             // Straight through an index-matched surface: like an alpha hole, not a bounce.
             // Shadow rays pass it too (transmittance), so what lies beyond keeps the MIS
             // weights of the last real bounce instead of being counted twice.
-            if (++skips > kMaxAlphaSkips || beta.is_black() || !finite(beta)) break;
+            if (++skips > max_skips || beta.is_black() || !finite(beta)) break;
             const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
             seg_dist += length(o - r.origin);
             r.origin = o;
@@ -489,6 +497,14 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         prev_pdf = bs.pdf;
         if (!bs.delta) min_pdf = std::min(min_pdf, bs.pdf);
         ++depth;
+        // Cycles' kinds: a transmission whatever its lobe, else diffuse or glossy reflection.
+        auto reached = [](int count, int limit) { return limit >= 0 && count > limit; };
+        if (!bs.reflected)
+            last_hit |= reached(++transmission_depth, settings_.transmission_bounces);
+        else if (bs.diffuse)
+            last_hit |= reached(++diffuse_depth, settings_.diffuse_bounces);
+        else
+            last_hit |= reached(++glossy_depth, settings_.glossy_bounces);
         if (depth >= settings_.rr_start) {
             const double p = std::min(1.0, std::sqrt(beta.max()));
             if (!(ul.v < p)) break;

@@ -34,6 +34,11 @@ struct PathSettings {
     double clamp_direct = 0;
     double clamp_indirect = 0;
     double filter_glossy = 0;
+    // Cycles' bounce limits by kind (-1: none): after a bounce that reaches its kind's limit,
+    // the next hit adds its emission and the path ends there. A Blender scene's transparent
+    // limit caps the pass-throughs (alpha, transparent closures) instead of kMaxAlphaSkips.
+    int diffuse_bounces = -1, glossy_bounces = -1, transmission_bounces = -1,
+        transparent_bounces = -1;
     // Blender's Film > Transparent (RenderOptions::film_transparent).
     bool film_transparent = false;
 };
