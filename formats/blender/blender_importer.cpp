@@ -228,9 +228,34 @@ void read_panorama(const JsonReader& r, double wx, double wy, const Vec3& X, con
 
 // Blender's camera (BKE_camera_params_compute_viewplane): the fit dimension spans
 // sensor / lens at unit distance (ortho: ortho_scale), the shift is in units of it.
-scene::Camera read_camera(const JsonReader& r, int width, int height, double aspx, double aspy) {
+// Motion blur's matrices (`motion`: two or more, in shutter order).
+std::vector<Matrix4> read_motion(const JsonReader& r) {
+    const JsonReader list = r.at("motion");
+    if (list.size() < 2) list.fail("expected two or more matrices");
+    std::vector<Matrix4> out;
+    for (size_t i = 0; i < list.size(); ++i) out.push_back(list.at(i).matrix());
+    return out;
+}
+
+// Cycles' camera ignores the matrix's scale (transform_clear_scale): its axes normalized.
+Matrix4 clear_scale(Matrix4 m) {
+    for (int k = 0; k < 3; ++k) {
+        const double len = std::sqrt(m.m[0][k] * m.m[0][k] + m.m[1][k] * m.m[1][k] +
+                                     m.m[2][k] * m.m[2][k]);
+        if (len > 0)
+            for (int i = 0; i < 3; ++i) m.m[i][k] /= len;
+    }
+    return m;
+}
+
+scene::Camera read_camera(const JsonReader& r, int width, int height, double aspx, double aspy,
+                          bool motion_blur) {
     scene::Camera c;
     const Matrix4 m = r.matrix("matrix");
+    if (motion_blur && r.has("motion")) {
+        c.centre = clear_scale(m);
+        for (const Matrix4& step : read_motion(r)) c.motion.push_back(clear_scale(step));
+    }
     const Vec3 X = normalize(column(m, 0)), Y = normalize(column(m, 1)),
                Z = normalize(column(m, 2));
     const Vec3 loc = column(m, 3);
@@ -405,8 +430,9 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
     if (settings.film_transparent && render.boolean("film_transparent_glass", false))
         diag.warning(loc, "Film > Transparent Glass is not supported yet: glass is opaque "
                           "against the transparent film (alpha 1 behind it)");
-    if (render.has("motion_blur") && render.at("motion_blur").boolean("use", false))
-        diag.warning(loc, "motion blur is not supported yet: rendered without it");
+    // Motion blur: the camera's and objects' `motion` matrices are read only with it on.
+    const bool motion_blur =
+        render.has("motion_blur") && render.at("motion_blur").boolean("use", false);
 
     double aspx = 1, aspy = 1;
     if (r.has("camera")) {
@@ -415,7 +441,7 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
             const std::vector<double> a = cam.at("pixel_aspect").numbers();
             if (a.size() >= 2 && a[0] > 0 && a[1] > 0) aspx = a[0], aspy = a[1];
         }
-        scene.camera = read_camera(cam, settings.width, settings.height, aspx, aspy);
+        scene.camera = read_camera(cam, settings.width, settings.height, aspx, aspy, motion_blur);
         scene.camera.loc = loc;
     } else {
         r.fail("the scene has no camera");
@@ -529,6 +555,7 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
             Matrix4 inverse;
             if (!matrix.inverse(&inverse)) continue;  // scaled to nothing: Blender shows nothing
             o.transform = Transform(matrix, inverse);
+            if (motion_blur && oj.has("motion")) o.motion = read_motion(oj);
             o.name = oj.string("name", "");
             o.loc = loc;
             if (oj.has("visibility")) {

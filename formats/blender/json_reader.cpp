@@ -104,8 +104,10 @@ Color JsonReader::color(const char* key, const Color& fallback) const {
     return {v[0], v[1], v[2]};
 }
 
-Matrix4 JsonReader::matrix(const char* key) const {
-    const JsonReader m = at(key);
+Matrix4 JsonReader::matrix(const char* key) const { return at(key).matrix(); }
+
+Matrix4 JsonReader::matrix() const {
+    const JsonReader& m = *this;
     const std::vector<double> v = m.numbers();
     if (v.size() != 16) m.fail("expected 16 numbers (a row-major 4x4 matrix)");
     Matrix4 out;

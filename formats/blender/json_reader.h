@@ -50,6 +50,7 @@ public:
     Vec3 vec3(const char* key, const Vec3& fallback) const;
     Color color(const char* key, const Color& fallback) const;
     Matrix4 matrix(const char* key) const;  // 16 numbers, row-major
+    Matrix4 matrix() const;                 // this value as one
 
     [[noreturn]] void fail(const std::string& message) const;
 

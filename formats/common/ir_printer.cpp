@@ -309,6 +309,7 @@ public:
         if (!o.name.empty()) s += " name " + o.name;
         line(d, s + where(o.loc));
         if (!o.transform.is_identity()) line(d + 1, "transform " + matrix(o.transform));
+        for (const Matrix4& m : o.motion) line(d + 1, "motion " + matrix(Transform(m, m)));
         for (const auto& b : o.bounded_by) object(d + 1, b, "bounded_by ");
         for (const auto& c : o.clipped_by) object(d + 1, c, "clipped_by ");
         if (auto csg = std::get_if<Csg>(&o.shape))
@@ -389,6 +390,7 @@ std::string print_ir(const scene::Scene& s) {
                       num(q.longitude_max) + " k " + num(q.k[0]) + " " + num(q.k[1]) + " " +
                       num(q.k[2]) + " " + num(q.k[3]) + " " + num(q.k[4]));
     }
+    for (const Matrix4& m : c.motion) p.line(1, "motion " + matrix(Transform(m, m)));
     p.line(0, "background " + rgbft(s.background));
     if (s.sky_sphere) {
         p.line(0, "sky_sphere emission " + rgb(s.sky_sphere->emission) + " transform " +

@@ -32,6 +32,9 @@ struct Ray {
     Vec3 origin;
     Vec3 dir;  // not necessarily normalized; t is in units of dir
     double tmax = kInfinity;
+    // Motion blur: the shutter time in [0, 1] the ray travels at (the camera ray's, kept by
+    // every ray of its path); 0.5 is the frame itself, what scenes without motion see.
+    double time = 0.5;
 };
 
 // Object flags that integrators consult (POV-Ray object modifiers).

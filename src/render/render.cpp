@@ -52,8 +52,8 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
             return path.li(ray, PixelSampler(id.x, id.y, id.index, seed), first);
         };
         PathFilm film;
-        result.samples_per_pixel =
-            run_path_tiles(prepared->camera, film_options, radiance, &film);
+        result.samples_per_pixel = run_path_tiles(prepared->camera, film_options, radiance,
+                                                   &film, &prepared->shutter);
         result.image = std::move(film.image);
         result.albedo = std::move(film.albedo);
         result.normal = std::move(film.normal);

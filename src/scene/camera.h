@@ -8,8 +8,11 @@
 // default 90) and right/up/direction keep their lengths (the renderer normalizes them).
 #pragma once
 
+#include <vector>
+
 #include "core/error.h"
 #include "core/math.h"
+#include "core/transform.h"
 
 namespace glint::scene {
 
@@ -77,6 +80,11 @@ struct Camera {
     double v_angle = 180;
     Lens lens;
     Panorama panorama;       // kind BlenderPanorama only
+    // Motion blur (Blender): the camera's matrix (scale cleared) at evenly spaced shutter
+    // times 0 ... 1, beside `centre`, the one the fields above were resolved from. Empty: the
+    // camera stays put.
+    std::vector<Matrix4> motion;
+    Matrix4 centre;
     FileLoc loc;
 };
 

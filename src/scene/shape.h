@@ -165,6 +165,10 @@ const char* shape_name(const Shape& shape);
 struct Object {
     Shape shape;
     Transform transform;  // object space -> world (for CSG children: -> parent space)
+    // Motion blur (Blender): object space -> world at evenly spaced shutter times 0 ... 1
+    // (at least two), `transform` being the one at the frame. Empty: the object stays put.
+    // Top-level mesh objects only.
+    std::vector<Matrix4> motion;
     // Index into Scene::materials. -1: inherit from the enclosing CSG object; top-level
     // objects always have one (the importer applies POV-Ray's #default texture).
     int material = -1;

@@ -4,7 +4,8 @@
         --out BUILD/tests/plugin/scenes [--scenes cornell,...] \
         [--references --spp 256 --seeds 16 --ref tests/plugin/ref]
 
-For each scene NAME (cornell, principled, textured, lamps, anim, bsdfs, attributes) this saves --out/NAME.blend
+For each scene NAME (the keys of BUILDERS: cornell, principled, textured, lamps, anim, bsdfs,
+attributes, displacement, the panoramas, film_alpha, motion, motion_camera) this saves --out/NAME.blend
 (plus the generated assets it uses: texture.png, sky.exr, referenced relatively). Everything is
 built from code, so the files are the same from run to run; the CTests build them at test time
 into the build tree (the plugin.scenes fixture), and only the references are committed.
@@ -569,12 +570,6 @@ def build_film_alpha(out_dir):
     cy.set_world_color((0.3, 0.35, 0.45))
 
 
-BUILDERS = {"cornell": build_cornell, "principled": build_principled,
-            "textured": build_textured, "lamps": build_lamps, "anim": build_anim,
-            "bsdfs": build_bsdfs, "attributes": build_attributes,
-            "displacement": build_displacement,
-            "pano_equirect": build_pano_equirect, "pano_fisheye": build_pano_fisheye,
-            "pano_equisolid": build_pano_equisolid, "film_alpha": build_film_alpha}
 # Scenes whose film is transparent: rendered and saved as RGBA, with an alpha reference.
 ALPHA_SCENES = ("film_alpha",)
 
@@ -585,6 +580,77 @@ def film_settings(name, scene):
     if name in ALPHA_SCENES:
         scene.render.film_transparent = True
         scene.render.image_settings.color_mode = "RGBA"
+
+
+def keyframe_linear(ob, path, values):
+    """Keys ob.<path> at each (frame, value), linear: motion at a constant rate."""
+    for frame, value in values:
+        setattr(ob, path, value)
+        ob.keyframe_insert(path, frame=frame)
+    for fc in ob.animation_data.action.fcurves:
+        for kp in fc.keyframe_points:
+            kp.interpolation = "LINEAR"
+
+
+def motion_stage():
+    """The still part of the motion scenes: a floor and a sphere under a sun, world color."""
+    floor(cy.diffuse_material("floor", (0.6, 0.6, 0.6)))
+    add_sphere("ball", (1.4, 0.8, 0.5), 0.5, cy.diffuse_material("ball", (0.3, 0.5, 0.7)))
+    sun = add_light("sun", "SUN", (0, 0, 5), energy=3.0, angle=math.radians(3.0))
+    aim(sun, (-0.5, 0.8, 0.0))
+    sun.location = (0, 0, 5)
+    cy.set_world_color((0.3, 0.35, 0.45))
+
+
+def build_motion(out_dir):
+    """Object motion blur (Cycles' defaults: shutter 0.5 frames centred on the frame, 3
+    steps): a cube sliding along X at 2 m per frame and a bar turning about Z at 90 degrees
+    per frame, both keyed linearly over frames 0-2 (frame 1 rendered); the camera stays."""
+    motion_stage()
+    cube = cy.add_box("cube", (0, 0, 0), (0.6, 0.6, 0.6), 0, cy.diffuse_material(
+        "cube", (0.8, 0.25, 0.15)))
+    keyframe_linear(cube, "location", ((0, (-2.0, -0.6, 0.3)), (2, (2.0, -0.6, 0.3))))
+    bar = cy.add_box("bar", (0, 0, 0), (1.8, 0.25, 0.25), 0, cy.diffuse_material(
+        "bar", (0.9, 0.8, 0.2)))
+    bar.location = (-0.8, 1.0, 0.6)
+    keyframe_linear(bar, "rotation_euler", ((0, (0, 0, 0)), (2, (0, 0, math.radians(180)))))
+    cy.add_camera((0.0, -5.5, 3.0), (0, 0.2, 0.3), lens_mm=35.0)
+    bpy.context.scene.render.use_motion_blur = True
+
+
+def build_motion_camera(out_dir):
+    """Camera motion blur with the shutter opening at the frame (position START, 1 frame):
+    the camera pans and rises over frames 1-2; a box turns about a tilted axis with 2 motion
+    steps (5 matrices) and one object has Cycles' motion blur off (it moves, but sharp)."""
+    motion_stage()
+    box = cy.add_box("box", (0, 0, 0), (0.8, 0.5, 0.5), 0, cy.diffuse_material(
+        "box", (0.8, 0.25, 0.15)))
+    box.location = (-0.7, 0.2, 0.8)
+    box.cycles.motion_steps = 2
+    keyframe_linear(box, "rotation_euler", ((1, (0.3, 0, 0)), (2, (0.3, 0.6, 1.6))))
+    sharp = cy.add_box("sharp", (0, 0, 0), (0.4, 0.4, 0.4), 0, cy.diffuse_material(
+        "sharp", (0.2, 0.7, 0.3)))
+    keyframe_linear(sharp, "location", ((1, (0.4, -1.0, 0.2)), (2, (1.4, -1.0, 0.2))))
+    sharp.cycles.use_motion_blur = False
+    cam = cy.add_camera((-0.3, -5.5, 2.6), (0, 0.2, 0.3), lens_mm=35.0)
+    keyframe_linear(cam, "location", ((1, (-0.3, -5.5, 2.6)), (2, (0.3, -5.3, 2.9))))
+    keyframe_linear(cam, "rotation_euler", ((1, tuple(cam.rotation_euler)),
+                                            (2, (cam.rotation_euler.x - 0.05,
+                                                 cam.rotation_euler.y,
+                                                 cam.rotation_euler.z + 0.06))))
+    scene = bpy.context.scene
+    scene.render.use_motion_blur = True
+    scene.render.motion_blur_shutter = 1.0
+    scene.cycles.motion_blur_position = "START"
+
+
+BUILDERS = {"cornell": build_cornell, "principled": build_principled,
+            "textured": build_textured, "lamps": build_lamps, "anim": build_anim,
+            "bsdfs": build_bsdfs, "attributes": build_attributes,
+            "displacement": build_displacement,
+            "pano_equirect": build_pano_equirect, "pano_fisheye": build_pano_fisheye,
+            "pano_equisolid": build_pano_equisolid, "film_alpha": build_film_alpha,
+            "motion": build_motion, "motion_camera": build_motion_camera}
 
 
 def build(name, out_dir):

@@ -349,6 +349,13 @@ def test_motion_blur():
     assert abs(o["matrix"][3] - x_mid) < 1e-6 and abs(o["motion"][1][3] - x_mid) < 1e-6, (
         o["matrix"][3], x_mid)
     assert scene.frame_current == 1 and scene.frame_subframe == 0.0
+    assert not any("shutter curve" in w for w in warnings), warnings
+    # A shaped shutter curve is warned about (glint's shutter is Cycles' default box).
+    curve = scene.render.motion_blur_shutter_curve
+    curve.curves[0].points[0].location = (0.0, 0.2)
+    curve.update()
+    _, _, warnings, _, _ = export("motion_curve")
+    assert any("shutter curve" in w for w in warnings), warnings
 
 
 def test_camera_and_lights():

@@ -209,5 +209,42 @@ TEST(BlenderImporter, ObjectsScaledToNothingAreLeftOut) {
     EXPECT_EQ(s.objects.size(), 1u);
 }
 
+TEST(BlenderImporter, MotionIsReadOnlyWithMotionBlurOn) {
+    Exchange ex;
+    const std::string moving = R"({"name": "M", "mesh": 0, "materials": [0],
+        "matrix": [1,0,0,1, 0,1,0,0, 0,0,1,0, 0,0,0,1],
+        "motion": [[1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1], [1,0,0,1, 0,1,0,0, 0,0,1,0, 0,0,0,1],
+                   [1,0,0,2, 0,1,0,0, 0,0,1,0, 0,0,0,1]]})";
+    // The camera's matrices carry a scale of 2, which Cycles clears.
+    const std::string camera_motion =
+        R"("motion": [[2,0,0,0, 0,2,0,0, 0,0,2,5, 0,0,0,1], [2,0,0,3, 0,2,0,0, 0,0,2,5, 0,0,0,1]],
+           "lens": 50)";
+    std::string text = replaced(Exchange::scene(object(0) + "," + moving), "\"lens\": 50",
+                                camera_motion);
+    const std::string on = replaced(text, "\"samples\": 4",
+                                    "\"samples\": 4, \"motion_blur\": {\"use\": true}");
+    const scene::Scene s = load(ex.write(on));
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_TRUE(s.objects[0].motion.empty());
+    ASSERT_EQ(s.objects[1].motion.size(), 3u);
+    EXPECT_EQ(s.objects[1].motion[2].m[0][3], 2);
+    ASSERT_EQ(s.camera.motion.size(), 2u);
+    EXPECT_DOUBLE_EQ(s.camera.motion[1].m[0][0], 1);  // scale cleared
+    EXPECT_DOUBLE_EQ(s.camera.motion[1].m[0][3], 3);
+    EXPECT_DOUBLE_EQ(s.camera.centre.m[2][3], 5);
+    // Off (or absent): the matrices are ignored and the scene renders still.
+    const scene::Scene off = load(ex.write(text));
+    EXPECT_TRUE(off.objects[1].motion.empty());
+    EXPECT_TRUE(off.camera.motion.empty());
+    // One matrix is not a motion.
+    const std::string lone = R"({"name": "L", "mesh": 0, "materials": [0],
+        "matrix": [1,0,0,1, 0,1,0,0, 0,0,1,0, 0,0,0,1],
+        "motion": [[1,0,0,1, 0,1,0,0, 0,0,1,0, 0,0,0,1]]})";
+    const std::string err = error_of(ex.write(replaced(
+        Exchange::scene(object(0) + "," + lone), "\"samples\": 4",
+        "\"samples\": 4, \"motion_blur\": {\"use\": true}")));
+    EXPECT_NE(err.find("objects[1].motion: expected two or more"), std::string::npos) << err;
+}
+
 }  // namespace
 }  // namespace glint::blender

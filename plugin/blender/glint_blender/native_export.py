@@ -266,6 +266,17 @@ def _motion_steps(parent, ob):
     return min((2 << (steps - 1)) + 1, MAX_MOTION_STEPS)
 
 
+def _flat_shutter(curve):
+    """Whether the shutter curve (a CurveMapping) is flat: every point at one height, the box
+    Cycles' default is (any flat height gives the same times)."""
+    try:
+        points = curve.curves[0].points
+    except (AttributeError, IndexError):
+        return True
+    ys = [p.location[1] for p in points]
+    return not ys or max(ys) - min(ys) < 1e-6
+
+
 def _instance_key(inst, ob):
     """Identifies an instance across frame changes (Cycles' ObjectKey)."""
     if inst.is_instance:
@@ -568,6 +579,10 @@ class _Exporter:
         if self.motion and _original(self.scene).cycles.rolling_shutter_type != 'NONE':
             self.warn("rolling shutter is not supported by glint: the whole frame is exposed "
                       "at once")
+        if self.motion and not _flat_shutter(
+                _original(self.scene).render.motion_blur_shutter_curve):
+            self.warn("a shaped shutter curve is not supported by glint: the shutter opens and "
+                      "closes at once (Cycles' default curve)")
         hair, adaptive, deform, seen = [], [], [], set()
         experimental = _original(self.scene).cycles.feature_set == 'EXPERIMENTAL'
         for inst in self.dg.object_instances:

@@ -20,6 +20,8 @@ namespace {
 
 // The sampler pair of the camera's lens (depth of field): far past the pairs paths use.
 constexpr uint32_t kLensPair = 0x40000000;
+// The pair of the shutter time (motion blur): the next one.
+constexpr uint32_t kTimePair = kLensPair + 1;
 
 // The film accepts only finite, non-negative values.
 float sanitize(double v) {
@@ -296,8 +298,9 @@ struct PixelAccumulators {
 }  // namespace
 
 int run_path_tiles(const Camera& camera, const RenderOptions& options,
-                   const PathRadianceFn& radiance, PathFilm* film) {
+                   const PathRadianceFn& radiance, PathFilm* film, const Shutter* shutter) {
     check_region(options);
+    if (shutter && !shutter->active()) shutter = nullptr;
     const Region region = film_region(options);
     const int fw = region.width(), fh = region.height();  // the film: the region
     const auto start = std::chrono::steady_clock::now();
@@ -385,6 +388,8 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
                             } else {
                                 ray = camera.generate(fx, fy);
                             }
+                            if (ray && shutter)
+                                shutter->expose(Shutter::time(ps.get2(kTimePair).u), &*ray);
                             float value[3] = {0, 0, 0};
                             FirstHit first;
                             if (ray) {

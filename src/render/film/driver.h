@@ -16,6 +16,7 @@
 #include "render/camera.h"
 #include "render/film/aov.h"
 #include "render/film/film.h"
+#include "render/film/shutter.h"
 #include "render/options.h"
 
 namespace glint::render {
@@ -53,9 +54,12 @@ using PathRadianceFn =
 // taken in progressive passes (1, 1, 2, 4, ... per pixel); with options.time_limit > 0 the
 // render stops after the pass that crosses the limit. Each pixel sums its samples in sample
 // order (the variance by Welford's update in the same order), so every output is
-// bit-identical whatever the thread count. Returns the samples taken per pixel.
+// bit-identical whatever the thread count. Returns the samples taken per pixel. With an
+// active `shutter` (motion blur) each camera ray also gets a shutter time, from a pair of its
+// own (so the other samples stay as they are).
 int run_path_tiles(const Camera& camera, const RenderOptions& options,
-                   const PathRadianceFn& radiance, PathFilm* film);
+                   const PathRadianceFn& radiance, PathFilm* film,
+                   const Shutter* shutter = nullptr);
 // The same without AOVs or variance, for a plain radiance function.
 // Both check cancellation before every sample and throw Interrupted.
 int run_path_tiles(const Camera& camera, const RenderOptions& options, const RadianceFn& radiance,

@@ -197,13 +197,14 @@ Color PathIntegrator::environment(const Vec3& dir) const {
 }
 
 Color PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dist,
-                                    uint64_t* rays) const {
+                                    double time, uint64_t* rays) const {
     // Stop short of the light sample so an emitter does not shadow itself.
     const double tmax = std::isinf(dist) ? kInfinity : dist * (1 - 1e-5);
     Ray r;
     r.origin = offset_ray_origin(from.p, from.p_error, from.ng, dir);
     r.dir = dir;
     r.tmax = tmax;
+    r.time = time;
     ++*rays;
     if (!materials_.any_alpha()) return geometry_.occluded(r) ? Color() : Color(1, 1, 1);
     Color t(1, 1, 1);
@@ -455,7 +456,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                 double bsdf_pdf = 0;
                 const Color f = set.eval(ls.wi, &bsdf_pdf);
                 if (f.is_black()) return;
-                const Color tr = transmittance(hit, ls.wi, ls.dist, &rays);
+                const Color tr = transmittance(hit, ls.wi, ls.dist, r.time, &rays);
                 if (tr.is_black()) return;
                 Color c = f * ls.value * tr;
                 if (ls.environment) c *= environment(ls.wi);

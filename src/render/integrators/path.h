@@ -71,8 +71,10 @@ private:
     void graph_closures(const PathMaterial& row, const Hit& hit, const Vec3& dir,
                         const shader::RayState& state, shader::ClosureList* out) const;
     // Light passing from `from` along `dir` for `dist`: through alpha holes and index-matched
-    // (IOR 1) transmissive surfaces, tinted; any other surface blocks it.
-    Color transmittance(const Hit& from, const Vec3& dir, double dist, uint64_t* rays) const;
+    // (IOR 1) transmissive surfaces, tinted; any other surface blocks it; at the path's
+    // shutter time.
+    Color transmittance(const Hit& from, const Vec3& dir, double dist, double time,
+                        uint64_t* rays) const;
 
     const scene::Scene& scene_;
     const Geometry& geometry_;

@@ -9,6 +9,7 @@
 
 #include "core/log.h"
 #include "render/camera.h"
+#include "render/film/shutter.h"
 #include "render/options.h"
 #include "render/prepare/geometry.h"
 #include "render/prepare/material_table.h"
@@ -31,6 +32,7 @@ struct PreparedScene {
     MaterialTable materials;
     std::unique_ptr<Geometry> geometry;
     Camera camera;
+    Shutter shutter;  // motion blur; inactive for scenes without motion
 };
 
 // Prepares `scene` for a render with `options` (its integrator and image size). Degenerate

@@ -161,6 +161,24 @@ struct Builder {
 std::unique_ptr<ObjectNode> ObjectNode::build(const scene::Object& obj,
                                               const scene::Scene& scene, Diagnostics& diag,
                                               SharedMeshes* shared) {
+    if (!obj.motion.empty()) {
+        // The object built where it is in its own space (a shared mesh stays shared), moved
+        // per ray.
+        scene::Object still = obj;
+        still.motion.clear();
+        still.transform = Transform();
+        auto inner = build(still, scene, diag, shared);
+        if (!inner) return nullptr;
+        std::unique_ptr<ObjectNode> node(new ObjectNode());
+        node->material_ = inner->material_;
+        node->flags_ = inner->flags_;
+        node->motion_ = std::make_unique<const MotionTransform>(obj.motion);
+        node->bounds_ = node->motion_->bounds(inner->bounds());
+        node->xf_ = obj.transform;
+        node->identity_ = false;
+        node->still_ = std::move(inner);
+        return node;
+    }
     std::unique_ptr<ObjectNode> node(new ObjectNode());
     node->inverse_ = obj.inverse;
     node->material_ = obj.material;
@@ -302,7 +320,8 @@ Ray to_local(const Transform& xf, bool identity, const Ray& ray) {
             {a[0][0] * v.x + a[0][1] * v.y + a[0][2] * v.z,
              a[1][0] * v.x + a[1][1] * v.y + a[1][2] * v.z,
              a[2][0] * v.x + a[2][1] * v.y + a[2][2] * v.z},
-            ray.tmax};
+            ray.tmax,
+            ray.time};
 }
 }  // namespace
 
@@ -320,7 +339,21 @@ bool ObjectNode::passes_clip(const Vec3& p) const {
     return true;
 }
 
+bool ObjectNode::moving_query(const Ray& ray, Transform* at, Ray* local) const {
+    if (!motion_->at(ray.time, at)) return false;  // scaled to nothing at this time
+    *local = to_local(*at, false, ray);
+    return true;
+}
+
 bool ObjectNode::intersect(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const {
+    if (motion_) {
+        Transform at;
+        Ray local;
+        if (!moving_query(ray, &at, &local) || !still_->intersect(local, tmax, shadow, hit))
+            return false;
+        transform_hit(at, hit);
+        return true;
+    }
     if (shadow && (flags_ & kNoShadow)) return false;
     if (!bounded_by_.empty() && !passes_bound(ray)) return false;
     if (clipped_by_.empty()) return intersect_unclipped(ray, tmax, shadow, hit);
@@ -339,13 +372,18 @@ bool ObjectNode::intersect(const Ray& ray, double tmax, bool shadow, LocalHit* h
 
 bool ObjectNode::intersect_deferred(const Ray& ray, double tmax, LocalHit* hit,
                                     bool* deferred) const {
-    *deferred = clipped_by_.empty() && bounded_by_.empty();
+    *deferred = clipped_by_.empty() && bounded_by_.empty() && !motion_;
     if (!*deferred) return intersect(ray, tmax, false, hit);
     return intersect_local(to_local(xf_, identity_, ray), tmax, false, hit);
 }
 
 bool ObjectNode::occludes(const Ray& ray, double tmax) const {
     if (flags_ & kNoShadow) return false;
+    if (motion_) {
+        Transform at;
+        Ray local;
+        return moving_query(ray, &at, &local) && still_->occludes(local, tmax);
+    }
     // A plain primitive (inverse changes only normals): the any-hit query.
     if (prim_ && clipped_by_.empty() && bounded_by_.empty())
         return prim_->occludes(to_local(xf_, identity_, ray), tmax);
@@ -383,6 +421,20 @@ bool ObjectNode::csg_occludes(const Ray& ray, double tmax) const {
 
 void ObjectNode::intersect_all(const Ray& ray, double tmax, HitList* hits,
                                bool points_only) const {
+    if (motion_) {
+        Transform at;
+        Ray local;
+        if (!moving_query(ray, &at, &local)) return;
+        const size_t first = hits->size();
+        still_->intersect_all(local, tmax, hits, points_only);
+        for (size_t i = first; i < hits->size(); ++i) {
+            if (points_only)
+                (*hits)[i].p = at.point((*hits)[i].p);
+            else
+                transform_hit(at, &(*hits)[i]);
+        }
+        return;
+    }
     if (!bounded_by_.empty() && !passes_bound(ray)) return;
     if (clipped_by_.empty()) {
         intersect_all_unclipped(ray, tmax, hits, points_only);
@@ -396,6 +448,7 @@ void ObjectNode::intersect_all(const Ray& ray, double tmax, HitList* hits,
 }
 
 bool ObjectNode::inside(const Vec3& p) const {
+    if (motion_) return still_->inside(xf_.inverse_point(p));
     if (!passes_clip(p)) return false;
     bool in = inside_local(identity_ ? p : xf_.inverse_point(p));
     return inverse_ ? !in : in;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/log.h"
+#include "core/motion.h"
 #include "core/transform.h"
 #include "render/accel/bvh.h"
 #include "render/shapes/primitive.h"
@@ -52,8 +53,11 @@ public:
     // through CSG need: where the surface is, to test it against the other children).
     void intersect_all(const Ray& ray, double tmax, HitList* hits,
                        bool points_only = false) const;
+    // For a moving object: at the frame (shutter time 0.5); CSG and clipping, which ask this,
+    // have no moving parts.
     bool inside(const Vec3& p) const;
-    const Bounds3& bounds() const { return bounds_; }  // parent space; may be infinite
+    // Parent space; may be infinite. A moving object's holds it at every shutter time.
+    const Bounds3& bounds() const { return bounds_; }
     uint32_t flags() const { return flags_; }
 
 private:
@@ -78,6 +82,12 @@ private:
     void compute_bounds();
     void build_child_bvh();
     bool union_intersect(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
+
+    // A moving object (scene::Object::motion): still_ is the object in its own space, and
+    // rays meet it through the transform at their time. Every query checks motion_ first.
+    bool moving_query(const Ray& ray, Transform* at, Ray* local) const;
+    std::unique_ptr<const MotionTransform> motion_;
+    std::unique_ptr<ObjectNode> still_;
 
     Transform xf_;
     bool identity_ = true;
