@@ -476,6 +476,33 @@ def build_displacement(out_dir):
     cy.set_world_color((0, 0, 0))
 
 
+def build_multiscatter(out_dir):
+    """(issue 30) Multiscatter GGX (Cycles' random walk): a rough gold Glossy, an anisotropic
+    Glossy, a rough Principled metal and a rough Principled dielectric with specular tint,
+    under the HDR sky and a sun on a grey floor."""
+    P = "ShaderNodeBsdfPrincipled"
+    mats = [
+        node_material("ms_glossy", "ShaderNodeBsdfGlossy", distribution="MULTI_GGX",
+                      Color=(1.0, 0.75, 0.35, 1), Roughness=0.7),
+        node_material("ms_aniso", "ShaderNodeBsdfAnisotropic", distribution="MULTI_GGX",
+                      Color=(0.8, 0.85, 0.9, 1), Roughness=0.5, Anisotropy=0.6),
+        node_material("ms_metal", P, distribution="MULTI_GGX",
+                      **{"Base Color": (0.95, 0.6, 0.5, 1), "Metallic": 1.0, "Roughness": 0.8}),
+        node_material("ms_plastic", P, distribution="MULTI_GGX",
+                      **{"Base Color": (0.2, 0.5, 0.2, 1), "Roughness": 0.5,
+                         "Specular Tint": 0.5}),
+    ]
+    floor(cy.diffuse_material("floor", (0.5, 0.5, 0.5)))
+    for k, m in enumerate(mats):
+        add_sphere("sphere_" + m.name, ((k - 1.5) * 1.05, 0, 0.5), 0.5, m, segments=48,
+                   rings=24)
+    sun = add_light("sun", "SUN", (0, 0, 5), energy=2.0, angle=math.radians(3.0))
+    aim(sun, (0.5, 0.7, 0.0))
+    sun.location = (0, 0, 5)
+    cy.add_camera((0, -5.0, 2.0), (0, 0, 0.4), lens_mm=35.0)
+    sky_world(out_dir)
+
+
 def pano_room():
     """What the panoramic cameras look at (issue 30): a floor, coloured boxes and spheres all
     around the camera's place (ahead, to each side, behind), a sun and a world colour, so every
@@ -647,7 +674,7 @@ def build_motion_camera(out_dir):
 BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "textured": build_textured, "lamps": build_lamps, "anim": build_anim,
             "bsdfs": build_bsdfs, "attributes": build_attributes,
-            "displacement": build_displacement,
+            "displacement": build_displacement, "multiscatter": build_multiscatter,
             "pano_equirect": build_pano_equirect, "pano_fisheye": build_pano_fisheye,
             "pano_equisolid": build_pano_equisolid, "film_alpha": build_film_alpha,
             "motion": build_motion, "motion_camera": build_motion_camera}

@@ -106,7 +106,7 @@ Bsdf Bsdf::principled(const PrincipledParams& p) {
     b.spec_f0_ = fresnel_dielectric(1.0, b.spec_ior_);
     // No reflection lobe without specular and metallic, as in Cycles (POV-Ray's plain diffuse
     // surfaces are pure Lambert).
-    b.w_spec_ = (spec > 1e-5 || m > 1e-5) ? 1 - t : 0.0;
+    b.w_spec_ = (spec > 1e-5 || m > 1e-5) && p.specular_lobe ? 1 - t : 0.0;
     b.w_trans_ = t;
     b.trans_tint_ = p.base;
     b.eta_ = p.ior > 0 ? p.ior : 1.45;
@@ -118,6 +118,9 @@ Bsdf Bsdf::principled(const PrincipledParams& p) {
     }
     return b;
 }
+
+Color Bsdf::specular_cspec0() const { return spec_color_; }
+double Bsdf::specular_eta() const { return spec_ior_; }
 
 Color Bsdf::spec_fresnel(double cos_h) const {
     if (spec_f0_ >= 1) return Color(1);
@@ -171,12 +174,13 @@ Bsdf::LobeProbs Bsdf::lobe_probs(const Vec3& wo) const {
     return l;
 }
 
-Color Bsdf::eval(const Vec3& wo, const Vec3& wi) const {
+Color Bsdf::eval(const Vec3& wo, const Vec3& wi, double diffuse_scale) const {
     Color f;
     const double s = wo.z < 0 ? -1.0 : 1.0;
     const Vec3 o(wo.x, wo.y, wo.z * s), i(wi.x, wi.y, wi.z * s);
     const bool same_side = o.z > 0 && i.z > 0;
-    if (w_diffuse_ > 0 && same_side) f += diffuse_color_ * (kInvPi * diffuse_shape(o, i));
+    if (w_diffuse_ > 0 && same_side)
+        f += diffuse_color_ * (kInvPi * diffuse_shape(o, i) * diffuse_scale);
     if (w_phong_ > 0 && same_side)
         f += phong_ks_ * ((phong_n_ + 2) / (2 * kPi) * phong_pow(phong_cos(o, i), phong_n_));
     if (w_spec_ > 0 && same_side && !spec_delta_) {

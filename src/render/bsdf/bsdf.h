@@ -65,6 +65,9 @@ struct PrincipledParams {
     double transmission_roughness = -1;
     // The glass lobes' distribution (Blender's Glass BSDF defaults to Beckmann).
     Microfacet::Kind glass_distribution = Microfacet::Kind::GGX;
+    // Off: no reflection lobe (the caller adds Multiscatter GGX's in its place, with
+    // specular_cspec0() and specular_eta()).
+    bool specular_lobe = true;
 };
 
 struct BsdfSample {
@@ -84,7 +87,13 @@ public:
     // The glossy lobe is sampled exactly (pdf (n + 1) / (2 pi) cos^n a).
     static Bsdf phong(const Color& kd, const Color& ks, double exponent);
 
-    Color eval(const Vec3& wo, const Vec3& wi) const;
+    // The reflection lobe's Fresnel colour at normal incidence (Cycles' cspec0) and the IOR
+    // its Fresnel interpolation uses.
+    Color specular_cspec0() const;
+    double specular_eta() const;
+
+    // `diffuse_scale` scales the diffuse lobe alone (Cycles' bump shadowing term).
+    Color eval(const Vec3& wo, const Vec3& wi, double diffuse_scale = 1) const;
     double pdf(const Vec3& wo, const Vec3& wi) const;
     // (u1, u2) in [0, 1)^2: u1 picks a lobe by the lobe probabilities, then, rescaled to
     // [0, 1) within the picked lobe's share, samples the direction with u2. Using one 2D

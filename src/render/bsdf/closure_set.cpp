@@ -21,6 +21,8 @@ ClosureSet::Item* ClosureSet::push(const Vec3& n, double sample_weight, const Ve
     }
     it.wo = it.frame.to_local(wo_);
     it.share = sample_weight;
+    // (The graph hands normals over in single precision: equal within its rounding.)
+    it.bumped = has_ns_ && length_squared(nv - ns_) > 1e-10;
     return &it;
 }
 
@@ -48,6 +50,18 @@ void ClosureSet::add(const Lobe& lobe, const Color& weight, const Vec3& n, doubl
     ++count_;
 }
 
+double ClosureSet::shadowing(const Item& it, const Vec3& wi) const {
+    if (!it.bumped) return 1;
+    const Vec3& n = it.frame.n;
+    const double cos_ni = dot(n, wi);
+    const Vec3 ns = cos_ni < 0 ? -ns_ : ns_;
+    const double d = cos_ni * dot(ns, n);
+    const double g = d != 0 ? dot(ns, wi) / d : 0.0;
+    if (g >= 1) return 1;
+    if (g < 0) return 0;
+    return -g * g * g + g * g + g;  // smooth towards 1 at g = 1
+}
+
 bool ClosureSet::all_delta() const {
     for (int i = 0; i < count_; ++i)
         if (items_[i].is_lobe ? !items_[i].lobe.delta() : !items_[i].bsdf.all_delta())
@@ -63,12 +77,13 @@ Color ClosureSet::eval(const Vec3& wi, double* pdf) const {
         const Vec3 w = it.frame.to_local(wi);
         if (it.is_lobe) {
             double pl;
-            const Color fi = it.lobe.eval(it.wo, w, &pl);
+            Color fi = it.lobe.eval(it.wo, w, &pl);
+            if (it.lobe.diffuse()) fi *= shadowing(it, wi);
             if (!fi.is_black()) f += it.weight * fi;
             p += it.share / total_ * pl;
             continue;
         }
-        const Color fi = it.bsdf.eval(it.wo, w);
+        const Color fi = it.bsdf.eval(it.wo, w, shadowing(it, wi));
         if (!fi.is_black()) f += it.weight * fi * std::fabs(w.z);
         p += it.share / total_ * it.bsdf.pdf(it.wo, w);
     }
@@ -93,7 +108,7 @@ bool ClosureSet::sample(double u1, double u2, ClosureSample* out) const {
     out->reflected = bs.wi.z * it.wo.z > 0;
     out->straight = bs.delta && bs.wi.x == -it.wo.x && bs.wi.y == -it.wo.y && bs.wi.z == -it.wo.z;
     const double pick = it.share / total_;
-    if (count_ == 1) {
+    if (count_ == 1 && !(it.bumped && bs.diffuse)) {
         out->weight = it.weight * bs.weight;
         out->pdf = bs.pdf;
         return true;

@@ -36,6 +36,13 @@ public:
     // A single lobe; its share is also scaled by the lobe's view-dependent sample_scale().
     void add(const Lobe& lobe, const Color& weight, const Vec3& n, double sample_weight,
              const Vec3* tangent = nullptr);
+    // The smooth shading normal before bump (world, on the outside like the closures'):
+    // diffuse lobes whose normal differs from it fade where light grazes, as Cycles 3.4 does
+    // (bump_shadowing_term, after Chiang et al. 2019). Set before adding closures.
+    void set_smooth_normal(const Vec3& ns) {
+        ns_ = ns;
+        has_ns_ = true;
+    }
     int count() const { return count_; }
     bool all_delta() const;
 
@@ -51,12 +58,17 @@ private:
         Lobe lobe;
         Color weight;
         Frame frame;
+        bool bumped = false;  // its normal is not the smooth one: the shadowing term applies
         Vec3 wo;  // local
         double share = 0;
     };
     Item* push(const Vec3& n, double sample_weight, const Vec3* tangent);
 
+    double shadowing(const Item& it, const Vec3& wi) const;
+
     Vec3 ng_, wo_;
+    Vec3 ns_;
+    bool has_ns_ = false;
     Item items_[kMax];
     int count_ = 0;
     double total_ = 0;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <initializer_list>
 
 namespace glint::render {
 namespace {
@@ -120,10 +122,44 @@ Lobe Lobe::refraction(const Microfacet& m, double eta) {
     return l;
 }
 
+Lobe Lobe::multi_ggx(const MultiGgx& m) {
+    Lobe l;
+    l.kind_ = Kind::MultiGGX;
+    l.multi_ = m;
+    l.multi_.alpha_x = std::clamp(m.alpha_x, 0.0, 1.0);
+    l.multi_.alpha_y = std::clamp(m.alpha_y, 0.0, 1.0);
+    l.delta_ = l.multi_.alpha_x * l.multi_.alpha_y < 1e-7;
+    return l;
+}
+
+namespace {
+// A seed from the bits of some doubles: the multiscatter walk's random numbers, the same for
+// the same directions whatever the thread.
+uint64_t seed_of(std::initializer_list<double> values) {
+    uint64_t h = 0xcbf29ce484222325ULL;
+    for (double v : values) {
+        uint64_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        h = (h ^ bits) * 0x100000001b3ULL;
+        h ^= h >> 29;
+    }
+    return h;
+}
+}  // namespace
+
 double Lobe::sample_scale(const Vec3& wo) const {
     const double c = std::fabs(wo.z);
     if (kind_ == Kind::Sheen) return schlick_weight(c) * c;
     if (kind_ == Kind::Clearcoat) return 0.25 * a_ * fresnel_dielectric(c, 1.5);
+    if (kind_ == Kind::MultiGGX && multi_.fresnel) {
+        // Cycles: the Fresnel colour at n . wo, averaged.
+        const double f0 = fresnel_dielectric(1.0, multi_.eta);
+        const double fh =
+            f0 >= 1 ? 1.0
+                    : std::clamp((fresnel_dielectric(c, multi_.eta) - f0) / (1 - f0), 0.0, 1.0);
+        const Color f = multi_.cspec0 * (1 - fh) + Color(fh);
+        return (f.r + f.g + f.b) / 3;
+    }
     return 1;
 }
 
@@ -190,6 +226,7 @@ Color Lobe::eval(const Vec3& wo, const Vec3& wi, double* pdf) const {
             return Color(0.25 * a_ * fresnel_dielectric(dot(i, h), 1.5) * f * i.z);
         }
         case Kind::Reflection: return Color(microfacet_reflection(m_, o, i, pdf) * i.z);
+        case Kind::MultiGGX: return multi_ggx_eval(multi_, o, i, seed_of({o.x, o.y, i.x, i.y}), pdf);
         case Kind::AshikhminShirley: {
             const double n_dot_o = std::max(o.z, 1e-6), n_dot_i = std::max(i.z, 1e-6);
             const Vec3 h = normalize(i + o);
@@ -269,6 +306,19 @@ bool Lobe::sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const {
             if (delta_) return finish(Vec3(-o.x, -o.y, o.z), true, Color(1, 1, 1));
             i = reflect(o, m_.sample_normal(o, u1, u2));
             break;
+        }
+        case Kind::MultiGGX: {
+            // Cycles' singular case: a mirror of weight 1, Fresnel or not.
+            if (delta_) return finish(Vec3(-o.x, -o.y, o.z), true, Color(1, 1, 1));
+            Color weight;
+            double pdf;
+            if (!multi_ggx_sample(multi_, o, seed_of({u1, u2, o.x, o.y}), &i, &weight, &pdf))
+                return false;
+            out->wi = Vec3(i.x, i.y, i.z * s);
+            out->delta = false;
+            out->pdf = pdf;
+            out->weight = weight;
+            return true;
         }
         case Kind::AshikhminShirley: {
             if (delta_) return finish(Vec3(-o.x, -o.y, o.z), true, Color(1, 1, 1));

@@ -11,6 +11,7 @@
 
 #include "render/bsdf/bsdf.h"
 #include "render/bsdf/microfacet.h"
+#include "render/bsdf/multiscatter.h"
 
 namespace glint::render {
 
@@ -18,7 +19,7 @@ class Lobe {
 public:
     enum class Kind : uint8_t {
         OrenNayar, Translucent, DiffuseToon, GlossyToon, Velvet, Sheen, Clearcoat,
-        Reflection, Refraction, AshikhminShirley
+        Reflection, Refraction, AshikhminShirley, MultiGGX
     };
 
     // Oren-Nayar with Cycles' sigma = roughness in [0, 1] (0 is Lambert).
@@ -41,9 +42,17 @@ public:
     static Lobe ashikhmin_shirley(double alpha_x, double alpha_y);
     // Microfacet refraction without Fresnel (Refraction BSDF); `eta` inside over outside.
     static Lobe refraction(const Microfacet& m, double eta);
+    // Multiscatter GGX reflection (multiscatter.h); alpha below Cycles' singular threshold is
+    // a mirror. Its eval() is an estimate (right in expectation), as in Cycles.
+    static Lobe multi_ggx(const MultiGgx& m);
 
     Kind kind() const { return kind_; }
     bool delta() const { return delta_; }
+    // Cycles' diffuse closures (CLOSURE_IS_BSDF_DIFFUSE): the bump shadowing term applies.
+    bool diffuse() const {
+        return kind_ == Kind::OrenNayar || kind_ == Kind::Translucent ||
+               kind_ == Kind::DiffuseToon || kind_ == Kind::Sheen;
+    }
     // Cycles' factor on a closure's sample weight that depends on the view (sheen's average
     // value, clearcoat's Fresnel): the weight of the lobe among the others for wo.
     double sample_scale(const Vec3& wo) const;
@@ -58,6 +67,7 @@ private:
                             // Ashikhmin-Shirley's exponents; clearcoat's amount
     double eta_ = 1;
     Microfacet m_;
+    MultiGgx multi_;
 };
 
 }  // namespace glint::render

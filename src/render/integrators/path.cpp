@@ -73,6 +73,8 @@ void add_closure(ClosureSet& set, const shader::Closure& c, const Vec3& n, doubl
             }
             if (c.distribution == Distribution::AshikhminShirley)
                 set.add(Lobe::ashikhmin_shirley(ax, ay), wc, n, share, tangent);
+            else if (c.distribution == Distribution::MultiGGX)
+                set.add(Lobe::multi_ggx(MultiGgx{ax, ay, false, c.color}), wc, n, share, tangent);
             else
                 set.add(Lobe::reflection(Microfacet{mf, ax, ay}), wc, n, share, tangent);
             return;
@@ -106,7 +108,20 @@ void add_closure(ClosureSet& set, const shader::Closure& c, const Vec3& n, doubl
         c.distribution == Distribution::GGX
             ? 1 - (1 - c.roughness) * (1 - std::clamp(c.transmission_roughness, 0.0, 1.0))
             : c.roughness;
-    set.add(Bsdf::principled(p), w, n, share, tangent);
+    // Multiscatter GGX: Cycles takes it for the reflection lobe above roughness 0.075 (the
+    // glass lobes keep single scattering; the compiler warns about those).
+    const bool multi = c.distribution == Distribution::MultiGGX && c.roughness > 0.075;
+    p.specular_lobe = !multi;
+    const Bsdf main = Bsdf::principled(p);
+    set.add(main, w, n, share, tangent);
+    if (multi && (c.specular > 1e-5 || c.metallic > 1e-5)) {
+        const double spec_weight = 1 - (1 - c.metallic) * c.transmission;
+        const double aspect = std::sqrt(std::max(0.0, 1 - 0.9 * std::clamp(c.anisotropy, 0.0, 1.0)));
+        MultiGgx m{alpha / aspect, alpha * aspect, true, c.color, main.specular_cspec0(),
+                   main.specular_eta()};
+        const Color sw = w * spec_weight;
+        set.add(Lobe::multi_ggx(m), sw, n, std::fabs(average(sw)), tangent);
+    }
     const double diffuse_weight = (1 - c.metallic) * (1 - c.transmission);
     if (diffuse_weight > 1e-5 && c.sheen > 1e-5) {
         // Sheen tinted towards the base colour's hue (luminance by Rec. 709).
@@ -386,6 +401,10 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             }
             emission = cl.emission;
             const bool back = dot(hit.ng, r.dir) > 0;
+            {
+                const Vec3 ns = length_squared(cl.N) > 0 ? normalize(cl.N) : hit.n;
+                set.set_smooth_normal(back ? -ns : ns);
+            }
             // Filter Glossy (Cycles' blur_glossy): after a bounce of low pdf, microfacet
             // lobes are at least this rough (alpha; glint's roughness is its square root).
             double blur_alpha = 0;

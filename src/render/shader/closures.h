@@ -105,6 +105,9 @@ struct ClosureList {
     Color emission;
     Color transparent;
     Color holdout;
+    // The surface's shading normal (Cycles' sd->N): N, or N bent by the material's
+    // displacement; facing the viewer like the closures' normals.
+    Vec3 N;
     bool overflow = false;  // a closure past kMax was dropped
 
     void add(const Closure& c) {

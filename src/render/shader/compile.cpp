@@ -301,6 +301,7 @@ std::unique_ptr<ShaderProgram> ShaderProgram::compile(const scene::ShaderGraph& 
     program->name_ = graph.name;
     Compiler c(graph, *program, textures, diag);
     program->root_ = c.compile_output();
+    program->normal_reg_ = c.normal();
     if (graph.output >= 0) {
         const scene::ShaderNode& out = graph.nodes[graph.output];
         const scene::ShaderInput* vol = out.input("Volume");
@@ -425,6 +426,7 @@ void ShaderProgram::evaluate(const ShaderGlobals& sg, ClosureList* out) const {
     regs.assign(init_.begin(), init_.end());
     load_globals(sg, regs.data());
     run(ops_.data(), ops_.data() + main_end_, regs.data(), sg);
+    out->N = regs[static_cast<size_t>(normal_reg_)].to_vec3();
     walk(root_, Color(1, 1, 1), regs.data(), out);
 }
 

@@ -98,6 +98,7 @@ private:
     std::vector<float3> init_;  // the register file's start: globals' slots, then constants
     std::vector<Op> ops_;       // the main sequence; bump height sequences follow it
     size_t main_end_ = 0;
+    int normal_reg_ = kRegN;  // the surface's normal: N, or N bent by displacement
     std::vector<std::unique_ptr<std::vector<float>>> tables_;  // ramps and curves
     std::vector<std::shared_ptr<const void>> keep_;            // images and other data ops read
     std::vector<ClosureNode> closures_;
