@@ -601,12 +601,12 @@ int render_frame(const RenderArgs& args) {
         options.clamp_direct = b.clamp_direct;
         options.clamp_indirect = b.clamp_indirect;
         options.filter_glossy = b.filter_glossy;
-        if (!args.given.max_depth) {
-            options.diffuse_bounces = b.diffuse_bounces;
-            options.glossy_bounces = b.glossy_bounces;
-            options.transmission_bounces = b.transmission_bounces;
-            options.transparent_bounces = b.transparent_bounces;
-        }
+        // Cycles' limits per kind stay whatever --max-depth says of the total (the add-on
+        // passes its own total), as Cycles' own panel keeps them apart.
+        options.diffuse_bounces = b.diffuse_bounces;
+        options.glossy_bounces = b.glossy_bounces;
+        options.transmission_bounces = b.transmission_bounces;
+        options.transparent_bounces = b.transparent_bounces;
         options.film_transparent = b.film_transparent;
     }
     double parse_seconds = seconds_since(start);
