@@ -200,19 +200,7 @@ def build_textured(out_dir):
         loop.uv = (s, t)
     add_sphere("ball", (0.1, 0.2, 0.8), 0.8, mat, segments=48, rings=24)
     cy.add_camera((0.4, -4.0, 1.8), (0, 0.2, 0.6), lens_mm=35.0)
-    sky = os.path.join(out_dir, "sky.exr")
-    cy.make_sky(sky)
-    world = bpy.data.worlds.new("World")
-    world.use_nodes = True
-    nt = world.node_tree
-    env = nt.nodes.new("ShaderNodeTexEnvironment")
-    env.image = bpy.data.images.load(sky)
-    env.image.filepath = "//sky.exr"
-    env.interpolation = "Linear"
-    env.projection = "EQUIRECTANGULAR"
-    nt.links.new(env.outputs["Color"], nt.nodes["Background"].inputs["Color"])
-    nt.nodes["Background"].inputs["Strength"].default_value = 1.0
-    bpy.context.scene.world = world
+    sky_world(out_dir)
 
 
 def build_lamps(out_dir):
@@ -284,6 +272,7 @@ def node_material(name, kind, **inputs):
 
 
 def sky_world(out_dir):
+    """tests/cycles' 256x128 HDR sky (sky.exr beside the .blend) as the world."""
     sky = os.path.join(out_dir, "sky.exr")
     cy.make_sky(sky)
     world = bpy.data.worlds.new("World")
