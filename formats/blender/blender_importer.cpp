@@ -41,7 +41,8 @@ struct MeshSource {
     int max_slot = 0;
 };
 
-MeshSource read_mesh(const JsonReader& r, const Buffers& buf, const std::shared_ptr<const std::string>& file) {
+MeshSource read_mesh(const JsonReader& r, const Buffers& buf,
+                     const std::shared_ptr<const std::string>& file, bool motion_blur) {
     using T = BufferView::Type;
     MeshSource src;
     scene::Mesh& m = src.mesh;
@@ -72,6 +73,30 @@ MeshSource read_mesh(const JsonReader& r, const Buffers& buf, const std::shared_
         for (size_t i = 0; i < loops; ++i) {
             Vec3 n{nv.get(i, 0), nv.get(i, 1), nv.get(i, 2)};
             m.normals[i] = is_finite(n) && length_squared(n) > 0 ? normalize(n) : Vec3(0, 0, 1);
+        }
+    }
+    // Deformation motion blur: the positions (and split normals) at each motion step.
+    if (motion_blur && r.has("motion")) {
+        const JsonReader steps = r.at("motion");
+        if (steps.size() < 2) steps.fail("expected two or more motion steps");
+        for (size_t k = 0; k < steps.size(); ++k) {
+            const JsonReader step = steps.at(k);
+            const BufferView sp = read_view(step.at("positions"), buf, 3, {T::F32});
+            if (sp.count != pos.count) step.at("positions").fail("expected one position per vertex");
+            std::vector<Vec3>& ps = m.motion_positions.emplace_back(sp.count);
+            for (size_t i = 0; i < sp.count; ++i) {
+                ps[i] = {sp.get(i, 0), sp.get(i, 1), sp.get(i, 2)};
+                if (!is_finite(ps[i])) step.at("positions").fail("a position is not finite");
+            }
+            if (!has_normals) continue;
+            if (!step.has("normals")) step.fail("expected normals, as the mesh has");
+            const BufferView sn = read_view(step.at("normals"), buf, 3, {T::F32});
+            if (sn.count != loops) step.at("normals").fail("expected one normal per corner");
+            std::vector<Vec3>& ns = m.motion_normals.emplace_back(sn.count);
+            for (size_t i = 0; i < sn.count; ++i) {
+                const Vec3 n{sn.get(i, 0), sn.get(i, 1), sn.get(i, 2)};
+                ns[i] = is_finite(n) && length_squared(n) > 0 ? normalize(n) : Vec3(0, 0, 1);
+            }
         }
     }
     // The active render UV map is the mesh's uv; every layer is also an attribute by name
@@ -495,7 +520,7 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
     if (r.has("meshes")) {
         const JsonReader meshes = r.at("meshes");
         for (size_t i = 0; i < meshes.size(); ++i) {
-            sources.push_back(read_mesh(meshes.at(i), buf, file));
+            sources.push_back(read_mesh(meshes.at(i), buf, file, motion_blur));
             triangles += static_cast<long long>(sources.back().mesh.faces.size());
             if (triangles > limits.triangles)
                 throw Error(ErrorKind::Render, loc,

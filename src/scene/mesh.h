@@ -46,6 +46,13 @@ struct Mesh {
     // when there are none.
     std::vector<MeshAttribute> attributes;
     std::vector<std::array<int, 3>> corners;
+    // Deformation motion blur (Blender's armatures, shape keys, modifiers): the positions, and
+    // normals where the mesh has them, at evenly spaced shutter times i / (steps - 1), each
+    // step as long as `positions` (`normals`). A ray at time t meets the faces of the vertices
+    // interpolated linearly between the two steps about it, as Cycles' motion triangles do.
+    // Empty: the mesh does not deform.
+    std::vector<std::vector<Vec3>> motion_positions;
+    std::vector<std::vector<Vec3>> motion_normals;
     std::string name;  // the OBJ object or group ("" for POV-Ray's meshes): named in warnings
     FileLoc loc;
 };

@@ -599,11 +599,12 @@ def film_settings(name, scene):
 
 
 def keyframe_linear(ob, path, values):
-    """Keys ob.<path> at each (frame, value), linear: motion at a constant rate."""
+    """Keys ob.<path> at each (frame, value), linear: motion at a constant rate. `ob` may be
+    a struct inside an ID (a shape key, a modifier): the keys go to that ID's action."""
     for frame, value in values:
         setattr(ob, path, value)
         ob.keyframe_insert(path, frame=frame)
-    for fc in ob.animation_data.action.fcurves:
+    for fc in ob.id_data.animation_data.action.fcurves:
         for kp in fc.keyframe_points:
             kp.interpolation = "LINEAR"
 
@@ -660,13 +661,60 @@ def build_motion_camera(out_dir):
     scene.cycles.motion_blur_position = "START"
 
 
+def build_motion_deform(out_dir):
+    """Deformation motion blur (Cycles' defaults: shutter 0.5 frames centred on frame 1, 3
+    steps), keyed linearly over frames 0-2: a box whose top leans along X by a shape key, a
+    smooth open tube bent by an animated Simple Deform (bend) that also slides (deformation
+    and object motion together), and a box
+    deformed by a shape key but with Deformation blur off (sharp)."""
+    motion_stage()
+    lean = cy.add_box("lean", (0, 0, 0), (0.5, 0.5, 1.0), 0, cy.diffuse_material(
+        "lean", (0.8, 0.25, 0.15)))
+    lean.location = (-1.3, -0.4, 0.5)
+    lean.shape_key_add(name="Basis")
+    key = lean.shape_key_add(name="Lean")
+    for v in key.data:
+        if v.co.z > 0:
+            v.co.x += 1.2
+    keyframe_linear(key, "value", ((0, 0.0), (2, 1.0)))
+    bpy.ops.mesh.primitive_cylinder_add(vertices=24, radius=0.18, depth=2.2,
+                                        end_fill_type="NOTHING", location=(0.2, 0.9, 0.45),
+                                        rotation=(0, math.radians(90), 0))
+    bar = bpy.context.active_object
+    bar.name = "bend"
+    bar.data.materials.append(cy.diffuse_material("bend", (0.9, 0.8, 0.2)))
+    for poly in bar.data.polygons:
+        poly.use_smooth = True
+    bpy.ops.object.mode_set(mode="EDIT")
+    bpy.ops.mesh.select_all(action="SELECT")
+    bpy.ops.mesh.subdivide(number_cuts=12)
+    bpy.ops.object.mode_set(mode="OBJECT")
+    mod = bar.modifiers.new("bend", "SIMPLE_DEFORM")
+    mod.deform_method = "BEND"
+    mod.deform_axis = "Y"
+    keyframe_linear(mod, "angle", ((0, math.radians(-60)), (2, math.radians(120))))
+    keyframe_linear(bar, "location", ((0, (0.0, 0.9, 0.45)), (2, (0.4, 0.9, 0.45))))
+    still = cy.add_box("still", (0, 0, 0), (0.4, 0.4, 0.4), 0, cy.diffuse_material(
+        "still", (0.2, 0.7, 0.3)))
+    still.location = (0.3, -1.1, 0.2)
+    still.shape_key_add(name="Basis")
+    grow = still.shape_key_add(name="Grow")
+    for v in grow.data:
+        v.co *= 1.8
+    keyframe_linear(grow, "value", ((0, 0.0), (2, 1.0)))
+    still.cycles.use_deform_motion = False
+    cy.add_camera((0.0, -5.5, 3.0), (0, 0.2, 0.3), lens_mm=35.0)
+    bpy.context.scene.render.use_motion_blur = True
+
+
 BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "textured": build_textured, "lamps": build_lamps, "anim": build_anim,
             "bsdfs": build_bsdfs, "attributes": build_attributes,
             "displacement": build_displacement, "multiscatter": build_multiscatter,
             "pano_equirect": build_pano_equirect, "pano_fisheye": build_pano_fisheye,
             "pano_equisolid": build_pano_equisolid, "film_alpha": build_film_alpha,
-            "motion": build_motion, "motion_camera": build_motion_camera}
+            "motion": build_motion, "motion_camera": build_motion_camera,
+            "motion_deform": build_motion_deform}
 
 
 def build(name, out_dir):

@@ -171,6 +171,64 @@ TEST(Motion, MovingObjectIsMetAtTheRaysTime) {
     EXPECT_NEAR(h.p.x, 0, 1e-12);
 }
 
+// A deforming mesh (scene::Mesh::motion_positions): 3 steps sliding the cube along x and
+// raising its top; at each time a ray meets the faces of the vertices interpolated between
+// the two steps about it, exactly as a still copy of that interpolated mesh.
+TEST(Motion, DeformingMeshIsMetAtTheRaysTime) {
+    scene::Scene s;
+    s.materials.resize(1);
+    scene::Mesh m = test::unit_cube_mesh({-0.5, -0.5, -0.5});
+    auto step = [&](double dx, double lift) {
+        std::vector<Vec3> p = m.positions;
+        for (Vec3& v : p) v = {v.x + dx, v.y, v.z > 0 ? v.z + lift : v.z};
+        return p;
+    };
+    m.motion_positions = {step(-3, 0), step(0, 1), step(3, 3)};
+    s.meshes.push_back(m);
+    s.objects.push_back(test::object(scene::MeshRef{0}));
+    auto g = test::build(s);
+    EXPECT_LE(g->bounds().lo.x, -3.5);
+    EXPECT_GE(g->bounds().hi.x, 3.5);
+    EXPECT_GE(g->bounds().hi.z, 3.5);
+    for (double time : {0.0, 0.25, 0.5, 0.7, 1.0}) {
+        const double s_at = time * 2;
+        const size_t k = std::min<size_t>(static_cast<size_t>(s_at), 1);
+        const double f = s_at - static_cast<double>(k);
+        scene::Mesh at = m;
+        at.motion_positions.clear();
+        for (size_t i = 0; i < at.positions.size(); ++i)
+            at.positions[i] = m.motion_positions[k][i] +
+                              (m.motion_positions[k + 1][i] - m.motion_positions[k][i]) * f;
+        std::vector<scene::Object> one;
+        one.push_back(test::object(scene::MeshRef{0}));
+        scene::Scene still = test::scene_of(std::move(one));
+        still.meshes = {at};
+        const double x = -3 + 6 * time;
+        // From above, onto the raised top, and from the side.
+        for (const auto& [o, d] : {std::pair{Vec3{x + 0.1, 0.2, 10}, Vec3{0.02, 0, -1}},
+                                   std::pair{Vec3{x - 10, 0.1, 0.2}, Vec3{1, 0.01, 0}}}) {
+            render::Ray r = test::ray(o, d);
+            render::Hit want;
+            ASSERT_TRUE(test::build(still)->intersect(r, &want)) << time;
+            r.time = time;
+            render::Hit h;
+            ASSERT_TRUE(g->intersect(r, &h)) << time;
+            // (The still mesh keeps its vertices in single precision, the deforming one in
+            // double.)
+            EXPECT_NEAR(h.t, want.t, 1e-6) << time;
+            EXPECT_NEAR(h.p.z, want.p.z, 1e-6) << time;
+            EXPECT_NEAR(dot(h.ng, want.ng), 1, 1e-12) << time;
+            EXPECT_TRUE(g->occluded(r)) << time;
+        }
+        // Where the cube is at other times there is nothing now.
+        render::Ray away = test::ray({x + 2.2, 0, 10}, {0, 0, -1});
+        away.time = time;
+        render::Hit h;
+        EXPECT_FALSE(g->intersect(away, &h)) << time;
+        EXPECT_FALSE(g->occluded(away)) << time;
+    }
+}
+
 TEST(Motion, ShutterMovesTheCameraRay) {
     scene::Scene s;
     // The camera at the frame at the origin; it moves +2 in x and turns 90 degrees about Z

@@ -225,6 +225,22 @@ def mesh_entry(me, name, buf):
     return entry
 
 
+def mesh_motion_arrays(me, counts):
+    """A deforming mesh at one motion time: (positions, split normals) as float32 arrays, None
+    when its topology (vertex, corner and triangle counts) differs from `counts`, the centre's
+    (Cycles then drops the object's deformation blur too)."""
+    me.calc_loop_triangles()
+    nv, nl, nt = len(me.vertices), len(me.loops), len(me.loop_triangles)
+    if (nv, nl, nt) != counts:
+        return None
+    polys = _Polys(me, nt)
+    tris = _get(me.loop_triangles, "loops", nt * 3, np.uint32)
+    smooth = polys.per_triangle(_get(me.polygons, "use_smooth", len(me.polygons), bool))
+    loop_vertex = _get(me.loops, "vertex_index", nl, np.uint32)
+    return (_get(me.vertices, "co", nv * 3, np.float32),
+            np.array(_corner_normals(me, nl, tris, polys, smooth, loop_vertex), copy=True))
+
+
 # ----------------------------------------------------------------------------- helpers
 
 
@@ -339,6 +355,7 @@ class _Exporter:
         self.override = vl.material_override
         self.motion = (self.scene.render.use_motion_blur and vl.use_motion_blur)
         self.motion_keys = {}                   # instance key -> (entry, steps)
+        self.deform_keys = {}                   # instance key -> (mesh index, steps, counts)
 
     # -- materials ----------------------------------------------------------------------
 
@@ -439,7 +456,23 @@ class _Exporter:
         if self.motion:
             steps = _motion_steps(parent, ob)
             if steps:
-                self.motion_keys[_instance_key(inst, ob)] = (entry, steps)
+                key = _instance_key(inst, ob)
+                self.motion_keys[key] = (entry, steps)
+                if self._deforms(parent, ob) and \
+                        all(m != mesh for m, _, _ in self.deform_keys.values()):
+                    me = ob.data
+                    self.deform_keys[key] = (mesh, steps, (len(me.vertices), len(me.loops),
+                                                           len(me.loop_triangles)))
+
+    def _deforms(self, parent, ob):
+        """Whether Cycles blurs the object's deformation: its (and its instancer's) Deformation
+        motion blur on and its mesh deformed by modifiers, shape keys or an armature."""
+        orig = _original(ob)
+        if not (orig.cycles.use_deform_motion and
+                orig.is_deform_modified(_original(self.scene), 'RENDER')):
+            return False
+        p = _original(parent)
+        return p is None or p == orig or p.cycles.use_deform_motion
 
     # -- lights -------------------------------------------------------------------------
 
@@ -583,7 +616,7 @@ class _Exporter:
                 _original(self.scene).render.motion_blur_shutter_curve):
             self.warn("a shaped shutter curve is not supported by glint: the shutter opens and "
                       "closes at once (Cycles' default curve)")
-        hair, adaptive, deform, seen = [], [], [], set()
+        hair, adaptive, seen = [], [], set()
         experimental = _original(self.scene).cycles.feature_set == 'EXPERIMENTAL'
         for inst in self.dg.object_instances:
             ob = _original(inst.object)
@@ -596,16 +629,10 @@ class _Exporter:
             if experimental and ob.type in SURFACE_TYPES and ob.cycles.use_adaptive_subdivision \
                     and ob.modifiers and ob.modifiers[-1].type == 'SUBSURF':
                 adaptive.append(ob.name)
-            if self.motion and ob.type in SURFACE_TYPES and ob.cycles.use_motion_blur \
-                    and ob.cycles.use_deform_motion \
-                    and ob.is_deform_modified(_original(self.scene), 'RENDER'):
-                deform.append(ob.name)
         for names, what in ((hair, "hair particles are not supported by glint: the hair of %s "
                              "is left out"),
                             (adaptive, "adaptive subdivision is not supported by glint: %s "
-                             "rendered with the subdivision modifier's render level"),
-                            (deform, "deformation motion blur is not supported by glint: %s "
-                             "blurred by their object motion only")):
+                             "rendered with the subdivision modifier's render level")):
             if names:
                 shown = ", ".join("'%s'" % n for n in names[:5])
                 if len(names) > 5:
@@ -632,6 +659,7 @@ class _Exporter:
             return
         times = [-1.0 + 2.0 * i / (n - 1) for i in range(n)]
         cam_mats, obj_mats = [], {k: [] for k in self.motion_keys}
+        shapes = {k: [] for k in self.deform_keys}
         try:
             for t in times:
                 self.frame_set(center + t * shutter * 0.5)
@@ -641,9 +669,13 @@ class _Exporter:
                     ob = inst.object
                     if not isinstance(ob.data, bpy.types.Mesh):
                         continue
-                    mats = obj_mats.get(_instance_key(inst, ob))
+                    key = _instance_key(inst, ob)
+                    mats = obj_mats.get(key)
                     if mats is not None:
                         mats.append(_matrix(inst.matrix_world))
+                    got = shapes.get(key)
+                    if got is not None and len(got) < len(cam_mats):
+                        got.append(mesh_motion_arrays(ob.data, self.deform_keys[key][2]))
         finally:
             self.frame_set(center)
 
@@ -661,6 +693,21 @@ class _Exporter:
             m = pick(obj_mats[key], steps)
             if m:
                 entry["motion"] = m
+        for key, (mesh, steps, _) in self.deform_keys.items():
+            got = shapes[key]
+            if steps < 2 or len(got) != n:
+                continue
+            if any(g is None for g in got):
+                name = self.meshes[mesh]["name"]
+                self.warn("mesh '%s' changes its topology within the shutter: its deformation "
+                          "is not blurred (as in Cycles)" % name)
+                continue
+            picked = got[::(n - 1) // (steps - 1)]
+            if all(np.array_equal(g[0], picked[0][0]) for g in picked):
+                continue  # deform-modified, but not moving over the shutter
+            self.meshes[mesh]["motion"] = [
+                {"positions": self.buf.view(pos, "f32", 3), "normals": self.buf.view(nor, "f32", 3)}
+                for pos, nor in picked]
 
     # -- all ----------------------------------------------------------------------------
 
@@ -686,11 +733,11 @@ class _Exporter:
                         self.add_light(inst, ob)
                     elif inst.show_self and isinstance(ob.data, bpy.types.Mesh):
                         self.add_object(inst, ob)
+                world = self.world()
+                if self.motion:
+                    self.sample_motion(camera, center, shutter)  # deforming meshes' steps too
             finally:
                 self.buf.close()
-            world = self.world()
-            if self.motion:
-                self.sample_motion(camera, center, shutter)
         finally:
             if center != start_time:
                 self.frame_set(start_time)

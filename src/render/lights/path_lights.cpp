@@ -141,9 +141,13 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
     object_emitter_.assign(scene.objects.size(), kNotSampled);
     for (int oi = 0; oi < static_cast<int>(scene.objects.size()); ++oi) {
         const scene::Object& o = scene.objects[oi];
-        // A moving emitter is not where its transform says at most times: BSDF rays alone
-        // find it (unweighted, so still unbiased, only noisier).
+        // A moving or deforming emitter is not where its transform and vertices say at most
+        // times: BSDF rays alone find it (unweighted, so still unbiased, only noisier).
         if (!o.motion.empty()) continue;
+        if (const auto* ref = std::get_if<scene::MeshRef>(&o.shape);
+            ref && ref->mesh >= 0 && ref->mesh < static_cast<int>(scene.meshes.size()) &&
+            !scene.meshes[static_cast<size_t>(ref->mesh)].motion_positions.empty())
+            continue;
         Gathered g;
         gather(o, o.transform, o.material, emission, &g);
         // BSDF rays that hit the object are weighted by the pdf of the emitter they hit, so an

@@ -225,7 +225,8 @@ bool mergeable_mesh(const scene::Object& o, const scene::Scene& scene) {
     const auto* ref = std::get_if<scene::MeshRef>(&o.shape);
     return ref && ref->mesh >= 0 && ref->mesh < static_cast<int>(scene.meshes.size()) &&
            !scene.meshes[ref->mesh].has_inside_vector && !o.inverse && o.clipped_by.empty() &&
-           o.bounded_by.empty() && o.motion.empty();
+           o.bounded_by.empty() && o.motion.empty() &&
+           scene.meshes[ref->mesh].motion_positions.empty();
 }
 
 // Whether every surface of `o` has an opaque material: its own or the one it inherits, its CSG

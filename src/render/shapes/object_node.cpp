@@ -124,7 +124,9 @@ struct Builder {
                     if (s.mesh < 0 || s.mesh >= static_cast<int>(scene.meshes.size()))
                         throw Error(ErrorKind::Scene, obj.loc, "mesh reference out of range");
                     // obj_file's mirror is baked into the mesh: rays skip the transform.
-                    baked = bake_exact(obj.transform);
+                    // (A deforming mesh keeps its transform: it has no baked form.)
+                    baked = bake_exact(obj.transform) &&
+                            scene.meshes[s.mesh].motion_positions.empty();
                     p = make_mesh(scene.meshes[s.mesh], diag, baked ? &obj.transform : nullptr);
                     if (!p) why = "mesh without usable triangles";
                 } else if constexpr (std::is_same_v<T, scene::Quadric>) {

@@ -13,6 +13,8 @@
 #include "render/shapes/object_node.h"
 #include "render/accel/wide_bvh.h"
 #include "render/shapes/mesh/mesh_kernels.h"
+#include "render/shapes/mesh/mesh_shading.h"
+#include "render/shapes/mesh/motion_mesh.h"
 #include "render/shapes/mesh/triangle.h"
 
 namespace glint::render {
@@ -228,33 +230,15 @@ private:
         h->n = h->ng;
         if (!normals_.empty()) {
             const auto& ni = nidx_[at];
-            if (ni[0] >= 0 && ni[1] >= 0 && ni[2] >= 0) {
-                Vec3 n = normals_[ni[0]] * th.b[0] + normals_[ni[1]] * th.b[1] +
-                         normals_[ni[2]] * th.b[2];
-                double len = length(n);
-                if (len > 0 && std::isfinite(len)) {
-                    n = n / len;
-                    h->n = dot(n, h->ng) < 0 ? -n : n;
-                }
-            }
+            if (ni[0] >= 0 && ni[1] >= 0 && ni[2] >= 0)
+                h->n = interpolated_normal(normals_[ni[0]], normals_[ni[1]], normals_[ni[2]],
+                                           th.b, h->ng);
         }
         if (!uvs_.empty()) {
             const auto& ui = uvidx_[at];
             h->has_uv = ui[0] >= 0 && ui[1] >= 0 && ui[2] >= 0;
-            if (h->has_uv) {
-                const Vec2 &t0 = uvs_[ui[0]], &t1 = uvs_[ui[1]], &t2 = uvs_[ui[2]];
-                h->uv = t0 * th.b[0] + t1 * th.b[1] + t2 * th.b[2];
-                // The triangle's uv tangents: p - p2 = dpdu (u - u2) + dpdv (v - v2) solved
-                // over its two edges; zero when the uvs are degenerate (no tangent frame).
-                const Vec2 d02 = t0 - t2, d12 = t1 - t2;
-                const double det = d02.x * d12.y - d02.y * d12.x;
-                if (std::fabs(det) > 1e-12) {
-                    const Vec3 e02 = p0 - p2, e12 = p1 - p2;
-                    const double inv = 1 / det;
-                    h->dpdu = (e02 * d12.y - e12 * d02.y) * inv;
-                    h->dpdv = (e12 * d02.x - e02 * d12.x) * inv;
-                }
-            }
+            if (h->has_uv)
+                interpolate_uv(p0, p1, p2, uvs_[ui[0]], uvs_[ui[1]], uvs_[ui[2]], th.b, h);
         }
         h->material = material_.empty() ? -1 : material_[at];
         // Baked: the hit was computed in object space; the mirror takes it out without
@@ -270,27 +254,7 @@ private:
 
     bool attribute(std::string_view name, Want want, int face, double b1, double b2, Vec3* value,
                    double* alpha) const override {
-        if (!attr_mesh_ || face < 0 || static_cast<size_t>(face) >= attr_mesh_->corners.size())
-            return false;
-        using Kind = scene::MeshAttribute::Kind;
-        const scene::MeshAttribute* found = nullptr;
-        for (const scene::MeshAttribute& a : attr_mesh_->attributes) {
-            if ((want == Want::UV && a.kind != Kind::UV) ||
-                (want == Want::Color && a.kind != Kind::Color))
-                continue;
-            if (name.empty() ? a.active_render : a.name == name) {
-                found = &a;
-                break;
-            }
-        }
-        if (!found) return false;
-        const auto& c = attr_mesh_->corners[static_cast<size_t>(face)];
-        const double b0 = 1 - b1 - b2;
-        *value = found->values[c[0]] * b0 + found->values[c[1]] * b1 + found->values[c[2]] * b2;
-        *alpha = found->alpha.empty() ? 1.0
-                                      : found->alpha[c[0]] * b0 + found->alpha[c[1]] * b1 +
-                                            found->alpha[c[2]] * b2;
-        return true;
+        return attr_mesh_ && mesh_attribute(*attr_mesh_, name, want, face, b1, b2, value, alpha);
     }
 
     using Index3 = std::array<int, 3>;
@@ -315,6 +279,31 @@ private:
 };
 
 }  // namespace
+
+bool mesh_attribute(const scene::Mesh& mesh, std::string_view name, AttributeSource::Want want,
+                    int face, double b1, double b2, Vec3* value, double* alpha) {
+    if (face < 0 || static_cast<size_t>(face) >= mesh.corners.size()) return false;
+    using Kind = scene::MeshAttribute::Kind;
+    using Want = AttributeSource::Want;
+    const scene::MeshAttribute* found = nullptr;
+    for (const scene::MeshAttribute& a : mesh.attributes) {
+        if ((want == Want::UV && a.kind != Kind::UV) ||
+            (want == Want::Color && a.kind != Kind::Color))
+            continue;
+        if (name.empty() ? a.active_render : a.name == name) {
+            found = &a;
+            break;
+        }
+    }
+    if (!found) return false;
+    const auto& c = mesh.corners[static_cast<size_t>(face)];
+    const double b0 = 1 - b1 - b2;
+    *value = found->values[c[0]] * b0 + found->values[c[1]] * b1 + found->values[c[2]] * b2;
+    *alpha = found->alpha.empty() ? 1.0
+                                  : found->alpha[c[0]] * b0 + found->alpha[c[1]] * b1 +
+                                        found->alpha[c[2]] * b2;
+    return true;
+}
 
 std::optional<MeshQuery> mesh_query(const Primitive& prim) {
     const auto* mesh = dynamic_cast<const MeshPrim*>(&prim);
@@ -390,6 +379,7 @@ std::vector<int> usable_faces(const scene::Mesh& mesh, Diagnostics& diag) {
 std::unique_ptr<Primitive> make_prim(const scene::Mesh& mesh, const std::vector<int>& usable,
                                      Diagnostics& diag, const Transform* baked) {
     if (usable.empty()) return nullptr;
+    if (!mesh.motion_positions.empty()) return make_motion_mesh(mesh, usable);
     auto prim = std::make_unique<MeshPrim>(mesh, usable, baked);
     if (prim->dropped() > 0)
         diag.warning(mesh.loc, mesh_label(mesh) +
