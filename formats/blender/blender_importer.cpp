@@ -124,6 +124,33 @@ MeshSource read_mesh(const JsonReader& r, const Buffers& buf,
             m.attributes.push_back(std::move(a));
         }
     }
+    // MikkTSpace tangents of the UV maps a Normal Map node reads, per triangle corner.
+    if (r.has("tangents")) {
+        const JsonReader layers = r.at("tangents");
+        for (size_t k = 0; k < layers.size(); ++k) {
+            const JsonReader layer = layers.at(k);
+            const BufferView t = read_view(layer.at("tangent"), buf, 3, {T::F32});
+            const BufferView s = read_view(layer.at("sign"), buf, 1, {T::F32});
+            const size_t corners = 3 * tris.count;
+            if (t.count != corners)
+                layer.at("tangent").fail("expected one tangent per triangle corner");
+            if (s.count != corners) layer.at("sign").fail("expected one sign per triangle corner");
+            scene::MeshAttribute a;
+            a.name = layer.string("uv_map", "");
+            a.kind = scene::MeshAttribute::Kind::Tangent;
+            a.active_render = layer.boolean("active_render", false);
+            a.per_triangle_corner = true;
+            a.values.resize(corners);
+            a.alpha.resize(corners);
+            for (size_t i = 0; i < corners; ++i) {
+                const Vec3 v{t.get(i, 0), t.get(i, 1), t.get(i, 2)};
+                a.values[i] = is_finite(v) ? v : Vec3();
+                const double sign = s.get(i, 0);
+                a.alpha[i] = std::isfinite(sign) ? static_cast<float>(sign) : 1.0f;
+            }
+            m.attributes.push_back(std::move(a));
+        }
+    }
     if (r.has("colors")) {
         const JsonReader layers = r.at("colors");
         for (size_t k = 0; k < layers.size(); ++k) {

@@ -12,13 +12,16 @@ namespace glint::render {
 // up by the shading of node graphs at the face and barycentric point the hit recorded.
 class AttributeSource {
 public:
-    enum class Want { Any, UV, Color };
+    enum class Want { Any, UV, Color, Tangent };  // Any: a UV map or a colour
     virtual ~AttributeSource() = default;
     // The attribute `name` of kind `want` (an empty name: the active render layer of that
     // kind) at the face's barycentric point (b1, b2 of its second and third corners); false
     // when the mesh has none by that name.
     virtual bool attribute(std::string_view name, Want want, int face, double b1, double b2,
                            Vec3* value, double* alpha) const = 0;
+    // The face's corner normals interpolated at the point and not normalized (what Cycles'
+    // Normal Map combines with the tangent), in object space; false on a flat face.
+    virtual bool corner_normal(int face, double b1, double b2, Vec3* n) const = 0;
 };
 
 // A hit's attribute lookup: the source and the point on it.

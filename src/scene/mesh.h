@@ -19,14 +19,18 @@ struct MeshFace {
 };
 
 // A named value per face corner beside the mesh's own: Blender's UV maps and colour
-// attributes, which the Attribute, Color Attribute and UV Map nodes read by name.
+// attributes, which the Attribute, Color Attribute and UV Map nodes read by name, and the
+// MikkTSpace tangents Blender computes for a UV map (named as the map), which the Normal Map
+// node reads in tangent space.
 struct MeshAttribute {
-    enum class Kind { UV, Color };
+    enum class Kind { UV, Color, Tangent };
     std::string name;
     Kind kind = Kind::Color;
     bool active_render = false;  // the layer a node with no name reads
     std::vector<Vec3> values;    // per corner (Mesh::corners), uv as (u, v, 0)
-    std::vector<float> alpha;    // colours: per corner; empty means 1
+    bool per_triangle_corner = false;  // values[3 face + k] instead (Cycles' tangents)
+    std::vector<float> alpha;    // colours: per corner, empty means 1; tangents: the sign
+                                 // of the bitangent per corner
 };
 
 struct Mesh {

@@ -465,6 +465,59 @@ def build_displacement(out_dir):
     cy.set_world_color((0, 0, 0))
 
 
+def build_normal_map(out_dir):
+    """(issue 30) The Normal Map node in tangent space, its output normal shown through
+    Emission (N * 0.5 + 0.5, so the image is exact): a constant tangent-space colour on a
+    low-poly smooth UV sphere (MikkTSpace's tangents are smooth where dPdu is faceted),
+    Suzanne (mirrored UV islands: the bitangent sign flips) and a rotated, non-uniformly scaled
+    cube through a second UV map that is not the active one; black world, orthographic camera."""
+    def material(name, uv_map=""):
+        mat = bpy.data.materials.new(name)
+        mat.use_nodes = True
+        nt = mat.node_tree
+        for n in list(nt.nodes):
+            if n.type != "OUTPUT_MATERIAL":
+                nt.nodes.remove(n)
+        out = nt.nodes["Material Output"]
+        nm = nt.nodes.new("ShaderNodeNormalMap")
+        nm.space = "TANGENT"
+        nm.uv_map = uv_map
+        nm.inputs["Color"].default_value = (0.85, 0.25, 0.8, 1.0)
+        half = nt.nodes.new("ShaderNodeVectorMath")
+        half.operation = "MULTIPLY_ADD"
+        half.inputs[1].default_value = (0.5, 0.5, 0.5)
+        half.inputs[2].default_value = (0.5, 0.5, 0.5)
+        nt.links.new(nm.outputs["Normal"], half.inputs[0])
+        em = nt.nodes.new("ShaderNodeEmission")
+        nt.links.new(half.outputs["Vector"], em.inputs["Color"])
+        nt.links.new(em.outputs[0], out.inputs["Surface"])
+        return mat
+
+    add_sphere("nm_sphere", (-1.8, 0, 0), 0.8, material("nm_sphere"), segments=10, rings=6)
+    bpy.ops.mesh.primitive_monkey_add(size=1.4, location=(0, 0, 0), rotation=(0, 0, math.pi))
+    monkey = bpy.context.active_object
+    monkey.name = "nm_monkey"
+    bpy.ops.object.shade_smooth()
+    monkey.data.materials.append(material("nm_monkey"))
+    bpy.ops.mesh.primitive_cube_add(size=1.0, location=(1.8, 0, 0),
+                                    rotation=(0.4, 0.3, 0.7))
+    cube = bpy.context.active_object
+    cube.name = "nm_cube"
+    cube.scale = (1.0, 0.7, 1.2)
+    me = cube.data
+    second = me.uv_layers.new(name="Rotated")
+    for loop in me.loops:  # the second map turned by 60 degrees and stretched
+        u, v = me.uv_layers[0].data[loop.index].uv
+        c, s = math.cos(1.05), math.sin(1.05)
+        second.data[loop.index].uv = (2.0 * (c * u - s * v), s * u + c * v)
+    me.uv_layers.active_index = 0
+    me.materials.append(material("nm_cube", uv_map="Rotated"))
+    cam = cy.add_camera((0, -6.0, 0), (0, 0, 0), lens_mm=35.0)
+    cam.data.type = "ORTHO"
+    cam.data.ortho_scale = 5.6
+    cy.set_world_color((0, 0, 0))
+
+
 def build_multiscatter(out_dir):
     """(issue 30) Multiscatter GGX (Cycles' random walk): a rough gold Glossy, an anisotropic
     Glossy, a rough Principled metal and a rough Principled dielectric with specular tint,
@@ -714,7 +767,7 @@ BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "pano_equirect": build_pano_equirect, "pano_fisheye": build_pano_fisheye,
             "pano_equisolid": build_pano_equisolid, "film_alpha": build_film_alpha,
             "motion": build_motion, "motion_camera": build_motion_camera,
-            "motion_deform": build_motion_deform}
+            "motion_deform": build_motion_deform, "normal_map": build_normal_map}
 
 
 def build(name, out_dir):

@@ -225,6 +225,65 @@ def mesh_entry(me, name, buf):
     return entry
 
 
+def tangent_maps(graph):
+    """The UV maps ("" = the active render one) whose tangents a material's Normal Map nodes
+    read in tangent space."""
+    return {n.get("props", {}).get("uv_map", "") for n in (graph or {}).get("nodes", ())
+            if n.get("type") == "ShaderNodeNormalMap" and
+            n.get("props", {}).get("space", "TANGENT") == "TANGENT"}
+
+
+def add_tangents(entry, me, names, buf):
+    """MikkTSpace tangents and bitangent signs per triangle corner of the UV maps `names` (""
+    = active render), added to the mesh entry's "tangents" once each. Cycles 3.4 runs
+    MikkTSpace over its triangles (blender/mesh.cpp, mikk_compute_tangents), not over
+    Blender's quads and n-gons, and the two differ; so Blender's calc_tangents runs here on a
+    temporary mesh of the loop triangles, with the mesh's split normals on its smooth faces
+    and each triangle's own normal on flat ones, as Cycles gives them to MikkTSpace."""
+    have = entry.setdefault("tangents", [])
+    render = next((uv.name for uv in me.uv_layers if uv.active_render), "")
+    wanted = [n or render for n in sorted(names)]
+    wanted = [n for i, n in enumerate(wanted) if n and n in me.uv_layers and n not in wanted[:i]
+              and all(t["uv_map"] != n for t in have)]
+    if not wanted:
+        if not have:
+            del entry["tangents"]
+        return
+    nv, nl, nt = len(me.vertices), len(me.loops), len(me.loop_triangles)
+    tris = _get(me.loop_triangles, "loops", nt * 3, np.uint32)
+    polys = _Polys(me, nt)
+    smooth = polys.per_triangle(_get(me.polygons, "use_smooth", len(me.polygons), bool))
+    loop_vertex = _get(me.loops, "vertex_index", nl, np.uint32)
+    normals = np.array(_corner_normals(me, nl, tris, polys, smooth, loop_vertex)).reshape(-1, 3)
+    tmp = bpy.data.meshes.new("glint_tangents")
+    try:
+        tmp.vertices.add(nv)
+        tmp.vertices.foreach_set("co", _get(me.vertices, "co", nv * 3, np.float32))
+        tmp.loops.add(nt * 3)
+        tmp.loops.foreach_set("vertex_index", loop_vertex[tris].astype(np.int32))
+        tmp.polygons.add(nt)
+        tmp.polygons.foreach_set("loop_start", np.arange(0, nt * 3, 3, dtype=np.int32))
+        tmp.polygons.foreach_set("loop_total", np.full(nt, 3, dtype=np.int32))
+        tmp.polygons.foreach_set("use_smooth", smooth)
+        for name in wanted:
+            uv = _get(me.uv_layers[name].data, "uv", nl * 2, np.float32).reshape(-1, 2)
+            tmp.uv_layers.new(name=name).data.foreach_set("uv", uv[tris].reshape(-1))
+        tmp.update()
+        tmp.use_auto_smooth = True
+        tmp.auto_smooth_angle = math.pi
+        tmp.normals_split_custom_set(normals[tris].tolist())
+        for name in wanted:
+            tmp.calc_tangents(uvmap=name)
+            have.append({"uv_map": name, "active_render": name == render,
+                         "tangent": buf.view(_get(tmp.loops, "tangent", nt * 9, np.float32),
+                                             "f32", 3),
+                         "sign": buf.view(_get(tmp.loops, "bitangent_sign", nt * 3, np.float32),
+                                          "f32")})
+            tmp.free_tangents()
+    finally:
+        bpy.data.meshes.remove(tmp)
+
+
 def mesh_motion_arrays(me, counts):
     """A deforming mesh at one motion time: (positions, split normals) as float32 arrays, None
     when its topology (vertex, corner and triangle counts) differs from `counts`, the centre's
@@ -346,6 +405,7 @@ class _Exporter:
         self.buf = None
         self.meshes, self.mesh_index = [], {}   # mesh key -> index (None: no triangles)
         self.materials, self.material_index = [], {}
+        self.material_tangents = {}             # material index -> UV maps of its Normal Maps
         self.objects, self.lights = [], []
         self.object_info = {}                   # per instanced object: the shared parts
         self.parent_info = {}                   # per parent: visibility, holdout, ...
@@ -424,6 +484,13 @@ class _Exporter:
                 label += " (%s '%s')" % ("mesh" if orig.type == 'MESH' else orig.type.lower(),
                                          data.name)
             self.names["object"].setdefault(ob.name, label)
+            need = set()
+            for m in mats:
+                if m >= 0:
+                    need |= self.material_tangents.setdefault(
+                        m, tangent_maps(self.materials[m]["graph"]))
+            if need and mesh is not None:
+                add_tangents(self.meshes[mesh], ob.data, need, self.buf)
             info = self.object_info[key] = (mesh, mats, _visibility(ob), ob.is_shadow_catcher,
                                             list(ob.color), ob.pass_index)
         return info

@@ -271,14 +271,19 @@ int bump_normal(Compiler& c, int height, int normal, int strength, int distance,
 namespace {
 
 // Cycles 3.4's Normal Map (svm_node_normal_map). Tangent space works in object space: the
-// tangent (glint has no MikkTSpace tangents yet: dPdu stands in) and the normal taken back
-// into the object (the face's normal, unflipped, through the transpose), the
-// result through the inverse transpose into the world. Blender's own spaces negate Y and Z.
-// A back face flips the result.
+// MikkTSpace tangent and bitangent sign Blender computed for the node's UV map (the mesh's
+// Tangent attribute, interpolated over the face unnormalized, as Cycles does) and the normal
+// taken back into the object (the face's normal, unflipped, through the transpose), the
+// result through the inverse transpose into the world. A mesh without those tangents (none
+// exported: an n-gon mesh Blender cannot compute them for) falls back to dPdu, normalized,
+// with a positive sign. Blender's own spaces negate Y and Z. A back face flips the result.
 void normal_map(Compiler& c, int n) {
     const std::string space = c.enum_prop(n, "space", "TANGENT");
     const int out = c.fresh();
+    auto uv_map = std::make_shared<std::string>(c.enum_prop(n, "uv_map", ""));
     Op op;
+    op.data = uv_map.get();
+    c.program_keep(uv_map);
     op.in[0] = c.in(n, "Color", 'c', float3(0.5f, 0.5f, 1.0f));
     op.in[1] = c.in(n, "Strength", 'f', float3(1));
     op.in[2] = kRegN;
@@ -302,17 +307,34 @@ void normal_map(Compiler& c, int n) {
         if (o.i[0] == 0) {
             // The normal as the face has it (N is Ng on a flat face), unflipped.
             const float3 g = sg.backfacing ? -N : N;
-            const float3 t_world = r[o.in[3]];
-            float3 t, nrm;
-            for (int i = 0; i < 3; ++i) {
-                t[i] = sg.world_to_object[i][0] * t_world.x + sg.world_to_object[i][1] * t_world.y +
-                       sg.world_to_object[i][2] * t_world.z;
+            float3 nrm;
+            for (int i = 0; i < 3; ++i)
                 nrm[i] = sg.object_to_world[0][i] * g.x + sg.object_to_world[1][i] * g.y +
                          sg.object_to_world[2][i] * g.z;
-            }
-            t = safe_normalize(t);
             nrm = safe_normalize(nrm);
-            const float3 B = cross(nrm, t);
+            float3 t;
+            float sign = 1;
+            Vec3 mikk, smooth;
+            double mikk_sign = 1;
+            const AttributePoint& at = sg.attributes;
+            if (at.source && at.source->attribute(*static_cast<const std::string*>(o.data),
+                                                  AttributeSource::Want::Tangent, at.face,
+                                                  at.b1, at.b2, &mikk, &mikk_sign)) {
+                // As Cycles combines them: the tangent and, on a smooth face, the normal as
+                // interpolated, not normalized.
+                t = float3(mikk);
+                sign = static_cast<float>(mikk_sign);
+                if (at.source->corner_normal(at.face, at.b1, at.b2, &smooth))
+                    nrm = float3(smooth);
+            } else {
+                const float3 t_world = r[o.in[3]];
+                for (int i = 0; i < 3; ++i)
+                    t[i] = sg.world_to_object[i][0] * t_world.x +
+                           sg.world_to_object[i][1] * t_world.y +
+                           sg.world_to_object[i][2] * t_world.z;
+                t = safe_normalize(t);
+            }
+            const float3 B = cross(nrm, t) * sign;
             res = normal_to_world(safe_normalize(t * col.x + B * col.y + nrm * col.z));
         } else {
             if (o.i[1]) col = float3(col.x, -col.y, -col.z);

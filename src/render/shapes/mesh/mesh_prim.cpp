@@ -256,6 +256,9 @@ private:
                    double* alpha) const override {
         return attr_mesh_ && mesh_attribute(*attr_mesh_, name, want, face, b1, b2, value, alpha);
     }
+    bool corner_normal(int face, double b1, double b2, Vec3* n) const override {
+        return attr_mesh_ && mesh_corner_normal(*attr_mesh_, face, b1, b2, n);
+    }
 
     using Index3 = std::array<int, 3>;
     Vec3 origin_;                // the float vertices are offsets from here
@@ -288,7 +291,8 @@ bool mesh_attribute(const scene::Mesh& mesh, std::string_view name, AttributeSou
     const scene::MeshAttribute* found = nullptr;
     for (const scene::MeshAttribute& a : mesh.attributes) {
         if ((want == Want::UV && a.kind != Kind::UV) ||
-            (want == Want::Color && a.kind != Kind::Color))
+            (want == Want::Color && a.kind != Kind::Color) ||
+            ((want == Want::Tangent) != (a.kind == Kind::Tangent)))
             continue;
         if (name.empty() ? a.active_render : a.name == name) {
             found = &a;
@@ -296,12 +300,27 @@ bool mesh_attribute(const scene::Mesh& mesh, std::string_view name, AttributeSou
         }
     }
     if (!found) return false;
-    const auto& c = mesh.corners[static_cast<size_t>(face)];
+    std::array<int, 3> c = mesh.corners[static_cast<size_t>(face)];
+    if (found->per_triangle_corner) {
+        if (found->values.size() < 3 * mesh.faces.size()) return false;
+        c = {3 * face, 3 * face + 1, 3 * face + 2};
+    }
     const double b0 = 1 - b1 - b2;
     *value = found->values[c[0]] * b0 + found->values[c[1]] * b1 + found->values[c[2]] * b2;
     *alpha = found->alpha.empty() ? 1.0
                                   : found->alpha[c[0]] * b0 + found->alpha[c[1]] * b1 +
                                         found->alpha[c[2]] * b2;
+    return true;
+}
+
+bool mesh_corner_normal(const scene::Mesh& mesh, int face, double b1, double b2, Vec3* n) {
+    if (face < 0 || static_cast<size_t>(face) >= mesh.faces.size()) return false;
+    const auto& ni = mesh.faces[static_cast<size_t>(face)].n;
+    const int count = static_cast<int>(mesh.normals.size());
+    for (int k = 0; k < 3; ++k)
+        if (ni[static_cast<size_t>(k)] < 0 || ni[static_cast<size_t>(k)] >= count) return false;
+    *n = mesh.normals[static_cast<size_t>(ni[0])] * (1 - b1 - b2) +
+         mesh.normals[static_cast<size_t>(ni[1])] * b1 + mesh.normals[static_cast<size_t>(ni[2])] * b2;
     return true;
 }
 

@@ -42,5 +42,8 @@ inline void interpolate_uv(const Vec3& p0, const Vec3& p1, const Vec3& p2, const
 // through Mesh::corners) at scene face `face`.
 bool mesh_attribute(const scene::Mesh& mesh, std::string_view name, AttributeSource::Want want,
                     int face, double b1, double b2, Vec3* value, double* alpha);
+// AttributeSource::corner_normal over a scene mesh's normals (of its frame, for a deforming
+// one).
+bool mesh_corner_normal(const scene::Mesh& mesh, int face, double b1, double b2, Vec3* n);
 
 }  // namespace glint::render

@@ -103,6 +103,9 @@ public:
                    double* alpha) const override {
         return attr_mesh_ && mesh_attribute(*attr_mesh_, name, want, face, b1, b2, value, alpha);
     }
+    bool corner_normal(int face, double b1, double b2, Vec3* n) const override {
+        return attr_mesh_ && mesh_corner_normal(*attr_mesh_, face, b1, b2, n);
+    }
 
 private:
     struct Face {
