@@ -1,11 +1,12 @@
-// Multiple-scattering GGX reflection (Heitz et al. 2016, "Multiple-Scattering Microfacet
-// BSDFs with the Smith Model"), as Cycles 3.4's Multiscatter GGX closures define it: a random
+// Multiple-scattering GGX reflection and glass (Heitz et al. 2016, "Multiple-Scattering
+// Microfacet BSDFs with the Smith Model"), as Cycles 3.4's Multiscatter GGX closures define
+// them. Reflection first (MultiGgx), the dielectric walk below (MultiGlass). A random
 // walk over the microsurface's heights and normals until the light leaves it. eval() adds the
 // analytic single-scattering term (height-correlated masking) to a stochastic estimate of the
 // rest, so its value is right in expectation only, as Cycles' is; its pdf is Cycles'
 // approximation (the single-scattering visible-normal pdf blended with a cosine lobe by the
 // single-scattering albedo). sample() walks the surface and returns the walk's throughput.
-// Directions are local (z the normal), both above the surface; wo is towards the viewer.
+// Directions are local (z the normal), wo towards the viewer; for reflection both above.
 #pragma once
 
 #include <cstdint>
