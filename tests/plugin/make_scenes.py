@@ -5,8 +5,9 @@
         [--references --spp 256 --seeds 16 --ref tests/plugin/ref]
 
 For each scene NAME (the keys of BUILDERS: cornell, principled, textured, lamps, anim, bsdfs,
-attributes, displacement, the panoramas, film_alpha, motion, motion_camera) this saves --out/NAME.blend
-(plus the generated assets it uses: texture.png, sky.exr, referenced relatively). Everything is
+attributes, displacement, multiscatter, the panoramas, film_alpha, motion, motion_camera,
+msglass) this saves --out/NAME.blend (plus the generated assets it uses: texture.png, sky.exr,
+referenced relatively); --scenes picks some of them. Everything is
 built from code, so the files are the same from run to run; the CTests build them at test time
 into the build tree (the plugin.scenes fixture), and only the references are committed.
 
@@ -545,6 +546,32 @@ def build_multiscatter(out_dir):
     sky_world(out_dir)
 
 
+def build_msglass(out_dir):
+    """Multiscatter GGX glass (Cycles' dielectric random walk): Glass BSDFs of roughness 0.3
+    (clear) and 0.8 (tinted), IOR 1.45, and a Principled BSDF of transmission 1, roughness 0.5
+    (Cycles' glass-with-Fresnel closure), on a grey floor under a square area light and a world
+    colour."""
+    mats = [
+        node_material("msg_clear", "ShaderNodeBsdfGlass", distribution="MULTI_GGX",
+                      Color=(1.0, 1.0, 1.0, 1), Roughness=0.3, IOR=1.45),
+        node_material("msg_tinted", "ShaderNodeBsdfGlass", distribution="MULTI_GGX",
+                      Color=(0.55, 0.8, 1.0, 1), Roughness=0.8, IOR=1.45),
+        node_material("msg_principled", "ShaderNodeBsdfPrincipled", distribution="MULTI_GGX",
+                      **{"Base Color": (1.0, 0.85, 0.6, 1), "Transmission": 1.0,
+                         "Roughness": 0.5, "IOR": 1.45, "Specular Tint": 0.5}),
+    ]
+    floor(cy.diffuse_material("floor", (0.5, 0.5, 0.5)))
+    cy.add_box("backdrop", (0.0, 1.4, 0.5), (3.6, 0.2, 1.0), 0, cy.diffuse_material(
+        "backdrop", (0.7, 0.25, 0.15)))
+    for k, m in enumerate(mats):
+        add_sphere("sphere_" + m.name, ((k - 1) * 1.15, 0, 0.5), 0.5, m, segments=48,
+                   rings=24)
+    light = add_light("area", "AREA", (-1.0, -2.0, 3.0), energy=60.0, shape="SQUARE", size=1.5)
+    aim(light, (0, 0, 0))
+    cy.add_camera((0, -5.0, 1.6), (0, 0, 0.45), lens_mm=35.0)
+    cy.set_world_color((0.25, 0.3, 0.4))
+
+
 def pano_room():
     """What the panoramic cameras look at (issue 30): a floor, coloured boxes and spheres all
     around the camera's place (ahead, to each side, behind), a sun and a world colour, so every
@@ -767,7 +794,8 @@ BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "pano_equirect": build_pano_equirect, "pano_fisheye": build_pano_fisheye,
             "pano_equisolid": build_pano_equisolid, "film_alpha": build_film_alpha,
             "motion": build_motion, "motion_camera": build_motion_camera,
-            "motion_deform": build_motion_deform, "normal_map": build_normal_map}
+            "motion_deform": build_motion_deform, "normal_map": build_normal_map,
+            "msglass": build_msglass}
 
 
 def build(name, out_dir):

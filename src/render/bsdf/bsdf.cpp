@@ -107,7 +107,7 @@ Bsdf Bsdf::principled(const PrincipledParams& p) {
     // No reflection lobe without specular and metallic, as in Cycles (POV-Ray's plain diffuse
     // surfaces are pure Lambert).
     b.w_spec_ = (spec > 1e-5 || m > 1e-5) && p.specular_lobe ? 1 - t : 0.0;
-    b.w_trans_ = t;
+    b.w_trans_ = p.glass_lobes ? t : 0.0;
     b.trans_tint_ = p.base;
     b.eta_ = p.ior > 0 ? p.ior : 1.45;
     b.trans_delta_ = rt * rt < kDeltaAlpha || std::fabs(b.eta_ - 1) < kIndexMatched;

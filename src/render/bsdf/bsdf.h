@@ -68,6 +68,9 @@ struct PrincipledParams {
     // Off: no reflection lobe (the caller adds Multiscatter GGX's in its place, with
     // specular_cspec0() and specular_eta()).
     bool specular_lobe = true;
+    // Off: no glass lobes (the caller adds Multiscatter GGX glass in their place); the other
+    // lobes keep the weights that `transmission` gives them.
+    bool glass_lobes = true;
 };
 
 struct BsdfSample {
@@ -102,6 +105,10 @@ public:
     // the pick left each lobe an unstratified subset of them (on a Principled surface under
     // a sky, 5-7x the variance of direct light). Returns false when no direction results.
     bool sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const;
+    // True when it has no lobe at all (nothing to add to a closure set).
+    bool empty() const {
+        return w_diffuse_ == 0 && w_spec_ == 0 && w_trans_ == 0 && w_phong_ == 0;
+    }
     // True when every lobe is a delta (then light sampling is pointless).
     bool all_delta() const {
         return w_diffuse_ == 0 && w_phong_ == 0 && (w_spec_ == 0 || spec_delta_) &&

@@ -132,6 +132,22 @@ Lobe Lobe::multi_ggx(const MultiGgx& m) {
     return l;
 }
 
+Lobe Lobe::multi_glass(const MultiGlass& m) {
+    Lobe l;
+    l.kind_ = Kind::MultiGlass;
+    l.glass_ = m;
+    l.glass_.alpha = std::clamp(m.alpha, 1e-4, 1.0);
+    l.glass_.eta = std::max(m.eta, 1e-5);
+    auto saturate = [](const Color& c) {
+        return Color(std::clamp(c.r, 0.0, 1.0), std::clamp(c.g, 0.0, 1.0),
+                     std::clamp(c.b, 0.0, 1.0));
+    };
+    l.glass_.color = saturate(m.color);
+    l.glass_.cspec0 = saturate(m.cspec0);
+    l.delta_ = l.glass_.alpha * l.glass_.alpha < 1e-7;
+    return l;
+}
+
 namespace {
 // A seed from the bits of some doubles: the multiscatter walk's random numbers, the same for
 // the same directions whatever the thread.
@@ -160,6 +176,12 @@ double Lobe::sample_scale(const Vec3& wo) const {
         const Color f = multi_.cspec0 * (1 - fh) + Color(fh);
         return (f.r + f.g + f.b) / 3;
     }
+    if (kind_ == Kind::MultiGlass && glass_.fresnel) {
+        // The same for the glass, with the index ratio of wo's side.
+        const double eta = wo.z < 0 ? 1 / glass_.eta : glass_.eta;
+        const Color f = fresnel_tint(glass_.cspec0, eta, c);
+        return (f.r + f.g + f.b) / 3;
+    }
     return 1;
 }
 
@@ -173,6 +195,11 @@ Color Lobe::eval(const Vec3& wo, const Vec3& wi, double* pdf) const {
         if (i.z >= 0) return {};
         *pdf = -i.z * kInvPi;
         return Color(*pdf);
+    }
+    if (kind_ == Kind::MultiGlass) {
+        MultiGlass g = glass_;
+        if (wo.z < 0) g.eta = 1 / g.eta;
+        return multi_glass_eval(g, o, i, seed_of({o.x, o.y, i.x, i.y, i.z}), pdf);
     }
     if (kind_ == Kind::Refraction) {
         if (i.z >= 0) return {};
@@ -313,6 +340,32 @@ bool Lobe::sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const {
             Color weight;
             double pdf;
             if (!multi_ggx_sample(multi_, o, seed_of({u1, u2, o.x, o.y}), &i, &weight, &pdf))
+                return false;
+            out->wi = Vec3(i.x, i.y, i.z * s);
+            out->delta = false;
+            out->pdf = pdf;
+            out->weight = weight;
+            return true;
+        }
+        case Kind::MultiGlass: {
+            MultiGlass g = glass_;
+            if (wo.z < 0) g.eta = 1 / g.eta;
+            if (delta_) {
+                // Cycles' singular case: a smooth interface, mirror or refraction by the
+                // Fresnel term, of weight 1.
+                const double f = fresnel_dielectric(o.z, g.eta);
+                if (u1 < f || !refract(o, Vec3(0, 0, 1), g.eta, &i)) {
+                    if (!finish(Vec3(-o.x, -o.y, o.z), true, Color(1, 1, 1))) return false;
+                    out->pdf = f;
+                    return true;
+                }
+                if (!finish(i, true, Color(1, 1, 1))) return false;
+                out->pdf = 1 - f;
+                return true;
+            }
+            Color weight;
+            double pdf;
+            if (!multi_glass_sample(g, o, seed_of({u1, u2, o.x, o.y}), &i, &weight, &pdf))
                 return false;
             out->wi = Vec3(i.x, i.y, i.z * s);
             out->delta = false;

@@ -2,9 +2,10 @@
 // cover, as Cycles 3.4 defines them (kernel/closure/bsdf_*.h): Oren-Nayar, Translucent, the
 // two Toon lobes, Ashikhmin's Velvet, the Principled BSDF's sheen and clearcoat, microfacet
 // reflection (Glossy and Anisotropic: GGX, Beckmann, Ashikhmin-Shirley) and refraction
-// (Refraction BSDF). A lobe lives in a local frame (z the shading normal, x the tangent);
-// wo points towards the viewer. eval() returns f |cos wi|, as Cycles' closures do (Toon is
-// defined by that product, not by f). Plain values, built per hit on the stack.
+// (Refraction BSDF), and the Multiscatter GGX random walks (reflection and glass). A lobe
+// lives in a local frame (z the shading normal, x the tangent); wo points towards the viewer.
+// eval() returns f |cos wi|, as Cycles' closures do (Toon is defined by that product, not by
+// f). Plain values, built per hit on the stack.
 #pragma once
 
 #include <cstdint>
@@ -19,7 +20,7 @@ class Lobe {
 public:
     enum class Kind : uint8_t {
         OrenNayar, Translucent, DiffuseToon, GlossyToon, Velvet, Sheen, Clearcoat,
-        Reflection, Refraction, AshikhminShirley, MultiGGX
+        Reflection, Refraction, AshikhminShirley, MultiGGX, MultiGlass
     };
 
     // Oren-Nayar with Cycles' sigma = roughness in [0, 1] (0 is Lambert).
@@ -45,6 +46,10 @@ public:
     // Multiscatter GGX reflection (multiscatter.h); alpha below Cycles' singular threshold is
     // a mirror. Its eval() is an estimate (right in expectation), as in Cycles.
     static Lobe multi_ggx(const MultiGgx& m);
+    // Multiscatter GGX glass (multiscatter.h) with `eta` inside over outside; the lobe turns
+    // it to the viewer's side. Alpha is clamped to [1e-4, 1] as in Cycles; below its singular
+    // threshold the lobe is a smooth dielectric (mirror or refraction by the Fresnel term).
+    static Lobe multi_glass(const MultiGlass& m);
 
     Kind kind() const { return kind_; }
     bool delta() const { return delta_; }
@@ -68,6 +73,7 @@ private:
     double eta_ = 1;
     Microfacet m_;
     MultiGgx multi_;
+    MultiGlass glass_;
 };
 
 }  // namespace glint::render

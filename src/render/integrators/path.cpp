@@ -83,6 +83,12 @@ void add_closure(ClosureSet& set, const shader::Closure& c, const Vec3& n, doubl
             set.add(Lobe::refraction(Microfacet{mf, alpha, alpha}, c.ior), wc, n, share);
             return;
         case ClosureKind::Glass: {
+            if (c.distribution == Distribution::MultiGGX) {
+                // Cycles' Multiscatter GGX glass: the colour weighs the first scattering and
+                // tints each one after it.
+                set.add(Lobe::multi_glass(MultiGlass{alpha, c.ior, c.color}), wc, n, share);
+                return;
+            }
             PrincipledParams p;
             p.base = Color(1, 1, 1);
             p.roughness = c.roughness;
@@ -108,12 +114,18 @@ void add_closure(ClosureSet& set, const shader::Closure& c, const Vec3& n, doubl
         c.distribution == Distribution::GGX
             ? 1 - (1 - c.roughness) * (1 - std::clamp(c.transmission_roughness, 0.0, 1.0))
             : c.roughness;
-    // Multiscatter GGX: Cycles takes it for the reflection lobe above roughness 0.075 (the
-    // glass lobes keep single scattering; the compiler warns about those).
+    // Multiscatter GGX: Cycles takes it for the reflection lobe above roughness 0.075, and
+    // for the glass lobes above roughness 0.05 (one random walk with Fresnel tints in place
+    // of the two).
     const bool multi = c.distribution == Distribution::MultiGGX && c.roughness > 0.075;
+    const double glass_weight = std::clamp(c.transmission, 0.0, 1.0) *
+                                (1 - std::clamp(c.metallic, 0.0, 1.0));
+    const bool multi_glass = c.distribution == Distribution::MultiGGX && c.roughness > 0.05 &&
+                             glass_weight > 1e-5;
     p.specular_lobe = !multi;
+    p.glass_lobes = !multi_glass;
     const Bsdf main = Bsdf::principled(p);
-    set.add(main, w, n, share, tangent);
+    if (!main.empty()) set.add(main, w, n, share, tangent);
     if (multi && (c.specular > 1e-5 || c.metallic > 1e-5)) {
         const double spec_weight = 1 - (1 - c.metallic) * c.transmission;
         const double aspect = std::sqrt(std::max(0.0, 1 - 0.9 * std::clamp(c.anisotropy, 0.0, 1.0)));
@@ -121,6 +133,15 @@ void add_closure(ClosureSet& set, const shader::Closure& c, const Vec3& n, doubl
                    main.specular_eta()};
         const Color sw = w * spec_weight;
         set.add(Lobe::multi_ggx(m), sw, n, std::fabs(average(sw)), tangent);
+    }
+    if (multi_glass) {
+        // Cycles' bsdf_microfacet_multi_ggx_glass_fresnel_setup: weighed by the transmission
+        // alone, the base colour tinting refractions and the specular tint's cspec0 the
+        // reflections.
+        const double st = c.specular_tint;
+        MultiGlass g{alpha, c.ior, c.color, true, c.color * st + Color(1 - st)};
+        const Color gw = w * glass_weight;
+        set.add(Lobe::multi_glass(g), gw, n, std::fabs(average(gw)));
     }
     const double diffuse_weight = (1 - c.metallic) * (1 - c.transmission);
     if (diffuse_weight > 1e-5 && c.sheen > 1e-5) {

@@ -42,18 +42,7 @@ Distribution distribution(Compiler& c, int n, const char* fallback, bool* sharp)
     *sharp = d == "SHARP";
     if (d == "BECKMANN") return Distribution::Beckmann;
     if (d == "ASHIKHMIN_SHIRLEY") return Distribution::AshikhminShirley;
-    if (d == "MULTI_GGX") {
-        // Glass keeps single scattering (the reflection lobes have the random walk).
-        const std::string& type = c.node(n).type;
-        const scene::ShaderInput* t = c.node(n).input("Transmission");
-        const bool glass = type == "ShaderNodeBsdfGlass" ||
-                           (type == "ShaderNodeBsdfPrincipled" && t &&
-                            (t->link.linked() || t->value[0] != 0));
-        if (glass)
-            c.unsupported(n, "Multiscatter GGX glass is rendered with single-scatter GGX "
-                             "(darker when rough)");
-        return Distribution::MultiGGX;
-    }
+    if (d == "MULTI_GGX") return Distribution::MultiGGX;
     return Distribution::GGX;
 }
 
