@@ -477,11 +477,10 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
     settings.filter_glossy = render.number("filter_glossy", 1);
     settings.caustics_reflective = render.boolean("caustics_reflective", true);
     settings.caustics_refractive = render.boolean("caustics_refractive", true);
-    scene.blender_render = settings;
-    // Settings the renderer does not have yet: said once each, rendered without.
     if (settings.film_transparent && render.boolean("film_transparent_glass", false))
-        diag.warning(loc, "Film > Transparent Glass is not supported yet: glass is opaque "
-                          "against the transparent film (alpha 1 behind it)");
+        settings.film_transparent_glass =
+            std::max(0.0, render.number("film_transparent_roughness", 0.1));
+    scene.blender_render = settings;
     // Motion blur: the camera's and objects' `motion` matrices are read only with it on.
     const bool motion_blur =
         render.has("motion_blur") && render.at("motion_blur").boolean("use", false);

@@ -608,6 +608,7 @@ int render_frame(const RenderArgs& args) {
         options.transmission_bounces = b.transmission_bounces;
         options.transparent_bounces = b.transparent_bounces;
         options.film_transparent = b.film_transparent;
+        options.film_transparent_glass = b.film_transparent_glass;
     }
     double parse_seconds = seconds_since(start);
     if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");

@@ -72,6 +72,11 @@ struct RenderOptions {
     // Cycles' combined pass; without it alpha is 1 (render() sets it for transparent film
     // and for holdouts).
     bool film_transparent = false;
+    // Film > Transparent Glass's roughness threshold (negative: off): a transmission sampled
+    // from a lobe whose alpha_x alpha_y is at most the threshold to the fourth (Cycles'
+    // background.cpp squares it twice) leaves the view transparent, as a transparent surface
+    // does.
+    double film_transparent_glass = -1;
     bool alpha = false;
     // Called with the finished fraction in [0, 1], from any thread, at most every tile.
     std::function<void(double)> progress;

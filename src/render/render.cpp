@@ -35,6 +35,7 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
         ps.transmission_bounces = options.transmission_bounces;
         ps.transparent_bounces = options.transparent_bounces;
         ps.film_transparent = options.film_transparent;
+        ps.film_transparent_glass = options.film_transparent_glass;
         // The film carries alpha where something can make the camera's view transparent: a
         // transparent film, a holdout object or a Holdout closure (as in Cycles, with or
         // without the transparent film). Otherwise alpha stays 1 and the file has none.

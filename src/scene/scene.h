@@ -48,6 +48,9 @@ struct BlenderRender {
     int max_bounces = 12, diffuse_bounces = 4, glossy_bounces = 4, transmission_bounces = 12,
         transparent_bounces = 8;
     bool film_transparent = false;
+    // Film > Transparent Glass: the Roughness Threshold under which a transmission keeps the
+    // camera's view of the world transparent; negative when off.
+    double film_transparent_glass = -1;
     std::string pixel_filter = "BLACKMAN_HARRIS";  // Cycles' BOX, GAUSSIAN, BLACKMAN_HARRIS
     double filter_width = 1.5;
     double clamp_direct = 0, clamp_indirect = 10;

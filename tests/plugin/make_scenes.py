@@ -27,6 +27,7 @@ import math
 import os
 import sys
 import time
+import types
 
 import bpy
 
@@ -466,59 +467,6 @@ def build_displacement(out_dir):
     cy.set_world_color((0, 0, 0))
 
 
-def build_normal_map(out_dir):
-    """(issue 30) The Normal Map node in tangent space, its output normal shown through
-    Emission (N * 0.5 + 0.5, so the image is exact): a constant tangent-space colour on a
-    low-poly smooth UV sphere (MikkTSpace's tangents are smooth where dPdu is faceted),
-    Suzanne (mirrored UV islands: the bitangent sign flips) and a rotated, non-uniformly scaled
-    cube through a second UV map that is not the active one; black world, orthographic camera."""
-    def material(name, uv_map=""):
-        mat = bpy.data.materials.new(name)
-        mat.use_nodes = True
-        nt = mat.node_tree
-        for n in list(nt.nodes):
-            if n.type != "OUTPUT_MATERIAL":
-                nt.nodes.remove(n)
-        out = nt.nodes["Material Output"]
-        nm = nt.nodes.new("ShaderNodeNormalMap")
-        nm.space = "TANGENT"
-        nm.uv_map = uv_map
-        nm.inputs["Color"].default_value = (0.85, 0.25, 0.8, 1.0)
-        half = nt.nodes.new("ShaderNodeVectorMath")
-        half.operation = "MULTIPLY_ADD"
-        half.inputs[1].default_value = (0.5, 0.5, 0.5)
-        half.inputs[2].default_value = (0.5, 0.5, 0.5)
-        nt.links.new(nm.outputs["Normal"], half.inputs[0])
-        em = nt.nodes.new("ShaderNodeEmission")
-        nt.links.new(half.outputs["Vector"], em.inputs["Color"])
-        nt.links.new(em.outputs[0], out.inputs["Surface"])
-        return mat
-
-    add_sphere("nm_sphere", (-1.8, 0, 0), 0.8, material("nm_sphere"), segments=10, rings=6)
-    bpy.ops.mesh.primitive_monkey_add(size=1.4, location=(0, 0, 0), rotation=(0, 0, math.pi))
-    monkey = bpy.context.active_object
-    monkey.name = "nm_monkey"
-    bpy.ops.object.shade_smooth()
-    monkey.data.materials.append(material("nm_monkey"))
-    bpy.ops.mesh.primitive_cube_add(size=1.0, location=(1.8, 0, 0),
-                                    rotation=(0.4, 0.3, 0.7))
-    cube = bpy.context.active_object
-    cube.name = "nm_cube"
-    cube.scale = (1.0, 0.7, 1.2)
-    me = cube.data
-    second = me.uv_layers.new(name="Rotated")
-    for loop in me.loops:  # the second map turned by 60 degrees and stretched
-        u, v = me.uv_layers[0].data[loop.index].uv
-        c, s = math.cos(1.05), math.sin(1.05)
-        second.data[loop.index].uv = (2.0 * (c * u - s * v), s * u + c * v)
-    me.uv_layers.active_index = 0
-    me.materials.append(material("nm_cube", uv_map="Rotated"))
-    cam = cy.add_camera((0, -6.0, 0), (0, 0, 0), lens_mm=35.0)
-    cam.data.type = "ORTHO"
-    cam.data.ortho_scale = 5.6
-    cy.set_world_color((0, 0, 0))
-
-
 def build_multiscatter(out_dir):
     """(issue 30) Multiscatter GGX (Cycles' random walk): a rough gold Glossy, an anisotropic
     Glossy, a rough Principled metal and a rough Principled dielectric with specular tint,
@@ -667,7 +615,7 @@ def build_film_alpha(out_dir):
 
 
 # Scenes whose film is transparent: rendered and saved as RGBA, with an alpha reference.
-ALPHA_SCENES = ("film_alpha",)
+ALPHA_SCENES = ("film_alpha", "film_glass")
 
 
 def film_settings(name, scene):
@@ -678,114 +626,12 @@ def film_settings(name, scene):
         scene.render.image_settings.color_mode = "RGBA"
 
 
-def keyframe_linear(ob, path, values):
-    """Keys ob.<path> at each (frame, value), linear: motion at a constant rate. `ob` may be
-    a struct inside an ID (a shape key, a modifier): the keys go to that ID's action."""
-    for frame, value in values:
-        setattr(ob, path, value)
-        ob.keyframe_insert(path, frame=frame)
-    for fc in ob.id_data.animation_data.action.fcurves:
-        for kp in fc.keyframe_points:
-            kp.interpolation = "LINEAR"
-
-
-def motion_stage():
-    """The still part of the motion scenes: a floor and a sphere under a sun, world color."""
-    floor(cy.diffuse_material("floor", (0.6, 0.6, 0.6)))
-    add_sphere("ball", (1.4, 0.8, 0.5), 0.5, cy.diffuse_material("ball", (0.3, 0.5, 0.7)))
-    sun = add_light("sun", "SUN", (0, 0, 5), energy=3.0, angle=math.radians(3.0))
-    aim(sun, (-0.5, 0.8, 0.0))
-    sun.location = (0, 0, 5)
-    cy.set_world_color((0.3, 0.35, 0.45))
-
-
-def build_motion(out_dir):
-    """Object motion blur (Cycles' defaults: shutter 0.5 frames centred on the frame, 3
-    steps): a cube sliding along X at 2 m per frame and a bar turning about Z at 90 degrees
-    per frame, both keyed linearly over frames 0-2 (frame 1 rendered); the camera stays."""
-    motion_stage()
-    cube = cy.add_box("cube", (0, 0, 0), (0.6, 0.6, 0.6), 0, cy.diffuse_material(
-        "cube", (0.8, 0.25, 0.15)))
-    keyframe_linear(cube, "location", ((0, (-2.0, -0.6, 0.3)), (2, (2.0, -0.6, 0.3))))
-    bar = cy.add_box("bar", (0, 0, 0), (1.8, 0.25, 0.25), 0, cy.diffuse_material(
-        "bar", (0.9, 0.8, 0.2)))
-    bar.location = (-0.8, 1.0, 0.6)
-    keyframe_linear(bar, "rotation_euler", ((0, (0, 0, 0)), (2, (0, 0, math.radians(180)))))
-    cy.add_camera((0.0, -5.5, 3.0), (0, 0.2, 0.3), lens_mm=35.0)
-    bpy.context.scene.render.use_motion_blur = True
-
-
-def build_motion_camera(out_dir):
-    """Camera motion blur with the shutter opening at the frame (position START, 1 frame):
-    the camera pans and rises over frames 1-2; a box turns about a tilted axis with 2 motion
-    steps (5 matrices) and one object has Cycles' motion blur off (it moves, but sharp)."""
-    motion_stage()
-    box = cy.add_box("box", (0, 0, 0), (0.8, 0.5, 0.5), 0, cy.diffuse_material(
-        "box", (0.8, 0.25, 0.15)))
-    box.location = (-0.7, 0.2, 0.8)
-    box.cycles.motion_steps = 2
-    keyframe_linear(box, "rotation_euler", ((1, (0.3, 0, 0)), (2, (0.3, 0.6, 1.6))))
-    sharp = cy.add_box("sharp", (0, 0, 0), (0.4, 0.4, 0.4), 0, cy.diffuse_material(
-        "sharp", (0.2, 0.7, 0.3)))
-    keyframe_linear(sharp, "location", ((1, (0.4, -1.0, 0.2)), (2, (1.4, -1.0, 0.2))))
-    sharp.cycles.use_motion_blur = False
-    cam = cy.add_camera((-0.3, -5.5, 2.6), (0, 0.2, 0.3), lens_mm=35.0)
-    keyframe_linear(cam, "location", ((1, (-0.3, -5.5, 2.6)), (2, (0.3, -5.3, 2.9))))
-    keyframe_linear(cam, "rotation_euler", ((1, tuple(cam.rotation_euler)),
-                                            (2, (cam.rotation_euler.x - 0.05,
-                                                 cam.rotation_euler.y,
-                                                 cam.rotation_euler.z + 0.06))))
-    scene = bpy.context.scene
-    scene.render.use_motion_blur = True
-    scene.render.motion_blur_shutter = 1.0
-    scene.cycles.motion_blur_position = "START"
-
-
-def build_motion_deform(out_dir):
-    """Deformation motion blur (Cycles' defaults: shutter 0.5 frames centred on frame 1, 3
-    steps), keyed linearly over frames 0-2: a box whose top leans along X by a shape key, a
-    smooth open tube bent by an animated Simple Deform (bend) that also slides (deformation
-    and object motion together), and a box
-    deformed by a shape key but with Deformation blur off (sharp)."""
-    motion_stage()
-    lean = cy.add_box("lean", (0, 0, 0), (0.5, 0.5, 1.0), 0, cy.diffuse_material(
-        "lean", (0.8, 0.25, 0.15)))
-    lean.location = (-1.3, -0.4, 0.5)
-    lean.shape_key_add(name="Basis")
-    key = lean.shape_key_add(name="Lean")
-    for v in key.data:
-        if v.co.z > 0:
-            v.co.x += 1.2
-    keyframe_linear(key, "value", ((0, 0.0), (2, 1.0)))
-    bpy.ops.mesh.primitive_cylinder_add(vertices=24, radius=0.18, depth=2.2,
-                                        end_fill_type="NOTHING", location=(0.2, 0.9, 0.45),
-                                        rotation=(0, math.radians(90), 0))
-    bar = bpy.context.active_object
-    bar.name = "bend"
-    bar.data.materials.append(cy.diffuse_material("bend", (0.9, 0.8, 0.2)))
-    for poly in bar.data.polygons:
-        poly.use_smooth = True
-    bpy.ops.object.mode_set(mode="EDIT")
-    bpy.ops.mesh.select_all(action="SELECT")
-    bpy.ops.mesh.subdivide(number_cuts=12)
-    bpy.ops.object.mode_set(mode="OBJECT")
-    mod = bar.modifiers.new("bend", "SIMPLE_DEFORM")
-    mod.deform_method = "BEND"
-    mod.deform_axis = "Y"
-    keyframe_linear(mod, "angle", ((0, math.radians(-60)), (2, math.radians(120))))
-    keyframe_linear(bar, "location", ((0, (0.0, 0.9, 0.45)), (2, (0.4, 0.9, 0.45))))
-    still = cy.add_box("still", (0, 0, 0), (0.4, 0.4, 0.4), 0, cy.diffuse_material(
-        "still", (0.2, 0.7, 0.3)))
-    still.location = (0.3, -1.1, 0.2)
-    still.shape_key_add(name="Basis")
-    grow = still.shape_key_add(name="Grow")
-    for v in grow.data:
-        v.co *= 1.8
-    keyframe_linear(grow, "value", ((0, 0.0), (2, 1.0)))
-    still.cycles.use_deform_motion = False
-    cy.add_camera((0.0, -5.5, 3.0), (0, 0.2, 0.3), lens_mm=35.0)
-    bpy.context.scene.render.use_motion_blur = True
-
+_more_spec = importlib.util.spec_from_file_location("more_scenes",
+                                                    os.path.join(HERE, "more_scenes.py"))
+more = importlib.util.module_from_spec(_more_spec)
+_more_spec.loader.exec_module(more)
+more.ms = types.SimpleNamespace(cy=cy, add_sphere=add_sphere, floor=floor, add_light=add_light,
+                                aim=aim, node_material=node_material)
 
 BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "textured": build_textured, "lamps": build_lamps, "anim": build_anim,
@@ -793,9 +639,9 @@ BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "displacement": build_displacement, "multiscatter": build_multiscatter,
             "pano_equirect": build_pano_equirect, "pano_fisheye": build_pano_fisheye,
             "pano_equisolid": build_pano_equisolid, "film_alpha": build_film_alpha,
-            "motion": build_motion, "motion_camera": build_motion_camera,
-            "motion_deform": build_motion_deform, "normal_map": build_normal_map,
-            "msglass": build_msglass}
+            "motion": more.build_motion, "motion_camera": more.build_motion_camera,
+            "motion_deform": more.build_motion_deform, "normal_map": more.build_normal_map,
+            "msglass": build_msglass, "film_glass": more.build_film_glass}
 
 
 def build(name, out_dir):

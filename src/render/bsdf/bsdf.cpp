@@ -251,6 +251,7 @@ bool Bsdf::sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const {
     };
     Vec3 i;
     out->diffuse = u < l.d;
+    out->roughness2 = kInfinity;
     if (u < l.d) {
         i = cosine_hemisphere(rescaled(0, l.d), u2);
     } else if (u < l.d + l.s) {
@@ -266,6 +267,9 @@ bool Bsdf::sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const {
     } else if (u < l.d + l.s + l.gr + l.gt) {
         const double etap = wo.z > 0 ? eta_ : 1.0 / eta_;
         const double share = refraction_share(glass_fresnel(wo));
+        out->roughness2 = trans_delta_ || std::fabs(eta_ - 1) < kIndexMatched
+                              ? 0.0
+                              : glass_refr_.alpha_x * glass_refr_.alpha_y;
         if (std::fabs(eta_ - 1) < kIndexMatched)  // straight on: an IOR 1 object leaves no trace
             return delta(-o, trans_tint_ * (w_trans_ * share), l.gt / sum);
         const Vec3 wm = trans_delta_ ? Vec3(0, 0, 1)

@@ -79,6 +79,9 @@ struct BsdfSample {
     double pdf = 0;  // for delta lobes: the discrete probability (not usable for MIS)
     bool delta = false;
     bool diffuse = false;  // drawn from a diffuse lobe
+    // A transmission's lobe: its alpha_x alpha_y (Cycles' bsdf_get_specular_roughness_squared,
+    // 0 for a smooth one); infinite for every other lobe.
+    double roughness2 = kInfinity;
 };
 
 class Bsdf {

@@ -105,6 +105,7 @@ bool ClosureSet::sample(double u1, double u2, ClosureSample* out) const {
     out->wi = normalize(it.frame.to_world(bs.wi));
     out->delta = bs.delta;
     out->diffuse = bs.diffuse;
+    out->roughness2 = bs.roughness2;
     out->reflected = bs.wi.z * it.wo.z > 0;
     out->straight = bs.delta && bs.wi.x == -it.wo.x && bs.wi.y == -it.wo.y && bs.wi.z == -it.wo.z;
     const double pick = it.share / total_;

@@ -18,6 +18,7 @@ struct ClosureSample {
     bool reflected = true;  // wi on wo's side of the chosen closure's normal
     bool straight = false;  // a delta lobe that continued wo unchanged (index-matched)
     bool diffuse = false;   // the sampled lobe is diffuse (Cycles' LABEL_DIFFUSE)
+    double roughness2 = kInfinity;  // BsdfSample::roughness2 of the sampled lobe
 };
 
 class ClosureSet {

@@ -282,6 +282,10 @@ bool Lobe::sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const {
     if (wo.z == 0) return false;
     const double s = wo.z < 0 ? -1.0 : 1.0;
     const Vec3 o(wo.x, wo.y, wo.z * s);
+    out->roughness2 = kind_ == Kind::Refraction
+                          ? (delta_ || std::fabs(eta_ - 1) < 1e-6 ? 0.0 : m_.alpha_x * m_.alpha_y)
+                      : kind_ == Kind::MultiGlass ? (delta_ ? 0.0 : glass_.alpha * glass_.alpha)
+                                                  : kInfinity;
     // Cycles' LABEL_DIFFUSE lobes.
     out->diffuse = kind_ == Kind::OrenNayar || kind_ == Kind::Translucent ||
                    kind_ == Kind::DiffuseToon || kind_ == Kind::Velvet || kind_ == Kind::Sheen;

@@ -519,7 +519,14 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         ClosureSample bs;
         if (!set.sample(ud.u, ud.v, &bs)) break;
         ++scatterings;
-        camera_view = false;  // a bounce, or a refraction even at IOR 1 (Cycles' singular)
+        // A bounce, or a refraction even at IOR 1 (Cycles' singular), ends the camera's view
+        // of the world, but for Film > Transparent Glass's smooth enough transmissions
+        // (Cycles' LABEL_TRANSMIT_TRANSPARENT).
+        const double glass = settings_.film_transparent_glass;
+        // (The threshold is a roughness, squared twice as Cycles squares it: roughness to
+        // alpha, then alpha_x alpha_y.)
+        camera_view = camera_view && glass >= 0 && !bs.reflected && !bs.diffuse &&
+                      bs.roughness2 <= (glass * glass) * (glass * glass);
         beta *= bs.weight;
         if (bs.straight) {
             // Straight through an index-matched surface: like an alpha hole, not a bounce.

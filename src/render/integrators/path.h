@@ -41,6 +41,7 @@ struct PathSettings {
         transparent_bounces = -1;
     // Blender's Film > Transparent (RenderOptions::film_transparent).
     bool film_transparent = false;
+    double film_transparent_glass = -1;  // RenderOptions::film_transparent_glass
 };
 
 class PathIntegrator {
