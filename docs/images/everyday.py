@@ -195,6 +195,42 @@ def motion():
     return s
 
 
+def armature():
+    """The default cube stretched into a subdivided column, bent by one armature bone keyed
+    from -35 to +35 degrees over frames 0-2, motion blur on: deformation blur alone (the object
+    itself does not move)."""
+    s = base()
+    cube = bpy.data.objects["Cube"]
+    cube.scale = (0.4, 0.4, 1.5)
+    bpy.ops.object.select_all(action='DESELECT')
+    cube.select_set(True)
+    bpy.context.view_layer.objects.active = cube
+    bpy.ops.object.transform_apply(scale=True)
+    cube.modifiers.new("subdivision", 'SUBSURF').render_levels = 2
+    bpy.ops.object.armature_add(location=(0, 0, -1.5))
+    arm = bpy.context.active_object
+    bpy.ops.object.mode_set(mode='EDIT')
+    bone = arm.data.edit_bones[0]
+    bone.head, bone.tail = (0, 0, 0), (0, 0, 3)
+    bpy.ops.object.mode_set(mode='OBJECT')
+    bpy.ops.object.select_all(action='DESELECT')
+    cube.select_set(True)
+    arm.select_set(True)
+    bpy.context.view_layer.objects.active = arm
+    bpy.ops.object.parent_set(type='ARMATURE_AUTO')
+    pose = arm.pose.bones[0]
+    pose.rotation_mode = 'XYZ'
+    for frame, angle in ((0, -0.6), (2, 0.6)):
+        pose.rotation_euler = (angle, 0, 0)
+        pose.keyframe_insert("rotation_euler", frame=frame)
+    for fc in arm.animation_data.action.fcurves:
+        for k in fc.keyframe_points:
+            k.interpolation = 'LINEAR'
+    s.frame_set(1)
+    s.render.use_motion_blur = True
+    return s
+
+
 def vertex_colors():
     s = base()
     cube = bpy.data.objects["Cube"]
@@ -285,7 +321,7 @@ def fisheye():
 
 
 SCENES = [noise_ramp, sky, still_life, toon_fresnel, motion, vertex_colors, displacement,
-          empty_parent, velvet_sheen, fisheye]
+          empty_parent, velvet_sheen, fisheye, armature]
 
 
 # ----------------------------------------------------------------------------- images and SSIM

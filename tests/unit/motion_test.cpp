@@ -248,8 +248,15 @@ TEST(Motion, ShutterMovesTheCameraRay) {
     shutter.expose(1.0, &e);
     EXPECT_NEAR(e.origin.x, 2, 1e-12);
     EXPECT_NEAR(e.dir.y, 1, 1e-12);
-    // A scene without motion has an inactive shutter.
+    // A scene without motion has an inactive shutter; a deforming mesh alone opens it (the
+    // add-on's scene of one armature-bent mesh rendered sharp before).
     EXPECT_FALSE(render::Shutter(scene::Scene{}).active());
+    scene::Scene deforming;
+    deforming.meshes.push_back(test::unit_cube_mesh());
+    EXPECT_FALSE(render::Shutter(deforming).active());
+    deforming.meshes[0].motion_positions = {deforming.meshes[0].positions,
+                                            deforming.meshes[0].positions};
+    EXPECT_TRUE(render::Shutter(deforming).active());
 }
 
 }  // namespace

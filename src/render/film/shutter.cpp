@@ -4,6 +4,7 @@ namespace glint::render {
 
 Shutter::Shutter(const scene::Scene& scene) {
     for (const scene::Object& o : scene.objects) active_ = active_ || !o.motion.empty();
+    for (const scene::Mesh& m : scene.meshes) active_ = active_ || !m.motion_positions.empty();
     const scene::Camera& c = scene.camera;
     if (c.motion.size() >= 2 && c.centre.inverse(&centre_inverse_)) {
         camera_ = std::make_shared<const MotionTransform>(c.motion);

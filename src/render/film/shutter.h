@@ -16,8 +16,8 @@ namespace glint::render {
 class Shutter {
 public:
     Shutter() = default;
-    // Active when the camera or any object has motion (scene::Camera::motion,
-    // scene::Object::motion).
+    // Active when the camera, any object or any mesh has motion (scene::Camera::motion,
+    // scene::Object::motion, scene::Mesh::motion_positions).
     explicit Shutter(const scene::Scene& scene);
 
     bool active() const { return active_; }
