@@ -422,19 +422,33 @@ def build_attributes(out_dir):
     cy.set_world_color((0, 0, 0))
 
 
+def emission_stage():
+    """What the emission-only scenes (displacement, normal_map) see them with: an orthographic
+    camera looking along +Y at the origin, 5.6 m wide, and a black world."""
+    cam = cy.add_camera((0, -6.0, 0), (0, 0, 0), lens_mm=35.0)
+    cam.data.type = "ORTHO"
+    cam.data.ortho_scale = 5.6
+    cy.set_world_color((0, 0, 0))
+
+
+def bare_material(name):
+    """A node material holding only its Material Output: (material, node tree, output)."""
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    nt = mat.node_tree
+    for n in list(nt.nodes):
+        if n.type != "OUTPUT_MATERIAL":
+            nt.nodes.remove(n)
+    return mat, nt, nt.nodes["Material Output"]
+
+
 def build_displacement(out_dir):
     """(issue 30) Material displacement as Cycles' default "Bump Only" renders it, seen through
     Layer Weight's Facing (which reads the bent normal) into Emission, so the image is exact:
     a Noise height through Displacement in object space on a scaled sphere, the same in world
     space, and a Vector Displacement in object space; black world, orthographic camera."""
     def material(name, kind, space, scale):
-        mat = bpy.data.materials.new(name)
-        mat.use_nodes = True
-        nt = mat.node_tree
-        for n in list(nt.nodes):
-            if n.type != "OUTPUT_MATERIAL":
-                nt.nodes.remove(n)
-        out = nt.nodes["Material Output"]
+        mat, nt, out = bare_material(name)
         noise = nt.nodes.new("ShaderNodeTexNoise")
         noise.inputs["Scale"].default_value = 3.0
         disp = nt.nodes.new(kind)
@@ -461,10 +475,7 @@ def build_displacement(out_dir):
                         material(name, kind, space, scale), segments=64, rings=32)
         if k == 0:
             ob.scale = (1.0, 1.0, 1.3)
-    cam = cy.add_camera((0, -6.0, 0), (0, 0, 0), lens_mm=35.0)
-    cam.data.type = "ORTHO"
-    cam.data.ortho_scale = 5.6
-    cy.set_world_color((0, 0, 0))
+    emission_stage()
 
 
 def build_multiscatter(out_dir):
@@ -631,7 +642,8 @@ _more_spec = importlib.util.spec_from_file_location("more_scenes",
 more = importlib.util.module_from_spec(_more_spec)
 _more_spec.loader.exec_module(more)
 more.ms = types.SimpleNamespace(cy=cy, add_sphere=add_sphere, floor=floor, add_light=add_light,
-                                aim=aim, node_material=node_material)
+                                aim=aim, node_material=node_material,
+                                bare_material=bare_material, emission_stage=emission_stage)
 
 BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "textured": build_textured, "lamps": build_lamps, "anim": build_anim,

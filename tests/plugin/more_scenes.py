@@ -1,5 +1,6 @@
-"""Issue 30's motion blur, normal map and transparent glass scenes for make_scenes.py (which loads this file and
-sets `ms` to its helpers: cy, add_sphere, floor, add_light, aim, node_material)."""
+"""Issue 30's motion blur, normal map and transparent glass scenes for make_scenes.py, which
+loads this file and sets `ms` to its helpers: cy, add_sphere, floor, add_light, aim,
+node_material, bare_material, emission_stage."""
 
 import math
 
@@ -124,13 +125,7 @@ def build_normal_map(out_dir):
     Suzanne (mirrored UV islands: the bitangent sign flips) and a rotated, non-uniformly scaled
     cube through a second UV map that is not the active one; black world, orthographic camera."""
     def material(name, uv_map=""):
-        mat = bpy.data.materials.new(name)
-        mat.use_nodes = True
-        nt = mat.node_tree
-        for n in list(nt.nodes):
-            if n.type != "OUTPUT_MATERIAL":
-                nt.nodes.remove(n)
-        out = nt.nodes["Material Output"]
+        mat, nt, out = ms.bare_material(name)
         nm = nt.nodes.new("ShaderNodeNormalMap")
         nm.space = "TANGENT"
         nm.uv_map = uv_map
@@ -164,10 +159,7 @@ def build_normal_map(out_dir):
         second.data[loop.index].uv = (2.0 * (c * u - s * v), s * u + c * v)
     me.uv_layers.active_index = 0
     me.materials.append(material("nm_cube", uv_map="Rotated"))
-    cam = ms.cy.add_camera((0, -6.0, 0), (0, 0, 0), lens_mm=35.0)
-    cam.data.type = "ORTHO"
-    cam.data.ortho_scale = 5.6
-    ms.cy.set_world_color((0, 0, 0))
+    ms.emission_stage()
 
 
 def build_film_glass(out_dir):
