@@ -199,6 +199,21 @@ public:
                             num(r.metallic) + " exponent " + num(r.exponent));
     }
 
+    void media(int d, const Media& m) {
+        line(d, "media method " + std::to_string(m.method) + " intervals " +
+                    std::to_string(m.intervals) + " samples " + std::to_string(m.min_samples) +
+                    "," + std::to_string(m.max_samples) + " jitter " + num(m.jitter) +
+                    " aa_threshold " + num(m.aa_threshold) + " aa_level " +
+                    std::to_string(m.aa_level) + " confidence " + num(m.confidence) +
+                    " variance " + num(m.variance) + " ratio " + num(m.ratio) +
+                    (m.collect ? "" : " collect off") + where(m.loc));
+        line(d + 1, "absorption " + rgb(m.absorption) + " emission " + rgb(m.emission) +
+                        " scattering " + std::to_string(static_cast<int>(m.type)) + " " +
+                        rgb(m.scattering) + " eccentricity " + num(m.eccentricity) +
+                        " extinction " + num(m.extinction));
+        for (const Pigment& dn : m.density) pigment(d + 1, "density", dn);
+    }
+
     void material(int i, const Material& m) {
         line(0, "material " + std::to_string(i) + where(m.loc));
         texture_body(1, m.texture);
@@ -210,6 +225,7 @@ public:
             line(1, "interior ior " + num(in.ior) + " dispersion " + num(in.dispersion) +
                         " caustics " + num(in.caustics) + " fade_distance " + num(in.fade_distance) +
                         " fade_power " + num(in.fade_power) + " fade_color " + rgb(in.fade_color));
+        for (const Media& md : in.media) media(1, md);
         if (!m.pbr.derived) {
             const Pbr& p = m.pbr;
             line(1, "pbr base " + rgb(p.base_color) + " metallic " + num(p.metallic) + " roughness " +
@@ -326,6 +342,8 @@ public:
             s += " radius " + num(l.radius) + " falloff " + num(l.falloff) + " tightness " + num(l.tightness);
         if (l.parallel) s += " parallel";
         if (l.shadowless) s += " shadowless";
+        if (!l.media_interaction) s += " media_interaction off";
+        if (l.media_attenuation) s += " media_attenuation on";
         if (l.fade_distance != 0 || l.fade_power != 0)
             s += " fade_distance " + num(l.fade_distance) + " fade_power " + num(l.fade_power);
         line(0, s + where(l.loc));
@@ -397,6 +415,7 @@ std::string print_ir(const scene::Scene& s) {
                       matrix(s.sky_sphere->transform) + where(s.sky_sphere->loc));
         for (const auto& pg : s.sky_sphere->pigments) p.pigment(1, "pigment", pg);
     }
+    for (const Media& m : s.media) p.media(0, m);
     for (const Fog& f : s.fogs) {
         std::string l = "fog type " + std::to_string(static_cast<int>(f.type)) + " distance " +
                         num(f.distance) + " color " + rgbft(f.color);

@@ -35,6 +35,7 @@ std::string value_kind_name(const Value& v) {
         case 15: return "a file handle";
         case 16: return "a " + std::get<BlendMapValue>(v).keyword;
         case 17: return "a sky_sphere";
+        case 18: return "a media";
     }
     return "a value";
 }

@@ -200,6 +200,8 @@ template bool Parser::take_body_identifier(const Token&, bool, const char*, cons
                                            scene::Normal&);
 template bool Parser::take_body_identifier(const Token&, bool, const char*, const char*,
                                            scene::Texture&);
+template bool Parser::take_body_identifier(const Token&, bool, const char*, const char*,
+                                           scene::Media&);
 
 void Parser::parse_finish_body(scene::Finish& f) {
     bool first = true;
@@ -308,8 +310,12 @@ void Parser::parse_interior_body(scene::Interior& in) {
         else if (w == "fade_power") in.fade_power = parse_float();
         else if (w == "fade_color" || w == "fade_colour") in.fade_color = parse_rgb();
         else if (w == "media") {
-            warn_unsupported(*this, "media", loc(), "media and its density are ignored");
-            skip_braced_block(*this, w);
+            expect_open("media");
+            FileLoc o = loc();
+            scene::Media m = new_media();
+            parse_media_body(m);
+            expect_close("media", o);
+            in.media.push_back(std::move(m));
         }
         else fail("expected an interior item (ior, fade_distance, ...), got " + got(t));
     }

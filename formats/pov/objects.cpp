@@ -39,6 +39,7 @@ void transform_light(scene::Light& l, const Transform& t) {
 // Textures of CSG children are in world space too: they follow every enclosing transform.
 void transform_child_textures(PovObject& o, const Transform& t) {
     if (o.texture) transform_texture(*o.texture, t);
+    if (o.interior) transform_interior(*o.interior, t);
     for (auto& c : o.children) transform_child_textures(c, t);
 }
 
@@ -54,6 +55,7 @@ bool Parser::is_object_keyword(const Token& t) const {
 void Parser::apply_transform(PovObject& o, const Transform& t) {
     o.obj.transform = o.obj.transform.then(t);
     if (o.texture) transform_texture(*o.texture, t);
+    if (o.interior) transform_interior(*o.interior, t);
     for (auto& c : o.children) transform_child_textures(c, t);
     for (auto& l : o.lights) transform_light(l, t);
     for (auto& b : o.obj.bounded_by) b.transform = b.transform.then(t);
@@ -150,7 +152,8 @@ void Parser::parse_light_body(scene::Light& l, std::optional<PovObject>* looks_l
         else if (w == "shadowless") l.shadowless = allow_float(1) != 0;
         else if (w == "fade_distance") l.fade_distance = parse_float();
         else if (w == "fade_power") l.fade_power = parse_float();
-        else if (w == "media_interaction" || w == "media_attenuation") allow_float(1);
+        else if (w == "media_interaction") l.media_interaction = allow_float(1) != 0;
+        else if (w == "media_attenuation") l.media_attenuation = allow_float(1) != 0;
         else if (w == "circular" || w == "orient" || w == "jitter") {
             // Flags of the light, whether or not it is (or becomes) an area light.
             if (!l.area && w != "jitter")

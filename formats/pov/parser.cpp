@@ -164,13 +164,20 @@ Value Parser::parse_rvalue() {
         if (w == "spline")
             return braced([&] { return std::make_shared<const scene::Spline>(parse_spline_body()); });
         static const std::unordered_set<std::string> kUnsupported = {
-            "fog", "media", "rainbow", "density",
-            "density_map", "material_map", "background", "light_group"};
-        if (w == "media" || w == "density" || w == "density_map") {
-            // Only a media block can use these, and every media block is read over.
-            warn_unsupported(*this, "media", loc(), "media and its density are ignored");
-            skip_braced_block(*this, w);
-            return Num::scalar(0);
+            "fog", "rainbow", "material_map", "background", "light_group"};
+        if (w == "media")
+            return braced([&] {
+                scene::Media m = new_media();
+                parse_media_body(m);
+                return m;
+            });
+        if (w == "density") return braced([&] { return parse_density_body(); });
+        if (w == "density_map") {
+            const bool outer = in_density_;
+            in_density_ = true;
+            Value v = parse_map_rvalue(w);
+            in_density_ = outer;
+            return v;
         }
         if (kUnsupported.count(w)) unsupported("declaring '" + w + "'");
     }
@@ -317,8 +324,12 @@ static void parse_statements(Parser& p) {
             if (w == "fog") { p.parse_fog(); continue; }
             if (w == "rainbow") { p.parse_rainbow(); continue; }
             if (w == "media") {
-                warn_unsupported(p, "media", p.loc(), "media and its density are ignored");
-                skip_braced_block(p, w);
+                p.expect_open("media");
+                FileLoc o = p.loc();
+                scene::Media m = p.new_media();
+                p.parse_media_body(m);
+                p.expect_close("media", o);
+                p.scene.media.push_back(std::move(m));
                 continue;
             }
             PovObject o;

@@ -44,6 +44,9 @@ int block_count(scene::PatternKind k);
 // Pattern transforms map pattern space to world, so later transforms compose after them;
 // sub-pigments (checker entries) move with their parent as in POV-Ray's Transform_Pigment.
 void transform_pigment(scene::Pigment& p, const Transform& t);
+// media.cpp: the densities of media follow the transforms of their media and objects.
+void transform_media(scene::Media& m, const Transform& t);
+void transform_interior(scene::Interior& in, const Transform& t);
 void transform_texture(scene::Texture& tex, const Transform& t);
 // POV-Ray's Link_Textures: `top` (with its own layers) is drawn over `base`.
 void layer_texture(scene::Texture& base, const scene::Texture& top, const FileLoc& at);
@@ -119,6 +122,7 @@ public:
     void parse_map_entries(const char* what, bool average, F item);
     const BlendMapValue* declared_map(const char* keyword);
     std::vector<scene::PigmentMapEntry> parse_pigment_map_body(bool average);
+    std::vector<scene::PigmentMapEntry> parse_density_map_body();
     std::vector<scene::NormalMapEntry> parse_normal_map_body(bool average);
     std::vector<scene::SlopeMapEntry> parse_slope_map_body();
     std::vector<scene::TextureMapEntry> parse_texture_map_body(bool average);
@@ -154,6 +158,11 @@ public:
     // ---- atmosphere (atmosphere.cpp): fog { ... } and rainbow { ... } statements
     void parse_fog();
     void parse_rainbow();
+    // ---- media (media.cpp): media { } and density { } bodies, after the brace
+    scene::Media new_media() const;  // the defaults of the #version in force
+    void parse_media_body(scene::Media& m);
+    scene::Pigment parse_density_body();
+    bool in_density_ = false;  // parsing a density: density_map is allowed
 
     // ---- top level (parser.cpp)
     void place_object(PovObject o);

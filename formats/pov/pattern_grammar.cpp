@@ -431,6 +431,16 @@ std::vector<scene::PigmentMapEntry> Parser::parse_pigment_map_body(bool average)
     return map;
 }
 
+// density_map { [v DENSITY-BODY] ... }: a pigment_map of densities (a colour is a plain one).
+std::vector<scene::PigmentMapEntry> Parser::parse_density_map_body() {
+    if (auto m = declared_map("density_map")) return m->pigments;
+    std::vector<scene::PigmentMapEntry> map;
+    parse_map_entries("density_map", false, [&](double v) {
+        map.push_back({v, {parse_density_body()}});
+    });
+    return map;
+}
+
 std::vector<scene::NormalMapEntry> Parser::parse_normal_map_body(bool average) {
     if (auto m = declared_map("normal_map")) return m->normals;
     std::vector<scene::NormalMapEntry> map;
@@ -470,6 +480,7 @@ Value Parser::parse_map_rvalue(const std::string& w) {
     FileLoc o = loc();
     if (m.keyword == "color_map") m.colors = parse_color_map_body();
     else if (w == "pigment_map") m.pigments = parse_pigment_map_body(false);
+    else if (w == "density_map") m.pigments = parse_density_map_body();
     else if (w == "normal_map") m.normals = parse_normal_map_body(false);
     else if (w == "slope_map") m.slopes = parse_slope_map_body();
     else m.textures = parse_texture_map_body(false);

@@ -205,6 +205,16 @@ void Parser::parse_pigment_body(scene::Pigment& p) {
                 p.color_map = parse_color_map_body();
                 p.pigment_map.clear();
                 expect_close(w.c_str(), o);
+            } else if (w == "density_map") {
+                if (!in_density_) fail("density_map can only be used in a density");
+                if (takes_no_map(p.kind) || p.kind == PatternKind::Average)
+                    fail("cannot use density_map with the '" +
+                         std::string(pattern_name(p.kind)) + "' pattern");
+                expect_open("density_map");
+                FileLoc o = loc();
+                p.pigment_map = parse_density_map_body();
+                p.color_map.clear();
+                expect_close("density_map", o);
             } else if (w == "pigment_map") {
                 if (takes_no_map(p.kind))
                     fail("cannot use pigment_map with the '" + std::string(pattern_name(p.kind)) +

@@ -96,7 +96,7 @@ using Value = std::variant<Num, std::string, std::shared_ptr<const PovObject>, s
                            MaterialValue, scene::Camera, Transform, std::shared_ptr<const Macro>,
                            std::shared_ptr<ArrayValue>, FunctionRef,
                            std::shared_ptr<const scene::Spline>, FileHandle, BlendMapValue,
-                           scene::SkySphere>;
+                           scene::SkySphere, scene::Media>;
 
 // POV-Ray `array[n][m]...`: row-major elements, null until assigned. Held by shared_ptr so
 // that `#declare A[i] = v` can fill it in place; `#declare B = A` copies (Parser::declare).

@@ -20,6 +20,7 @@ public:
             f_.sky_sphere = true;
             for (const Pigment& p : scene_.sky_sphere->pigments) pigment(p);
         }
+        for (const Media& m : scene_.media) media(m);
         std::vector<bool> used(scene_.materials.size(), false);
         for (const Object& o : scene_.objects) object(o, &used);
         for (size_t i = 0; i < used.size(); ++i)
@@ -42,8 +43,14 @@ private:
         for (const Object& c : o.clipped_by) object(c, used);
     }
 
+    void media(const Media& m) {
+        f_.media = true;
+        for (const Pigment& d : m.density) pigment(d);
+    }
+
     void material(const Material& m) {
         if (m.interior.fade_distance > 0) f_.interior_fading = true;
+        for (const Media& md : m.interior.media) media(md);
         bool transparent = texture(m.texture);
         if (transparent) {
             f_.transparency = true;
@@ -179,6 +186,7 @@ std::vector<std::string> Features::used() const {
     add(patterns, "procedural patterns");
     add(texture_maps, "texture maps/layered textures");
     add(sky_sphere, "sky_sphere");
+    add(media, "media");
     return out;
 }
 

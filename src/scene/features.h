@@ -34,6 +34,7 @@ struct Features {
     bool patterns = false;        // procedural patterns other than checker and gradient
     bool texture_maps = false;    // texture_map, block patterns of textures, layered textures
     bool sky_sphere = false;
+    bool media = false;  // participating media: in a hollow object's interior or everywhere
 
     // Whether rays other than primary and shadow rays can be spawned.
     bool secondary_rays() const { return reflection || refraction || transparency; }

@@ -55,6 +55,10 @@ struct Light {
     bool shadowless = false;
     double fade_distance = 0;  // 0 = no fading
     double fade_power = 0;
+    // Participating media: `media_interaction off` leaves the light out of media scattering;
+    // `media_attenuation on` dims it through the atmosphere's media (and fog) on the way.
+    bool media_interaction = true;
+    bool media_attenuation = false;
     std::optional<AreaLight> area;
     std::optional<BlenderLight> blender;  // blender_light: only location and color used too
     FileLoc loc;

@@ -70,6 +70,8 @@ struct Scene {
     std::optional<SkySphere> sky_sphere;
     std::vector<Fog> fogs;
     std::vector<Rainbow> rainbows;
+    // POV-Ray's atmospheric media: fills all space outside non-hollow objects.
+    std::vector<Media> media;
     // User-defined functions (function patterns refer to them by index; calls between them too).
     std::vector<Function> functions;
     // Shader node graphs (Blender's materials, world and lights); Material::graph and

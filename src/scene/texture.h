@@ -241,7 +241,45 @@ struct Texture {
     FileLoc loc;
 };
 
+// POV-Ray's participating media (3.7 manual 3.4.4.2 / 3.5.7 "Media"), stored as Parse_Media
+// leaves it. A medium fills the inside of a hollow object (Interior::media) or all of space
+// (Scene::media). Coefficients are per unit of distance, scaled by the density.
+enum class ScatteringType {
+    Isotropic = 1,
+    MieHazy = 2,
+    MieMurky = 3,
+    Rayleigh = 4,
+    HenyeyGreenstein = 5
+};
+
+struct Media {
+    // Sampling along each ray (defaults of #version 3.5 and later; older scenes get
+    // intervals 10, samples 1,1, method 1, as POV-Ray gives them).
+    int method = 3;  // 1: random, 2: stratified, 3: adaptive
+    int intervals = 1;
+    int min_samples = 10;
+    int max_samples = 10;
+    double jitter = 0;
+    double aa_threshold = 0.1;
+    int aa_level = 3;
+    double confidence = 0.9;  // method 1/2: extra samples until the variance is below this
+    double variance = 1.0 / 128.0;
+    double ratio = 0.9;  // share of the intervals given to the lit parts of a ray
+    bool collect = true;  // `collect off`: ignore photons
+    Color absorption{0, 0, 0};
+    Color emission{0, 0, 0};
+    Color scattering{0, 0, 0};
+    ScatteringType type = ScatteringType::Isotropic;
+    double eccentricity = 0;  // Henyey-Greenstein g
+    double extinction = 1;    // scales the scattering's share of the extinction
+    // density { } blocks, multiplied together (Evaluate_Density_Pigment); none = 1. Each is a
+    // pigment pattern whose colour is the density per channel, in world space.
+    std::vector<Pigment> density;
+    FileLoc loc;
+};
+
 struct Interior {
+    std::vector<Media> media;
     double ior = 1;
     double dispersion = 1;
     double caustics = 0;

@@ -24,6 +24,13 @@ public:
     // `dir` unit; `depth` the distance to the hit (kMissDepth for none). Rainbow first, then
     // the fogs, as TraceRay applies them.
     Color apply(const Vec3& origin, const Vec3& dir, double depth, const Color& color) const;
+    // The two halves of apply(), for the atmospheric media that come between them.
+    Color apply_rainbow(const Vec3& dir, double depth, const Color& color) const {
+        return rainbows_.empty() ? color : rainbow(dir, depth, color);
+    }
+    Color apply_fog(const Vec3& origin, const Vec3& dir, double depth, const Color& color) const {
+        return fogs_.empty() ? color : fog(origin, dir, depth, color);
+    }
 
 private:
     Color rainbow(const Vec3& dir, double depth, const Color& color) const;

@@ -27,6 +27,8 @@ uint64_t next_serial() {
 
 // Shadow rays end this fraction short of the light so the light's own position never counts.
 constexpr double kShadowEnd = 1.0 - 1.0e-9;
+// POV-Ray's SHADOW_TOLERANCE: the shortest rest of a shadow ray that media still act on.
+constexpr double kShadowTolerance = 1.0e-3;
 
 using scene::ColorFT;
 
@@ -55,6 +57,7 @@ bool Whitted::Interiors::remove(int obj) {
             for (int j = i; j + 1 < count; ++j) {
                 object[j] = object[j + 1];
                 ior[j] = ior[j + 1];
+                material[j] = material[j + 1];
             }
             --count;
             return true;
@@ -63,10 +66,11 @@ bool Whitted::Interiors::remove(int obj) {
     return false;
 }
 
-void Whitted::Interiors::append(int obj, double value) {
+void Whitted::Interiors::append(int obj, double value, int mat) {
     if (count == kMax) return;  // deeper nesting than any sane scene: ignore the innermost
     object[count] = obj;
     ior[count] = value;
+    material[count] = mat;
     ++count;
 }
 
@@ -80,11 +84,13 @@ Whitted::Whitted(const PreparedScene& prepared)
                                &scene_.functions}),
       atmosphere_(scene_),
       lights_(prepare_lights(whitted_lights(scene_.lights))),
+      media_(scene_, whitted_lights(scene_.lights), &pigments_),
       max_level_(scene_.global.max_trace_level),
       adc_bailout_(scene_.global.adc_bailout),
       legacy_(scene_.version < 3.7),
       serial_(next_serial()) {
-    if (features_.secondary_rays()) find_camera_interiors();
+    for (const scene::Media& m : scene_.media) atmosphere_media_.push_back(&m);
+    if (features_.secondary_rays() || features_.media) find_camera_interiors();
 }
 
 void Whitted::find_camera_interiors() {
@@ -100,7 +106,13 @@ void Whitted::find_camera_interiors() {
     r.origin = scene_.camera.location;
     r.dir = normalize(scene_.camera.direction);
     std::vector<int> seen;
-    std::vector<std::pair<int, double>> inside;
+    struct Inside {
+        int object;
+        double ior;
+        int material;
+        bool operator<(const Inside& o) const { return object < o.object; }
+    };
+    std::vector<Inside> inside;
     for (int i = 0; i < 256; ++i) {
         Hit hit;
         if (!geometry_.intersect(r, &hit)) break;
@@ -108,13 +120,14 @@ void Whitted::find_camera_interiors() {
         if (first) {
             seen.push_back(hit.object);
             if (dot(hit.ng, r.dir) > 0.0 && hit.material >= 0)
-                inside.push_back({hit.object, scene_.materials[hit.material].interior.ior});
+                inside.push_back({hit.object, scene_.materials[hit.material].interior.ior,
+                                  hit.material});
         }
         r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
     }
     // POV-Ray lists containing objects in scene order.
     std::sort(inside.begin(), inside.end());
-    for (const auto& [object, ior] : inside) camera_interiors_.append(object, ior);
+    for (const Inside& i : inside) camera_interiors_.append(i.object, i.ior, i.material);
 }
 
 Color Whitted::li(const Ray& ray) const {
@@ -156,19 +169,68 @@ Color Whitted::trace(const Ray& ray, double weight, const RayState& in, bool con
     RayState state = in;
     if (!continued) ++state.level;
     Color c = found ? shade(ray, hit, weight, state) : sky(ray.dir);
-    // Rainbow and fog act on rays through open space (Ray::IsHollowRay: every object the ray
-    // is inside of is hollow).
-    if (!atmosphere_.empty() && hollow(in)) {
-        double len = length(ray.dir);
-        c = atmosphere_.apply(ray.origin, ray.dir / len,
-                              found ? hit.t * len : Atmosphere::kMissDepth, c);
+    if (!features_.media && atmosphere_.empty()) return c;
+    const double len = length(ray.dir);
+    const Vec3 dir = ray.dir / len;
+    const double depth = found ? hit.t * len : Atmosphere::kMissDepth;
+    auto light = [&](size_t l, const Vec3& p, Color* lc, Vec3* ld) {
+        return media_light(l, p, in.interiors, lc, ld);
+    };
+    // ComputeTextureColour: the media of the hollow objects the ray is inside, from its
+    // origin to the surface.
+    if (found && features_.media && in.interiors.count > 0 && hollow(in)) {
+        std::vector<const scene::Media*> media;
+        interior_media(in.interiors, &media);
+        media_.compute(media, ray.origin, dir, depth, false, light, &c, nullptr);
+    }
+    // Rainbow, atmospheric media and fog act on rays through open space (Ray::IsHollowRay:
+    // every object the ray is inside of is hollow), in TraceRay's order.
+    if (hollow(in)) {
+        c = atmosphere_.apply_rainbow(dir, depth, c);
+        media_.compute(atmosphere_media_, ray.origin, dir, depth, false, light, &c, nullptr);
+        c = atmosphere_.apply_fog(ray.origin, dir, depth, c);
     }
     return c;
 }
 
-bool Whitted::hollow(const RayState& state) const {
-    for (int i = 0; i < state.interiors.count; ++i) {
-        int obj = state.interiors.object[i];
+void Whitted::interior_media(const Interiors& in, std::vector<const scene::Media*>* out) const {
+    for (int i = 0; i < in.count; ++i) {
+        const int m = in.material[i];
+        if (m < 0 || m >= static_cast<int>(scene_.materials.size())) continue;
+        for (const scene::Media& md : scene_.materials[m].interior.media) out->push_back(&md);
+    }
+}
+
+bool Whitted::media_light(size_t light_index, const Vec3& p, const Interiors& eye, Color* out,
+                          Vec3* dir) const {
+    // TestShadow: the light's attenuated colour, through whatever lies towards it.
+    const PreparedLight& light = lights_[light_index];
+    LightSample ls;
+    if (!light.sample(p, &ls)) return false;
+    Color lc = ls.color;
+    auto dark = [](const Color& c) {
+        return std::fabs(c.r) < kPovEpsilon && std::fabs(c.g) < kPovEpsilon &&
+               std::fabs(c.b) < kPovEpsilon;
+    };
+    if (dark(lc)) return false;
+    if (features_.shadows && light.casts_shadows()) {
+        if (light.light().area) {
+            lc = area_light_shadow(light, p, lc, [&](const Vec3& d, double depth, const Color& c) {
+                return c * shadow_walk(p, p + d * depth, d, eye, light_index);
+            });
+        } else {
+            lc = lc * shadow_walk(p, p + ls.dir * ls.distance, ls.dir, eye, light_index);
+        }
+        if (dark(lc)) return false;
+    }
+    *out = lc;
+    *dir = ls.dir;
+    return true;
+}
+
+bool Whitted::hollow(const Interiors& in) const {
+    for (int i = 0; i < in.count; ++i) {
+        int obj = in.object[i];
         if (obj >= 0 && obj < static_cast<int>(scene_.objects.size()) && !scene_.objects[obj].hollow)
             return false;
     }
@@ -432,7 +494,7 @@ bool Whitted::refract(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3&
     // count as outside their container, overlaps belong to the last one entered.
     double ior;
     if (in.count == 0) {
-        in.append(hit.object, ior_obj);
+        in.append(hit.object, ior_obj, hit.material);
         ior = 1.0 / ior_obj;
     } else if (in.object[in.count - 1] == hit.object) {
         in.remove(hit.object);
@@ -441,7 +503,7 @@ bool Whitted::refract(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3&
         ior = 1.0;
     } else {
         ior = in.ior[in.count - 1] / ior_obj;
-        in.append(hit.object, ior_obj);
+        in.append(hit.object, ior_obj, hit.material);
     }
 
     Ray r;
@@ -475,9 +537,14 @@ bool Whitted::refract(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3&
 
 Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls,
                              const RayState& eye, size_t light) const {
-    const Vec3 target = p + ls.dir * ls.distance;
+    return shadow_walk(offset_ray_origin(p, at.p_error, at.ng, ls.dir), p + ls.dir * ls.distance,
+                       ls.dir, eye.interiors, light);
+}
+
+Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& light_dir,
+                           const Interiors& eye, size_t light) const {
     Ray r;
-    r.origin = offset_ray_origin(p, at.p_error, at.ng, ls.dir);
+    r.origin = origin;
     r.dir = target - r.origin;
     r.tmax = kShadowEnd;
     // Per thread, per light: the object that blocked the last shadow ray, tried first
@@ -488,12 +555,19 @@ Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls
         cache.serial = serial_;
         cache.blocker.assign(lights_.size(), -1);
     }
-    if (!features_.transparency)
+    // Media along the way (interior media, or the atmosphere's for a light with
+    // media_attenuation) need the walk even where no surface is in the way.
+    const bool attenuate = lights_[light].light().media_attenuation &&
+                           lights_[light].light().media_interaction && !atmosphere_media_.empty();
+    const bool media = attenuate || (features_.media && eye.count > 0);
+    if (!features_.transparency && !media)
         return geometry_.occluded(r, &cache.blocker[light]) ? Color() : Color(1.0);
     // Nothing on the way: the walk below would find no surface either. An opaque object
     // anywhere on the way: it would end in black. Only the rest needs the walk.
     switch (geometry_.shadow_blocker(r, &cache.blocker[light])) {
-        case Geometry::Blocker::None: return Color(1.0);
+        case Geometry::Blocker::None:
+            if (!media) return Color(1.0);
+            break;
         case Geometry::Blocker::Opaque: return Color();
         case Geometry::Blocker::Other: break;
     }
@@ -501,11 +575,24 @@ Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls
     // TracePointLightShadowRay: walk through transparent objects, filtering the light. The
     // shadow ray starts with the eye ray's interiors and toggles each object it crosses
     // (ComputeShadowMedia), which decides where interior fading applies.
-    Interiors inside = eye.interiors;
+    Interiors inside = eye;
     Color colour(1.0);
+    std::vector<const scene::Media*> segment_media;
+    auto no_light = [](size_t, const Vec3&, Color*, Vec3*) { return false; };
+    // ComputeShadowMedia: the atmosphere's media over one segment, when the light asks.
+    auto atmosphere = [&](double depth, const Vec3& dir) {
+        if (attenuate && !colour.is_black())
+            media_.compute(atmosphere_media_, r.origin, dir, depth, true, no_light, &colour,
+                           nullptr);
+    };
     for (int i = 0; i < 64; ++i) {
         Hit hit;
-        if (!geometry_.intersect(r, &hit)) return colour;
+        if (!geometry_.intersect(r, &hit)) {
+            // The rest of the way to the light, through open space only.
+            const double rest = length(r.dir);
+            if (rest > kShadowTolerance && hollow(inside)) atmosphere(rest, r.dir / rest);
+            return colour;
+        }
         if (!(hit.flags & kNoShadow)) {
             if (materials_.opaque(hit.material)) return Color();
             // ComputeShadowColour / ComputeShadowTexture.
@@ -514,21 +601,30 @@ Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls
             Color filter = shadow_texture(mat.texture, pattern_point(hit),
                                           45.0 * mat.interior.caustics, hit.n, normalize(r.dir));
             const scene::Interior& interior = mat.interior;
+            const double seg = hit.t * length(r.dir);
             if (inside.contains(hit.object) && interior.fade_power > 0.0 &&
                 std::fabs(interior.fade_distance) > kPovEpsilon) {
-                filter *= fade(interior, hit.t * length(r.dir));
+                filter *= fade(interior, seg);
+            }
+            // The media of the hollow objects the shadow ray is in, up to this surface.
+            if (features_.media && inside.count > 0 && hollow(inside)) {
+                segment_media.clear();
+                interior_media(inside, &segment_media);
+                media_.compute(segment_media, r.origin, r.dir / length(r.dir), seg, true,
+                               no_light, &filter, nullptr);
             }
             colour *= filter;
             if (std::fabs(colour.r) < kPovEpsilon && std::fabs(colour.g) < kPovEpsilon &&
                 std::fabs(colour.b) < kPovEpsilon)
                 return Color();
+            atmosphere(seg, r.dir / length(r.dir));
             if (inside.count == 0 || !inside.remove(hit.object))
-                inside.append(hit.object, interior.ior);
+                inside.append(hit.object, interior.ior, hit.material);
         }
         r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
         r.dir = target - r.origin;
         r.tmax = kShadowEnd;
-        if (dot(r.dir, ls.dir) <= 0.0) return colour;
+        if (dot(r.dir, light_dir) <= 0.0) return colour;
     }
     return colour;
 }

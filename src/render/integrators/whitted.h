@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "render/integrators/atmosphere.h"
+#include "render/integrators/pov_media.h"
 #include "render/lights/light.h"
 #include "render/prepare/prepared_scene.h"
 #include "render/textures/pigment.h"
@@ -27,10 +28,11 @@ private:
         static constexpr int kMax = 16;
         int object[kMax];
         double ior[kMax];
+        int material[kMax];  // whose interior (its media) the ray is in
         int count = 0;
         bool contains(int obj) const;
         bool remove(int obj);
-        void append(int obj, double ior);
+        void append(int obj, double ior, int material);
     };
     // POV-Ray's Ray flags that decide no_image/no_reflection visibility.
     struct RayState {
@@ -70,6 +72,15 @@ private:
     // `light` indexes lights_ (its shadow cache slot).
     Color shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls,
                         const RayState& eye, size_t light) const;
+    // The shadow ray from `origin` to the light at `ls`, through transparent objects and
+    // media (TracePointLightShadowRay with ComputeShadowColour and ComputeShadowMedia).
+    Color shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& light_dir,
+                      const Interiors& eye, size_t light) const;
+    // Media: the light reaching a point in a medium (TestShadow), the media of the objects a
+    // ray is inside, and the interior media over a segment that ends at a surface.
+    bool media_light(size_t light, const Vec3& p, const Interiors& eye, Color* colour,
+                     Vec3* dir) const;
+    void interior_media(const Interiors& in, std::vector<const scene::Media*>* out) const;
     // `n` is the (perturbed) normal, `raw_n` the surface normal facing the ray.
     Color reflect(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3& raw_n, double weight,
                   const RayState& state) const;
@@ -77,7 +88,8 @@ private:
     bool refract(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3& raw_n, double weight,
                  const RayState& state, Color* out) const;
     Color sky(const Vec3& dir) const;
-    bool hollow(const RayState& state) const;
+    bool hollow(const RayState& state) const { return hollow(state.interiors); }
+    bool hollow(const Interiors& in) const;
     Color fade(const scene::Interior& interior, double depth) const;
     double relative_ior(const RayState& state, int object, double ior) const;
 
@@ -88,6 +100,8 @@ private:
     PigmentEvaluator pigments_;
     Atmosphere atmosphere_;  // fog and rainbow
     std::vector<PreparedLight> lights_;
+    PovMedia media_;
+    std::vector<const scene::Media*> atmosphere_media_;
     int max_level_;
     double adc_bailout_;
     bool legacy_;  // #version < 3.7: POV-Ray's 3.6 transparency and sky formulas
