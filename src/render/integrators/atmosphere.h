@@ -20,6 +20,7 @@ public:
     explicit Atmosphere(const scene::Scene& scene);
 
     bool empty() const { return fogs_.empty() && rainbows_.empty(); }
+    bool has_fog() const { return !fogs_.empty(); }
 
     // `dir` unit; `depth` the distance to the hit (kMissDepth for none). Rainbow first, then
     // the fogs, as TraceRay applies them.

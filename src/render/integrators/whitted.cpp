@@ -216,10 +216,10 @@ bool Whitted::media_light(size_t light_index, const Vec3& p, const Interiors& ey
     if (features_.shadows && light.casts_shadows()) {
         if (light.light().area) {
             lc = area_light_shadow(light, p, lc, [&](const Vec3& d, double depth, const Color& c) {
-                return c * shadow_walk(p, p + d * depth, d, eye, light_index);
+                return shadow_walk(p, p + d * depth, d, c, eye, light_index);
             });
         } else {
-            lc = lc * shadow_walk(p, p + ls.dir * ls.distance, ls.dir, eye, light_index);
+            lc = shadow_walk(p, p + ls.dir * ls.distance, ls.dir, lc, eye, light_index);
         }
         if (dark(lc)) return false;
     }
@@ -396,11 +396,11 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
                     if (light.light().area) {
                         lc = area_light_shadow(
                             light, hit.p, lc, [&](const Vec3& d, double depth, const Color& c) {
-                                return c * shadow_filter(hit.p, hit, LightSample{d, depth, c},
-                                                         state, light_index);
+                                return shadow_filter(hit.p, hit, LightSample{d, depth, c},
+                                                     state, light_index);
                             });
                     } else {
-                        lc = lc * shadow_filter(hit.p, hit, ls, state, light_index);
+                        lc = shadow_filter(hit.p, hit, ls, state, light_index);
                     }
                     if (!(std::fabs(lc.r) > kPovEpsilon || std::fabs(lc.g) > kPovEpsilon ||
                           std::fabs(lc.b) > kPovEpsilon))
@@ -538,11 +538,11 @@ bool Whitted::refract(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3&
 Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls,
                              const RayState& eye, size_t light) const {
     return shadow_walk(offset_ray_origin(p, at.p_error, at.ng, ls.dir), p + ls.dir * ls.distance,
-                       ls.dir, eye.interiors, light);
+                       ls.dir, ls.color, eye.interiors, light);
 }
 
 Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& light_dir,
-                           const Interiors& eye, size_t light) const {
+                           const Color& light_colour, const Interiors& eye, size_t light) const {
     Ray r;
     r.origin = origin;
     r.dir = target - r.origin;
@@ -555,18 +555,19 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
         cache.serial = serial_;
         cache.blocker.assign(lights_.size(), -1);
     }
-    // Media along the way (interior media, or the atmosphere's for a light with
+    // Media along the way (interior media, or the atmosphere's media and fog for a light with
     // media_attenuation) need the walk even where no surface is in the way.
     const bool attenuate = lights_[light].light().media_attenuation &&
-                           lights_[light].light().media_interaction && !atmosphere_media_.empty();
+                           lights_[light].light().media_interaction &&
+                           (!atmosphere_media_.empty() || atmosphere_.has_fog());
     const bool media = attenuate || (features_.media && eye.count > 0);
     if (!features_.transparency && !media)
-        return geometry_.occluded(r, &cache.blocker[light]) ? Color() : Color(1.0);
+        return geometry_.occluded(r, &cache.blocker[light]) ? Color() : light_colour;
     // Nothing on the way: the walk below would find no surface either. An opaque object
     // anywhere on the way: it would end in black. Only the rest needs the walk.
     switch (geometry_.shadow_blocker(r, &cache.blocker[light])) {
         case Geometry::Blocker::None:
-            if (!media) return Color(1.0);
+            if (!media) return light_colour;
             break;
         case Geometry::Blocker::Opaque: return Color();
         case Geometry::Blocker::Other: break;
@@ -576,21 +577,25 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
     // shadow ray starts with the eye ray's interiors and toggles each object it crosses
     // (ComputeShadowMedia), which decides where interior fading applies.
     Interiors inside = eye;
-    Color colour(1.0);
+    Color colour = light_colour;
     std::vector<const scene::Media*> segment_media;
     auto no_light = [](size_t, const Vec3&, Color*, Vec3*) { return false; };
-    // ComputeShadowMedia: the atmosphere's media over one segment, when the light asks.
-    auto atmosphere = [&](double depth, const Vec3& dir) {
-        if (attenuate && !colour.is_black())
-            media_.compute(atmosphere_media_, r.origin, dir, depth, true, no_light, &colour,
-                           nullptr);
+    // ComputeShadowMedia: the atmosphere's media over one segment, then the fog where the
+    // ray is in open space, when the light asks. (POV-Ray applies the atmosphere's media
+    // also inside solid objects on the way, but fog only outside them.)
+    auto atmosphere = [&](double depth, const Vec3& dir, bool open) {
+        if (!attenuate || (colour.r < kPovEpsilon && colour.g < kPovEpsilon &&
+                           colour.b < kPovEpsilon))
+            return;
+        media_.compute(atmosphere_media_, r.origin, dir, depth, true, no_light, &colour, nullptr);
+        if (open) colour = atmosphere_.apply_fog(r.origin, dir, depth, colour);
     };
     for (int i = 0; i < 64; ++i) {
         Hit hit;
         if (!geometry_.intersect(r, &hit)) {
             // The rest of the way to the light, through open space only.
             const double rest = length(r.dir);
-            if (rest > kShadowTolerance && hollow(inside)) atmosphere(rest, r.dir / rest);
+            if (rest > kShadowTolerance && hollow(inside)) atmosphere(rest, r.dir / rest, true);
             return colour;
         }
         if (!(hit.flags & kNoShadow)) {
@@ -617,7 +622,7 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
             if (std::fabs(colour.r) < kPovEpsilon && std::fabs(colour.g) < kPovEpsilon &&
                 std::fabs(colour.b) < kPovEpsilon)
                 return Color();
-            atmosphere(seg, r.dir / length(r.dir));
+            atmosphere(seg, r.dir / length(r.dir), hollow(inside));
             if (inside.count == 0 || !inside.remove(hit.object))
                 inside.append(hit.object, interior.ior, hit.material);
         }

@@ -69,13 +69,14 @@ private:
     // ray, unit) feed it.
     Color shadow_texture(const scene::Texture& tex, const PatternPoint& at, double caustics,
                          const Vec3& raw_normal, const Vec3& dir) const;
-    // `light` indexes lights_ (its shadow cache slot).
+    // The light `ls` arriving at `p` past whatever lies towards it; `light` indexes lights_
+    // (its shadow cache slot).
     Color shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls,
                         const RayState& eye, size_t light) const;
     // The shadow ray from `origin` to the light at `ls`, through transparent objects and
     // media (TracePointLightShadowRay with ComputeShadowColour and ComputeShadowMedia).
     Color shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& light_dir,
-                      const Interiors& eye, size_t light) const;
+                      const Color& light_colour, const Interiors& eye, size_t light) const;
     // Media: the light reaching a point in a medium (TestShadow), the media of the objects a
     // ray is inside, and the interior media over a segment that ends at a surface.
     bool media_light(size_t light, const Vec3& p, const Interiors& eye, Color* colour,
