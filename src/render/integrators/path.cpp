@@ -8,6 +8,7 @@
 #include "core/float.h"
 #include "render/bsdf/bsdf.h"
 #include "render/bsdf/shading_normal.h"
+#include "render/integrators/containing.h"
 #include "render/lights/sky.h"
 
 namespace glint::render {
@@ -19,6 +20,17 @@ namespace {
 constexpr uint32_t kPairsPerVertex = 3 + PathLights::kSampleAllMax;
 // Stochastic-alpha pass-throughs allowed on top of max_depth bounces.
 constexpr int kMaxAlphaSkips = 64;
+// Media draw as many random numbers as their collisions need, from pairs after the alpha
+// coins' (at most one per pass-through).
+constexpr uint32_t kAlphaPairs = 4096;
+// Collisions on one segment before the tracking gives up (a bound against runaway loops).
+constexpr int kMaxCollisions = 1 << 20;
+
+// A uniform number in [0, 1) from a 32-bit hash stream (ratio tracking of shadow rays).
+double hash_uniform(uint32_t* seed) {
+    *seed = hash_u32(*seed + 0x9e3779b9U);
+    return static_cast<double>(*seed) * (1.0 / 4294967296.0);
+}
 
 double power_heuristic(double a, double b) {
     const double a2 = a * a, b2 = b * b;
@@ -32,6 +44,7 @@ bool finite(const Color& c) {
 }
 
 double average(const Color& c) { return (c.r + c.g + c.b) / 3; }
+double channel(const Color& c, int i) { return i == 0 ? c.r : i == 1 ? c.g : c.b; }
 
 // One closure of a node graph into the set, split as Cycles 3.4 splits it
 // (svm_node_closure_bsdf): the Principled BSDF's diffuse, reflection and glass lobes as one
@@ -175,6 +188,123 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
     lights_.emplace(scene_, materials_.emission(),
                     [this](const Vec3& d) { return environment(d); }, prepared.textures.get(),
                     world);
+    // Media: each material's interior media become one medium, the atmosphere's another.
+    material_medium_.assign(scene_.materials.size(), -1);
+    for (size_t m = 0; m < scene_.materials.size(); ++m) {
+        const auto& media = scene_.materials[m].interior.media;
+        if (media.empty()) continue;
+        material_medium_[m] = static_cast<int>(media_.size());
+        media_.emplace_back(media, &pigments_);
+    }
+    if (!scene_.media.empty()) {
+        world_medium_ = static_cast<int>(media_.size());
+        media_.emplace_back(scene_.media, &pigments_);
+    }
+    has_media_ = !media_.empty();
+    if (has_media_)
+        for (const Containing& c : objects_containing_camera(scene_, geometry_)) {
+            Hit h;
+            h.object = c.object;
+            h.material = c.material;
+            h.ng = Vec3(0, 0, 1);
+            camera_stack_.cross(h, Vec3(0, 0, -1), *this);  // entering it
+        }
+}
+
+void PathIntegrator::MediumStack::cross(const Hit& hit, const Vec3& dir,
+                                        const PathIntegrator& pi) {
+    if (hit.object < 0) return;
+    if (dot(dir, hit.ng) < 0) {
+        // Entering (the geometric normal points out of the solid).
+        if (count == kMax) return;  // deeper nesting than any sane scene: ignore it
+        object[count] = hit.object;
+        medium[count] = hit.material >= 0 ? pi.material_medium_[static_cast<size_t>(hit.material)]
+                                          : -1;
+        hollow[count] = pi.scene_.objects[static_cast<size_t>(hit.object)].hollow;
+        ++count;
+        return;
+    }
+    for (int i = count - 1; i >= 0; --i) {
+        if (object[i] != hit.object) continue;
+        for (int j = i; j + 1 < count; ++j) {
+            object[j] = object[j + 1];
+            medium[j] = medium[j + 1];
+            hollow[j] = hollow[j + 1];
+        }
+        --count;
+        return;
+    }
+}
+
+int PathIntegrator::active_media(const MediumStack& stack, const PathMedium** out) const {
+    // As in POV-Ray's classic renderer: media act only while every object the ray is inside
+    // is hollow (Ray::IsHollowRay); the atmosphere's then too.
+    for (int i = 0; i < stack.count; ++i)
+        if (!stack.hollow[i]) return 0;
+    int n = 0;
+    for (int i = 0; i < stack.count; ++i)
+        if (stack.medium[i] >= 0) out[n++] = &media_[static_cast<size_t>(stack.medium[i])];
+    if (world_medium_ >= 0) out[n++] = &media_[static_cast<size_t>(world_medium_)];
+    return n;
+}
+
+void PathIntegrator::medium_at(const PathMedium* const* media, int n, const Vec3& p,
+                               MediumPoint* out) const {
+    if (n == 1) {
+        media[0]->at(p, out);
+        return;
+    }
+    *out = MediumPoint{};
+    for (int k = 0; k < n; ++k) {
+        MediumPoint m;
+        media[k]->at(p, &m);
+        out->sigma_a += m.sigma_a;
+        out->emission += m.emission;
+        for (int i = 0; i < m.lobe_count; ++i) {
+            if (out->lobe_count < MediumPoint::kMaxLobes)
+                out->lobes[out->lobe_count++] = m.lobes[i];
+            else  // more lobes than room: the scattering still counts, in the last shape
+                out->lobes[MediumPoint::kMaxLobes - 1].sigma_s += m.lobes[i].sigma_s;
+        }
+    }
+}
+
+Color PathIntegrator::media_transmittance(const PathMedium* const* media, int n,
+                                          const Vec3& origin, const Vec3& dir, double dist,
+                                          uint32_t* seed) const {
+    bool homogeneous = true;
+    double majorant = 0;
+    for (int k = 0; k < n; ++k) {
+        homogeneous = homogeneous && media[k]->homogeneous();
+        majorant += media[k]->majorant();
+    }
+    if (!(majorant > 0)) return Color(1, 1, 1);
+    MediumPoint m;
+    if (homogeneous) {
+        medium_at(media, n, origin, &m);
+        const Color st = m.sigma_t();
+        auto tr = [dist](double s) { return s > 0 ? std::exp(-s * dist) : 1.0; };
+        return Color(tr(st.r), tr(st.g), tr(st.b));
+    }
+    // Ratio tracking (Novak et al. 2014): the product of the null-collision probabilities at
+    // tentative collisions drawn against the majorant; Russian roulette once it is small.
+    Color t(1, 1, 1);
+    double x = 0;
+    for (int i = 0; i < kMaxCollisions; ++i) {
+        x -= std::log(1 - hash_uniform(seed)) / majorant;
+        if (!(x < dist)) return t;
+        medium_at(media, n, origin + dir * x, &m);
+        const Color st = m.sigma_t();
+        t *= Color(std::max(0.0, 1 - st.r / majorant), std::max(0.0, 1 - st.g / majorant),
+                   std::max(0.0, 1 - st.b / majorant));
+        const double mx = t.max();
+        if (!(mx > 0)) return Color();
+        if (mx < 0.1) {
+            if (hash_uniform(seed) >= mx) return Color();
+            t *= 1 / mx;
+        }
+    }
+    return t;
 }
 
 void PathIntegrator::graph_closures(const PathMaterial& row, const Hit& hit, const Vec3& dir,
@@ -232,23 +362,37 @@ Color PathIntegrator::environment(const Vec3& dir) const {
     return sky_radiance(scene_, pigments_, dir);
 }
 
-Color PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dist,
-                                    double time, uint64_t* rays) const {
+Color PathIntegrator::transmittance(const Vec3& origin, const Vec3& dir, double dist,
+                                    double time, MediumStack stack, uint32_t seed,
+                                    uint64_t* rays) const {
     // Stop short of the light sample so an emitter does not shadow itself.
     const double tmax = std::isinf(dist) ? kInfinity : dist * (1 - 1e-5);
     Ray r;
-    r.origin = offset_ray_origin(from.p, from.p_error, from.ng, dir);
+    r.origin = origin;
     r.dir = dir;
     r.tmax = tmax;
     r.time = time;
     ++*rays;
-    if (!materials_.any_alpha()) return geometry_.occluded(r) ? Color() : Color(1, 1, 1);
+    if (!materials_.any_alpha() && !has_media_)
+        return geometry_.occluded(r) ? Color() : Color(1, 1, 1);
     Color t(1, 1, 1);
     double travelled = 0;
+    const PathMedium* act[MediumStack::kMax + 1];
+    // The media's transmittance from the current origin over `len`.
+    auto through_media = [&](double len) {
+        if (!has_media_) return;
+        const int na = active_media(stack, act);
+        if (na > 0) t *= media_transmittance(act, na, r.origin, dir, len, &seed);
+    };
     for (int i = 0; i < kMaxAlphaSkips; ++i) {
         Hit h;
         if (i > 0) ++*rays;
-        if (!geometry_.intersect(r, &h)) return t;
+        if (!geometry_.intersect(r, &h)) {
+            through_media(r.tmax);
+            return t;
+        }
+        through_media(h.t);
+        if (t.is_black()) return Color();
         if (!(h.flags & kNoShadow)) {
             const PathMaterial* pm = materials_.path(h.material);
             if (!pm || !pm->has_alpha) return Color();
@@ -261,6 +405,7 @@ Color PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dis
                 graph_closures(*pm, h, dir, state, &cl);
                 t *= cl.transparent;
                 if (t.is_black()) return Color();
+                if (has_media_) stack.cross(h, dir, *this);
                 const Vec3 o = offset_ray_origin(h.p, h.p_error, h.ng, dir);
                 travelled += length(o - r.origin);
                 r.origin = o;
@@ -277,6 +422,7 @@ Color PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dis
                 pass += s.bsdf.base * (s.alpha * s.bsdf.transmission * (1 - s.bsdf.metallic));
             t *= pass;
             if (t.is_black()) return Color();
+            if (has_media_) stack.cross(h, dir, *this);
         }
         const Vec3 o = offset_ray_origin(h.p, h.p_error, h.ng, dir);
         travelled += length(o - r.origin);
@@ -285,6 +431,99 @@ Color PathIntegrator::transmittance(const Hit& from, const Vec3& dir, double dis
         if (!(r.tmax > 0)) return t;
     }
     return Color();
+}
+
+template <class Random>
+int PathIntegrator::track(const PathMedium* const* act, int na, const Ray& r, double tmax,
+                         Random& random, Color* beta, Color* emitted, double* t_out,
+                         MediumPoint* mp) const {
+    bool homogeneous = true, emissive = false;
+    double mu = 0;
+    for (int k = 0; k < na; ++k) {
+        homogeneous = homogeneous && act[k]->homogeneous();
+        emissive = emissive || act[k]->emissive();
+        mu += act[k]->majorant();
+    }
+    if (homogeneous) {
+        // Closed forms: the emission integrated over the segment, and a distance drawn
+        // exponentially in one channel, picked by throughput times albedo, with the pdf of
+        // all the channels' choices together (one-sample spectral MIS, as Cycles does).
+        medium_at(act, na, r.origin, mp);
+        const Color st = mp->sigma_t(), ss = mp->sigma_s();
+        auto transmit = [&](double d) {
+            auto one = [d](double s) { return s > 0 ? std::exp(-s * d) : 1.0; };
+            return Color(one(st.r), one(st.g), one(st.b));
+        };
+        if (emissive && !mp->emission.is_black()) {
+            auto integral = [tmax](double s) {
+                if (!(s > 0)) return tmax;  // (infinite for an endless segment: dropped below)
+                return std::isinf(tmax) ? 1 / s : -std::expm1(-s * tmax) / s;
+            };
+            const Color e = *beta * mp->emission *
+                            Color(integral(st.r), integral(st.g), integral(st.b));
+            if (finite(e)) *emitted += e;
+        }
+        if (ss.is_black()) {
+            *beta *= transmit(tmax);
+            return beta->is_black() ? 2 : 0;
+        }
+        double w[3];
+        double total = 0;
+        for (int c = 0; c < 3; ++c) {
+            const double sc = channel(st, c);
+            w[c] = std::fabs(channel(*beta, c)) * (sc > 0 ? channel(ss, c) / sc : 0);
+            total += w[c];
+        }
+        for (int c = 0; c < 3; ++c) w[c] = total > 0 ? w[c] / total : 1.0 / 3;
+        const double u = random();
+        const int c = u < w[0] ? 0 : u < w[0] + w[1] ? 1 : 2;
+        const double sc = channel(st, c);
+        const double t = sc > 0 ? -std::log(1 - random()) / sc : kInfinity;
+        if (t < tmax) {
+            const Color tr = transmit(t);
+            double pdf = 0;
+            for (int k = 0; k < 3; ++k) pdf += w[k] * channel(st, k) * channel(tr, k);
+            if (!(pdf > 0)) return 2;
+            *beta *= ss * tr * (1 / pdf);
+            *t_out = t;
+            return 1;
+        }
+        const Color tr = transmit(tmax);
+        double p = 0;
+        for (int k = 0; k < 3; ++k) p += w[k] * channel(tr, k);
+        if (!(p > 0)) return 2;
+        *beta *= tr * (1 / p);
+        return 0;
+    }
+    // Null-collision (delta) tracking against the summed majorants, weighted per channel:
+    // each tentative collision adds the media's emission (the collision estimator), then
+    // absorbs, scatters or passes with probabilities from the channel-averaged coefficients,
+    // the weights correcting each channel.
+    // Emission alone has no extinction to draw collisions by: some every few units of the
+    // segment still integrate it.
+    if (emissive && !std::isinf(tmax)) mu = std::max(mu, 8.0 / std::max(tmax, 1e-12));
+    if (!(mu > 0)) return 0;
+    double t = 0;
+    for (int i = 0; i < kMaxCollisions; ++i) {
+        t -= std::log(1 - random()) / mu;
+        if (!(t < tmax)) return 0;
+        medium_at(act, na, r.origin + r.dir * t, mp);
+        if (!mp->emission.is_black()) *emitted += *beta * mp->emission * (1 / mu);
+        const Color ss = mp->sigma_s(), sa = mp->sigma_a;
+        const Color sn(std::max(0.0, mu - sa.r - ss.r), std::max(0.0, mu - sa.g - ss.g),
+                       std::max(0.0, mu - sa.b - ss.b));
+        const double pa = average(sa) / mu, ps = average(ss) / mu, pn = average(sn) / mu;
+        const double xi = random() * (pa + ps + pn);
+        if (xi < pa) return 2;
+        if (xi < pa + ps) {
+            *beta *= ss * (1 / (mu * ps));
+            *t_out = t;
+            return 1;
+        }
+        *beta *= sn * (1 / (mu * pn));
+        if (beta->is_black() || !finite(*beta)) return 2;
+    }
+    return 2;
 }
 
 uint64_t PathIntegrator::rays() const {
@@ -310,6 +549,16 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
     if (first) *first = FirstHit{};
     const uint32_t alpha_base = 1 + static_cast<uint32_t>(max_vertices + 1) * kPairsPerVertex;
     uint32_t alpha_tests = 0;
+    // Media: the objects the ray is in, and the random numbers their collisions draw.
+    MediumStack stack;
+    if (has_media_ && r.origin == scene_.camera.location) stack = camera_stack_;
+    const uint32_t volume_base = alpha_base + kAlphaPairs;
+    uint32_t volume_draws = 0;
+    auto volume_random = [&]() {
+        const Sample2 s = sampler.get2(volume_base + volume_draws / 2);
+        return (volume_draws++ & 1) ? s.v : s.u;
+    };
+    int volume_depth = 0;
     uint32_t scatterings = 0;  // BSDF samples so far (bounces and pass-throughs)
     int skips = 0;             // alpha holes and pass-throughs: they do not count as bounces
     double travelled = 0;      // path length from the camera to the last scattering vertex
@@ -341,6 +590,90 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         Hit hit;
         ++rays;
         const bool found = geometry_.intersect(r, &hit);
+        if (has_media_) {
+            const PathMedium* act[MediumStack::kMax + 1];
+            const int na = active_media(stack, act);
+            int event = 0;  // 0: through, 1: scattered, 2: absorbed
+            double t = 0;
+            MediumPoint mp;
+            if (na > 0) {
+                Color emitted;
+                event = track(act, na, r, found ? hit.t : kInfinity, volume_random, &beta,
+                              &emitted, &t, &mp);
+                add(emitted);
+            }
+            if (event == 2) break;
+            if (event == 1) {
+                const Vec3 sp = r.origin + r.dir * t;
+                const Vec3 wo = -r.dir;
+                if (first && !first->hit) {
+                    first->hit = true;
+                    const Color ss = mp.sigma_s(), st = mp.sigma_t();
+                    first->albedo = Color(st.r > 0 ? ss.r / st.r : 0, st.g > 0 ? ss.g / st.g : 0,
+                                          st.b > 0 ? ss.b / st.b : 0);
+                    first->normal = wo;
+                    first->depth = seg_dist + t;
+                }
+                if (depth >= settings_.max_depth || last_hit) break;
+                // Next-event estimation from the scattering point, MIS against the phase.
+                if (lights.count() > 0) {
+                    const Sample2 ul = sampler.get2(base + 2);
+                    auto light = [&](int slot, Sample2 u) {
+                        PathLightSample ls;
+                        if (!lights.sample(slot, sp, u, &ls)) return;
+                        const double ph = phase_eval(mp, wo, ls.wi);
+                        if (!(ph > 0)) return;
+                        const uint32_t seed =
+                            static_cast<uint32_t>(volume_random() * 4294967296.0);
+                        const Color tr =
+                            transmittance(sp, ls.wi, ls.dist, r.time, stack, seed, &rays);
+                        if (tr.is_black()) return;
+                        Color c = ls.value * tr * ph;
+                        if (ls.environment) c *= environment(ls.wi);
+                        if (ls.pdf > 0) c *= power_heuristic(ls.pdf, phase_pdf(mp, wo, ls.wi));
+                        add(beta * c);
+                    };
+                    if (lights.sample_all()) {
+                        for (int k = 0; k < lights.count(); ++k)
+                            light(k, sampler.get2(base + 3 + static_cast<uint32_t>(k)));
+                    } else {
+                        const int k = std::min(lights.count() - 1,
+                                               static_cast<int>(ul.v * lights.count()));
+                        light(k, sampler.get2(base + 3));
+                    }
+                }
+                // Volume bounces are their own kind (Cycles' Light Paths > Volume).
+                if (settings_.volume_bounces >= 0 && volume_depth >= settings_.volume_bounces)
+                    break;
+                const Sample2 ud = sampler.get2(base + 1);
+                Vec3 wi;
+                double weight = 0, pdf = 0;
+                if (!phase_sample(mp, wo, sampler.get2(base).u, ud.u, ud.v, &wi, &weight, &pdf))
+                    break;
+                ++scatterings;
+                ++depth;
+                ++volume_depth;
+                beta *= weight;
+                specular = false;
+                last_diffuse = true;
+                last_reflected = true;
+                prev_pdf = pdf;
+                camera_view = false;
+                if (depth >= settings_.rr_start) {
+                    const double q = std::min(1.0, std::sqrt(beta.max()));
+                    if (!(sampler.get2(base).v < q)) break;
+                    beta *= 1.0 / q;
+                }
+                if (beta.is_black() || !finite(beta)) break;
+                r.origin = sp;
+                r.dir = wi;
+                r.tmax = kInfinity;
+                travelled += seg_dist + t;
+                seg_dist = 0;
+                prev_p = sp;
+                continue;
+            }
+        }
         // Blender lights on the way (Cycles' lamps: rays pass through them).
         if (lights.has_visible_blender())
             add(beta * lights.blender_emission(prev_p, r.dir, seg_dist,
@@ -394,6 +727,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                     if (++skips > max_skips) break;
                     beta *= cl.transparent * (1 / q);
                     if (beta.is_black() || !finite(beta)) break;
+                    if (has_media_) stack.cross(hit, r.dir, *this);
                     const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
                     seg_dist += length(o - r.origin);
                     r.origin = o;
@@ -451,6 +785,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             const SurfacePbr s = surface(hit);
             if (s.alpha < 1 && sampler.get2(alpha_base + alpha_tests++).u >= s.alpha) {
                 if (++skips > max_skips) break;
+                if (has_media_) stack.cross(hit, r.dir, *this);
                 const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
                 seg_dist += length(o - r.origin);
                 r.origin = o;
@@ -496,7 +831,15 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                 double bsdf_pdf = 0;
                 const Color f = set.eval(ls.wi, &bsdf_pdf);
                 if (f.is_black()) return;
-                const Color tr = transmittance(hit, ls.wi, ls.dist, r.time, &rays);
+                // The shadow ray starts in the media on the light's side of the surface.
+                MediumStack light_stack = stack;
+                if (has_media_ && (dot(ls.wi, hit.ng) > 0) != (dot(r.dir, hit.ng) < 0))
+                    light_stack.cross(hit, ls.wi, *this);
+                const uint32_t seed =
+                    has_media_ ? static_cast<uint32_t>(volume_random() * 4294967296.0) : 0;
+                const Color tr =
+                    transmittance(offset_ray_origin(hit.p, hit.p_error, hit.ng, ls.wi), ls.wi,
+                                  ls.dist, r.time, light_stack, seed, &rays);
                 if (tr.is_black()) return;
                 Color c = f * ls.value * tr;
                 if (ls.environment) c *= environment(ls.wi);
@@ -533,6 +876,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             // Shadow rays pass it too (transmittance), so what lies beyond keeps the MIS
             // weights of the last real bounce instead of being counted twice.
             if (++skips > max_skips || beta.is_black() || !finite(beta)) break;
+            if (has_media_) stack.cross(hit, r.dir, *this);
             const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
             seg_dist += length(o - r.origin);
             r.origin = o;
@@ -564,6 +908,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         // refraction that stays outside) ends the path, as in Cycles: following it would
         // leak light through the geometry.
         if ((dot(wi, hit.ng) * dot(r.dir, hit.ng) < 0) != bs.reflected) break;
+        if (has_media_ && !bs.reflected) stack.cross(hit, wi, *this);
         r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, wi);
         r.dir = wi;
         r.tmax = kInfinity;

@@ -18,6 +18,7 @@
 #include "render/bsdf/pov_to_pbr.h"
 #include "render/film/aov.h"
 #include "render/lights/path_lights.h"
+#include "render/media/path_medium.h"
 #include "render/prepare/prepared_scene.h"
 #include "render/sampling/sampler.h"
 #include "render/textures/pigment.h"
@@ -38,7 +39,7 @@ struct PathSettings {
     // the next hit adds its emission and the path ends there. A Blender scene's transparent
     // limit caps the pass-throughs (alpha, transparent closures) instead of kMaxAlphaSkips.
     int diffuse_bounces = -1, glossy_bounces = -1, transmission_bounces = -1,
-        transparent_bounces = -1;
+        transparent_bounces = -1, volume_bounces = -1;
     // Blender's Film > Transparent (RenderOptions::film_transparent).
     bool film_transparent = false;
     double film_transparent_glass = -1;  // RenderOptions::film_transparent_glass
@@ -71,11 +72,38 @@ private:
     // BSDFs), with the emission, transparency; false when the material has no graph.
     void graph_closures(const PathMaterial& row, const Hit& hit, const Vec3& dir,
                         const shader::RayState& state, shader::ClosureList* out) const;
-    // Light passing from `from` along `dir` for `dist`: through alpha holes and index-matched
-    // (IOR 1) transmissive surfaces, tinted; any other surface blocks it; at the path's
-    // shutter time.
-    Color transmittance(const Hit& from, const Vec3& dir, double dist, double time,
-                        uint64_t* rays) const;
+    // The objects a ray is inside, innermost last (POV-Ray's interiors, Cycles' volume stack),
+    // and which of them hold a medium; bounded so that paths stay allocation-free.
+    struct MediumStack {
+        static constexpr int kMax = 8;
+        int object[kMax];
+        int medium[kMax];  // media_ index, -1: none
+        bool hollow[kMax];
+        int count = 0;
+        // The ray leaves `hit`'s surface along `dir`: enters or leaves its object.
+        void cross(const Hit& hit, const Vec3& dir, const PathIntegrator& pi);
+    };
+    // The media acting on a ray in `stack`: the objects' own, and the world's (POV-Ray's
+    // atmosphere) while every object the ray is in is hollow.
+    int active_media(const MediumStack& stack, const PathMedium** out) const;
+    void medium_at(const PathMedium* const* media, int n, const Vec3& p, MediumPoint* out) const;
+    // Carries a path through the media on a segment of length `tmax` (kInfinity: open):
+    // returns 0 when it gets through (beta weighted), 1 when it scatters at *t (the medium
+    // there in *mp), 2 when it is absorbed; `emitted` receives the media's emission on the
+    // way, times the throughput.
+    template <class Random>
+    int track(const PathMedium* const* act, int na, const Ray& r, double tmax, Random& random,
+              Color* beta, Color* emitted, double* t, MediumPoint* mp) const;
+    // Light passing from `origin` along `dir` for `dist`: through alpha holes and
+    // index-matched (IOR 1) transmissive surfaces, tinted, and through the media on the way;
+    // any other surface blocks it; at the path's shutter time. `stack` holds the media at
+    // the origin; `seed` feeds the ratio tracking of media that are not homogeneous.
+    Color transmittance(const Vec3& origin, const Vec3& dir, double dist, double time,
+                        MediumStack stack, uint32_t seed, uint64_t* rays) const;
+    // Transmittance of the media over [0, dist] along a ray (exp(-sigma_t d) where they are
+    // homogeneous, ratio tracking where not).
+    Color media_transmittance(const PathMedium* const* media, int n, const Vec3& origin,
+                              const Vec3& dir, double dist, uint32_t* seed) const;
 
     const scene::Scene& scene_;
     const Geometry& geometry_;
@@ -84,6 +112,12 @@ private:
     PigmentEvaluator pigments_;
     PathSettings settings_;
     std::optional<PathLights> lights_;
+    // Media: one per material whose interior holds any, and the world's.
+    std::vector<PathMedium> media_;
+    std::vector<int> material_medium_;  // per material: media_ index or -1
+    int world_medium_ = -1;
+    bool has_media_ = false;
+    MediumStack camera_stack_;
     mutable std::atomic<uint64_t> nonfinite_{0};
     // One counter per worker thread, each on its own cache line: a shared one, added to after
     // every sample by every thread, bounced its line between the cores.

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/float.h"
+#include "render/integrators/containing.h"
 #include "render/lights/blender_lights.h"
 #include "render/lights/area_light.h"
 #include "render/lights/sky.h"
@@ -94,40 +95,10 @@ Whitted::Whitted(const PreparedScene& prepared)
 }
 
 void Whitted::find_camera_interiors() {
-    // Only refraction and interior fading care which objects contain the eye, and only the
-    // projections whose rays all start at the camera location have one eye point.
-    const scene::CameraKind k = scene_.camera.kind;
-    if (k == scene::CameraKind::Orthographic || k == scene::CameraKind::Cylinder3 ||
-        k == scene::CameraKind::Cylinder4)
-        return;
-    // Walk a ray from the eye: an object whose first crossing leaves it (the normal, which
-    // points out of the solid, along the ray) contains the eye.
-    Ray r;
-    r.origin = scene_.camera.location;
-    r.dir = normalize(scene_.camera.direction);
-    std::vector<int> seen;
-    struct Inside {
-        int object;
-        double ior;
-        int material;
-        bool operator<(const Inside& o) const { return object < o.object; }
-    };
-    std::vector<Inside> inside;
-    for (int i = 0; i < 256; ++i) {
-        Hit hit;
-        if (!geometry_.intersect(r, &hit)) break;
-        bool first = std::find(seen.begin(), seen.end(), hit.object) == seen.end();
-        if (first) {
-            seen.push_back(hit.object);
-            if (dot(hit.ng, r.dir) > 0.0 && hit.material >= 0)
-                inside.push_back({hit.object, scene_.materials[hit.material].interior.ior,
-                                  hit.material});
-        }
-        r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
-    }
-    // POV-Ray lists containing objects in scene order.
-    std::sort(inside.begin(), inside.end());
-    for (const Inside& i : inside) camera_interiors_.append(i.object, i.ior, i.material);
+    // Only refraction, interior fading and media care which objects contain the eye.
+    for (const Containing& c : objects_containing_camera(scene_, geometry_))
+        camera_interiors_.append(c.object, scene_.materials[c.material].interior.ior,
+                                 c.material);
 }
 
 Color Whitted::li(const Ray& ray) const {

@@ -21,14 +21,6 @@ std::unique_ptr<PreparedScene> prepare_with(const scene::Scene& scene,
         if (features.image_textures) textures->preload(scene);
     }
     Diagnostics quiet;
-    if (path && features.media && diag) {
-        // The path tracer has no volumes yet: say so once, at the first medium.
-        FileLoc at = scene.media.empty() ? FileLoc{} : scene.media.front().loc;
-        for (const scene::Material& m : scene.materials)
-            if (!at.valid() && !m.interior.media.empty()) at = m.interior.media.front().loc;
-        diag->warning(at, "media are rendered by the classic renderer only; the path tracer "
-                          "leaves them out");
-    }
     std::unique_ptr<shader::GraphShading> programs;
     if (graphs)
         programs = std::make_unique<shader::GraphShading>(scene, options.width, options.height,

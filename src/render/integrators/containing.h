@@ -1,0 +1,21 @@
+// The objects that contain the camera's eye point (POV-Ray's InitRayContainerState; Cycles'
+// volume stack init), for the integrators that track which interiors or media a ray is in.
+#pragma once
+
+#include <vector>
+
+#include "render/prepare/geometry.h"
+#include "scene/scene.h"
+
+namespace glint::render {
+
+struct Containing {
+    int object;    // top-level scene object
+    int material;  // the material of the surface that closes it around the eye
+};
+
+// In scene order; empty for projections whose rays do not all start at the camera location.
+std::vector<Containing> objects_containing_camera(const scene::Scene& scene,
+                                                  const Geometry& geometry);
+
+}  // namespace glint::render

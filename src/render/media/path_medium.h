@@ -1,0 +1,83 @@
+// Participating media for the path tracer: what a medium holds at a point (absorption,
+// scattering with its phase function, emission, all per unit length) and a bound on its
+// extinction (the majorant of null-collision tracking). Made from POV-Ray media (an
+// interior's media add up; their densities are patterns) or set directly (Blender's volume
+// shaders). Read-only while rendering.
+#pragma once
+
+#include <vector>
+
+#include "core/math.h"
+#include "render/textures/pigment.h"
+#include "scene/texture.h"
+
+namespace glint::render {
+
+// The phase functions: Henyey-Greenstein (g = 0: isotropic) and POV-Ray's tabulated shapes,
+// each normalized as POV-Ray normalizes it (the value over 4 pi; POV-Ray's Rayleigh and Mie
+// constants integrate to 1.066 and 1.000 / 1.000 of the sphere).
+enum class PhaseKind { HenyeyGreenstein, Rayleigh, MieHazy, MieMurky };
+
+struct PhaseLobe {
+    PhaseKind kind = PhaseKind::HenyeyGreenstein;
+    double g = 0;
+    Color sigma_s;  // this lobe's share of the scattering coefficient
+};
+
+// The medium at one point.
+struct MediumPoint {
+    Color sigma_a;
+    Color emission;  // radiance added per unit length
+    static constexpr int kMaxLobes = 4;
+    PhaseLobe lobes[kMaxLobes];
+    int lobe_count = 0;
+    Color sigma_s() const;
+    Color sigma_t() const { return sigma_a + sigma_s(); }
+};
+
+// Phase function value for the angle between the light's travel `wi_travel` reversed (unit,
+// towards where the light comes from) and the outgoing direction `wo` (unit, towards where
+// it goes): both point away from the scattering point. Weighted sum over the lobes by their
+// scattering, divided by the total scattering (returns 0 where it is 0).
+double phase_eval(const MediumPoint& m, const Vec3& wo, const Vec3& wi);
+// Samples wi given wo: picks a lobe by its scattering, then a direction (HG analytically, the
+// tabulated shapes uniformly over the sphere). Returns the weight phase / pdf and the pdf of
+// the whole mixture.
+// The pdf with which phase_sample picks wi.
+double phase_pdf(const MediumPoint& m, const Vec3& wo, const Vec3& wi);
+bool phase_sample(const MediumPoint& m, const Vec3& wo, double u0, double u1, double u2,
+                  Vec3* wi, double* weight, double* pdf);
+
+class PathMedium {
+public:
+    PathMedium() = default;
+    // One hollow object's POV-Ray media, or the atmosphere's. `pigments` (density patterns)
+    // must outlive this.
+    PathMedium(const std::vector<scene::Media>& media, const PigmentEvaluator* pigments);
+    // A medium the same everywhere.
+    explicit PathMedium(const MediumPoint& constant);
+
+    bool homogeneous() const { return homogeneous_; }
+    bool emissive() const { return emissive_; }
+    // An upper bound on every channel of sigma_t anywhere in the medium.
+    double majorant() const { return majorant_; }
+    void at(const Vec3& p, MediumPoint* out) const;
+
+private:
+    struct Component {  // one POV-Ray media block
+        Color sigma_a, sigma_s, emission;
+        PhaseLobe lobe;
+        std::vector<scene::Pigment> density;
+    };
+    std::vector<Component> components_;
+    MediumPoint constant_;
+    const PigmentEvaluator* pigments_ = nullptr;
+    bool homogeneous_ = true;
+    bool emissive_ = false;
+    double majorant_ = 0.0;
+};
+
+// An upper bound of a density pattern's value in every channel (its map's largest entry).
+double density_bound(const scene::Pigment& p);
+
+}  // namespace glint::render
