@@ -468,6 +468,7 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
         settings.glossy_bounces = b.integer("glossy", settings.glossy_bounces);
         settings.transmission_bounces = b.integer("transmission", settings.transmission_bounces);
         settings.transparent_bounces = b.integer("transparent", settings.transparent_bounces);
+        settings.volume_bounces = b.integer("volume", settings.volume_bounces);
     }
     settings.film_transparent = render.boolean("film_transparent", false);
     settings.filter_width = render.number("filter_width", 1.5);

@@ -607,6 +607,7 @@ int render_frame(const RenderArgs& args) {
         options.glossy_bounces = b.glossy_bounces;
         options.transmission_bounces = b.transmission_bounces;
         options.transparent_bounces = b.transparent_bounces;
+        options.volume_bounces = b.volume_bounces;
         options.film_transparent = b.film_transparent;
         options.film_transparent_glass = b.film_transparent_glass;
     }

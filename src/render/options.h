@@ -65,7 +65,7 @@ struct RenderOptions {
     // Path tracer: Cycles' bounce limits per kind (Light Paths > Max Bounces; -1: none, the
     // CLI's default: max_depth alone limits the path).
     int diffuse_bounces = -1, glossy_bounces = -1, transmission_bounces = -1,
-        transparent_bounces = -1;
+        transparent_bounces = -1, volume_bounces = -1;
     // Path tracer, Blender's Film > Transparent: a camera ray that reaches the world through
     // nothing but transparent surfaces adds no world colour, only transparency. With `alpha`
     // the film's alpha is 1 - the camera's mean transparency (FirstHit::transparent), as

@@ -33,6 +33,7 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
         ps.diffuse_bounces = options.diffuse_bounces;
         ps.glossy_bounces = options.glossy_bounces;
         ps.transmission_bounces = options.transmission_bounces;
+        ps.volume_bounces = options.volume_bounces;
         ps.transparent_bounces = options.transparent_bounces;
         ps.film_transparent = options.film_transparent;
         ps.film_transparent_glass = options.film_transparent_glass;

@@ -46,7 +46,7 @@ struct BlenderRender {
     int seed = 0;
     // Cycles' Light Paths > Max Bounces.
     int max_bounces = 12, diffuse_bounces = 4, glossy_bounces = 4, transmission_bounces = 12,
-        transparent_bounces = 8;
+        transparent_bounces = 8, volume_bounces = 0;
     bool film_transparent = false;
     // Film > Transparent Glass: the Roughness Threshold under which a transmission keeps the
     // camera's view of the world transparent; negative when off.

@@ -653,7 +653,8 @@ BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "pano_equisolid": build_pano_equisolid, "film_alpha": build_film_alpha,
             "motion": more.build_motion, "motion_camera": more.build_motion_camera,
             "motion_deform": more.build_motion_deform, "normal_map": more.build_normal_map,
-            "msglass": build_msglass, "film_glass": more.build_film_glass}
+            "msglass": build_msglass, "film_glass": more.build_film_glass,
+            "volume": more.build_volume}
 
 
 def build(name, out_dir):
@@ -662,6 +663,7 @@ def build(name, out_dir):
     scene = bpy.context.scene
     cy.setup_render(scene, spp=SAMPLES, seed=1)
     film_settings(name, scene)
+    more.AFTER_SETUP.get(name, lambda s: None)(scene)
     if name != "anim":
         scene.frame_start = scene.frame_end = 1
     scene.frame_set(scene.frame_start)
@@ -703,6 +705,7 @@ def render_references(name, ref_dir, spp, seeds, tmp_dir, threads, time_file):
             t0 = time.time()
             cy.setup_render(scene, spp, k, threads=threads)
             film_settings(name, scene)
+            more.AFTER_SETUP.get(name, lambda s: None)(scene)
             scene.render.filepath = path
             bpy.ops.render.render(write_still=True)
             dt = time.time() - t0

@@ -256,5 +256,68 @@ TEST(ShaderGraph, ALinkCycleIsCutWithAWarning) {
     EXPECT_TRUE(std::isfinite(cl.emission.r));
 }
 
+
+// Cycles 3.4's volume closures (svm_node_principled_volume, svm_node_closure_volume): the
+// coefficients the path tracer's media take from a material's Volume output.
+TEST(ShaderGraph, VolumeShadersGiveCyclesCoefficients) {
+    G b;
+    const int pv = b.node("ShaderNodeVolumePrincipled", {{"Volume", SocketType::Shader}});
+    b.in(pv, "Color", SocketType::Rgba, 0.8, 0.5, 0.2);
+    b.in(pv, "Density", SocketType::Value, 2);
+    b.in(pv, "Anisotropy", SocketType::Value, 0.3);
+    b.in(pv, "Absorption Color", SocketType::Rgba, 0.25, 0, 1);
+    b.in(pv, "Emission Strength", SocketType::Value, 0.5);
+    b.in(pv, "Emission Color", SocketType::Rgba, 1, 0.5, 0);
+    const int ab = b.node("ShaderNodeVolumeAbsorption", {{"Volume", SocketType::Shader}});
+    b.in(ab, "Color", SocketType::Rgba, 0.25, 0.5, 1);
+    b.in(ab, "Density", SocketType::Value, 4);
+    const int mix = b.node("ShaderNodeMixShader", {{"Shader", SocketType::Shader}});
+    b.in(mix, "Fac", SocketType::Value, 0.25);
+    b.link(mix, "Shader", pv, "Volume");
+    b.link(mix, "Shader_001", ab, "Volume");
+    b.link(b.output_node(), "Volume", mix, "Shader");
+    Diagnostics diag;
+    auto p = ShaderProgram::compile(b.g, nullptr, diag);
+    EXPECT_EQ(diag.warning_count(), 0);
+    ASSERT_TRUE(p->has_volume());
+    EXPECT_FALSE(p->has_surface());
+    EXPECT_TRUE(p->volume_constant());
+    VolumeClosures v;
+    p->evaluate_volume(ShaderGlobals(), &v);
+    // Principled at mix weight 0.75: density 1.5, sigma_s = colour * density, extinction
+    // (colour + (1 - colour)(1 - sqrt(absorption colour))) * density; the absorption at 0.25:
+    // (1 - colour) * 4 * 0.25. Emission is not scaled by density or mix.
+    ASSERT_EQ(v.count, 1);
+    EXPECT_NEAR(v.lobes[0].sigma_s.r, 0.8 * 1.5, 1e-6);
+    EXPECT_NEAR(v.lobes[0].g, 0.3, 1e-6);
+    EXPECT_NEAR(v.extinction.r, (0.8 + 0.2 * 0.5) * 1.5 + 0.75, 1e-6);
+    EXPECT_NEAR(v.extinction.g, (0.5 + 0.5 * 1.0) * 1.5 + 0.5, 1e-6);
+    EXPECT_NEAR(v.extinction.b, (0.2 + 0.8 * 0.0) * 1.5 + 0.0, 1e-6);
+    EXPECT_NEAR(v.emission.r, 0.5, 1e-6);
+    EXPECT_NEAR(v.emission.g, 0.25, 1e-6);
+    // Without a surface the boundary lets rays through.
+    ClosureList cl;
+    p->evaluate(ShaderGlobals(), &cl);
+    EXPECT_EQ(cl.count, 0);
+    EXPECT_EQ(cl.transparent, Color(1, 1, 1));
+}
+
+TEST(ShaderGraph, VaryingVolumeIsWarnedAndFlagged) {
+    G b;
+    const int tc = b.node("ShaderNodeTexCoord", {{"Object", SocketType::Vector}});
+    const int sep = b.node("ShaderNodeSeparateXYZ", {{"X", SocketType::Value}});
+    b.in(sep, "Vector", SocketType::Vector, 0);
+    b.link(sep, "Vector", tc, "Object");
+    const int sc = b.node("ShaderNodeVolumeScatter", {{"Volume", SocketType::Shader}});
+    b.in(sc, "Color", SocketType::Rgba, 1, 1, 1);
+    b.in(sc, "Density", SocketType::Value, 1);
+    b.link(sc, "Density", sep, "X");
+    b.link(b.output_node(), "Volume", sc, "Volume");
+    Diagnostics diag;
+    auto p = ShaderProgram::compile(b.g, nullptr, diag);
+    EXPECT_FALSE(p->volume_constant());
+    EXPECT_EQ(diag.warning_count(), 1);
+}
+
 }  // namespace
 }  // namespace glint::render::shader

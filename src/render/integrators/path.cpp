@@ -8,7 +8,7 @@
 #include "core/float.h"
 #include "render/bsdf/bsdf.h"
 #include "render/bsdf/shading_normal.h"
-#include "render/integrators/containing.h"
+#include "render/prepare/containing.h"
 #include "render/lights/sky.h"
 
 namespace glint::render {
@@ -23,14 +23,6 @@ constexpr int kMaxAlphaSkips = 64;
 // Media draw as many random numbers as their collisions need, from pairs after the alpha
 // coins' (at most one per pass-through).
 constexpr uint32_t kAlphaPairs = 4096;
-// Collisions on one segment before the tracking gives up (a bound against runaway loops).
-constexpr int kMaxCollisions = 1 << 20;
-
-// A uniform number in [0, 1) from a 32-bit hash stream (ratio tracking of shadow rays).
-double hash_uniform(uint32_t* seed) {
-    *seed = hash_u32(*seed + 0x9e3779b9U);
-    return static_cast<double>(*seed) * (1.0 / 4294967296.0);
-}
 
 double power_heuristic(double a, double b) {
     const double a2 = a * a, b2 = b * b;
@@ -44,7 +36,6 @@ bool finite(const Color& c) {
 }
 
 double average(const Color& c) { return (c.r + c.g + c.b) / 3; }
-double channel(const Color& c, int i) { return i == 0 ? c.r : i == 1 ? c.g : c.b; }
 
 // One closure of a node graph into the set, split as Cycles 3.4 splits it
 // (svm_node_closure_bsdf): the Principled BSDF's diffuse, reflection and glass lobes as one
@@ -174,6 +165,30 @@ void add_closure(ClosureSet& set, const shader::Closure& c, const Vec3& n, doubl
 
 }  // namespace
 
+namespace {
+
+// A volume shader that is the same everywhere, as the medium it makes: Cycles' closures
+// (extinction, Henyey-Greenstein lobes, emission) as coefficients.
+MediumPoint constant_volume(const shader::ShaderProgram& program) {
+    shader::VolumeClosures v;
+    program.evaluate_volume(shader::ShaderGlobals{}, &v);
+    MediumPoint m;
+    Color scattering;
+    for (int i = 0; i < v.count; ++i) {
+        scattering += v.lobes[i].sigma_s;
+        if (m.lobe_count < MediumPoint::kMaxLobes)
+            m.lobes[m.lobe_count++] = {PhaseKind::HenyeyGreenstein, v.lobes[i].g, v.lobes[i].sigma_s};
+        else
+            m.lobes[MediumPoint::kMaxLobes - 1].sigma_s += v.lobes[i].sigma_s;
+    }
+    const Color a = v.extinction - scattering;
+    m.sigma_a = Color(std::max(0.0, a.r), std::max(0.0, a.g), std::max(0.0, a.b));
+    m.emission = v.emission;
+    return m;
+}
+
+}  // namespace
+
 PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings& settings)
     : scene_(prepared.scene),
       geometry_(*prepared.geometry),
@@ -188,17 +203,26 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
     lights_.emplace(scene_, materials_.emission(),
                     [this](const Vec3& d) { return environment(d); }, prepared.textures.get(),
                     world);
-    // Media: each material's interior media become one medium, the atmosphere's another.
+    // Media: each material's interior media (POV-Ray) or volume shader (Blender) become one
+    // medium, the atmosphere's or the world's volume another.
     material_medium_.assign(scene_.materials.size(), -1);
     for (size_t m = 0; m < scene_.materials.size(); ++m) {
         const auto& media = scene_.materials[m].interior.media;
-        if (media.empty()) continue;
+        const PathMaterial* row = materials_.path(static_cast<int>(m));
+        const shader::ShaderProgram* volume = row && row->program && row->program->has_volume()
+                                                  ? row->program : nullptr;
+        if (media.empty() && !(volume && volume->volume_constant())) continue;
         material_medium_[m] = static_cast<int>(media_.size());
-        media_.emplace_back(media, &pigments_);
+        if (volume) media_.emplace_back(constant_volume(*volume));
+        else media_.emplace_back(media, &pigments_);
     }
+    const shader::ShaderProgram* world_graph = graphs_ ? graphs_->world() : nullptr;
     if (!scene_.media.empty()) {
         world_medium_ = static_cast<int>(media_.size());
         media_.emplace_back(scene_.media, &pigments_);
+    } else if (world_graph && world_graph->has_volume() && world_graph->volume_constant()) {
+        world_medium_ = static_cast<int>(media_.size());
+        media_.emplace_back(constant_volume(*world_graph));
     }
     has_media_ = !media_.empty();
     if (has_media_)
@@ -211,101 +235,6 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
         }
 }
 
-void PathIntegrator::MediumStack::cross(const Hit& hit, const Vec3& dir,
-                                        const PathIntegrator& pi) {
-    if (hit.object < 0) return;
-    if (dot(dir, hit.ng) < 0) {
-        // Entering (the geometric normal points out of the solid).
-        if (count == kMax) return;  // deeper nesting than any sane scene: ignore it
-        object[count] = hit.object;
-        medium[count] = hit.material >= 0 ? pi.material_medium_[static_cast<size_t>(hit.material)]
-                                          : -1;
-        hollow[count] = pi.scene_.objects[static_cast<size_t>(hit.object)].hollow;
-        ++count;
-        return;
-    }
-    for (int i = count - 1; i >= 0; --i) {
-        if (object[i] != hit.object) continue;
-        for (int j = i; j + 1 < count; ++j) {
-            object[j] = object[j + 1];
-            medium[j] = medium[j + 1];
-            hollow[j] = hollow[j + 1];
-        }
-        --count;
-        return;
-    }
-}
-
-int PathIntegrator::active_media(const MediumStack& stack, const PathMedium** out) const {
-    // As in POV-Ray's classic renderer: media act only while every object the ray is inside
-    // is hollow (Ray::IsHollowRay); the atmosphere's then too.
-    for (int i = 0; i < stack.count; ++i)
-        if (!stack.hollow[i]) return 0;
-    int n = 0;
-    for (int i = 0; i < stack.count; ++i)
-        if (stack.medium[i] >= 0) out[n++] = &media_[static_cast<size_t>(stack.medium[i])];
-    if (world_medium_ >= 0) out[n++] = &media_[static_cast<size_t>(world_medium_)];
-    return n;
-}
-
-void PathIntegrator::medium_at(const PathMedium* const* media, int n, const Vec3& p,
-                               MediumPoint* out) const {
-    if (n == 1) {
-        media[0]->at(p, out);
-        return;
-    }
-    *out = MediumPoint{};
-    for (int k = 0; k < n; ++k) {
-        MediumPoint m;
-        media[k]->at(p, &m);
-        out->sigma_a += m.sigma_a;
-        out->emission += m.emission;
-        for (int i = 0; i < m.lobe_count; ++i) {
-            if (out->lobe_count < MediumPoint::kMaxLobes)
-                out->lobes[out->lobe_count++] = m.lobes[i];
-            else  // more lobes than room: the scattering still counts, in the last shape
-                out->lobes[MediumPoint::kMaxLobes - 1].sigma_s += m.lobes[i].sigma_s;
-        }
-    }
-}
-
-Color PathIntegrator::media_transmittance(const PathMedium* const* media, int n,
-                                          const Vec3& origin, const Vec3& dir, double dist,
-                                          uint32_t* seed) const {
-    bool homogeneous = true;
-    double majorant = 0;
-    for (int k = 0; k < n; ++k) {
-        homogeneous = homogeneous && media[k]->homogeneous();
-        majorant += media[k]->majorant();
-    }
-    if (!(majorant > 0)) return Color(1, 1, 1);
-    MediumPoint m;
-    if (homogeneous) {
-        medium_at(media, n, origin, &m);
-        const Color st = m.sigma_t();
-        auto tr = [dist](double s) { return s > 0 ? std::exp(-s * dist) : 1.0; };
-        return Color(tr(st.r), tr(st.g), tr(st.b));
-    }
-    // Ratio tracking (Novak et al. 2014): the product of the null-collision probabilities at
-    // tentative collisions drawn against the majorant; Russian roulette once it is small.
-    Color t(1, 1, 1);
-    double x = 0;
-    for (int i = 0; i < kMaxCollisions; ++i) {
-        x -= std::log(1 - hash_uniform(seed)) / majorant;
-        if (!(x < dist)) return t;
-        medium_at(media, n, origin + dir * x, &m);
-        const Color st = m.sigma_t();
-        t *= Color(std::max(0.0, 1 - st.r / majorant), std::max(0.0, 1 - st.g / majorant),
-                   std::max(0.0, 1 - st.b / majorant));
-        const double mx = t.max();
-        if (!(mx > 0)) return Color();
-        if (mx < 0.1) {
-            if (hash_uniform(seed) >= mx) return Color();
-            t *= 1 / mx;
-        }
-    }
-    return t;
-}
 
 void PathIntegrator::graph_closures(const PathMaterial& row, const Hit& hit, const Vec3& dir,
                                     const shader::RayState& state,
@@ -433,99 +362,6 @@ Color PathIntegrator::transmittance(const Vec3& origin, const Vec3& dir, double 
     return Color();
 }
 
-template <class Random>
-int PathIntegrator::track(const PathMedium* const* act, int na, const Ray& r, double tmax,
-                         Random& random, Color* beta, Color* emitted, double* t_out,
-                         MediumPoint* mp) const {
-    bool homogeneous = true, emissive = false;
-    double mu = 0;
-    for (int k = 0; k < na; ++k) {
-        homogeneous = homogeneous && act[k]->homogeneous();
-        emissive = emissive || act[k]->emissive();
-        mu += act[k]->majorant();
-    }
-    if (homogeneous) {
-        // Closed forms: the emission integrated over the segment, and a distance drawn
-        // exponentially in one channel, picked by throughput times albedo, with the pdf of
-        // all the channels' choices together (one-sample spectral MIS, as Cycles does).
-        medium_at(act, na, r.origin, mp);
-        const Color st = mp->sigma_t(), ss = mp->sigma_s();
-        auto transmit = [&](double d) {
-            auto one = [d](double s) { return s > 0 ? std::exp(-s * d) : 1.0; };
-            return Color(one(st.r), one(st.g), one(st.b));
-        };
-        if (emissive && !mp->emission.is_black()) {
-            auto integral = [tmax](double s) {
-                if (!(s > 0)) return tmax;  // (infinite for an endless segment: dropped below)
-                return std::isinf(tmax) ? 1 / s : -std::expm1(-s * tmax) / s;
-            };
-            const Color e = *beta * mp->emission *
-                            Color(integral(st.r), integral(st.g), integral(st.b));
-            if (finite(e)) *emitted += e;
-        }
-        if (ss.is_black()) {
-            *beta *= transmit(tmax);
-            return beta->is_black() ? 2 : 0;
-        }
-        double w[3];
-        double total = 0;
-        for (int c = 0; c < 3; ++c) {
-            const double sc = channel(st, c);
-            w[c] = std::fabs(channel(*beta, c)) * (sc > 0 ? channel(ss, c) / sc : 0);
-            total += w[c];
-        }
-        for (int c = 0; c < 3; ++c) w[c] = total > 0 ? w[c] / total : 1.0 / 3;
-        const double u = random();
-        const int c = u < w[0] ? 0 : u < w[0] + w[1] ? 1 : 2;
-        const double sc = channel(st, c);
-        const double t = sc > 0 ? -std::log(1 - random()) / sc : kInfinity;
-        if (t < tmax) {
-            const Color tr = transmit(t);
-            double pdf = 0;
-            for (int k = 0; k < 3; ++k) pdf += w[k] * channel(st, k) * channel(tr, k);
-            if (!(pdf > 0)) return 2;
-            *beta *= ss * tr * (1 / pdf);
-            *t_out = t;
-            return 1;
-        }
-        const Color tr = transmit(tmax);
-        double p = 0;
-        for (int k = 0; k < 3; ++k) p += w[k] * channel(tr, k);
-        if (!(p > 0)) return 2;
-        *beta *= tr * (1 / p);
-        return 0;
-    }
-    // Null-collision (delta) tracking against the summed majorants, weighted per channel:
-    // each tentative collision adds the media's emission (the collision estimator), then
-    // absorbs, scatters or passes with probabilities from the channel-averaged coefficients,
-    // the weights correcting each channel.
-    // Emission alone has no extinction to draw collisions by: some every few units of the
-    // segment still integrate it.
-    if (emissive && !std::isinf(tmax)) mu = std::max(mu, 8.0 / std::max(tmax, 1e-12));
-    if (!(mu > 0)) return 0;
-    double t = 0;
-    for (int i = 0; i < kMaxCollisions; ++i) {
-        t -= std::log(1 - random()) / mu;
-        if (!(t < tmax)) return 0;
-        medium_at(act, na, r.origin + r.dir * t, mp);
-        if (!mp->emission.is_black()) *emitted += *beta * mp->emission * (1 / mu);
-        const Color ss = mp->sigma_s(), sa = mp->sigma_a;
-        const Color sn(std::max(0.0, mu - sa.r - ss.r), std::max(0.0, mu - sa.g - ss.g),
-                       std::max(0.0, mu - sa.b - ss.b));
-        const double pa = average(sa) / mu, ps = average(ss) / mu, pn = average(sn) / mu;
-        const double xi = random() * (pa + ps + pn);
-        if (xi < pa) return 2;
-        if (xi < pa + ps) {
-            *beta *= ss * (1 / (mu * ps));
-            *t_out = t;
-            return 1;
-        }
-        *beta *= sn * (1 / (mu * pn));
-        if (beta->is_black() || !finite(*beta)) return 2;
-    }
-    return 2;
-}
-
 uint64_t PathIntegrator::rays() const {
     uint64_t sum = 0;
     for (const RayCount& c : rays_) sum += c.n.load(std::memory_order_relaxed);
@@ -552,12 +388,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
     // Media: the objects the ray is in, and the random numbers their collisions draw.
     MediumStack stack;
     if (has_media_ && r.origin == scene_.camera.location) stack = camera_stack_;
-    const uint32_t volume_base = alpha_base + kAlphaPairs;
-    uint32_t volume_draws = 0;
-    auto volume_random = [&]() {
-        const Sample2 s = sampler.get2(volume_base + volume_draws / 2);
-        return (volume_draws++ & 1) ? s.v : s.u;
-    };
+    VolumeRandom volume_random{&sampler, alpha_base + kAlphaPairs};
     int volume_depth = 0;
     uint32_t scatterings = 0;  // BSDF samples so far (bounces and pass-throughs)
     int skips = 0;             // alpha holes and pass-throughs: they do not count as bounces
@@ -642,9 +473,6 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                         light(k, sampler.get2(base + 3));
                     }
                 }
-                // Volume bounces are their own kind (Cycles' Light Paths > Volume).
-                if (settings_.volume_bounces >= 0 && volume_depth >= settings_.volume_bounces)
-                    break;
                 const Sample2 ud = sampler.get2(base + 1);
                 Vec3 wi;
                 double weight = 0, pdf = 0;
@@ -652,7 +480,10 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                     break;
                 ++scatterings;
                 ++depth;
-                ++volume_depth;
+                // Volume bounces are their own kind (Cycles' Light Paths > Volume): past the
+                // limit the path goes on only to add what it hits next.
+                if (settings_.volume_bounces >= 0 && ++volume_depth > settings_.volume_bounces)
+                    last_hit = true;
                 beta *= weight;
                 specular = false;
                 last_diffuse = true;

@@ -87,13 +87,24 @@ private:
     // atmosphere) while every object the ray is in is hollow.
     int active_media(const MediumStack& stack, const PathMedium** out) const;
     void medium_at(const PathMedium* const* media, int n, const Vec3& p, MediumPoint* out) const;
+    // The random numbers of a path's media: as many as their collisions need, drawn in
+    // turn from the sampler's pairs from `base` on.
+    struct VolumeRandom {
+        const PixelSampler* sampler;
+        uint32_t base;
+        uint32_t draws = 0;
+        double operator()() {
+            const Sample2 s = sampler->get2(base + draws / 2);
+            return (draws++ & 1) ? s.v : s.u;
+        }
+    };
     // Carries a path through the media on a segment of length `tmax` (kInfinity: open):
     // returns 0 when it gets through (beta weighted), 1 when it scatters at *t (the medium
     // there in *mp), 2 when it is absorbed; `emitted` receives the media's emission on the
     // way, times the throughput.
-    template <class Random>
-    int track(const PathMedium* const* act, int na, const Ray& r, double tmax, Random& random,
-              Color* beta, Color* emitted, double* t, MediumPoint* mp) const;
+    int track(const PathMedium* const* act, int na, const Ray& r, double tmax,
+              VolumeRandom& random, Color* beta, Color* emitted, double* t,
+              MediumPoint* mp) const;
     // Light passing from `origin` along `dir` for `dist`: through alpha holes and
     // index-matched (IOR 1) transmissive surfaces, tinted, and through the media on the way;
     // any other surface blocks it; at the path's shutter time. `stack` holds the media at

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/float.h"
-#include "render/integrators/containing.h"
+#include "render/prepare/containing.h"
 #include "render/lights/blender_lights.h"
 #include "render/lights/area_light.h"
 #include "render/lights/sky.h"

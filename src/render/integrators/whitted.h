@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "render/integrators/atmosphere.h"
-#include "render/integrators/pov_media.h"
+#include "render/media/pov_media.h"
 #include "render/lights/light.h"
 #include "render/prepare/prepared_scene.h"
 #include "render/textures/pigment.h"

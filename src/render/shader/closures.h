@@ -116,4 +116,18 @@ struct ClosureList {
     }
 };
 
+// What a volume shader leaves at a point (Cycles' volume closures): extinction, the scattering
+// lobes (Henyey-Greenstein, each with its share of the scattering) and the emission, all per
+// unit length.
+struct VolumeClosures {
+    static constexpr int kMax = 8;
+    Color extinction;
+    Color emission;
+    struct Lobe {
+        Color sigma_s;
+        double g = 0;
+    } lobes[kMax];
+    int count = 0;
+};
+
 }  // namespace glint::render::shader

@@ -7,6 +7,7 @@
 
 #include "render/shader/color_nodes.h"
 #include "render/shader/compiler.h"
+#include "render/shader/converter_nodes.h"
 
 namespace glint::render::shader {
 
@@ -302,13 +303,7 @@ std::unique_ptr<ShaderProgram> ShaderProgram::compile(const scene::ShaderGraph& 
     Compiler c(graph, *program, textures, diag);
     program->root_ = c.compile_output();
     program->normal_reg_ = c.normal();
-    if (graph.output >= 0) {
-        const scene::ShaderNode& out = graph.nodes[graph.output];
-        const scene::ShaderInput* vol = out.input("Volume");
-        if (vol && vol->link.linked())
-            diag.warning(graph.loc, "'" + graph.name + "': volume shaders are not supported "
-                                                       "yet: the volume is left out");
-    }
+    if (graph.output >= 0) program->volume_root_ = c.closure(graph.output, "Volume");
     program->main_end_ = program->ops_.size();
     program->varying_ops_ = static_cast<int>(program->ops_.size());
     for (const ClosureNode& n : program->closures_)
@@ -316,6 +311,24 @@ std::unique_ptr<ShaderProgram> ShaderProgram::compile(const scene::ShaderGraph& 
             if (c.varying(r)) program->closure_varying_ = true;
     for (const ClosureNode& n : program->closures_)
         if (c.varying(n.fac)) program->closure_varying_ = true;
+    // The volume varies where any value its closures read does.
+    std::vector<int> todo{program->volume_root_};
+    std::vector<bool> seen(program->closures_.size(), false);
+    while (!todo.empty()) {
+        const int i = todo.back();
+        todo.pop_back();
+        if (i < 0 || seen[static_cast<size_t>(i)]) continue;
+        seen[static_cast<size_t>(i)] = true;
+        const ClosureNode& n = program->closures_[static_cast<size_t>(i)];
+        for (int r : n.in) program->volume_varying_ = program->volume_varying_ || c.varying(r);
+        program->volume_varying_ = program->volume_varying_ || c.varying(n.fac);
+        todo.push_back(n.a);
+        todo.push_back(n.b);
+    }
+    if (program->volume_varying_)
+        diag.warning(graph.loc, "'" + graph.name + "': a volume whose density or colour varies "
+                                                   "in space is not supported yet: the volume is "
+                                                   "left out");
     return program;
 }
 
@@ -352,6 +365,7 @@ void ShaderProgram::walk(int index, const Color& weight, const float3* r,
         case ClosureNode::Kind::Holdout:
             out->holdout += weight;
             return;
+        case ClosureNode::Kind::Volume: return;  // only the volume shader reads them
         case ClosureNode::Kind::Bsdf: break;
     }
     // A BSDF: its inputs by slot.
@@ -428,6 +442,97 @@ void ShaderProgram::evaluate(const ShaderGlobals& sg, ClosureList* out) const {
     run(ops_.data(), ops_.data() + main_end_, regs.data(), sg);
     out->N = regs[static_cast<size_t>(normal_reg_)].to_vec3();
     walk(root_, Color(1, 1, 1), regs.data(), out);
+    // A material with a volume and no surface has none to stop at (Cycles'
+    // SD_HAS_ONLY_VOLUME): rays pass its boundary.
+    if (root_ < 0 && volume_root_ >= 0) out->transparent = Color(1, 1, 1);
+}
+
+void ShaderProgram::evaluate_volume(const ShaderGlobals& sg, VolumeClosures* out) const {
+    *out = VolumeClosures();
+    if (volume_root_ < 0) return;
+    thread_local std::vector<float3> regs;
+    regs.assign(init_.begin(), init_.end());
+    load_globals(sg, regs.data());
+    run(ops_.data(), ops_.data() + main_end_, regs.data(), sg);
+    walk_volume(volume_root_, Color(1, 1, 1), regs.data(), out);
+}
+
+void ShaderProgram::walk_volume(int index, const Color& weight, const float3* r,
+                                VolumeClosures* out) const {
+    // svm_node_closure_volume and svm_node_principled_volume (Cycles 3.4, kernel/svm/
+    // closure.h), in the volume shader's context: BSDFs, transparency and holdouts do nothing
+    // there.
+    if (index < 0 || weight.is_black()) return;
+    const ClosureNode& n = closures_[static_cast<size_t>(index)];
+    switch (n.kind) {
+        case ClosureNode::Kind::Mix: {
+            const float fac = std::clamp(r[n.fac].x, 0.0f, 1.0f);
+            walk_volume(n.a, weight * (1.0 - fac), r, out);
+            walk_volume(n.b, weight * static_cast<double>(fac), r, out);
+            return;
+        }
+        case ClosureNode::Kind::Add:
+            walk_volume(n.a, weight, r, out);
+            walk_volume(n.b, weight, r, out);
+            return;
+        case ClosureNode::Kind::Emission:
+            out->emission += weight * to_color(r[n.in[0]]) * static_cast<double>(r[n.in[1]].x);
+            return;
+        case ClosureNode::Kind::Volume: break;
+        default: return;
+    }
+    using S = ClosureNode;
+    constexpr double kCutoff = 1e-5;  // CLOSURE_WEIGHT_CUTOFF
+    auto value = [&](int slot, double fallback) {
+        return n.in[slot] >= 0 ? static_cast<double>(r[n.in[slot]].x) : fallback;
+    };
+    auto colour = [&](int slot, const Color& fallback) {
+        return n.in[slot] >= 0 ? to_color(r[n.in[slot]]) : fallback;
+    };
+    // The mix weight scales the density (Cycles keeps it a float: the channels' mean).
+    const double mix = (weight.r + weight.g + weight.b) / 3;
+    const double density = mix * std::max(value(S::kDensity, 1), 0.0);
+    const Color color = colour(S::kColor, Color(0.5, 0.5, 0.5));
+    auto add_lobe = [&](const Color& sigma_s) {
+        if (out->count == VolumeClosures::kMax) return;
+        double g = value(S::kAnisotropy, 0);
+        g = std::copysign(std::min(std::fabs(g), 1.0 - 1e-3), g);  // no delta lobes
+        out->lobes[out->count++] = {sigma_s, g};
+    };
+    switch (n.volume) {
+        case S::VolumeKind::Scatter:
+            add_lobe(color * density);
+            out->extinction += color * density;
+            return;
+        case S::VolumeKind::Absorption:
+            out->extinction += (Color(1, 1, 1) - color) * density;
+            return;
+        case S::VolumeKind::Principled: break;
+    }
+    if (density > kCutoff) {
+        add_lobe(color * density);
+        const Color ac = colour(S::kAbsorptionColor, Color(0, 0, 0));
+        auto one = [](double c, double a) {
+            return std::max(1 - c, 0.0) * std::max(1 - std::sqrt(std::max(a, 0.0)), 0.0);
+        };
+        const Color absorption(one(color.r, ac.r), one(color.g, ac.g), one(color.b, ac.b));
+        out->extinction += (color + absorption) * density;
+    }
+    // Emission and blackbody light are not scaled by the density or the mix weight.
+    const double emission = value(S::kEmissionStrength, 0);
+    if (emission > kCutoff) out->emission += colour(S::kEmission, Color(1, 1, 1)) * emission;
+    const double blackbody = value(S::kBlackbody, 0);
+    if (blackbody > kCutoff) {
+        const double t = std::max(value(S::kTemperature, 1000), 0.0);
+        const double t4 = (t * t) * (t * t);
+        const double sigma = 5.670373e-8 * 1e-6 / kPi;  // Stefan-Boltzmann, per steradian
+        const double intensity = sigma * (1 + (t4 - 1) * blackbody);
+        if (intensity > kCutoff) {
+            const float3 bb = blackbody_rec709(static_cast<float>(t));
+            out->emission += colour(S::kBlackbodyTint, Color(1, 1, 1)) * intensity *
+                             Color(bb.x, bb.y, bb.z);
+        }
+    }
 }
 
 }  // namespace glint::render::shader

@@ -161,6 +161,31 @@ int transparent(Compiler& c, int n) {
     return c.add_closure(e);
 }
 
+// Volume Scatter, Volume Absorption and Principled Volume: read by the volume shader only.
+int volume(Compiler& c, int n, ClosureNode::VolumeKind kind) {
+    using S = ClosureNode;
+    ClosureNode v;
+    v.kind = ClosureNode::Kind::Volume;
+    v.volume = kind;
+    const bool principled = kind == S::VolumeKind::Principled;
+    v.in[S::kColor] =
+        c.in(n, "Color", 'c', principled ? float3(0.5f) : float3(0.8f));
+    v.in[S::kDensity] = c.in(n, "Density", 'f', float3(1));
+    if (kind != S::VolumeKind::Absorption) v.in[S::kAnisotropy] = c.in(n, "Anisotropy", 'f', float3(0));
+    if (principled) {
+        v.in[S::kAbsorptionColor] = c.in(n, "Absorption Color", 'c', float3(0));
+        v.in[S::kEmissionStrength] = c.in(n, "Emission Strength", 'f', float3(0));
+        v.in[S::kEmission] = c.in(n, "Emission Color", 'c', float3(1));
+        v.in[S::kBlackbody] = c.in(n, "Blackbody Intensity", 'f', float3(0));
+        v.in[S::kBlackbodyTint] = c.in(n, "Blackbody Tint", 'c', float3(1));
+        v.in[S::kTemperature] = c.in(n, "Temperature", 'f', float3(1000));
+        // Grids of Volume objects (density, color, temperature attributes) are not read.
+        for (const char* a : {"Density Attribute", "Color Attribute", "Temperature Attribute"})
+            if (c.linked(n, a)) c.unsupported(n, "reads its attribute inputs as empty");
+    }
+    return c.add_closure(v);
+}
+
 int holdout(Compiler& c, int) {
     ClosureNode e;
     e.kind = ClosureNode::Kind::Holdout;
@@ -358,6 +383,15 @@ void add_shader_nodes(NodeTables& t) {
     s["ShaderNodeBackground"] = emission;
     s["ShaderNodeBsdfTransparent"] = transparent;
     s["ShaderNodeHoldout"] = holdout;
+    s["ShaderNodeVolumeScatter"] = [](Compiler& c, int n) {
+        return volume(c, n, ClosureNode::VolumeKind::Scatter);
+    };
+    s["ShaderNodeVolumeAbsorption"] = [](Compiler& c, int n) {
+        return volume(c, n, ClosureNode::VolumeKind::Absorption);
+    };
+    s["ShaderNodeVolumePrincipled"] = [](Compiler& c, int n) {
+        return volume(c, n, ClosureNode::VolumeKind::Principled);
+    };
     s["ShaderNodeMixShader"] = mix_shader;
     s["ShaderNodeAddShader"] = add_shader;
     t.values["ShaderNodeBump"] = bump;

@@ -49,7 +49,9 @@ struct Op {
 
 // A node of the closure tree.
 struct ClosureNode {
-    enum class Kind { Bsdf, Emission, Transparent, Holdout, Mix, Add } kind = Kind::Bsdf;
+    enum class Kind { Bsdf, Emission, Transparent, Holdout, Mix, Add, Volume } kind = Kind::Bsdf;
+    // Volume: Cycles' Volume Scatter, Volume Absorption and Principled Volume.
+    enum class VolumeKind { Scatter, Absorption, Principled } volume = VolumeKind::Scatter;
     ClosureKind bsdf = ClosureKind::Diffuse;
     int a = -1, b = -1;  // Mix: shader 1 and 2; Add: both
     int fac = -1;        // Mix: the factor register
@@ -58,7 +60,10 @@ struct ClosureNode {
         kColor, kNormal, kRoughness /* Toon: size; Velvet: sigma */, kIor, kMetallic,
         kSpecular, kTransmission, kAlpha, kEmission, kEmissionStrength, kSpecularTint,
         kAnisotropy, kRotation, kSheen, kSheenTint, kClearcoat, kClearcoatRoughness,
-        kClearcoatNormal, kTransmissionRoughness, kTangent, kSmooth, kSlots
+        kClearcoatNormal, kTransmissionRoughness, kTangent, kSmooth,
+        // Volumes (colour, emission and its strength use the slots above).
+        kDensity, kAbsorptionColor, kBlackbody, kBlackbodyTint, kTemperature,
+        kSlots
     };
     int in[kSlots];
     Distribution distribution = Distribution::GGX;
@@ -82,6 +87,11 @@ public:
     bool has_surface() const { return root_ >= 0; }
     // Whether a Holdout closure is in the graph (the film then carries alpha).
     bool has_holdout() const;
+    // The volume shader (the output's Volume socket): whether there is one, whether it is
+    // the same everywhere, and its closures at `sg` (the program's values run first).
+    bool has_volume() const { return volume_root_ >= 0; }
+    bool volume_constant() const { return !volume_varying_; }
+    void evaluate_volume(const ShaderGlobals& sg, VolumeClosures* out) const;
     const std::string& name() const { return name_; }
     // Re-runs the first `end` operations on `regs` for the shading point `sg` (Bump's height at
     // a shifted point: the ops before a Bump are all that its height can depend on).
@@ -93,6 +103,8 @@ private:
     friend class Compiler;
     void run(const Op* begin, const Op* end, float3* regs, const ShaderGlobals& sg) const;
     void walk(int node, const Color& weight, const float3* regs, ClosureList* out) const;
+    void walk_volume(int node, const Color& weight, const float3* regs,
+                     VolumeClosures* out) const;
 
     std::string name_;
     std::vector<float3> init_;  // the register file's start: globals' slots, then constants
@@ -103,6 +115,8 @@ private:
     std::vector<std::shared_ptr<const void>> keep_;            // images and other data ops read
     std::vector<ClosureNode> closures_;
     int root_ = -1;
+    int volume_root_ = -1;
+    bool volume_varying_ = false;
     int varying_ops_ = 0;
     bool closure_varying_ = false;
 };

@@ -1,4 +1,4 @@
-#include "render/integrators/pov_media.h"
+#include "render/media/pov_media.h"
 
 #include <algorithm>
 #include <bit>

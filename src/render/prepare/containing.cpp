@@ -1,4 +1,4 @@
-#include "render/integrators/containing.h"
+#include "render/prepare/containing.h"
 
 #include <algorithm>
 
