@@ -206,17 +206,18 @@ def build_volume(out_dir):
     surface (scattering colour, anisotropy, absorption colour), a sphere of Volume Scatter
     behind a Transparent BSDF surface, a Volume Absorption slab, and a cube whose volume is an
     Emission shader; two volume bounces (Cycles' default is none), a point light and a dim
-    world."""
+    world. The boxes float a little above the floor: a volume's face in the floor's plane
+    leaves it to chance which surface a ray meets first, in Cycles as in glint."""
     ms.floor(ms.cy.diffuse_material("floor", (0.6, 0.6, 0.6)))
-    ms.cy.add_box("smoke", (-1.2, 0.3, 0.6), (1.2, 1.2, 1.2), 20, volume_material(
+    ms.cy.add_box("smoke", (-1.2, 0.3, 0.62), (1.2, 1.2, 1.2), 20, volume_material(
         "smoke", "ShaderNodeVolumePrincipled", color=(0.8, 0.5, 0.3, 1.0), density=1.5,
         anisotropy=0.3, absorption_color=(0.2, 0.3, 0.9, 1.0)))
     ms.add_sphere("mist", (0.9, 0.0, 0.7), 0.7, volume_material(
         "mist", "ShaderNodeVolumeScatter", surface="ShaderNodeBsdfTransparent",
         color=(0.4, 0.7, 0.9, 1.0), density=2.5, anisotropy=-0.4))
-    ms.cy.add_box("filter", (0.2, -1.3, 0.35), (1.6, 0.2, 0.7), 0, volume_material(
+    ms.cy.add_box("filter", (0.2, -1.3, 0.37), (1.6, 0.2, 0.7), 0, volume_material(
         "filter", "ShaderNodeVolumeAbsorption", color=(0.9, 0.4, 0.2, 1.0), density=3.0))
-    ms.cy.add_box("glow", (2.1, 1.0, 0.3), (0.5, 0.5, 0.6), 0, volume_material(
+    ms.cy.add_box("glow", (2.1, 1.0, 0.32), (0.5, 0.5, 0.6), 0, volume_material(
         "glow", "ShaderNodeEmission", color=(1.0, 0.6, 0.2, 1.0), strength=1.5))
     ms.add_light("lamp", "POINT", (1.0, -2.0, 3.5), energy=600.0, shadow_soft_size=0.2)
     ms.cy.add_camera((0.0, -5.5, 2.4), (0.2, 0.2, 0.5), lens_mm=35.0)
