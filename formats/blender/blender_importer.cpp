@@ -471,6 +471,9 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
         settings.volume_bounces = b.integer("volume", settings.volume_bounces);
     }
     settings.film_transparent = render.boolean("film_transparent", false);
+    settings.volume_step_rate = render.number("volume_step_rate", 1.0);
+    if (!(settings.volume_step_rate > 0)) settings.volume_step_rate = 1.0;
+    settings.volume_max_steps = std::clamp(render.integer("volume_max_steps", 1024), 2, 65536);
     settings.filter_width = render.number("filter_width", 1.5);
     settings.pixel_filter = render.string("pixel_filter", "BLACKMAN_HARRIS");
     settings.clamp_direct = render.number("clamp_direct", 0);
@@ -515,7 +518,11 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
                 mat.graph = static_cast<int>(scene.shader_graphs.size()) - 1;
             }
             if (mj.has("cycles")) {
-                const std::string method = mj.at("cycles").string("displacement_method", "BUMP");
+                const JsonReader cy = mj.at("cycles");
+                mat.volume_step_rate = cy.number("volume_step_rate", 1.0);
+                if (!(mat.volume_step_rate > 0)) mat.volume_step_rate = 1.0;
+                mat.volume_homogeneous = cy.boolean("homogeneous_volume", false);
+                const std::string method = cy.string("displacement_method", "BUMP");
                 if (method != "BUMP")
                     diag.warning(loc, "material '" + name + "': displacement method " + method +
                                           " moves no geometry in glint: rendered as bump only");

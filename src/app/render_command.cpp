@@ -610,6 +610,8 @@ int render_frame(const RenderArgs& args) {
         options.volume_bounces = b.volume_bounces;
         options.film_transparent = b.film_transparent;
         options.film_transparent_glass = b.film_transparent_glass;
+        options.volume_step_rate = b.volume_step_rate;
+        options.volume_max_steps = b.volume_max_steps;
     }
     double parse_seconds = seconds_since(start);
     if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");

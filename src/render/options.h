@@ -77,6 +77,10 @@ struct RenderOptions {
     // background.cpp squares it twice) leaves the view transparent, as a transparent surface
     // does.
     double film_transparent_glass = -1;
+    // Path tracer, Cycles' Volumes panel (RenderOptions from a Blender scene): ray marching of
+    // volumes that vary in space.
+    double volume_step_rate = 1.0;
+    int volume_max_steps = 1024;
     bool alpha = false;
     // Called with the finished fraction in [0, 1], from any thread, at most every tile.
     std::function<void(double)> progress;

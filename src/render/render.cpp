@@ -37,6 +37,8 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
         ps.transparent_bounces = options.transparent_bounces;
         ps.film_transparent = options.film_transparent;
         ps.film_transparent_glass = options.film_transparent_glass;
+        ps.volume_step_rate = options.volume_step_rate;
+        ps.volume_max_steps = options.volume_max_steps;
         // The film carries alpha where something can make the camera's view transparent: a
         // transparent film, a holdout object or a Holdout closure (as in Cycles, with or
         // without the transparent film). Otherwise alpha stays 1 and the file has none.

@@ -56,6 +56,10 @@ struct BlenderRender {
     double clamp_direct = 0, clamp_indirect = 10;
     double filter_glossy = 1.0;
     bool caustics_reflective = true, caustics_refractive = true;
+    // Cycles' Volumes panel: step rate (scales every object's ray-marching step) and the most
+    // steps one segment takes.
+    double volume_step_rate = 1.0;
+    int volume_max_steps = 1024;
 };
 
 struct Scene {

@@ -340,6 +340,10 @@ struct Material {
     // A shader node graph (Scene::shader_graphs) that the path tracer evaluates instead of
     // `pbr`; -1: none.
     int graph = -1;
+    // Cycles' material Settings > Volume: the step rate of ray marching a volume that varies
+    // in space, and Homogeneous (evaluate it once per segment, at its start).
+    double volume_step_rate = 1.0;
+    bool volume_homogeneous = false;
     FileLoc loc;
 };
 

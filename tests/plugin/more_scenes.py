@@ -226,3 +226,44 @@ def build_volume(out_dir):
 
 # Render settings a scene needs after cy.setup_render's defaults.
 AFTER_SETUP = {"volume": lambda scene: setattr(scene.cycles, "volume_bounces", 2)}
+
+
+def build_volume_noise(out_dir):
+    """(issue 31) A volume that varies in space, ray marched as Cycles marches it: a cube of
+    Principled Volume whose density is a Noise Texture through a ColorRamp (the everyday smoke
+    cloud), Cycles' default step rate and max steps, beside a sphere whose Volume Scatter
+    density follows a Gradient Texture over Object coordinates, with the material's step rate
+    at 0.5; a sun and a dim world, one volume bounce."""
+    ms.floor(ms.cy.diffuse_material("floor", (0.6, 0.6, 0.6)))
+    mat, nt, out = ms.bare_material("cloud")
+    noise = nt.nodes.new("ShaderNodeTexNoise")
+    noise.inputs["Scale"].default_value = 3.0
+    noise.inputs["Detail"].default_value = 4.0
+    ramp = nt.nodes.new("ShaderNodeValToRGB")
+    ramp.color_ramp.elements[0].position = 0.45
+    ramp.color_ramp.elements[1].position = 0.65
+    vol = nt.nodes.new("ShaderNodeVolumePrincipled")
+    vol.inputs["Color"].default_value = (0.9, 0.85, 0.8, 1.0)
+    vol.inputs["Density"].default_value = 6.0
+    nt.links.new(noise.outputs["Fac"], ramp.inputs["Fac"])
+    nt.links.new(ramp.outputs["Color"], vol.inputs["Density"])
+    nt.links.new(vol.outputs["Volume"], out.inputs["Volume"])
+    ms.cy.add_box("cloud", (-0.8, 0.2, 0.82), (1.6, 1.6, 1.6), 15, mat)
+    mat2, nt2, out2 = ms.bare_material("fade")
+    coords = nt2.nodes.new("ShaderNodeTexCoord")
+    grad = nt2.nodes.new("ShaderNodeTexGradient")
+    grad.gradient_type = "SPHERICAL"
+    scat = nt2.nodes.new("ShaderNodeVolumeScatter")
+    scat.inputs["Color"].default_value = (0.5, 0.7, 1.0, 1.0)
+    nt2.links.new(coords.outputs["Object"], grad.inputs["Vector"])
+    nt2.links.new(grad.outputs["Fac"], scat.inputs["Density"])
+    nt2.links.new(scat.outputs["Volume"], out2.inputs["Volume"])
+    mat2.cycles.volume_step_rate = 0.5
+    ms.add_sphere("fade", (1.2, 0.0, 0.85), 0.8, mat2)
+    sun = ms.add_light("sun", "SUN", (0, 0, 5), energy=2.0, angle=0.05)
+    ms.aim(sun, (-0.4, 0.7, -0.2))
+    ms.cy.add_camera((0.0, -5.5, 2.4), (0.2, 0.2, 0.6), lens_mm=35.0)
+    ms.cy.set_world_color((0.05, 0.06, 0.08))
+
+
+AFTER_SETUP["volume_noise"] = lambda scene: setattr(scene.cycles, "volume_bounces", 1)

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "core/log.h"
-#include "render/integrators/pov_media.h"
+#include "render/media/pov_media.h"
 #include "render/integrators/whitted.h"
 #include "render/prepare/prepared_scene.h"
 #include "unit/pov_test_util.h"

@@ -456,6 +456,7 @@ class _Exporter:
                             "volume": c.volume_bounces},
             "film_transparent": r.film_transparent,
             "film_transparent_glass": c.film_transparent_glass,
+            "volume_step_rate": c.volume_step_rate, "volume_max_steps": c.volume_max_steps,
             "film_transparent_roughness": c.film_transparent_roughness,
             "exposure": c.film_exposure, "pixel_filter": c.pixel_filter_type,
             "filter_width": c.filter_width, "clamp_direct": c.sample_clamp_direct,

@@ -165,29 +165,6 @@ void add_closure(ClosureSet& set, const shader::Closure& c, const Vec3& n, doubl
 
 }  // namespace
 
-namespace {
-
-// A volume shader that is the same everywhere, as the medium it makes: Cycles' closures
-// (extinction, Henyey-Greenstein lobes, emission) as coefficients.
-MediumPoint constant_volume(const shader::ShaderProgram& program) {
-    shader::VolumeClosures v;
-    program.evaluate_volume(shader::ShaderGlobals{}, &v);
-    MediumPoint m;
-    Color scattering;
-    for (int i = 0; i < v.count; ++i) {
-        scattering += v.lobes[i].sigma_s;
-        if (m.lobe_count < MediumPoint::kMaxLobes)
-            m.lobes[m.lobe_count++] = {PhaseKind::HenyeyGreenstein, v.lobes[i].g, v.lobes[i].sigma_s};
-        else
-            m.lobes[MediumPoint::kMaxLobes - 1].sigma_s += v.lobes[i].sigma_s;
-    }
-    const Color a = v.extinction - scattering;
-    m.sigma_a = Color(std::max(0.0, a.r), std::max(0.0, a.g), std::max(0.0, a.b));
-    m.emission = v.emission;
-    return m;
-}
-
-}  // namespace
 
 PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings& settings)
     : scene_(prepared.scene),
@@ -211,18 +188,54 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
         const PathMaterial* row = materials_.path(static_cast<int>(m));
         const shader::ShaderProgram* volume = row && row->program && row->program->has_volume()
                                                   ? row->program : nullptr;
-        if (media.empty() && !(volume && volume->volume_constant())) continue;
+        if (media.empty() && !volume) continue;
         material_medium_[m] = static_cast<int>(media_.size());
-        if (volume) media_.emplace_back(constant_volume(*volume));
-        else media_.emplace_back(media, &pigments_);
+        if (volume && volume->volume_constant()) {
+            shader::VolumeClosures v;
+            volume->evaluate_volume(shader::ShaderGlobals{}, &v);
+            media_.emplace_back(PathMedium::from_closures(v));
+        } else if (volume) {
+            media_.emplace_back(volume, graphs_);
+        } else {
+            media_.emplace_back(media, &pigments_);
+        }
     }
     const shader::ShaderProgram* world_graph = graphs_ ? graphs_->world() : nullptr;
     if (!scene_.media.empty()) {
         world_medium_ = static_cast<int>(media_.size());
         media_.emplace_back(scene_.media, &pigments_);
     } else if (world_graph && world_graph->has_volume() && world_graph->volume_constant()) {
+        // (A world volume that varies in space was warned about and is left out.)
+        shader::VolumeClosures v;
+        world_graph->evaluate_volume(shader::ShaderGlobals{}, &v);
         world_medium_ = static_cast<int>(media_.size());
-        media_.emplace_back(constant_volume(*world_graph));
+        media_.emplace_back(PathMedium::from_closures(v));
+    }
+    // The objects' sizes, for the steps of volumes ray marched inside them.
+    bool marched = false;
+    for (const PathMedium& m : media_) marched = marched || m.marched();
+    if (marched) {
+        object_size_.assign(scene_.objects.size(), 1.0);
+        for (size_t o = 0; o < scene_.objects.size(); ++o) {
+            const auto* ref = std::get_if<scene::MeshRef>(&scene_.objects[o].shape);
+            if (!ref || ref->mesh < 0 || static_cast<size_t>(ref->mesh) >= scene_.meshes.size())
+                continue;
+            const std::vector<Vec3>& pos = scene_.meshes[static_cast<size_t>(ref->mesh)].positions;
+            if (pos.empty()) continue;
+            // Cycles' Object::bounds: the mesh's bounds, their corners transformed.
+            Vec3 lo = pos[0], hi = pos[0];
+            for (const Vec3& q : pos) lo = min(lo, q), hi = max(hi, q);
+            const Transform& t = scene_.objects[o].transform;
+            Vec3 wlo(kInfinity, kInfinity, kInfinity), whi = -wlo;
+            for (int k = 0; k < 8; ++k) {
+                const Vec3 c = t.point(Vec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y,
+                                            k & 4 ? hi.z : lo.z));
+                wlo = min(wlo, c);
+                whi = max(whi, c);
+            }
+            const Vec3 size = whi - wlo;
+            object_size_[o] = (size.x + size.y + size.z) / 3;
+        }
     }
     has_media_ = !media_.empty();
     if (has_media_)
@@ -306,12 +319,13 @@ Color PathIntegrator::transmittance(const Vec3& origin, const Vec3& dir, double 
         return geometry_.occluded(r) ? Color() : Color(1, 1, 1);
     Color t(1, 1, 1);
     double travelled = 0;
-    const PathMedium* act[MediumStack::kMax + 1];
+    ActiveMedium act[MediumStack::kMax + 1];
     // The media's transmittance from the current origin over `len`.
     auto through_media = [&](double len) {
         if (!has_media_) return;
-        const int na = active_media(stack, act);
-        if (na > 0) t *= media_transmittance(act, na, r.origin, dir, len, &seed);
+        double step;
+        const int na = active_media(stack, act, &step);
+        if (na > 0) t *= media_transmittance(act, na, step, r.origin, dir, len, &seed);
     };
     for (int i = 0; i < kMaxAlphaSkips; ++i) {
         Hit h;
@@ -422,15 +436,32 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         ++rays;
         const bool found = geometry_.intersect(r, &hit);
         if (has_media_) {
-            const PathMedium* act[MediumStack::kMax + 1];
-            const int na = active_media(stack, act);
+            ActiveMedium act[MediumStack::kMax + 1];
+            double step = kInfinity;
+            const int na = active_media(stack, act, &step);
             int event = 0;  // 0: through, 1: scattered, 2: absorbed
             double t = 0;
             MediumPoint mp;
+            const double tmax = found ? hit.t : kInfinity;
+            // Point lights' direct light in homogeneous media also comes by equiangular
+            // sampling, MIS-weighted against the distance-sampled scattering below.
+            bool equiangular = false;
+            const Color beta0 = beta;
+            if (na > 0 && settings_.volume_equiangular && std::isinf(step) &&
+                lights.count() > 0 && depth < settings_.max_depth && !last_hit) {
+                equiangular = true;
+                for (int k = 0; k < na; ++k)
+                    equiangular = equiangular && act[k].medium->homogeneous();
+                if (equiangular)
+                    add(equiangular_direct(act, na, r, tmax, beta0, stack, sampler, base,
+                                           volume_random, &rays));
+            }
             if (na > 0) {
                 Color emitted;
-                event = track(act, na, r, found ? hit.t : kInfinity, volume_random, &beta,
-                              &emitted, &t, &mp);
+                event = std::isinf(step)
+                            ? track(act, na, r, tmax, volume_random, &beta, &emitted, &t, &mp)
+                            : march(act, na, step, r, tmax, volume_random, &beta, &emitted,
+                                    &t, &mp);
                 add(emitted);
             }
             if (event == 2) break;
@@ -462,6 +493,10 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                         Color c = ls.value * tr * ph;
                         if (ls.environment) c *= environment(ls.wi);
                         if (ls.pdf > 0) c *= power_heuristic(ls.pdf, phase_pdf(mp, wo, ls.wi));
+                        if (equiangular && ls.pdf == 0 && !std::isinf(ls.dist))
+                            c *= power_heuristic(distance_pdf(beta0, mp, t),
+                                                 equiangular_pdf(r.origin, r.dir, tmax,
+                                                                 sp + ls.wi * ls.dist, t));
                         add(beta * c);
                     };
                     if (lights.sample_all()) {

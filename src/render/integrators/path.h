@@ -43,6 +43,11 @@ struct PathSettings {
     // Blender's Film > Transparent (RenderOptions::film_transparent).
     bool film_transparent = false;
     double film_transparent_glass = -1;  // RenderOptions::film_transparent_glass
+    double volume_step_rate = 1.0;        // RenderOptions::volume_step_rate
+    int volume_max_steps = 1024;
+    // Equiangular sampling of point lights in homogeneous media, MIS with distance sampling
+    // (off: distance sampling alone, for tests).
+    bool volume_equiangular = true;
 };
 
 class PathIntegrator {
@@ -79,14 +84,21 @@ private:
         int object[kMax];
         int medium[kMax];  // media_ index, -1: none
         bool hollow[kMax];
+        double step[kMax];  // ray-marching step of a medium that varies in space, else inf
         int count = 0;
         // The ray leaves `hit`'s surface along `dir`: enters or leaves its object.
         void cross(const Hit& hit, const Vec3& dir, const PathIntegrator& pi);
     };
     // The media acting on a ray in `stack`: the objects' own, and the world's (POV-Ray's
-    // atmosphere) while every object the ray is in is hollow.
-    int active_media(const MediumStack& stack, const PathMedium** out) const;
-    void medium_at(const PathMedium* const* media, int n, const Vec3& p, MediumPoint* out) const;
+    // atmosphere) while every object the ray is in is hollow; and the smallest ray-marching
+    // step among them (kInfinity when none varies in space).
+    struct ActiveMedium {
+        const PathMedium* medium;
+        int object;
+    };
+    int active_media(const MediumStack& stack, ActiveMedium* out, double* step) const;
+    void medium_at(const ActiveMedium* media, int n, const Vec3& p, const Vec3& dir,
+                   MediumPoint* out) const;
     // The random numbers of a path's media: as many as their collisions need, drawn in
     // turn from the sampler's pairs from `base` on.
     struct VolumeRandom {
@@ -102,9 +114,26 @@ private:
     // returns 0 when it gets through (beta weighted), 1 when it scatters at *t (the medium
     // there in *mp), 2 when it is absorbed; `emitted` receives the media's emission on the
     // way, times the throughput.
-    int track(const PathMedium* const* act, int na, const Ray& r, double tmax,
+    int track(const ActiveMedium* act, int na, const Ray& r, double tmax,
               VolumeRandom& random, Color* beta, Color* emitted, double* t,
               MediumPoint* mp) const;
+    // Cycles' ray marching through media that vary in space (volume_integrate_heterogeneous):
+    // steps of `step`, each shaded once at a random offset and taken as homogeneous.
+    int march(const ActiveMedium* act, int na, double step, const Ray& r, double tmax,
+              VolumeRandom& random, Color* beta, Color* emitted, double* t,
+              MediumPoint* mp) const;
+    // The direct light of point-like lights scattered along a homogeneous segment, by
+    // equiangular sampling (one distance per light, MIS against distance sampling's pdf for
+    // throughput `beta0`); the lights chosen as next-event estimation chooses them.
+    Color equiangular_direct(const ActiveMedium* act, int na, const Ray& r, double tmax,
+                             const Color& beta0, const MediumStack& stack,
+                             const PixelSampler& sampler, uint32_t base, VolumeRandom& random,
+                             uint64_t* rays) const;
+    // The density with which homogeneous tracking (track) picks the scattering distance t
+    // for throughput `beta0` in the medium `m`.
+    static double distance_pdf(const Color& beta0, const MediumPoint& m, double t);
+    // A medium's ray-marching step in `object` (Cycles' Object::compute_volume_step_size).
+    double volume_step(int object, int material) const;
     // Light passing from `origin` along `dir` for `dist`: through alpha holes and
     // index-matched (IOR 1) transmissive surfaces, tinted, and through the media on the way;
     // any other surface blocks it; at the path's shutter time. `stack` holds the media at
@@ -113,7 +142,7 @@ private:
                         MediumStack stack, uint32_t seed, uint64_t* rays) const;
     // Transmittance of the media over [0, dist] along a ray (exp(-sigma_t d) where they are
     // homogeneous, ratio tracking where not).
-    Color media_transmittance(const PathMedium* const* media, int n, const Vec3& origin,
+    Color media_transmittance(const ActiveMedium* media, int n, double step, const Vec3& origin,
                               const Vec3& dir, double dist, uint32_t* seed) const;
 
     const scene::Scene& scene_;
@@ -126,6 +155,7 @@ private:
     // Media: one per material whose interior holds any, and the world's.
     std::vector<PathMedium> media_;
     std::vector<int> material_medium_;  // per material: media_ index or -1
+    std::vector<double> object_size_;   // per object: the mean side of its world bounds
     int world_medium_ = -1;
     bool has_media_ = false;
     MediumStack camera_stack_;

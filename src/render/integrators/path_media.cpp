@@ -10,6 +10,8 @@ namespace {
 
 // Collisions on one segment before the tracking gives up (a bound against runaway loops).
 constexpr int kMaxCollisions = 1 << 20;
+// The step of a volume marked Homogeneous in Cycles: one step per segment, shaded at its start.
+constexpr double kHomogeneousStep = 1e300;
 
 // A uniform number in [0, 1) from a 32-bit hash stream (ratio tracking of shadow rays).
 double hash_uniform(uint32_t* seed) {
@@ -22,6 +24,12 @@ bool finite(const Color& c) {
 }
 double average(const Color& c) { return (c.r + c.g + c.b) / 3; }
 double channel(const Color& c, int i) { return i == 0 ? c.r : i == 1 ? c.g : c.b; }
+double power_heuristic(double a, double b) {
+    const double a2 = a * a, b2 = b * b;
+    if (!(a2 + b2 > 0)) return 0;
+    if (std::isinf(a2)) return 1;
+    return a2 / (a2 + b2);
+}
 
 }  // namespace
 
@@ -38,6 +46,10 @@ void PathIntegrator::MediumStack::cross(const Hit& hit, const Vec3& dir,
         hollow[count] = pi.scene_.objects[static_cast<size_t>(hit.object)].hollow ||
                         (hit.material >= 0 &&
                          pi.scene_.materials[static_cast<size_t>(hit.material)].graph >= 0);
+        step[count] = medium[count] >= 0 &&
+                              pi.media_[static_cast<size_t>(medium[count])].marched()
+                          ? pi.volume_step(hit.object, hit.material)
+                          : kInfinity;
         ++count;
         return;
     }
@@ -47,34 +59,50 @@ void PathIntegrator::MediumStack::cross(const Hit& hit, const Vec3& dir,
             object[j] = object[j + 1];
             medium[j] = medium[j + 1];
             hollow[j] = hollow[j + 1];
+            step[j] = step[j + 1];
         }
         --count;
         return;
     }
 }
 
-int PathIntegrator::active_media(const MediumStack& stack, const PathMedium** out) const {
+double PathIntegrator::volume_step(int object, int material) const {
+    // Cycles: a tenth of the object's mean size (no voxel grids to go by), times the
+    // material's step rate and the scene's; Homogeneous shades once per segment.
+    const scene::Material& m = scene_.materials[static_cast<size_t>(material)];
+    if (m.volume_homogeneous) return kHomogeneousStep;
+    const double size = object >= 0 && static_cast<size_t>(object) < object_size_.size()
+                            ? object_size_[static_cast<size_t>(object)] : 1.0;
+    return 0.1 * size * m.volume_step_rate * settings_.volume_step_rate;
+}
+
+int PathIntegrator::active_media(const MediumStack& stack, ActiveMedium* out,
+                                 double* step) const {
     // As in POV-Ray's classic renderer: media act only while every object the ray is inside
     // is hollow (Ray::IsHollowRay); the atmosphere's then too.
+    *step = kInfinity;
     for (int i = 0; i < stack.count; ++i)
         if (!stack.hollow[i]) return 0;
     int n = 0;
     for (int i = 0; i < stack.count; ++i)
-        if (stack.medium[i] >= 0) out[n++] = &media_[static_cast<size_t>(stack.medium[i])];
-    if (world_medium_ >= 0) out[n++] = &media_[static_cast<size_t>(world_medium_)];
+        if (stack.medium[i] >= 0) {
+            out[n++] = {&media_[static_cast<size_t>(stack.medium[i])], stack.object[i]};
+            *step = std::min(*step, stack.step[i]);
+        }
+    if (world_medium_ >= 0) out[n++] = {&media_[static_cast<size_t>(world_medium_)], -1};
     return n;
 }
 
-void PathIntegrator::medium_at(const PathMedium* const* media, int n, const Vec3& p,
-                               MediumPoint* out) const {
+void PathIntegrator::medium_at(const ActiveMedium* media, int n, const Vec3& p,
+                               const Vec3& dir, MediumPoint* out) const {
     if (n == 1) {
-        media[0]->at(p, out);
+        media[0].medium->at(p, media[0].object, dir, out);
         return;
     }
     *out = MediumPoint{};
     for (int k = 0; k < n; ++k) {
         MediumPoint m;
-        media[k]->at(p, &m);
+        media[k].medium->at(p, media[k].object, dir, &m);
         out->sigma_a += m.sigma_a;
         out->emission += m.emission;
         for (int i = 0; i < m.lobe_count; ++i) {
@@ -86,19 +114,42 @@ void PathIntegrator::medium_at(const PathMedium* const* media, int n, const Vec3
     }
 }
 
-Color PathIntegrator::media_transmittance(const PathMedium* const* media, int n,
+Color PathIntegrator::media_transmittance(const ActiveMedium* media, int n, double step,
                                           const Vec3& origin, const Vec3& dir, double dist,
                                           uint32_t* seed) const {
+    MediumPoint m;
+    if (!std::isinf(step)) {
+        // Cycles' volume_shadow_heterogeneous: steps from the origin (no offset), each shaded
+        // once at one random offset.
+        const int max_steps = settings_.volume_max_steps;
+        if (std::isinf(dist)) return Color();
+        double h = std::min(step, dist);
+        if (dist > max_steps * h) h = dist / max_steps;
+        const double shade = hash_uniform(seed);
+        Color sum;
+        double t = 0;
+        for (int i = 0; i < max_steps; ++i) {
+            const double nt = std::min(dist, (i + 1) * h);
+            const double dt = nt - t;
+            medium_at(media, n, origin + dir * (t + dt * shade), dir, &m);
+            sum += m.sigma_t() * dt;
+            if ((i & 7) == 0 && std::max(std::exp(-sum.r), std::max(std::exp(-sum.g),
+                                                                   std::exp(-sum.b))) < 1e-6)
+                return Color();
+            t = nt;
+            if (t >= dist) break;
+        }
+        return Color(std::exp(-sum.r), std::exp(-sum.g), std::exp(-sum.b));
+    }
     bool homogeneous = true;
     double majorant = 0;
     for (int k = 0; k < n; ++k) {
-        homogeneous = homogeneous && media[k]->homogeneous();
-        majorant += media[k]->majorant();
+        homogeneous = homogeneous && media[k].medium->homogeneous();
+        majorant += media[k].medium->majorant();
     }
     if (!(majorant > 0)) return Color(1, 1, 1);
-    MediumPoint m;
     if (homogeneous) {
-        medium_at(media, n, origin, &m);
+        medium_at(media, n, origin, dir, &m);
         const Color st = m.sigma_t();
         auto tr = [dist](double s) { return s > 0 ? std::exp(-s * dist) : 1.0; };
         return Color(tr(st.r), tr(st.g), tr(st.b));
@@ -110,7 +161,7 @@ Color PathIntegrator::media_transmittance(const PathMedium* const* media, int n,
     for (int i = 0; i < kMaxCollisions; ++i) {
         x -= std::log(1 - hash_uniform(seed)) / majorant;
         if (!(x < dist)) return t;
-        medium_at(media, n, origin + dir * x, &m);
+        medium_at(media, n, origin + dir * x, dir, &m);
         const Color st = m.sigma_t();
         t *= Color(std::max(0.0, 1 - st.r / majorant), std::max(0.0, 1 - st.g / majorant),
                    std::max(0.0, 1 - st.b / majorant));
@@ -124,21 +175,21 @@ Color PathIntegrator::media_transmittance(const PathMedium* const* media, int n,
     return t;
 }
 
-int PathIntegrator::track(const PathMedium* const* act, int na, const Ray& r, double tmax,
+int PathIntegrator::track(const ActiveMedium* act, int na, const Ray& r, double tmax,
                           VolumeRandom& random, Color* beta, Color* emitted, double* t_out,
                           MediumPoint* mp) const {
     bool homogeneous = true, emissive = false;
     double mu = 0;
     for (int k = 0; k < na; ++k) {
-        homogeneous = homogeneous && act[k]->homogeneous();
-        emissive = emissive || act[k]->emissive();
-        mu += act[k]->majorant();
+        homogeneous = homogeneous && act[k].medium->homogeneous();
+        emissive = emissive || act[k].medium->emissive();
+        mu += act[k].medium->majorant();
     }
     if (homogeneous) {
         // Closed forms: the emission integrated over the segment, and a distance drawn
         // exponentially in one channel, picked by throughput times albedo, with the pdf of
         // all the channels' choices together (one-sample spectral MIS, as Cycles does).
-        medium_at(act, na, r.origin, mp);
+        medium_at(act, na, r.origin, r.dir, mp);
         const Color st = mp->sigma_t(), ss = mp->sigma_s();
         auto transmit = [&](double d) {
             auto one = [d](double s) { return s > 0 ? std::exp(-s * d) : 1.0; };
@@ -197,7 +248,7 @@ int PathIntegrator::track(const PathMedium* const* act, int na, const Ray& r, do
     for (int i = 0; i < kMaxCollisions; ++i) {
         t -= std::log(1 - random()) / mu;
         if (!(t < tmax)) return 0;
-        medium_at(act, na, r.origin + r.dir * t, mp);
+        medium_at(act, na, r.origin + r.dir * t, r.dir, mp);
         if (!mp->emission.is_black()) *emitted += *beta * mp->emission * (1 / mu);
         const Color ss = mp->sigma_s(), sa = mp->sigma_a;
         const Color sn(std::max(0.0, mu - sa.r - ss.r), std::max(0.0, mu - sa.g - ss.g),
@@ -214,6 +265,141 @@ int PathIntegrator::track(const PathMedium* const* act, int na, const Ray& r, do
         if (beta->is_black() || !finite(*beta)) return 2;
     }
     return 2;
+}
+
+int PathIntegrator::march(const ActiveMedium* act, int na, double step, const Ray& r,
+                          double tmax, VolumeRandom& random, Color* beta, Color* emitted,
+                          double* t_out, MediumPoint* mp) const {
+    // Cycles 3.4's volume_step_init and volume_integrate_heterogeneous with distance sampling:
+    // steps of `step` (at most volume_max_steps over the segment) starting at a random
+    // fraction of the first, each shaded at one random offset within it and taken as
+    // homogeneous: emission integrated in closed form, and a scattering distance drawn with
+    // one random number carried from step to step, in the channel picked by throughput times
+    // albedo.
+    if (std::isinf(tmax)) return 2;  // (an endless segment in a varying medium: no light)
+    double h, shade, offset;
+    int max_steps;
+    if (step >= kHomogeneousStep) {
+        h = tmax;
+        shade = 0;
+        offset = 1;
+        max_steps = 1;
+    } else {
+        max_steps = settings_.volume_max_steps;
+        h = std::min(step, tmax);
+        if (tmax > max_steps * h) h = tmax / max_steps;
+        shade = random();
+        offset = random();
+    }
+    double rscatter = random();
+    const double rphase = random();
+    double t0 = 0;
+    for (int i = 0; i < max_steps; ++i) {
+        const double t1 = std::min(tmax, (i + offset) * h);
+        const double dt = t1 - t0;
+        medium_at(act, na, r.origin + r.dir * (t0 + dt * shade), r.dir, mp);
+        const Color st = mp->sigma_t(), ss = mp->sigma_s();
+        auto transmit = [&st](double d) {
+            auto one = [d](double s) { return s > 0 ? std::exp(-s * d) : 1.0; };
+            return Color(one(st.r), one(st.g), one(st.b));
+        };
+        const Color tr = transmit(dt);
+        if (!mp->emission.is_black()) {
+            auto integral = [dt](double s, double trc) { return s > 0 ? (1 - trc) / s : dt; };
+            *emitted += *beta * mp->emission *
+                        Color(integral(st.r, tr.r), integral(st.g, tr.g), integral(st.b, tr.b));
+        }
+        if (!ss.is_black()) {
+            double w[3], total = 0;
+            for (int c = 0; c < 3; ++c) {
+                const double sc = channel(st, c);
+                w[c] = std::fabs(channel(*beta, c)) * (sc > 0 ? channel(ss, c) / sc : 0);
+                total += w[c];
+            }
+            for (int c = 0; c < 3; ++c) w[c] = total > 0 ? w[c] / total : 1.0 / 3;
+            const int c = rphase < w[0] ? 0 : rphase < w[0] + w[1] ? 1 : 2;
+            const double sample_tr = channel(tr, c);
+            if (1 - rscatter >= sample_tr) {
+                const double nd = -std::log(1 - rscatter) / channel(st, c);
+                const Color ntr = transmit(nd);
+                double pdf = 0;
+                for (int k = 0; k < 3; ++k) pdf += w[k] * channel(st, k) * channel(ntr, k);
+                if (!(pdf > 0)) return 2;
+                *beta *= ss * ntr * (1 / pdf);
+                *t_out = t0 + nd;
+                return 1;
+            }
+            double pdf = 0;
+            for (int k = 0; k < 3; ++k) pdf += w[k] * channel(tr, k);
+            if (!(pdf > 0)) return 2;
+            *beta *= tr * (1 / pdf);
+            rscatter = 1 - (1 - rscatter) / sample_tr;
+        } else {
+            *beta *= tr;
+        }
+        if (!finite(*beta) || beta->max() < 1e-6) return 2;  // VOLUME_THROUGHPUT_EPSILON
+        t0 = t1;
+        if (t0 >= tmax) break;
+    }
+    return 0;
+}
+
+double PathIntegrator::distance_pdf(const Color& beta0, const MediumPoint& m, double t) {
+    // As track() picks its channel: by throughput times albedo.
+    const Color st = m.sigma_t(), ss = m.sigma_s();
+    double w[3], total = 0;
+    for (int c = 0; c < 3; ++c) {
+        const double sc = channel(st, c);
+        w[c] = std::fabs(channel(beta0, c)) * (sc > 0 ? channel(ss, c) / sc : 0);
+        total += w[c];
+    }
+    double pdf = 0;
+    for (int c = 0; c < 3; ++c) {
+        const double sc = channel(st, c);
+        pdf += (total > 0 ? w[c] / total : 1.0 / 3) * sc * std::exp(-sc * t);
+    }
+    return pdf;
+}
+
+Color PathIntegrator::equiangular_direct(const ActiveMedium* act, int na, const Ray& r,
+                                         double tmax, const Color& beta0,
+                                         const MediumStack& stack, const PixelSampler& sampler,
+                                         uint32_t base, VolumeRandom& random,
+                                         uint64_t* rays) const {
+    const PathLights& lights = *lights_;
+    MediumPoint m;
+    medium_at(act, na, r.origin, r.dir, &m);
+    const Color ss = m.sigma_s(), st = m.sigma_t();
+    if (ss.is_black()) return Color();
+    Color sum;
+    auto light = [&](int slot, Sample2 u) {
+        // Where the light is (point and spot lights: a fixed point, no pdf to hit them).
+        PathLightSample at;
+        if (!lights.sample(slot, r.origin, u, &at) || at.pdf > 0 || std::isinf(at.dist)) return;
+        const Vec3 q = r.origin + at.wi * at.dist;
+        double t, pdf;
+        if (!equiangular_sample(r.origin, r.dir, tmax, q, random(), &t, &pdf)) return;
+        const Vec3 p = r.origin + r.dir * t;
+        PathLightSample ls;
+        if (!lights.sample(slot, p, u, &ls)) return;
+        const double ph = phase_eval(m, -r.dir, ls.wi);
+        if (!(ph > 0)) return;
+        const Color tr = transmittance(p, ls.wi, ls.dist, r.time, stack,
+                                       static_cast<uint32_t>(random() * 4294967296.0), rays);
+        if (tr.is_black()) return;
+        const Color transmit(std::exp(-st.r * t), std::exp(-st.g * t), std::exp(-st.b * t));
+        const double w = power_heuristic(pdf, distance_pdf(beta0, m, t));
+        sum += beta0 * transmit * ss * ls.value * tr * (ph * w / pdf);
+    };
+    if (lights.sample_all()) {
+        for (int k = 0; k < lights.count(); ++k)
+            light(k, sampler.get2(base + 3 + static_cast<uint32_t>(k)));
+    } else {
+        const Sample2 ul = sampler.get2(base + 2);
+        light(std::min(lights.count() - 1, static_cast<int>(ul.v * lights.count())),
+              sampler.get2(base + 3));
+    }
+    return finite(sum) ? sum : Color();
 }
 
 }  // namespace glint::render

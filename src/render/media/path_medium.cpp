@@ -111,6 +111,40 @@ bool phase_sample(const MediumPoint& m, const Vec3& wo, double u0, double u1, do
     return true;
 }
 
+namespace {
+struct Equiangular {
+    double delta, d, theta_a, theta_b;
+};
+bool equiangular_setup(const Vec3& origin, const Vec3& dir, double tmax, const Vec3& light,
+                       Equiangular* e) {
+    e->delta = dot(light - origin, dir);
+    e->d = length(light - origin - dir * e->delta);
+    if (!(e->d > 1e-12)) return false;
+    e->theta_a = std::atan2(-e->delta, e->d);
+    e->theta_b = std::isinf(tmax) ? 0.5 * kPi : std::atan2(tmax - e->delta, e->d);
+    return e->theta_b > e->theta_a;
+}
+}  // namespace
+
+bool equiangular_sample(const Vec3& origin, const Vec3& dir, double tmax, const Vec3& light,
+                        double u, double* t, double* pdf) {
+    Equiangular e;
+    if (!equiangular_setup(origin, dir, tmax, light, &e)) return false;
+    const double theta = e.theta_a + u * (e.theta_b - e.theta_a);
+    const double x = e.d * std::tan(theta);
+    *t = std::clamp(e.delta + x, 0.0, tmax);
+    *pdf = e.d / ((e.theta_b - e.theta_a) * (e.d * e.d + x * x));
+    return std::isfinite(*t) && *pdf > 0;
+}
+
+double equiangular_pdf(const Vec3& origin, const Vec3& dir, double tmax, const Vec3& light,
+                       double t) {
+    Equiangular e;
+    if (!equiangular_setup(origin, dir, tmax, light, &e) || t < 0 || t > tmax) return 0;
+    const double x = t - e.delta;
+    return e.d / ((e.theta_b - e.theta_a) * (e.d * e.d + x * x));
+}
+
 double density_bound(const scene::Pigment& p) {
     if (p.kind == scene::PatternKind::Plain) return std::max(0.0, channel_max(p.color.rgb));
     double bound = 0.0;
@@ -129,6 +163,39 @@ double density_bound(const scene::Pigment& p) {
         return bound;
     }
     return 1.0;  // POV-Ray's default map: black to white
+}
+
+MediumPoint PathMedium::from_closures(const shader::VolumeClosures& v) {
+    MediumPoint m;
+    Color scattering;
+    for (int i = 0; i < v.count; ++i) {
+        scattering += v.lobes[i].sigma_s;
+        if (m.lobe_count < MediumPoint::kMaxLobes)
+            m.lobes[m.lobe_count++] = {PhaseKind::HenyeyGreenstein, v.lobes[i].g,
+                                       v.lobes[i].sigma_s};
+        else
+            m.lobes[MediumPoint::kMaxLobes - 1].sigma_s += v.lobes[i].sigma_s;
+    }
+    const Color a = v.extinction - scattering;
+    m.sigma_a = Color(std::max(0.0, a.r), std::max(0.0, a.g), std::max(0.0, a.b));
+    m.emission = v.emission;
+    return m;
+}
+
+PathMedium::PathMedium(const shader::ShaderProgram* program, const shader::GraphShading* shading)
+    : program_(program), shading_(shading) {
+    homogeneous_ = false;
+    emissive_ = true;  // (unknown before evaluation)
+}
+
+void PathMedium::at(const Vec3& p, int object, const Vec3& dir, MediumPoint* out) const {
+    if (!program_) {
+        at(p, out);
+        return;
+    }
+    shader::VolumeClosures v;
+    program_->evaluate_volume(shading_->volume_globals(object, p, dir), &v);
+    *out = from_closures(v);
 }
 
 PathMedium::PathMedium(const MediumPoint& constant) : constant_(constant) {

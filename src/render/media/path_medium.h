@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "render/shader/shading.h"
 #include "render/textures/pigment.h"
 #include "scene/texture.h"
 
@@ -56,8 +57,16 @@ public:
     PathMedium(const std::vector<scene::Media>& media, const PigmentEvaluator* pigments);
     // A medium the same everywhere.
     explicit PathMedium(const MediumPoint& constant);
+    // A Blender volume shader that varies in space: evaluated where it is asked, ray marched
+    // as Cycles does (no majorant to track against). `shading` must outlive this.
+    PathMedium(const shader::ShaderProgram* program, const shader::GraphShading* shading);
+    // Cycles' volume closures as the medium they make.
+    static MediumPoint from_closures(const shader::VolumeClosures& v);
 
     bool homogeneous() const { return homogeneous_; }
+    bool marched() const { return program_ != nullptr; }
+    // A marched medium at `p` in `object` on a ray along `dir`.
+    void at(const Vec3& p, int object, const Vec3& dir, MediumPoint* out) const;
     bool emissive() const { return emissive_; }
     // An upper bound on every channel of sigma_t anywhere in the medium.
     double majorant() const { return majorant_; }
@@ -72,10 +81,20 @@ private:
     std::vector<Component> components_;
     MediumPoint constant_;
     const PigmentEvaluator* pigments_ = nullptr;
+    const shader::ShaderProgram* program_ = nullptr;
+    const shader::GraphShading* shading_ = nullptr;
     bool homogeneous_ = true;
     bool emissive_ = false;
     double majorant_ = 0.0;
 };
+
+// Equiangular sampling (Kulla and Fajardo 2012): a distance t in [0, tmax] along the ray
+// origin + t dir (dir unit; tmax may be infinite) with density proportional to the inverse
+// square distance to the point `light`. Returns false when the light is on the ray's line.
+bool equiangular_sample(const Vec3& origin, const Vec3& dir, double tmax, const Vec3& light,
+                        double u, double* t, double* pdf);
+double equiangular_pdf(const Vec3& origin, const Vec3& dir, double tmax, const Vec3& light,
+                       double t);
 
 // An upper bound of a density pattern's value in every channel (its map's largest entry).
 double density_bound(const scene::Pigment& p);

@@ -43,6 +43,9 @@ public:
     ShaderGlobals globals(const Hit& hit, const Vec3& dir, const RayState& ray) const;
     // The world's globals for a ray leaving along `dir`.
     ShaderGlobals world_globals(const Vec3& dir, const RayState& ray) const;
+    // A volume shader's globals at `p` inside `object` (-1: the world's volume), on a ray
+    // along the unit `dir` (Cycles' shader_setup_from_volume: N and Ng face back along it).
+    ShaderGlobals volume_globals(int object, const Vec3& p, const Vec3& dir) const;
 
 private:
     struct ObjectInfo {
