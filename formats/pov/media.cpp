@@ -1,6 +1,8 @@
 // media { } and density { } (reference manual 3.4.4.2 / 3.5.7; parstxtr.cpp Parse_Media and
 // Parse_Media_Density_Pattern). Values are stored as POV-Ray stores them after parsing.
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
 #include "formats/pov/parser_impl.h"
 
@@ -24,6 +26,41 @@ scene::Pigment Parser::parse_density_body() {
     parse_pigment_body(d);
     in_density_ = outer;
     return d;
+}
+
+std::shared_ptr<const scene::DensityGrid> Parser::load_df3(const std::string& name,
+                                                           const std::string& path,
+                                                           const FileLoc& at) {
+    if (auto it = df3_cache_.find(path); it != df3_cache_.end()) return it->second;
+    // Read_Density_File: three big-endian 16-bit sizes, then the voxels, x fastest, at 8, 16
+    // or 32 bits each (whichever the file's length fits), big-endian.
+    std::ifstream in(path, std::ios::binary);
+    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                     std::istreambuf_iterator<char>());
+    if (!in.good() && !in.eof()) fail_at(at, "cannot read the density file '" + name + "'");
+    if (bytes.size() < 6) fail_at(at, "'" + name + "' is not a df3 density file (too short)");
+    auto u16 = [&](size_t i) { return static_cast<int>(bytes[i]) << 8 | bytes[i + 1]; };
+    auto grid = std::make_shared<scene::DensityGrid>();
+    grid->nx = u16(0);
+    grid->ny = u16(2);
+    grid->nz = u16(4);
+    grid->path = path;
+    const size_t count = static_cast<size_t>(grid->nx) * grid->ny * grid->nz;
+    const size_t len = bytes.size() - 6;
+    if (count == 0 || len % count != 0 || (len / count != 1 && len / count != 2 && len / count != 4))
+        fail_at(at, "'" + name + "' is not a df3 density file: " + std::to_string(grid->nx) +
+                        " x " + std::to_string(grid->ny) + " x " + std::to_string(grid->nz) +
+                        " voxels do not fill its " + std::to_string(len) + " bytes of data");
+    const size_t width = len / count;
+    grid->values.resize(count);
+    const double scale = width == 1 ? 255.0 : width == 2 ? 65535.0 : 4294967295.0;
+    for (size_t i = 0; i < count; ++i) {
+        uint64_t v = 0;
+        for (size_t b = 0; b < width; ++b) v = v << 8 | bytes[6 + i * width + b];
+        grid->values[i] = static_cast<float>(static_cast<double>(v) / scale);
+    }
+    df3_cache_[path] = grid;
+    return grid;
 }
 
 scene::Media Parser::new_media() const {

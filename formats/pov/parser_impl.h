@@ -162,6 +162,10 @@ public:
     scene::Media new_media() const;  // the defaults of the #version in force
     void parse_media_body(scene::Media& m);
     scene::Pigment parse_density_body();
+    // density_file df3: the grid of `path` (found for `name`), shared by every use of it.
+    std::shared_ptr<const scene::DensityGrid> load_df3(const std::string& name,
+                                                       const std::string& path, const FileLoc& at);
+    std::map<std::string, std::shared_ptr<const scene::DensityGrid>> df3_cache_;
     bool in_density_ = false;  // parsing a density: density_map is allowed
 
     // ---- top level (parser.cpp)

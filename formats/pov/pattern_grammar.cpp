@@ -96,6 +96,14 @@ void Parser::parse_pattern_arguments(PatternKind kind, scene::PatternParams& pp,
         case PatternKind::Function:  // function { expression } (functions.cpp)
             pp.function = parse_function_definition();
             break;
+        case PatternKind::DensityFile: {  // density_file df3 "file" [interpolate N]
+            if (!accept("df3")) fail("expected df3 after density_file, got " + got(next()));
+            FileLoc at = loc();
+            const std::string name = parse_string();
+            pp.density_file = load_df3(name, resolve_file(name, at), at);
+            if (accept("interpolate")) pp.density_interpolate = to_int(parse_float());
+            break;
+        }
         case PatternKind::Crackle:
             pp.crackle_solid = false;
             pp.crackle_form = Vec3(-1, 1, 0);

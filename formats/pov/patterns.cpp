@@ -44,7 +44,7 @@ constexpr PatternWord kPatternWords[] = {
     {"square", PatternKind::Square},       {"triangular", PatternKind::Triangular},
     {"cubic", PatternKind::Cubic},         {"checker", PatternKind::Checker},
     {"gradient", PatternKind::Gradient},   {"average", PatternKind::Average},
-    {"function", PatternKind::Function},
+    {"function", PatternKind::Function},   {"density_file", PatternKind::DensityFile},
 };
 
 std::optional<PatternKind> pattern_keyword(const std::string& w) {
@@ -56,7 +56,7 @@ std::optional<PatternKind> pattern_keyword(const std::string& w) {
 // POV-Ray patterns glint does not evaluate: named so the message is precise.
 const std::unordered_set<std::string>& unsupported_patterns() {
     static const std::unordered_set<std::string> k = {
-        "aoi", "density_file", "image_pattern", "object", "pavement",
+        "aoi", "image_pattern", "object", "pavement",
         "pigment_pattern", "slope", "tiling", "magnet", "gradient_map", "material_map", "tiles"};
     return k;
 }
@@ -109,10 +109,6 @@ bool skip_unsupported_pattern(Parser& p, const std::string& w, PatternKind* kind
     if (w == "object" || w == "pigment_pattern" || w == "image_pattern" || w == "tiles" ||
         w == "material_map" || w == "gradient_map") {
         skip_braced_block(p, w);
-    } else if (w == "density_file") {
-        p.next();  // df3
-        p.parse_string();
-        if (p.accept("interpolate")) p.parse_float();
     } else if (w == "tiling") {
         p.parse_float();
     } else if (w == "slope") {  // slope <v> [, lo, hi] [altitude <v> [, lo, hi]] or { ... }
@@ -382,7 +378,6 @@ void Parser::parse_normal_body(scene::Normal& n) {
                                      "the normal is not perturbed by it");
             skip_comma();
             n.amount = allow_float(n.amount);
-            if (w == "density_file" && accept("interpolate")) parse_float();
         } else {
             fail("expected a normal pattern or modifier, got " + got(k));
         }

@@ -35,6 +35,7 @@ const char* pattern_name(PatternKind kind) {
         case PatternKind::Mandel: return "mandel";
         case PatternKind::Julia: return "julia";
         case PatternKind::Function: return "function";
+        case PatternKind::DensityFile: return "density_file";
         case PatternKind::Brick: return "brick";
         case PatternKind::Hexagon: return "hexagon";
         case PatternKind::Square: return "square";

@@ -26,6 +26,7 @@ enum class PatternKind {
     Agate, Boxed, Bozo, Bumps, Cells, Crackle, Cylindrical, Dents, Facets, Granite, Leopard,
     Marble, Onion, Planar, Quilted, Radial, Ripples, Spherical, Spiral1, Spiral2, Spotted,
     Waves, Wood, Wrinkles, Mandel, Julia, Function,
+    DensityFile,  // density_file df3 "file": a voxel grid over the unit cube
     // block patterns: entries (or map entries) chosen by the pattern value
     Brick, Hexagon, Square, Triangular, Cubic,
     // pigment { average pigment_map { [w P] ... } }, normal { average normal_map {...} }
@@ -86,6 +87,14 @@ struct Warp {
     FileLoc loc;
 };
 
+// A POV-Ray df3 density file: nx * ny * nz voxels (x fastest) over the unit cube, as read
+// (8, 16 or 32 bits, big-endian) and scaled to [0, 1].
+struct DensityGrid {
+    int nx = 0, ny = 0, nz = 0;
+    std::vector<float> values;
+    std::string path;
+};
+
 // image_map { TYPE "file" map_type N once interpolate N filter/transmit ... }
 struct ImageMap {
     std::string file;           // as written in the scene
@@ -112,6 +121,10 @@ struct PatternParams {
     // noise_generator given in the pattern; 0 = the scene's global_settings value.
     int noise_generator = 0;
     ImageMap image;  // PatternKind::ImageMap
+    // PatternKind::DensityFile: the grid (shared by copies) and `interpolate` (0 nearest,
+    // 1 trilinear, 2 tricubic).
+    std::shared_ptr<const DensityGrid> density_file;
+    int density_interpolate = 0;
     // Per-pattern parameters (POV-Ray's defaults).
     double agate_turb = 1.0;        // agate_turb
     Vec3 brick_size{8, 3, 4.5};     // brick: brick_size

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
 #include "core/log.h"
 #include "render/media/pov_media.h"
@@ -91,6 +92,36 @@ TEST(MediaParser, LightFlags) {
     ASSERT_EQ(s.lights.size(), 1u);
     EXPECT_FALSE(s.lights[0].media_interaction);
     EXPECT_TRUE(s.lights[0].media_attenuation);
+}
+
+TEST(MediaParser, DensityFileReadsDf3Grids) {
+    // A 2 x 1 x 1 grid of 16-bit voxels: 0 and 65535.
+    const std::string path = ::testing::TempDir() + "glint_two.df3";
+    {
+        std::ofstream f(path, std::ios::binary);
+        const unsigned char bytes[] = {0, 2, 0, 1, 0, 1, 0, 0, 0xff, 0xff};
+        f.write(reinterpret_cast<const char*>(bytes), sizeof bytes);
+    }
+    auto s = parse("media { density { density_file df3 \"" + path + "\" interpolate 1 } }");
+    ASSERT_EQ(s.media[0].density.size(), 1u);
+    const scene::Pigment& d = s.media[0].density[0];
+    EXPECT_EQ(d.kind, scene::PatternKind::DensityFile);
+    ASSERT_TRUE(d.params.density_file);
+    EXPECT_EQ(d.params.density_file->nx, 2);
+    EXPECT_EQ(d.params.density_interpolate, 1);
+    EXPECT_FLOAT_EQ(d.params.density_file->values[1], 1.0f);
+    // A file whose size does not fit its header is refused, with the place.
+    const std::string bad = ::testing::TempDir() + "glint_bad.df3";
+    {
+        std::ofstream f(bad, std::ios::binary);
+        const unsigned char bytes[] = {0, 2, 0, 2, 0, 2, 1, 2, 3};
+        f.write(reinterpret_cast<const char*>(bytes), sizeof bytes);
+    }
+    EXPECT_EQ(error_of("media { density { density_file df3 \"" + bad + "\" } }"),
+              "1:32: '" + bad + "' is not a df3 density file: 2 x 2 x 2 voxels do not fill its "
+              "3 bytes of data");
+    EXPECT_EQ(error_of("media { density { density_file df3 \"no_such.df3\" } }"),
+              "1:32: cannot find the file 'no_such.df3'");
 }
 
 TEST(PovMedia, InverseChiSquareMatchesTables) {
