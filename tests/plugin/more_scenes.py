@@ -267,3 +267,28 @@ def build_volume_noise(out_dir):
 
 
 AFTER_SETUP["volume_noise"] = lambda scene: setattr(scene.cycles, "volume_bounces", 1)
+
+
+def build_volume_world(out_dir):
+    """(issue 31) The world's volume: a thin Volume Scatter fog (density 0.04, anisotropy 0.5)
+    filling the world, a spot light's beam through it past a box that cuts a shadow in it, an
+    area light and a glossy sphere; Cycles' default of no volume bounces."""
+    ms.floor(ms.cy.diffuse_material("floor", (0.5, 0.5, 0.5)))
+    ms.cy.add_box("block", (-0.4, 0.3, 1.6), (0.5, 0.5, 0.5), 30, ms.cy.diffuse_material(
+        "block", (0.7, 0.3, 0.2)))
+    ms.add_sphere("ball", (1.0, 0.6, 0.5), 0.5, ms.cy.principled_material(
+        "ball", base=(0.3, 0.4, 0.8), roughness=0.3))
+    spot = ms.add_light("spot", "SPOT", (-0.8, 0.4, 4.0), energy=800.0, spot_size=0.7,
+                        spot_blend=0.2, shadow_soft_size=0.05)
+    ms.aim(spot, (-0.2, 0.2, 0.0))
+    area = ms.add_light("panel", "AREA", (2.5, -1.5, 2.5), energy=150.0, size=1.0)
+    ms.aim(area, (0.5, 0.5, 0.5))
+    ms.cy.add_camera((0.0, -6.0, 2.2), (0.2, 0.3, 1.0), lens_mm=35.0)
+    ms.cy.set_world_color((0.02, 0.02, 0.03))
+    nt = bpy.context.scene.world.node_tree
+    out = next(n for n in nt.nodes if n.type == "OUTPUT_WORLD")
+    scat = nt.nodes.new("ShaderNodeVolumeScatter")
+    scat.inputs["Color"].default_value = (0.9, 0.9, 1.0, 1.0)
+    scat.inputs["Density"].default_value = 0.04
+    scat.inputs["Anisotropy"].default_value = 0.5
+    nt.links.new(scat.outputs["Volume"], out.inputs["Volume"])

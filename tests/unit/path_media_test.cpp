@@ -77,6 +77,8 @@ TEST(PathMedia, SlabTransmittanceIsExponential) {
                        Vec3(0, 0, -5), Vec3(0, 0, 1), 20000);
     const double tr = std::exp(-0.7 * (0.5 * 0.75 + 1.5 * 0.75));
     expect_mean(h, Color(0.8 * tr, 0.6 * tr, 0.4 * tr));
+    std::printf("slab: %.5f (exact %.5f), tracked: %.5f +- %.5f (exact %.5f)\n", e.mean.g,
+                0.6 * std::exp(-1.4 * d), h.mean.r, h.stderr_.r, 0.8 * tr);
 }
 
 TEST(PathMedia, AlbedoOneMediumInAWhiteFurnaceIsInvisible) {
@@ -94,6 +96,8 @@ TEST(PathMedia, AlbedoOneMediumInAWhiteFurnaceIsInvisible) {
         Estimate e = paths(scene, Vec3(0, 0, -4), Vec3(0.1, 0.05, 1), 10000, ps);
         expect_mean(e, Color(1, 1, 1));
         EXPECT_LT(e.stderr_.max(), 0.02) << media;
+        std::printf("furnace %s: %.4f %.4f %.4f (stderr %.4f)\n", media, e.mean.r, e.mean.g,
+                    e.mean.b, e.stderr_.max());
     }
 }
 
@@ -114,6 +118,8 @@ TEST(PathMedia, SingleScatteringMatchesQuadrature) {
         integral += ss / (4 * kPi) * I * kPi * std::exp(-2 * st * t) * d / n;
     }
     const double exact = integral;
+    std::printf("single scattering: %.5f +- %.5f, quadrature %.5f\n", e.mean.r, e.stderr_.r,
+                exact);
     EXPECT_NEAR(e.mean.r, exact, 4 * e.stderr_.r);
     EXPECT_LT(e.stderr_.r, 0.01 * exact);
 }
