@@ -98,9 +98,10 @@ void Parser::parse_media_body(scene::Media& m) {
             skip_comma();
             double hi = allow_float(lo);
             if (!(lo >= 1)) fail_at(at, "at least one sample per interval is needed in media");
+            if (!(lo <= 10000 && hi <= 10000))
+                fail_at(at, "media samples are limited to 10000 per interval");
             if (!(hi >= static_cast<int>(lo)))
                 fail_at(at, "the maximum number of media samples is smaller than the minimum");
-            if (hi > 10000) fail_at(at, "media samples are limited to 10000 per interval");
             m.min_samples = static_cast<int>(lo);
             m.max_samples = static_cast<int>(hi);
         } else if (w == "method") {
