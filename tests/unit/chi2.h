@@ -13,45 +13,15 @@
 #include <vector>
 
 #include "core/math.h"
+#include "core/special.h"
 #include "render/bsdf/bsdf.h"
 
 namespace glint::chi2 {
 
-// Regularized lower incomplete gamma P(a, x) by its series (x < a + 1) and the upper one
-// Q = 1 - P by its continued fraction (modified Lentz), as in Abramowitz & Stegun 6.5.29/31.
-inline double gamma_q(double a, double x) {
-    if (x <= 0) return 1.0;
-    const double log_front = a * std::log(x) - x - std::lgamma(a);
-    if (x < a + 1) {
-        double term = 1.0 / a, sum = term;
-        for (int n = 1; n < 100000; ++n) {
-            term *= x / (a + n);
-            sum += term;
-            if (std::fabs(term) < std::fabs(sum) * 1e-15) break;
-        }
-        return std::max(0.0, 1.0 - sum * std::exp(log_front));
-    }
-    constexpr double kTiny = 1e-300;
-    double b = x + 1 - a, c = 1 / kTiny, d = 1 / b, h = d;
-    for (int n = 1; n < 100000; ++n) {
-        const double an = -n * (n - a);
-        b += 2;
-        d = an * d + b;
-        if (std::fabs(d) < kTiny) d = kTiny;
-        c = b + an / c;
-        if (std::fabs(c) < kTiny) c = kTiny;
-        d = 1 / d;
-        const double delta = d * c;
-        h *= delta;
-        if (std::fabs(delta - 1) < 1e-15) break;
-    }
-    return std::exp(log_front) * h;
-}
-
 // Survival function of the chi-square distribution with `dof` degrees of freedom.
 inline double chi2_pvalue(double chi2, int dof) {
     if (dof <= 0) return 1.0;
-    return gamma_q(0.5 * dof, 0.5 * chi2);
+    return regularized_gamma_q(0.5 * dof, 0.5 * chi2);
 }
 
 // Per-test significance that keeps the family-wise rate at `alpha` over `tests` tests (Sidak).

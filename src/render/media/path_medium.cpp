@@ -49,27 +49,30 @@ Color MediumPoint::sigma_s() const {
     return s;
 }
 
-double phase_eval(const MediumPoint& m, const Vec3& wo, const Vec3& wi) {
-    // The light travels along -wi into the point and leaves along wo.
+namespace {
+
+// The lobes' `f` (value or pdf) mixed by their scattering, for the light travelling along -wi
+// into the point and leaving along wo.
+double mixture(const MediumPoint& m, const Vec3& wo, const Vec3& wi,
+               double (*f)(const PhaseLobe&, double)) {
     const double cos_theta = -dot(wo, wi);
     double sum = 0.0, total = 0.0;
     for (int i = 0; i < m.lobe_count; ++i) {
         const double w = average(m.lobes[i].sigma_s);
-        sum += w * lobe_eval(m.lobes[i], cos_theta);
+        sum += w * f(m.lobes[i], cos_theta);
         total += w;
     }
     return total > 0.0 ? sum / total : 0.0;
 }
 
+}  // namespace
+
+double phase_eval(const MediumPoint& m, const Vec3& wo, const Vec3& wi) {
+    return mixture(m, wo, wi, lobe_eval);
+}
+
 double phase_pdf(const MediumPoint& m, const Vec3& wo, const Vec3& wi) {
-    const double cos_theta = -dot(wo, wi);
-    double sum = 0.0, total = 0.0;
-    for (int i = 0; i < m.lobe_count; ++i) {
-        const double w = average(m.lobes[i].sigma_s);
-        sum += w * lobe_pdf(m.lobes[i], cos_theta);
-        total += w;
-    }
-    return total > 0.0 ? sum / total : 0.0;
+    return mixture(m, wo, wi, lobe_pdf);
 }
 
 bool phase_sample(const MediumPoint& m, const Vec3& wo, double u0, double u1, double u2,
@@ -102,9 +105,7 @@ bool phase_sample(const MediumPoint& m, const Vec3& wo, double u0, double u1, do
     const Vec3 travel = wo * cos_theta + t * (sin_theta * std::cos(phi)) +
                         b * (sin_theta * std::sin(phi));
     *wi = -travel;
-    double p = 0.0;
-    for (int i = 0; i < m.lobe_count; ++i)
-        p += average(m.lobes[i].sigma_s) / total * lobe_pdf(m.lobes[i], cos_theta);
+    const double p = phase_pdf(m, wo, *wi);
     *pdf = p;
     if (!(p > 0.0)) return false;
     *weight = phase_eval(m, wo, *wi) / p;

@@ -4,6 +4,8 @@
 #include <bit>
 #include <cmath>
 
+#include "core/special.h"
+
 namespace glint::render {
 namespace {
 
@@ -16,35 +18,17 @@ double colour_distance(const Color& a, const Color& b) {
     return std::fabs(a.r - b.r) + std::fabs(a.g - b.g) + std::fabs(a.b - b.b);
 }
 
-// Regularized upper incomplete gamma Q(a, x): the series of P for x < a + 1, else the
-// continued fraction of Q (modified Lentz).
-double gamma_q(double a, double x) {
-    if (x <= 0.0) return 1.0;
-    const double log_front = a * std::log(x) - x - std::lgamma(a);
-    if (x < a + 1.0) {
-        double term = 1.0 / a, sum = term;
-        for (int n = 1; n < 1000; ++n) {
-            term *= x / (a + n);
-            sum += term;
-            if (std::fabs(term) < std::fabs(sum) * 1e-16) break;
-        }
-        return std::max(0.0, 1.0 - sum * std::exp(log_front));
-    }
-    const double tiny = 1e-300;
-    double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
-    for (int i = 1; i < 1000; ++i) {
-        const double an = -i * (i - a);
-        b += 2.0;
-        d = an * d + b;
-        if (std::fabs(d) < tiny) d = tiny;
-        c = b + an / c;
-        if (std::fabs(c) < tiny) c = tiny;
-        d = 1.0 / d;
-        const double delta = d * c;
-        h *= delta;
-        if (std::fabs(delta - 1.0) < 1e-16) break;
-    }
-    return std::exp(log_front) * h;
+// Where a ray crosses a cone or cylinder about a light's axis (a t^2 + 2 b t + c = 0 with a
+// positive discriminant d): the two distances, sorted, and the heights along the axis there
+// (k1, k2: the ray's direction and origin along the axis).
+struct Crossings {
+    double x1, x2, l1, l2;
+};
+Crossings crossings(double a, double b, double d, double k1, double k2) {
+    d = std::sqrt(d);
+    double x1 = (-b + d) / a, x2 = (-b - d) / a;
+    if (x1 > x2) std::swap(x1, x2);
+    return {x1, x2, k2 + x1 * k1, k2 + x2 * k1};
 }
 
 uint64_t mix(uint64_t h, double v) {
@@ -111,10 +95,10 @@ double PovMedia::chi_square_upper_inverse(double df, double y) {
     // Q(df / 2, x / 2) falls from 1 to 0 as x grows: bisect for y.
     if (!(y > 0.0 && y < 1.0) || !(df > 0.0)) return 0.0;
     double lo = 0.0, hi = std::max(1.0, df);
-    while (gamma_q(0.5 * df, 0.5 * hi) > y && hi < 1e8) hi *= 2.0;
+    while (regularized_gamma_q(0.5 * df, 0.5 * hi) > y && hi < 1e8) hi *= 2.0;
     for (int i = 0; i < 200 && hi - lo > 1e-14 * hi; ++i) {
         double mid = 0.5 * (lo + hi);
-        if (gamma_q(0.5 * df, 0.5 * mid) > y) lo = mid;
+        if (regularized_gamma_q(0.5 * df, 0.5 * mid) > y) lo = mid;
         else hi = mid;
     }
     return 0.5 * (lo + hi);
@@ -326,12 +310,9 @@ void PovMedia::light_intervals(const Context& c, std::vector<SegmentLight>* out)
             const double a = 1.0 - k1 * k1 * m, b = k3 - k1 * k2 * m, cc = k4 - k2 * k2 * m;
             bool found = false;
             if (a != 0.0) {
-                double d = b * b - a * cc;
+                const double d = b * b - a * cc;
                 if (d > kPovEpsilon) {
-                    d = std::sqrt(d);
-                    double x1 = (-b + d) / a, x2 = (-b - d) / a;
-                    if (x1 > x2) std::swap(x1, x2);
-                    const double l1 = k2 + x1 * k1, l2 = k2 + x2 * k1;
+                    auto [x1, x2, l1, l2] = crossings(a, b, d, k1, k2);
                     if (l1 <= 0.0 && l2 <= 0.0) continue;
                     if (l1 <= 0.0 || l2 <= 0.0) {
                         if (l1 <= 0.0) {
@@ -375,12 +356,9 @@ void PovMedia::light_intervals(const Context& c, std::vector<SegmentLight>* out)
             if (a == 0.0) continue;
             const double k3 = dot(v1, c.dir), k4 = dot(v1, v1);
             const double b = k3 - k1 * k2, cc = k4 - k2 * k2 - g.falloff * g.falloff;
-            double d = b * b - a * cc;
+            const double d = b * b - a * cc;
             if (!(d > kPovEpsilon)) continue;
-            d = std::sqrt(d);
-            double x1 = (-b + d) / a, x2 = (-b - d) / a;
-            if (x1 > x2) std::swap(x1, x2);
-            const double l1 = k2 + x1 * k1, l2 = k2 + x2 * k1;
+            auto [x1, x2, l1, l2] = crossings(a, b, d, k1, k2);
             if (l1 <= 0.0 && l2 <= 0.0) continue;
             if (l1 <= 0.0 || l2 <= 0.0) {
                 if (l1 <= 0.0) x1 = 0.0;

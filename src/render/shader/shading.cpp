@@ -122,25 +122,29 @@ void GraphShading::camera_coords(const Vec3& p, ShaderGlobals* sg) const {
     sg->window = float3(static_cast<float>(sx + 0.5), static_cast<float>(sy + 0.5), 0);
 }
 
+void GraphShading::object_globals(int object, ShaderGlobals* sg) const {
+    if (object >= 0 && static_cast<size_t>(object) < objects_.size()) {
+        const ObjectInfo& o = objects_[static_cast<size_t>(object)];
+        std::copy(&o.o2w[0][0], &o.o2w[0][0] + 12, &sg->object_to_world[0][0]);
+        std::copy(&o.w2o[0][0], &o.w2o[0][0] + 12, &sg->world_to_object[0][0]);
+        sg->object = xform_point(o.w2o, sg->P);
+        sg->generated = (sg->object - o.gen_location) * o.gen_scale + float3(0.5f);
+        sg->generated_scale = o.gen_scale;
+        sg->object_location = o.location;
+        sg->object_color = o.color;
+        sg->object_pass_index = o.pass_index;
+        sg->object_random = o.random;
+    } else {
+        sg->object = sg->P;
+        sg->generated = sg->P;
+    }
+}
+
 ShaderGlobals GraphShading::volume_globals(int object, const Vec3& p, const Vec3& dir) const {
     ShaderGlobals sg;
     sg.P = float3(p);
     sg.I = sg.N = sg.Ng = float3(-dir);
-    if (object >= 0 && static_cast<size_t>(object) < objects_.size()) {
-        const ObjectInfo& o = objects_[static_cast<size_t>(object)];
-        std::copy(&o.o2w[0][0], &o.o2w[0][0] + 12, &sg.object_to_world[0][0]);
-        std::copy(&o.w2o[0][0], &o.w2o[0][0] + 12, &sg.world_to_object[0][0]);
-        sg.object = xform_point(o.w2o, sg.P);
-        sg.generated = (sg.object - o.gen_location) * o.gen_scale + float3(0.5f);
-        sg.generated_scale = o.gen_scale;
-        sg.object_location = o.location;
-        sg.object_color = o.color;
-        sg.object_pass_index = o.pass_index;
-        sg.object_random = o.random;
-    } else {
-        sg.object = sg.P;
-        sg.generated = sg.P;
-    }
+    object_globals(object, &sg);
     camera_coords(p, &sg);
     std::copy(&w2c_[0][0], &w2c_[0][0] + 12, &sg.world_to_camera[0][0]);
     std::copy(&c2w_[0][0], &c2w_[0][0] + 12, &sg.camera_to_world[0][0]);
@@ -163,21 +167,7 @@ ShaderGlobals GraphShading::globals(const Hit& hit, const Vec3& dir,
     sg.dPdu = float3(hit.dpdu);
     sg.attributes = hit.attributes;
     sg.dPdv = float3(hit.dpdv);
-    if (hit.object >= 0 && static_cast<size_t>(hit.object) < objects_.size()) {
-        const ObjectInfo& o = objects_[hit.object];
-        std::copy(&o.o2w[0][0], &o.o2w[0][0] + 12, &sg.object_to_world[0][0]);
-        std::copy(&o.w2o[0][0], &o.w2o[0][0] + 12, &sg.world_to_object[0][0]);
-        sg.object = xform_point(o.w2o, sg.P);
-        sg.generated = (sg.object - o.gen_location) * o.gen_scale + float3(0.5f);
-        sg.generated_scale = o.gen_scale;
-        sg.object_location = o.location;
-        sg.object_color = o.color;
-        sg.object_pass_index = o.pass_index;
-        sg.object_random = o.random;
-    } else {
-        sg.object = sg.P;
-        sg.generated = sg.P;
-    }
+    object_globals(hit.object, &sg);
     // Cycles' tangent (Geometry's Tangent, and the default of Anisotropic and Principled):
     // around the Z axis of the texture space, through the normal transform, then made
     // perpendicular to N.

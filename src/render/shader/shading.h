@@ -55,6 +55,9 @@ private:
         float pass_index = 0, random = 0;
     };
     void camera_coords(const Vec3& p, ShaderGlobals* sg) const;
+    // The object's part of the globals (transforms, Object and Generated coordinates, Object
+    // Info) at sg->P; world coordinates for none (-1).
+    void object_globals(int object, ShaderGlobals* sg) const;
 
     std::vector<std::unique_ptr<ShaderProgram>> programs_;
     std::vector<const ShaderProgram*> by_material_;
