@@ -1,6 +1,7 @@
 // media { } and density { } (reference manual 3.4.4.2 / 3.5.7; parstxtr.cpp Parse_Media and
 // Parse_Media_Density_Pattern). Values are stored as POV-Ray stores them after parsing.
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -34,6 +35,13 @@ std::shared_ptr<const scene::DensityGrid> Parser::load_df3(const std::string& na
     if (auto it = df3_cache_.find(path); it != df3_cache_.end()) return it->second;
     // Read_Density_File: three big-endian 16-bit sizes, then the voxels, x fastest, at 8, 16
     // or 32 bits each (whichever the file's length fits), big-endian.
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec) fail_at(at, "cannot read the density file '" + name + "'");
+    // (At 4 bytes per float, a 256 MiB file makes a grid of up to 1 GiB.)
+    if (size > (size_t{256} << 20))
+        fail_at(at, "the density file '" + name + "' is over 256 MiB (" + std::to_string(size) +
+                        " bytes)");
     std::ifstream in(path, std::ios::binary);
     std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
                                      std::istreambuf_iterator<char>());
