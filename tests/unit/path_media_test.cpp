@@ -198,6 +198,21 @@ TEST(PathMedia, EquiangularSamplingAgreesWithDistanceSamplingWithLessNoise) {
     std::printf("equiangular: mean %.5f vs %.5f, variance ratio %.1f\n", with.mean.r,
                 without.mean.r, ratio);
     EXPECT_GT(ratio, 4.0);
+    // A spot light whose cone leaves out the segment's start: equiangular sampling cannot use
+    // it there, and distance sampling must then keep all of its weight.
+    const std::string spot =
+        "#version 3.7; background { rgb 0 }\n"
+        "light_source { <0, 0.05, 2> rgb 100 fade_distance 0.01 fade_power 2 spotlight "
+        "point_at <0, 0.05, 4> radius 20 falloff 30 }\n"
+        "box { <-50, -50, 0> <50, 50, 4> pigment { rgbt 1 } hollow interior { media { "
+        "scattering { 1, 0.1 } absorption 0.05 } } }";
+    ps.volume_equiangular = true;
+    Estimate s_with = paths(spot, Vec3(0, 0, -5), Vec3(0, 0, 1), 20000, ps);
+    ps.volume_equiangular = false;
+    Estimate s_without = paths(spot, Vec3(0, 0, -5), Vec3(0, 0, 1), 20000, ps);
+    EXPECT_GT(s_without.mean.r, 0.001);
+    EXPECT_NEAR(s_with.mean.r, s_without.mean.r,
+                4 * std::hypot(s_with.stderr_.r, s_without.stderr_.r));
 }
 
 }  // namespace

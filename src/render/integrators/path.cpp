@@ -8,8 +8,8 @@
 #include "core/float.h"
 #include "render/bsdf/bsdf.h"
 #include "render/bsdf/shading_normal.h"
-#include "render/prepare/containing.h"
 #include "render/lights/sky.h"
+#include "render/prepare/containing.h"
 
 namespace glint::render {
 namespace {
@@ -493,10 +493,15 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                         Color c = ls.value * tr * ph;
                         if (ls.environment) c *= environment(ls.wi);
                         if (ls.pdf > 0) c *= power_heuristic(ls.pdf, phase_pdf(mp, wo, ls.wi));
-                        if (equiangular && ls.pdf == 0 && !std::isinf(ls.dist))
+                        // MIS against equiangular sampling where it sampled this light:
+                        // a point-like light seen from the segment's start (a spot light's
+                        // cone may leave it out there).
+                        PathLightSample at;
+                        if (equiangular && ls.pdf == 0 && lights.sample(slot, r.origin, u, &at) &&
+                            at.pdf == 0 && !std::isinf(at.dist))
                             c *= power_heuristic(distance_pdf(beta0, mp, t),
                                                  equiangular_pdf(r.origin, r.dir, tmax,
-                                                                 sp + ls.wi * ls.dist, t));
+                                                                 r.origin + at.wi * at.dist, t));
                         add(beta * c);
                     };
                     if (lights.sample_all()) {

@@ -5,10 +5,10 @@
 #include <cmath>
 
 #include "core/float.h"
-#include "render/prepare/containing.h"
 #include "render/lights/blender_lights.h"
 #include "render/lights/area_light.h"
 #include "render/lights/sky.h"
+#include "render/prepare/containing.h"
 #include "render/textures/normal.h"
 
 namespace glint::render {
