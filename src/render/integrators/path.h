@@ -2,8 +2,10 @@
 // next-event estimation and multiple importance sampling (power heuristic, Veach 1997) for
 // emissive triangles, spheres and discs and the environment (an HDR sky importance-sampled,
 // path_lights.h), Russian roulette after a few bounces, a maximum
-// depth, and stochastic alpha. Materials come from the IR's Pbr half, or from the POV-Ray
-// finish through docs/pbr-mapping.md. Prepared once per render, read-only while rendering,
+// depth, and stochastic alpha; participating media (POV-Ray media, Blender volumes) along
+// the way (path_media.cpp, docs/path-tracer.md#participating-media). Materials come from the
+// IR's Pbr half, or from the POV-Ray finish through docs/pbr-mapping.md. Prepared once per
+// render, read-only while rendering,
 // allocation-free per sample; random numbers come from the deterministic PixelSampler.
 #pragma once
 

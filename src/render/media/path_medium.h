@@ -15,8 +15,9 @@
 namespace glint::render {
 
 // The phase functions: Henyey-Greenstein (g = 0: isotropic) and POV-Ray's tabulated shapes,
-// each normalized as POV-Ray normalizes it (the value over 4 pi; POV-Ray's Rayleigh and Mie
-// constants integrate to 1.066 and 1.000 / 1.000 of the sphere).
+// each scaled as POV-Ray scales it (its factor over 4 pi): POV-Ray's Rayleigh, Mie hazy and
+// Mie murky constants integrate to 1.066, 1.153 and 1.247 over the sphere, not 1, and the path
+// tracer keeps them so that its media look as POV-Ray's do.
 enum class PhaseKind { HenyeyGreenstein, Rayleigh, MieHazy, MieMurky };
 
 struct PhaseLobe {
