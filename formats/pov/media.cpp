@@ -1,5 +1,6 @@
 // media { } and density { } (reference manual 3.4.4.2 / 3.5.7; parstxtr.cpp Parse_Media and
 // Parse_Media_Density_Pattern). Values are stored as POV-Ray stores them after parsing.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -90,6 +91,14 @@ void Parser::parse_media_body(scene::Media& m) {
     for (;; first = false) {
         const Token& t = next();
         if (t.is_symbol('}') || t.kind == TokKind::End) {
+            // Every ray through the medium takes this many samples, at least: a bound against
+            // a scene that would never finish (POV-Ray's own examples take at most 400).
+            const long long work = static_cast<long long>(m.intervals) *
+                                   std::max(m.min_samples, m.max_samples);
+            if (work > 100000)
+                fail_at(m.loc, "media sampling of " + std::to_string(m.intervals) +
+                                   " intervals x " + std::to_string(m.max_samples) +
+                                   " samples is over the limit of 100000 samples per ray");
             unget();
             return;
         }

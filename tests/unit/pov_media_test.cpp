@@ -82,6 +82,9 @@ TEST(MediaParser, Errors) {
               "1:29: eccentricity can only be used with scattering type 5");
     EXPECT_EQ(error_of("sphere { 0, 1 pigment { bozo density_map { [0 rgb 0] } } }"),
               "1:30: density_map can only be used in a density");
+    EXPECT_EQ(error_of("media { intervals 1000 samples 200, 200 }"),
+              "1:7: media sampling of 1000 intervals x 200 samples is over the limit of 100000 "
+              "samples per ray");
     EXPECT_EQ(error_of("media { foo }"),
               "1:9: expected a media item (absorption, emission, scattering, density, samples, "
               "...), got 'foo'");
