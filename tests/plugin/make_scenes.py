@@ -655,7 +655,7 @@ BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "motion_deform": more.build_motion_deform, "normal_map": more.build_normal_map,
             "msglass": build_msglass, "film_glass": more.build_film_glass,
             "volume": more.build_volume, "volume_noise": more.build_volume_noise,
-            "volume_world": more.build_volume_world}
+            "volume_world": more.build_volume_world, "subsurface": more.build_subsurface}
 
 
 def build(name, out_dir):

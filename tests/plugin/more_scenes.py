@@ -292,3 +292,37 @@ def build_volume_world(out_dir):
     scat.inputs["Density"].default_value = 0.04
     scat.inputs["Anisotropy"].default_value = 0.5
     nt.links.new(scat.outputs["Volume"], out.inputs["Volume"])
+
+
+def build_subsurface(out_dir):
+    """(issue 31) Subsurface scattering as Cycles 3.4 renders it: a wax-like Principled sphere
+    (Subsurface 0.2, the default Random Walk) with a Noise bump on its surface, a Principled
+    sphere of anisotropic scattering (Subsurface Anisotropy 0.6, IOR 1.3) under a backlight
+    that shows through its rim, and a thin slab of the Subsurface Scattering node (Random Walk
+    (Fixed Radius), scale 0.3) lit from behind; an area light in front, a point light behind."""
+    ms.floor(ms.cy.diffuse_material("floor", (0.5, 0.5, 0.5)))
+    wax = ms.node_material("wax", "ShaderNodeBsdfPrincipled",
+                           **{"Base Color": (0.9, 0.8, 0.6, 1.0), "Subsurface": 0.2,
+                              "Subsurface Color": (0.9, 0.45, 0.3, 1.0), "Roughness": 0.4})
+    nt = wax.node_tree
+    noise = nt.nodes.new("ShaderNodeTexNoise")
+    noise.inputs["Scale"].default_value = 8.0
+    bump = nt.nodes.new("ShaderNodeBump")
+    bump.inputs["Strength"].default_value = 0.3
+    nt.links.new(noise.outputs["Fac"], bump.inputs["Height"])
+    nt.links.new(bump.outputs["Normal"], nt.nodes["Principled BSDF"].inputs["Normal"])
+    ms.add_sphere("wax", (-1.1, 0.2, 0.7), 0.7, wax)
+    ms.add_sphere("jelly", (0.6, 0.6, 0.6), 0.6, ms.node_material(
+        "jelly", "ShaderNodeBsdfPrincipled",
+        **{"Base Color": (0.3, 0.8, 0.5, 1.0), "Subsurface": 0.5,
+           "Subsurface Radius": (0.6, 1.0, 0.4), "Subsurface Color": (0.3, 0.9, 0.5, 1.0),
+           "Subsurface IOR": 1.3, "Subsurface Anisotropy": 0.6, "Roughness": 0.2}))
+    jade = ms.node_material("jade", "ShaderNodeSubsurfaceScattering",
+                            **{"Color": (0.4, 0.8, 0.6, 1.0), "Scale": 0.3})
+    jade.node_tree.nodes["Subsurface Scattering"].falloff = "RANDOM_WALK_FIXED_RADIUS"
+    ms.cy.add_box("slab", (1.9, 0.9, 0.62), (0.12, 1.0, 1.2), -25, jade)
+    front = ms.add_light("front", "AREA", (-1.5, -3.0, 3.0), energy=250.0, size=1.5)
+    ms.aim(front, (0.0, 0.5, 0.5))
+    ms.add_light("back", "POINT", (1.2, 2.8, 1.6), energy=400.0, shadow_soft_size=0.3)
+    ms.cy.add_camera((0.0, -5.0, 2.0), (0.3, 0.4, 0.6), lens_mm=40.0)
+    ms.cy.set_world_color((0.03, 0.03, 0.04))

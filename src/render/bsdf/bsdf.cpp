@@ -86,7 +86,7 @@ Bsdf Bsdf::principled(const PrincipledParams& p) {
     b.w_diffuse_ = (1 - m) * (1 - tr);
     b.diffuse_color_ = p.base * b.w_diffuse_;
     b.burley_ = p.diffuse_model == DiffuseModel::Burley;
-    if (!(average(b.diffuse_color_) > 0)) b.w_diffuse_ = 0;
+    if (!(average(b.diffuse_color_) > 0) || !p.diffuse_lobe) b.w_diffuse_ = 0;
     // Cycles: cspec0 = 0.08 specular tint (1 - metallic) + base metallic, clamped to [0, 1],
     // tint = lerp(1, base / luminance(base), specular_tint) with Cycles' rough luminance, and
     // the interpolation's IOR from `specular`.

@@ -71,6 +71,8 @@ struct PrincipledParams {
     // Off: no glass lobes (the caller adds Multiscatter GGX glass in their place); the other
     // lobes keep the weights that `transmission` gives them.
     bool glass_lobes = true;
+    // Off: no diffuse lobe (a subsurface BSSRDF takes its place, render/bsdf/bssrdf.h).
+    bool diffuse_lobe = true;
 };
 
 struct BsdfSample {

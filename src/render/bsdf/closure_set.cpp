@@ -50,6 +50,17 @@ void ClosureSet::add(const Lobe& lobe, const Color& weight, const Vec3& n, doubl
     ++count_;
 }
 
+void ClosureSet::add(const Bssrdf& bssrdf) {
+    const double share = bssrdf.sample_weight();
+    if (bssrdf_count_ >= kMaxBssrdf || !(share > 0)) return;
+    Bssrdf& b = bssrdfs_[bssrdf_count_++];
+    b = bssrdf;
+    // Bent like the BSDFs' normals, then turned to the viewer's side.
+    const Vec3 nv = valid_reflection_normal(ng_, wo_, bssrdf.n);
+    b.n = dot(ng_, wo_) >= 0 ? nv : -nv;
+    total_ += share;
+}
+
 double ClosureSet::shadowing(const Item& it, const Vec3& wi) const {
     if (!it.bumped) return 1;
     const Vec3& n = it.frame.n;
@@ -92,10 +103,25 @@ Color ClosureSet::eval(const Vec3& wi, double* pdf) const {
 }
 
 bool ClosureSet::sample(double u1, double u2, ClosureSample* out) const {
-    if (count_ == 0) return false;
+    if (count() == 0) return false;
     // The closure by its share; u1 rescaled within it keeps the sampler's stratification.
-    int k = 0;
+    // The BSSRDFs come after the BSDFs.
     double u = u1 * total_;
+    double bsdf_total = 0;
+    for (int i = 0; i < count_; ++i) bsdf_total += items_[i].share;
+    if (bssrdf_count_ > 0 && (u >= bsdf_total || count_ == 0)) {
+        u -= bsdf_total;
+        int b = 0;
+        while (b < bssrdf_count_ - 1 && u >= bssrdfs_[b].sample_weight())
+            u -= bssrdfs_[b++].sample_weight();
+        out->bssrdf = &bssrdfs_[b];
+        out->weight = bssrdfs_[b].weight * (total_ / bssrdfs_[b].sample_weight());
+        out->pdf = 0;
+        out->diffuse = true;
+        return true;
+    }
+    out->bssrdf = nullptr;
+    int k = 0;
     while (k < count_ - 1 && u >= items_[k].share) u -= items_[k++].share;
     const Item& it = items_[k];
     const double uk = std::min(u / it.share, 0x1.fffffffffffffp-1);
@@ -109,7 +135,7 @@ bool ClosureSet::sample(double u1, double u2, ClosureSample* out) const {
     out->reflected = bs.wi.z * it.wo.z > 0;
     out->straight = bs.delta && bs.wi.x == -it.wo.x && bs.wi.y == -it.wo.y && bs.wi.z == -it.wo.z;
     const double pick = it.share / total_;
-    if (count_ == 1 && !(it.bumped && bs.diffuse)) {
+    if (count() == 1 && !(it.bumped && bs.diffuse)) {
         out->weight = it.weight * bs.weight;
         out->pdf = bs.pdf;
         return true;

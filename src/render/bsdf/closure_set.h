@@ -6,6 +6,7 @@
 #pragma once
 
 #include "render/bsdf/bsdf.h"
+#include "render/bsdf/bssrdf.h"
 #include "render/bsdf/lobe.h"
 
 namespace glint::render {
@@ -19,6 +20,9 @@ struct ClosureSample {
     bool straight = false;  // a delta lobe that continued wo unchanged (index-matched)
     bool diffuse = false;   // the sampled lobe is diffuse (Cycles' LABEL_DIFFUSE)
     double roughness2 = kInfinity;  // BsdfSample::roughness2 of the sampled lobe
+    // A BSSRDF was picked instead of a BSDF (no direction: the path walks under the surface);
+    // `weight` is its weight over the probability of the pick.
+    const Bssrdf* bssrdf = nullptr;
 };
 
 class ClosureSet {
@@ -44,7 +48,12 @@ public:
         ns_ = ns;
         has_ns_ = true;
     }
-    int count() const { return count_; }
+    // A BSSRDF (set up, its normal on the outside like add()'s) beside the BSDFs: it takes its
+    // share of the samples (Cycles counts it in the mixture's pdf) but adds nothing to eval().
+    // At most kMaxBssrdf are kept.
+    static constexpr int kMaxBssrdf = 4;
+    void add(const Bssrdf& bssrdf);
+    int count() const { return count_ + bssrdf_count_; }
     bool all_delta() const;
 
     // Sum over the closures of weight f |cos wi| (about each closure's normal), and the
@@ -72,6 +81,8 @@ private:
     bool has_ns_ = false;
     Item items_[kMax];
     int count_ = 0;
+    Bssrdf bssrdfs_[kMaxBssrdf];
+    int bssrdf_count_ = 0;
     double total_ = 0;
 };
 

@@ -54,6 +54,25 @@ Lobe Lobe::oren_nayar(double roughness) {
     return l;
 }
 
+Lobe Lobe::subsurface_exit() {
+    Lobe l;
+    l.kind_ = Kind::SubsurfaceExit;
+    return l;
+}
+
+Lobe Lobe::retro_reflection(double roughness) {
+    Lobe l;
+    l.kind_ = Kind::RetroReflection;
+    l.a_ = roughness;
+    return l;
+}
+
+Lobe Lobe::burley_lambert() {
+    Lobe l;
+    l.kind_ = Kind::BurleyLambert;
+    return l;
+}
+
 Lobe Lobe::translucent() {
     Lobe l;
     l.kind_ = Kind::Translucent;
@@ -166,6 +185,7 @@ uint64_t seed_of(std::initializer_list<double> values) {
 double Lobe::sample_scale(const Vec3& wo) const {
     const double c = std::fabs(wo.z);
     if (kind_ == Kind::Sheen) return schlick_weight(c) * c;
+    if (kind_ == Kind::RetroReflection) return a_ * schlick_weight(c);
     if (kind_ == Kind::Clearcoat) return 0.25 * a_ * fresnel_dielectric(c, 1.5);
     if (kind_ == Kind::MultiGGX && multi_.fresnel) {
         // Cycles: the Fresnel colour at n . wo, averaged.
@@ -242,6 +262,21 @@ Color Lobe::eval(const Vec3& wo, const Vec3& wi, double* pdf) const {
             const double d = std::exp(-cos_nh * cos_nh / sin2 * a_) * a_ * kInvPi / (sin2 * sin2);
             return Color(0.25 * d * g / o.z);
         }
+        case Kind::SubsurfaceExit:
+            *pdf = i.z * kInvPi;
+            return Color(*pdf * (1 - 0.5 * schlick_weight(i.z)));
+        case Kind::BurleyLambert:
+            *pdf = i.z * kInvPi;
+            return Color(*pdf * (1 - 0.5 * schlick_weight(std::max(o.z, 0.0))) *
+                         (1 - 0.5 * schlick_weight(i.z)));
+        case Kind::RetroReflection: {
+            // Burley's retro-reflection: R (FL + FV + FL FV (R - 1)), R = roughness
+            // (1 + cos(wi, wo)) = 2 roughness cos^2 of the half angle.
+            *pdf = i.z * kInvPi;
+            const double fl = schlick_weight(i.z), fv = schlick_weight(std::max(o.z, 0.0));
+            const double rr = a_ * (dot(i, o) + 1);
+            return Color(*pdf * rr * (fl + fv + fl * fv * (rr - 1)));
+        }
         case Kind::Sheen: {
             *pdf = i.z * kInvPi;
             const Vec3 h = normalize(i + o);
@@ -287,8 +322,7 @@ bool Lobe::sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const {
                       : kind_ == Kind::MultiGlass ? (delta_ ? 0.0 : glass_.alpha * glass_.alpha)
                                                   : kInfinity;
     // Cycles' LABEL_DIFFUSE lobes.
-    out->diffuse = kind_ == Kind::OrenNayar || kind_ == Kind::Translucent ||
-                   kind_ == Kind::DiffuseToon || kind_ == Kind::Velvet || kind_ == Kind::Sheen;
+    out->diffuse = diffuse() || kind_ == Kind::Velvet;
     auto finish = [&](const Vec3& i, bool is_delta, const Color& delta_weight) {
         out->wi = Vec3(i.x, i.y, i.z * s);
         out->delta = is_delta;
@@ -305,6 +339,9 @@ bool Lobe::sample(const Vec3& wo, double u1, double u2, BsdfSample* out) const {
     Vec3 i;
     switch (kind_) {
         case Kind::OrenNayar:
+        case Kind::SubsurfaceExit:
+        case Kind::RetroReflection:
+        case Kind::BurleyLambert:
         case Kind::Sheen: i = cosine_hemisphere(u1, u2); break;
         case Kind::Translucent: {
             const Vec3 c = cosine_hemisphere(u1, u2);

@@ -20,7 +20,8 @@ class Lobe {
 public:
     enum class Kind : uint8_t {
         OrenNayar, Translucent, DiffuseToon, GlossyToon, Velvet, Sheen, Clearcoat,
-        Reflection, Refraction, AshikhminShirley, MultiGGX, MultiGlass
+        Reflection, Refraction, AshikhminShirley, MultiGGX, MultiGlass, SubsurfaceExit,
+        RetroReflection, BurleyLambert
     };
 
     // Oren-Nayar with Cycles' sigma = roughness in [0, 1] (0 is Lambert).
@@ -50,13 +51,25 @@ public:
     // it to the viewer's side. Alpha is clamped to [1e-4, 1] as in Cycles; below its singular
     // threshold the lobe is a smooth dielectric (mirror or refraction by the Fresnel term).
     static Lobe multi_glass(const MultiGlass& m);
+    // Where a Principled BSDF's subsurface walk leaves the surface: Lambert times Burley's
+    // exit Fresnel 1 - 0.5 (1 - cos wi)^5 (Cycles' PRINCIPLED_DIFFUSE_LAMBERT_EXIT).
+    static Lobe subsurface_exit();
+    // The retro-reflection that Burley's diffuse keeps beside a subsurface BSSRDF (Cycles'
+    // PRINCIPLED_DIFFUSE_RETRO_REFLECTION), with its share scaled by roughness x Schlick's
+    // weight of the view as Cycles scales it.
+    static Lobe retro_reflection(double roughness);
+    // Burley's diffuse without its retro-reflection: Lambert x (1 - 0.5 FV)(1 - 0.5 FL), what
+    // Cycles keeps for the channels whose subsurface radius is too small to walk.
+    static Lobe burley_lambert();
 
     Kind kind() const { return kind_; }
     bool delta() const { return delta_; }
     // Cycles' diffuse closures (CLOSURE_IS_BSDF_DIFFUSE): the bump shadowing term applies.
     bool diffuse() const {
         return kind_ == Kind::OrenNayar || kind_ == Kind::Translucent ||
-               kind_ == Kind::DiffuseToon || kind_ == Kind::Sheen;
+               kind_ == Kind::DiffuseToon || kind_ == Kind::Sheen ||
+               kind_ == Kind::SubsurfaceExit || kind_ == Kind::RetroReflection ||
+               kind_ == Kind::BurleyLambert;
     }
     // Cycles' factor on a closure's sample weight that depends on the view (sheen's average
     // value, clearcoat's Fresnel): the weight of the lobe among the others for wo.

@@ -7,8 +7,10 @@
 
 #include "core/float.h"
 #include "render/bsdf/bsdf.h"
+#include "render/bsdf/graph_closures.h"
 #include "render/bsdf/shading_normal.h"
 #include "render/lights/sky.h"
+#include "render/media/subsurface.h"
 #include "render/prepare/containing.h"
 
 namespace glint::render {
@@ -36,132 +38,6 @@ bool finite(const Color& c) {
 }
 
 double average(const Color& c) { return (c.r + c.g + c.b) / 3; }
-
-// One closure of a node graph into the set, split as Cycles 3.4 splits it
-// (svm_node_closure_bsdf): the Principled BSDF's diffuse, reflection and glass lobes as one
-// Bsdf, its sheen and clearcoat as lobes of their own; the other BSDFs as single lobes
-// (docs/pbr-mapping.md). `n` is the closure's normal turned to the outside, `outside` the
-// sign that turns the closure's vectors there; `shade` rescales for alpha skipping. Whether a
-// sampled bounce was diffuse (Light Path, bounce limits) is the sampled lobe's.
-void add_closure(ClosureSet& set, const shader::Closure& c, const Vec3& n, double outside,
-                 double shade) {
-    using shader::ClosureKind;
-    using shader::Distribution;
-    const Color w = c.weight * shade;
-    const Color wc = w * c.color;
-    const double share = c.sample_weight * shade;
-    const Vec3* tangent = length_squared(c.T) > 0 ? &c.T : nullptr;
-    const Microfacet::Kind mf = c.distribution == Distribution::Beckmann
-                                    ? Microfacet::Kind::Beckmann : Microfacet::Kind::GGX;
-    const double alpha = c.roughness * c.roughness;
-    switch (c.kind) {
-        case ClosureKind::Diffuse:
-            if (c.roughness > 0) set.add(Lobe::oren_nayar(c.roughness), wc, n, share);
-            else set.add(Bsdf::lambert(c.color), w, n, share);
-            return;
-        case ClosureKind::Translucent: set.add(Lobe::translucent(), wc, n, share); return;
-        case ClosureKind::Toon:
-            set.add(Lobe::toon(c.glossy, c.roughness, c.smooth), wc, n, share);
-            return;
-        case ClosureKind::Velvet: set.add(Lobe::velvet(c.roughness), wc, n, share); return;
-        case ClosureKind::Glossy: {
-            // Cycles' Anisotropic BSDF: alpha shrinks along one axis and grows along the other.
-            const double an = std::clamp(c.anisotropy, -0.99, 0.99);
-            double ax = alpha, ay = alpha;
-            if (tangent && an < 0) {
-                ax = alpha / (1 + an);
-                ay = alpha * (1 + an);
-            } else if (tangent) {
-                ax = alpha * (1 - an);
-                ay = alpha / (1 - an);
-            }
-            if (c.distribution == Distribution::AshikhminShirley)
-                set.add(Lobe::ashikhmin_shirley(ax, ay), wc, n, share, tangent);
-            else if (c.distribution == Distribution::MultiGGX)
-                set.add(Lobe::multi_ggx(MultiGgx{ax, ay, false, c.color}), wc, n, share, tangent);
-            else
-                set.add(Lobe::reflection(Microfacet{mf, ax, ay}), wc, n, share, tangent);
-            return;
-        }
-        case ClosureKind::Refraction:
-            set.add(Lobe::refraction(Microfacet{mf, alpha, alpha}, c.ior), wc, n, share);
-            return;
-        case ClosureKind::Glass: {
-            if (c.distribution == Distribution::MultiGGX) {
-                // Cycles' Multiscatter GGX glass: the colour weighs the first scattering and
-                // tints each one after it.
-                set.add(Lobe::multi_glass(MultiGlass{alpha, c.ior, c.color}), wc, n, share);
-                return;
-            }
-            PrincipledParams p;
-            p.base = Color(1, 1, 1);
-            p.roughness = c.roughness;
-            p.transmission = 1;
-            p.ior = c.ior;
-            p.glass_distribution = mf;
-            set.add(Bsdf::principled(p), wc, n, share);
-            return;
-        }
-        case ClosureKind::Principled: break;
-    }
-    PrincipledParams p;
-    p.base = c.color;
-    p.roughness = c.roughness;
-    p.metallic = c.metallic;
-    p.specular = c.specular;
-    p.ior = c.ior;
-    p.transmission = c.transmission;
-    p.specular_tint = c.specular_tint;
-    p.anisotropic = c.anisotropy;
-    // Transmission roughness counts with the "GGX" distribution only (Cycles 3.4).
-    p.transmission_roughness =
-        c.distribution == Distribution::GGX
-            ? 1 - (1 - c.roughness) * (1 - std::clamp(c.transmission_roughness, 0.0, 1.0))
-            : c.roughness;
-    // Multiscatter GGX: Cycles takes it for the reflection lobe above roughness 0.075, and
-    // for the glass lobes above roughness 0.05 (one random walk with Fresnel tints in place
-    // of the two).
-    const bool multi = c.distribution == Distribution::MultiGGX && c.roughness > 0.075;
-    const double glass_weight = std::clamp(c.transmission, 0.0, 1.0) *
-                                (1 - std::clamp(c.metallic, 0.0, 1.0));
-    const bool multi_glass = c.distribution == Distribution::MultiGGX && c.roughness > 0.05 &&
-                             glass_weight > 1e-5;
-    p.specular_lobe = !multi;
-    p.glass_lobes = !multi_glass;
-    const Bsdf main = Bsdf::principled(p);
-    if (!main.empty()) set.add(main, w, n, share, tangent);
-    if (multi && (c.specular > 1e-5 || c.metallic > 1e-5)) {
-        const double spec_weight = 1 - (1 - c.metallic) * c.transmission;
-        const double aspect = std::sqrt(std::max(0.0, 1 - 0.9 * std::clamp(c.anisotropy, 0.0, 1.0)));
-        MultiGgx m{alpha / aspect, alpha * aspect, true, c.color, main.specular_cspec0(),
-                   main.specular_eta()};
-        const Color sw = w * spec_weight;
-        set.add(Lobe::multi_ggx(m), sw, n, std::fabs(average(sw)), tangent);
-    }
-    if (multi_glass) {
-        // Cycles' bsdf_microfacet_multi_ggx_glass_fresnel_setup: weighed by the transmission
-        // alone, the base colour tinting refractions and the specular tint's cspec0 the
-        // reflections.
-        const double st = c.specular_tint;
-        MultiGlass g{alpha, c.ior, c.color, true, c.color * st + Color(1 - st)};
-        const Color gw = w * glass_weight;
-        set.add(Lobe::multi_glass(g), gw, n, std::fabs(average(gw)));
-    }
-    const double diffuse_weight = (1 - c.metallic) * (1 - c.transmission);
-    if (diffuse_weight > 1e-5 && c.sheen > 1e-5) {
-        // Sheen tinted towards the base colour's hue (luminance by Rec. 709).
-        const double lum = 0.2126729 * c.color.r + 0.7151522 * c.color.g + 0.0721750 * c.color.b;
-        const Color hue = lum > 0 ? c.color * (1 / lum) : Color(1, 1, 1);
-        const Color tint = Color(1 - c.sheen_tint) + hue * c.sheen_tint;
-        const Color sw = w * tint * (c.sheen * diffuse_weight);
-        set.add(Lobe::sheen(), sw, n, std::fabs(average(sw)));
-    }
-    if (c.clearcoat > 1e-5) {
-        const Vec3 cn = length_squared(c.clearcoat_N) > 0 ? normalize(c.clearcoat_N) * outside : n;
-        set.add(Lobe::clearcoat(c.clearcoat, c.clearcoat_roughness), w, cn,
-                std::fabs(average(w)));
-    }
-}
 
 }  // namespace
 
@@ -257,6 +133,28 @@ void PathIntegrator::graph_closures(const PathMaterial& row, const Hit& hit, con
         return;
     }
     row.program->evaluate(graphs_->globals(hit, dir, state), out);
+}
+
+Vec3 PathIntegrator::subsurface_exit_normal(const PathMaterial* row, const Hit& hit,
+                                            const Vec3& dir, double travelled) const {
+    // Cycles' surface_shader_bssrdf_normal: the BSSRDFs' normals there, by their weights.
+    if (!row || !row->program || row->constant_closures) return hit.n;
+    shader::RayState state;
+    state.camera = false;
+    state.travelled = travelled;  // bump's footprint: the entry's (Cycles keeps its dP)
+    shader::ClosureList cl;
+    graph_closures(*row, hit, dir, state, &cl);
+    Vec3 sum;
+    for (int i = 0; i < cl.count; ++i) {
+        const shader::Closure& c = cl.items[i];
+        const bool bssrdf = c.kind == shader::ClosureKind::Subsurface ||
+                            (c.kind == shader::ClosureKind::Principled && c.subsurface > 1e-5);
+        if (bssrdf && length_squared(c.N) > 0)
+            sum += normalize(c.N) * std::fabs((c.weight.r + c.weight.g + c.weight.b) / 3);
+    }
+    if (!(length_squared(sum) > 0)) return hit.n;
+    const Vec3 n = normalize(sum);
+    return dot(hit.ng, dir) > 0 ? -n : n;  // the closures face the viewer; the set the outside
 }
 
 Color PathIntegrator::environment(const Vec3& dir, const shader::RayState& state) const {
@@ -430,12 +328,22 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         const double sum = std::fabs(c.r) + std::fabs(c.g) + std::fabs(c.b);
         L += limit > 0 && sum > limit ? c * (limit / sum) : c;
     };
+    // A subsurface walk's exit (Cycles' PATH_RAY_SUBSURFACE): the next vertex is where the
+    // walk left the surface, shaded as diffuse there.
+    bool at_exit = false, exit_fresnel = false;
+    Hit exit_hit;
+    bool diffuse_ancestor = false;  // a diffuse bounce so far (subsurface is diffuse after)
     for (int v = 0; v < max_vertices; ++v) {
         const uint32_t base = 1 + scatterings * kPairsPerVertex;
         Hit hit;
-        ++rays;
-        const bool found = geometry_.intersect(r, &hit);
-        if (has_media_) {
+        bool found = true;
+        if (at_exit) {
+            hit = exit_hit;
+        } else {
+            ++rays;
+            found = geometry_.intersect(r, &hit);
+        }
+        if (has_media_ && !at_exit) {
             ActiveMedium act[MediumStack::kMax + 1];
             double step = kInfinity;
             const int na = active_media(stack, act, &step);
@@ -546,7 +454,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             }
         }
         // Blender lights on the way (Cycles' lamps: rays pass through them).
-        if (lights.has_visible_blender())
+        if (lights.has_visible_blender() && !at_exit)
             add(beta * lights.blender_emission(prev_p, r.dir, seg_dist,
                                                found ? seg_dist + hit.t : kInfinity,
                                                specular ? -1.0 : prev_pdf, scatterings == 0));
@@ -568,7 +476,13 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         ClosureSet set(hit.ng, -r.dir);
         Color emission;
         Color albedo;
-        if (row && row->program) {
+        if (at_exit) {
+            at_exit = false;
+            set.set_smooth_normal(hit.n);
+            const Vec3 n = subsurface_exit_normal(row, hit, r.dir, travelled - hit.t);
+            if (exit_fresnel) set.add(Lobe::subsurface_exit(), Color(1, 1, 1), n, 1);
+            else set.add(Bsdf::lambert(Color(1, 1, 1)), Color(1, 1, 1), n, 1);
+        } else if (row && row->program) {
             shader::RayState state;
             state.camera = scatterings == 0;
             state.singular = specular && scatterings > 0;
@@ -649,7 +563,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                 }
                 Vec3 n = length_squared(c.N) > 0 ? normalize(c.N) : hit.n;
                 if (back) n = -n;  // the closures' normals face the viewer; the set's the outside
-                add_closure(set, c, n, back ? -1.0 : 1.0, shade);
+                add_graph_closure(set, c, n, back ? -1.0 : 1.0, shade, diffuse_ancestor);
                 albedo += c.weight * c.color;
             }
         } else {
@@ -733,6 +647,24 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         ClosureSample bs;
         if (!set.sample(ud.u, ud.v, &bs)) break;
         ++scatterings;
+        if (bs.bssrdf) {
+            // A BSSRDF: a walk under the surface (no bounce of its own, as in Cycles), then the
+            // loop's next vertex is where it leaves.
+            beta *= bs.weight;
+            exit_fresnel = bs.bssrdf->exit_fresnel;
+            Vec3 out;
+            if (beta.is_black() || !finite(beta) ||
+                !subsurface_walk(geometry_, *bs.bssrdf, hit, -r.dir,
+                                 [&] { return volume_random(); }, &beta, &exit_hit, &out, &rays))
+                break;
+            at_exit = true;
+            camera_view = false;
+            travelled += seg_dist + hit.t;
+            seg_dist = 0;
+            r.origin = exit_hit.p;
+            r.dir = -out;  // as if arriving from outside, so the exit is shaded outside
+            continue;
+        }
         // A bounce, or a refraction even at IOR 1 (Cycles' singular), ends the camera's view
         // of the world, but for Film > Transparent Glass's smooth enough transmissions
         // (Cycles' LABEL_TRANSMIT_TRANSPARENT).
@@ -756,6 +688,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         }
         specular = bs.delta;
         last_diffuse = !bs.delta && bs.diffuse;
+        diffuse_ancestor = diffuse_ancestor || last_diffuse;
         last_reflected = bs.reflected;
         prev_pdf = bs.pdf;
         if (!bs.delta) min_pdf = std::min(min_pdf, bs.pdf);

@@ -79,6 +79,11 @@ private:
     // BSDFs), with the emission, transparency; false when the material has no graph.
     void graph_closures(const PathMaterial& row, const Hit& hit, const Vec3& dir,
                         const shader::RayState& state, shader::ClosureList* out) const;
+    // The normal a subsurface walk leaves `hit` with (seen along `dir`, towards the surface):
+    // the BSSRDFs' bumped normals where the material's graph has them (bump's footprint that
+    // of a ray `travelled` long), else the smooth one; on the outside.
+    Vec3 subsurface_exit_normal(const PathMaterial* row, const Hit& hit, const Vec3& dir,
+                                double travelled) const;
     // The objects a ray is inside, innermost last (POV-Ray's interiors, Cycles' volume stack),
     // and which of them hold a medium; bounded so that paths stay allocation-free.
     struct MediumStack {

@@ -26,6 +26,13 @@ public:
                   std::vector<char> opaque)
         : nodes_(std::move(nodes)), ids_(std::move(ids)), opaque_(std::move(opaque)) {
         for (char o : opaque_) any_opaque_ = any_opaque_ || o;
+        // Nodes come in object order, so each object's are one run.
+        for (size_t i = 0; i < ids_.size(); ++i) {
+            const size_t id = static_cast<size_t>(ids_[i]);
+            if (id >= object_nodes_.size()) object_nodes_.resize(id + 1, {0, 0});
+            if (object_nodes_[id].second == 0) object_nodes_[id].first = static_cast<int>(i);
+            object_nodes_[id].second = static_cast<int>(i) + 1;
+        }
         std::vector<Bounds3> boxes;
         for (size_t i = 0; i < nodes_.size(); ++i) {
             const Bounds3& b = nodes_[i]->bounds();
@@ -130,6 +137,32 @@ public:
         return false;
     }
 
+    bool intersect_object(const Ray& ray, int object, Hit* hit) const override {
+        if (!valid(ray) || object < 0 || static_cast<size_t>(object) >= object_nodes_.size())
+            return false;
+        LocalHit hits[2];
+        LocalHit* best = &hits[0];
+        LocalHit* cand = &hits[1];
+        bool best_deferred = false;
+        int best_i = -1;
+        double limit = ray.tmax;
+        const auto [first, end] = object_nodes_[static_cast<size_t>(object)];
+        for (int i = first; i < end; ++i) {
+            bool deferred = false;
+            if (nodes_[i]->intersect_deferred(ray, limit, cand, &deferred) &&
+                (best_i < 0 || cand->t < best->t)) {
+                std::swap(best, cand);
+                best_deferred = deferred;
+                best_i = i;
+                limit = next_up(best->t);
+            }
+        }
+        if (best_i < 0) return false;
+        if (best_deferred) nodes_[best_i]->finish_deferred(best);
+        to_hit(*best, object, hit);
+        return true;
+    }
+
     Bounds3 bounds() const override { return bounds_; }
 
 private:
@@ -156,6 +189,7 @@ private:
 
     std::vector<std::unique_ptr<ObjectNode>> nodes_;
     std::vector<int> ids_;  // scene object index of each node
+    std::vector<std::pair<int, int>> object_nodes_;  // per scene object: its nodes [first, end)
     std::vector<char> opaque_;  // per node: no surface of it lets light through
     bool any_opaque_ = false;
     std::vector<int> unbounded_;

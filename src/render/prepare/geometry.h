@@ -39,6 +39,12 @@ public:
     virtual Blocker shadow_blocker(const Ray& ray, int* hint) const {
         return occluded(ray, hint) ? Blocker::Other : Blocker::None;
     }
+    // The closest hit with 0 < t < ray.tmax on scene object `object` alone, whatever else is
+    // in the way (Cycles' local intersection: a subsurface walk inside one object).
+    virtual bool intersect_object(const Ray& ray, int object, Hit* hit) const {
+        (void)ray, (void)object, (void)hit;
+        return false;
+    }
     virtual Bounds3 bounds() const = 0;  // may be infinite (planes)
 };
 

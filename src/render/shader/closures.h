@@ -68,7 +68,13 @@ enum class ClosureKind : uint8_t {
     Translucent,  // color: Lambert transmission
     Toon,         // color, size (roughness), smooth; `glossy` picks the component
     Velvet,       // color, sigma (roughness)
+    Subsurface,   // the Subsurface Scattering node: color (albedo), radius, ior, anisotropy
 };
+
+// How a BSSRDF scatters under the surface (the nodes' subsurface_method / falloff): Cycles
+// 3.4's random walk with the radius adjusted for albedo and IOR (its default), or with the
+// radius as given (Fixed Radius); Christensen-Burley's disk sampling is drawn as Fixed Radius.
+enum class SubsurfaceMethod : uint8_t { RandomWalk, FixedRadius, Burley };
 
 // Blender's microfacet distributions (the node's `distribution`).
 enum class Distribution : uint8_t { GGX, Beckmann, AshikhminShirley, MultiGGX };
@@ -93,6 +99,15 @@ struct Closure {
     double clearcoat = 0, clearcoat_roughness = 0.03;
     double transmission_roughness = 0;
     double smooth = 0;  // Toon
+    // Principled: the subsurface amount, radius (per channel, scene units), colour, IOR and
+    // anisotropy; the Subsurface Scattering node: its radius x scale and the others (its
+    // colour is `color`).
+    double subsurface = 0;
+    Color subsurface_radius{1, 0.2, 0.1};
+    Color subsurface_color{0.8, 0.8, 0.8};
+    double subsurface_ior = 1.4;
+    double subsurface_anisotropy = 0;
+    SubsurfaceMethod subsurface_method = SubsurfaceMethod::RandomWalk;
     double sample_weight = 0;  // |average(weight)|: the share of BSDF samples it gets
 };
 

@@ -404,6 +404,17 @@ void ShaderProgram::walk(int index, const Color& weight, const float3* r,
     c.clearcoat_N = vec(S::kClearcoatNormal);
     c.transmission_roughness = value(S::kTransmissionRoughness, 0);
     c.smooth = value(S::kSmooth, 0);
+    if (principled || n.bsdf == ClosureKind::Subsurface) {
+        // Principled: the amount; Subsurface Scattering: the scale.
+        c.subsurface = value(S::kSubsurface, n.bsdf == ClosureKind::Subsurface ? 1 : 0);
+        if (n.in[S::kSubsurfaceRadius] >= 0)
+            c.subsurface_radius = to_color(r[n.in[S::kSubsurfaceRadius]]);
+        if (n.in[S::kSubsurfaceColor] >= 0)
+            c.subsurface_color = to_color(r[n.in[S::kSubsurfaceColor]]);
+        c.subsurface_ior = value(S::kSubsurfaceIor, 1.4);
+        c.subsurface_anisotropy = value(S::kSubsurfaceAnisotropy, 0);
+        c.subsurface_method = n.subsurface;
+    }
     if (n.in[S::kTangent] >= 0 && (c.anisotropy != 0 || n.bsdf == ClosureKind::Glossy)) {
         c.T = vec(S::kTangent);
         // Rotation turns the tangent about the normal by that many full turns.
@@ -421,9 +432,12 @@ void ShaderProgram::walk(int index, const Color& weight, const float3* r,
     // A Principled BSDF without any lobe (black base, no metal, specular, transmission or
     // clearcoat) gets no closure in Cycles 3.4: it must take no samples from the rest
     // (transparency included).
-    if (principled && c.color.is_black() && c.metallic == 0 && c.specular == 0 &&
-        c.transmission == 0 && !(c.clearcoat > 1e-5))
-        return;
+    // (Its diffuse part is the base colour mixed with the subsurface colour.)
+    if (principled && c.metallic == 0 && c.specular == 0 && c.transmission == 0 &&
+        !(c.clearcoat > 1e-5)) {
+        const double ss = c.subsurface;
+        if ((c.subsurface_color * ss + c.color * (1 - ss)).is_black()) return;
+    }
     if (c.sample_weight > 0) out->add(c);
 }
 

@@ -17,14 +17,6 @@ int normal_in(Compiler& c, int n, const char* id = "Normal") {
     return c.linked(n, id) ? c.in(n, id, 'v') : c.normal();
 }
 
-// Warns when an input that glint ignores is linked or differs from `neutral`.
-void ignored(Compiler& c, int n, const char* id, float neutral, const char* what) {
-    const scene::ShaderInput* in = c.node(n).input(id);
-    if (!in) return;
-    if (in->link.linked() || std::fabs(in->value[0] - neutral) > 1e-6)
-        c.unsupported(n, std::string(what) + " is not supported yet: ignored");
-}
-
 using S = ClosureNode;
 
 ClosureNode bsdf_node(ClosureKind kind, std::initializer_list<std::pair<int, int>> slots) {
@@ -53,8 +45,18 @@ int diffuse(Compiler& c, int n) {
                                     {S::kRoughness, c.in(n, "Roughness", 'f')}}));
 }
 
+// The node's subsurface_method (Principled) or falloff (Subsurface Scattering).
+SubsurfaceMethod subsurface_method(Compiler& c, int n, const char* key) {
+    const std::string m = c.enum_prop(n, key, "RANDOM_WALK");
+    if (m == "RANDOM_WALK_FIXED_RADIUS") return SubsurfaceMethod::FixedRadius;
+    if (m == "BURLEY") {
+        c.unsupported(n, "Christensen-Burley subsurface is drawn as Random Walk (Fixed Radius)");
+        return SubsurfaceMethod::Burley;
+    }
+    return SubsurfaceMethod::RandomWalk;
+}
+
 int principled(Compiler& c, int n) {
-    ignored(c, n, "Subsurface", 0, "subsurface (the next issue's)");
     bool sharp = false;
     ClosureNode node = bsdf_node(
         ClosureKind::Principled,
@@ -78,8 +80,28 @@ int principled(Compiler& c, int n) {
          {S::kClearcoatNormal, normal_in(c, n, "Clearcoat Normal")},
          {S::kTransmissionRoughness, c.in(n, "Transmission Roughness", 'f')},
          {S::kTangent, c.linked(n, "Tangent") ? c.in(n, "Tangent", 'v')
-                                              : static_cast<int>(kRegTangent)}});
+                                              : static_cast<int>(kRegTangent)},
+         {S::kSubsurface, c.in(n, "Subsurface", 'f')},
+         {S::kSubsurfaceRadius, c.in(n, "Subsurface Radius", 'v', float3(1, 0.2f, 0.1f))},
+         {S::kSubsurfaceColor, c.in(n, "Subsurface Color", 'c', float3(0.8f))},
+         {S::kSubsurfaceIor, c.in(n, "Subsurface IOR", 'f', float3(1.4f))},
+         {S::kSubsurfaceAnisotropy, c.in(n, "Subsurface Anisotropy", 'f')}});
     node.distribution = distribution(c, n, "GGX", &sharp);
+    node.subsurface = subsurface_method(c, n, "subsurface_method");
+    return c.add_closure(node);
+}
+
+// The Subsurface Scattering node: a BSSRDF of its colour, radius x scale, IOR, anisotropy.
+int subsurface(Compiler& c, int n) {
+    ClosureNode node = bsdf_node(
+        ClosureKind::Subsurface,
+        {{S::kColor, c.in(n, "Color", 'c', float3(0.8f))},
+         {S::kNormal, normal_in(c, n)},
+         {S::kSubsurface, c.in(n, "Scale", 'f', float3(1))},
+         {S::kSubsurfaceRadius, c.in(n, "Radius", 'v', float3(1, 0.2f, 0.1f))},
+         {S::kSubsurfaceIor, c.in(n, "IOR", 'f', float3(1.4f))},
+         {S::kSubsurfaceAnisotropy, c.in(n, "Anisotropy", 'f')}});
+    node.subsurface = subsurface_method(c, n, "falloff");
     return c.add_closure(node);
 }
 
@@ -377,7 +399,7 @@ void add_shader_nodes(NodeTables& t) {
     s["ShaderNodeBsdfTranslucent"] = translucent;
     s["ShaderNodeBsdfToon"] = toon;
     s["ShaderNodeBsdfVelvet"] = velvet;
-    s["ShaderNodeSubsurfaceScattering"] = as_diffuse;
+    s["ShaderNodeSubsurfaceScattering"] = subsurface;
     s["ShaderNodeEeveeSpecular"] = as_diffuse;
     s["ShaderNodeEmission"] = emission;
     s["ShaderNodeBackground"] = emission;

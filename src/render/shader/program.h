@@ -61,6 +61,9 @@ struct ClosureNode {
         kSpecular, kTransmission, kAlpha, kEmission, kEmissionStrength, kSpecularTint,
         kAnisotropy, kRotation, kSheen, kSheenTint, kClearcoat, kClearcoatRoughness,
         kClearcoatNormal, kTransmissionRoughness, kTangent, kSmooth,
+        // Subsurface (Principled, Subsurface Scattering: scale in kSubsurface).
+        kSubsurface, kSubsurfaceRadius, kSubsurfaceColor, kSubsurfaceIor,
+        kSubsurfaceAnisotropy,
         // Volumes (colour, emission and its strength use the slots above).
         kDensity, kAbsorptionColor, kBlackbody, kBlackbodyTint, kTemperature,
         kSlots
@@ -68,6 +71,7 @@ struct ClosureNode {
     int in[kSlots];
     Distribution distribution = Distribution::GGX;
     bool glossy = false;  // Toon's glossy component
+    SubsurfaceMethod subsurface = SubsurfaceMethod::RandomWalk;
     ClosureNode() { std::fill(std::begin(in), std::end(in), -1); }
 };
 
