@@ -40,3 +40,4 @@ picture plugin_scenes.png cornell:0001:cornell principled:0001:principled \
 # The volumes (issue 31): docs/blender.md and README.md.
 picture volumes.png volume:0001:volume volume_noise:0001:volume_noise \
     volume_world:0001:volume_world
+picture subsurface.png subsurface:0001:subsurface
