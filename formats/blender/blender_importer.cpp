@@ -631,6 +631,16 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
             o.info_color = oj.color("color", Color(1, 1, 1));
             o.pass_index = oj.number("pass_index", 0);
             o.random = oj.number("random", 0);
+            if (oj.has("volume")) {
+                // A Volume object: the box of its grids, shaded by its OpenVDB file.
+                const JsonReader v = oj.at("volume");
+                scene::Object::VolumeFile vf;
+                vf.path = v.at("file").string();
+                if (fs::path(vf.path).is_relative()) vf.path = (fs::path(dir) / vf.path).string();
+                vf.step_size = v.number("step_size", 0);
+                vf.object_space = v.string("space", "OBJECT") != "WORLD";
+                o.volume_file = std::move(vf);
+            }
             scene.objects.push_back(std::move(o));
         }
     }

@@ -135,6 +135,8 @@ scene::ShaderGraph read_graph(const JsonReader& r, const std::string& name,
                 const Json& v = in.at("value").json();
                 if (v.is_number() || v.is_boolean()) {
                     s.value[0] = in.at("value").number();
+                } else if (v.is_string()) {
+                    s.text = in.at("value").string();
                 } else if (v.is_array()) {
                     const std::vector<double> nums = in.at("value").numbers();
                     for (size_t c = 0; c < nums.size() && c < 4; ++c) s.value[c] = nums[c];

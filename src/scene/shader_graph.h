@@ -27,6 +27,7 @@ struct ShaderInput {
     std::string id;  // Blender's socket identifier, unique within the node
     SocketType type = SocketType::Value;
     double value[4] = {0, 0, 0, 0};  // the unlinked value (float: [0]; colours: rgba)
+    std::string text;                // a String socket's value (attribute names)
     bool enabled = true;
     ShaderLink link;
 };

@@ -2,6 +2,7 @@
 // placed by the object's transform. CSG nodes hold child objects, so the tree is a value.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -187,6 +188,15 @@ struct Object {
     Color info_color{1, 1, 1};
     double pass_index = 0;
     double random = 0;
+    // A Blender Volume object: its OpenVDB file (grids in object space: the file's world is
+    // the object's space), read when a volume shader asks for a grid, and its step size (0:
+    // by the voxels; in object space or in world space).
+    struct VolumeFile {
+        std::string path;
+        double step_size = 0;
+        bool object_space = true;
+    };
+    std::optional<VolumeFile> volume_file;
     std::vector<Object> bounded_by;  // in this object's parent space, like the object
     std::vector<Object> clipped_by;
     std::string name;  // the #declare'd identifier it came from, if any

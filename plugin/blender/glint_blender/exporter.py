@@ -128,9 +128,26 @@ def image_file(image, out_dir, warn):
 _LEFT_OUT = {
     "CURVES": "hair curves are not supported by glint",
     "POINTCLOUD": "point clouds are not supported by glint",
-    "VOLUME": "volume objects are not supported by glint",
     "GPENCIL": "Grease Pencil objects are not drawn by glint",
+    "VOLUME": "volume objects without an OpenVDB file (grids made by nodes, or a missing file) "
+              "are not supported by glint",
 }
+
+
+def volume_file(ob):
+    """The OpenVDB file a Volume object shows at this frame (absolute), None when it has none
+    on disk."""
+    vol = ob.data
+    try:
+        vol.grids.load()
+        path = vol.grids.frame_filepath or vol.filepath
+    except (AttributeError, RuntimeError):
+        path = vol.filepath
+    if not path:
+        return None
+    orig = vol.original if vol.original else vol
+    path = bpy.path.abspath(path, library=orig.library)
+    return path if os.path.isfile(path) else None
 
 
 def left_out_warnings(depsgraph, warn):
@@ -139,7 +156,7 @@ def left_out_warnings(depsgraph, warn):
     names = {}
     for inst in depsgraph.object_instances:
         ob = inst.object
-        if ob.type in _LEFT_OUT:
+        if ob.type in _LEFT_OUT and (ob.type != "VOLUME" or volume_file(ob) is None):
             name = ob.original.name if ob.original else ob.name
             objects = names.setdefault(ob.type, [])
             if name not in objects:

@@ -326,6 +326,65 @@ class _Exporter:
                     self.deform_keys[key] = (mesh, steps, (len(me.vertices), len(me.loops),
                                                            len(me.loop_triangles)))
 
+    def add_volume(self, inst, ob):
+        """A Volume object: the box of its grids (Blender's bounds of them, in object space)
+        as a mesh, its OpenVDB file and its render step settings, its materials or Cycles'
+        default volume. Grids made by geometry nodes or modifiers have no file to read."""
+        vol = ob.data
+        orig = _original(ob)
+        path = exporter.volume_file(ob)
+        if path is None:
+            return  # named by left_out()
+        if any(m.show_render for m in orig.modifiers):
+            self.warn("volume object '%s': its modifiers are not applied (the file's grids "
+                      "are rendered)" % orig.name)
+        lo = [min(c[k] for c in ob.bound_box) for k in range(3)]
+        hi = [max(c[k] for c in ob.bound_box) for k in range(3)]
+        if not all(h > l for l, h in zip(lo, hi)):
+            return  # no active voxels
+        key = ("volume box",) + tuple(lo) + tuple(hi)
+        if key not in self.mesh_index:
+            me = bpy.data.meshes.new("glint volume box")
+            try:
+                corners = [(x, y, z) for z in (lo[2], hi[2]) for y in (lo[1], hi[1])
+                           for x in (lo[0], hi[0])]
+                faces = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2),
+                         (1, 3, 7, 5)]
+                me.from_pydata(corners, [], faces)
+                entry = mesh_entry(me, "volume box", self.buf)
+            finally:
+                bpy.data.meshes.remove(me)
+            self.mesh_index[key] = len(self.meshes)
+            self.meshes.append(entry)
+        if self.override is not None:
+            mats = [self.material(self.override)]
+        else:
+            mats = [self.material(s.material) for s in ob.material_slots if s.material]
+        if not mats:
+            mats = [self._default_volume()]
+        vis = _visibility(ob)
+        if not any(vis.values()):
+            return
+        self.names["object"].setdefault(ob.name, "volume object '%s'" % orig.name)
+        random_id = (inst.random_id & _U32) if inst.is_instance else \
+            hash_uint2(hash_string(ob.name), 0)
+        self.objects.append({
+            "name": ob.name, "mesh": self.mesh_index[key], "matrix": _matrix(inst.matrix_world),
+            "materials": mats[:1], "visibility": vis, "holdout": False, "shadow_catcher": False,
+            "color": list(ob.color), "pass_index": ob.pass_index,
+            "random": random_float(random_id), "random_id": random_id,
+            "volume": {"file": path, "step_size": vol.render.step_size,
+                       "space": vol.render.space}})
+
+    def _default_volume(self):
+        idx = self.material_index.get("default volume")
+        if idx is None:
+            idx = self.material_index["default volume"] = len(self.materials)
+            self.materials.append({"name": "glint default volume",
+                                   "graph": node_graphs.volume_graph(), "pass_index": 0,
+                                   "cycles": {}})
+        return idx
+
     def _deforms(self, parent, ob):
         """Whether Cycles blurs the object's deformation: its (and its instancer's) Deformation
         motion blur on and its mesh deformed by modifiers, shape keys or an armature."""
@@ -596,6 +655,8 @@ class _Exporter:
                         self.add_light(inst, ob)
                     elif inst.show_self and isinstance(ob.data, bpy.types.Mesh):
                         self.add_object(inst, ob)
+                    elif inst.show_self and ob.type == 'VOLUME':
+                        self.add_volume(inst, ob)
                 world = self.world()
                 if self.motion:
                     self.sample_motion(camera, center, shutter)  # deforming meshes' steps too

@@ -339,3 +339,29 @@ def diffuse_graph(color):
                     {"id": "Roughness", "type": "VALUE", "value": 0.0},
                     {"id": "Normal", "type": "VECTOR", "value": [0.0, 0.0, 0.0]}],
          "outputs": [{"id": "BSDF", "type": "SHADER"}]}]}
+
+
+def volume_graph():
+    """What Cycles 3.4 renders for a Volume object without a material (its default volume
+    shader): a Principled Volume, its defaults reading the density grid, into Volume."""
+    return {"output": 0, "nodes": [
+        {"type": "ShaderNodeOutputMaterial", "name": "Material Output",
+         "props": {"target": "ALL"},
+         "inputs": [{"id": "Surface", "type": "SHADER"},
+                    {"id": "Volume", "type": "SHADER", "link": [1, "Volume"]},
+                    {"id": "Displacement", "type": "VECTOR", "value": [0.0, 0.0, 0.0]}],
+         "outputs": []},
+        {"type": "ShaderNodeVolumePrincipled", "name": "Principled Volume", "props": {},
+         "inputs": [{"id": "Color", "type": "RGBA", "value": [0.5, 0.5, 0.5, 1.0]},
+                    {"id": "Color Attribute", "type": "STRING", "value": ""},
+                    {"id": "Density", "type": "VALUE", "value": 1.0},
+                    {"id": "Density Attribute", "type": "STRING", "value": "density"},
+                    {"id": "Anisotropy", "type": "VALUE", "value": 0.0},
+                    {"id": "Absorption Color", "type": "RGBA", "value": [0.0, 0.0, 0.0, 1.0]},
+                    {"id": "Emission Strength", "type": "VALUE", "value": 0.0},
+                    {"id": "Emission Color", "type": "RGBA", "value": [1.0, 1.0, 1.0, 1.0]},
+                    {"id": "Blackbody Intensity", "type": "VALUE", "value": 0.0},
+                    {"id": "Blackbody Tint", "type": "RGBA", "value": [1.0, 1.0, 1.0, 1.0]},
+                    {"id": "Temperature", "type": "VALUE", "value": 1000.0},
+                    {"id": "Temperature Attribute", "type": "STRING", "value": "temperature"}],
+         "outputs": [{"id": "Volume", "type": "SHADER"}]}]}

@@ -5,6 +5,8 @@
 
 #include "render/integrators/path.h"
 
+#include "render/textures/vdb_grids.h"
+
 namespace glint::render {
 namespace {
 
@@ -67,13 +69,27 @@ void PathIntegrator::MediumStack::cross(const Hit& hit, const Vec3& dir,
 }
 
 double PathIntegrator::volume_step(int object, int material) const {
-    // Cycles: a tenth of the object's mean size (no voxel grids to go by), times the
-    // material's step rate and the scene's; Homogeneous shades once per segment.
+    // Cycles: a Volume object's voxel (or its own step size, in object or world space), else a
+    // tenth of the object's mean size, times the material's step rate and the scene's;
+    // Homogeneous shades once per segment (a volume that reads grids never is).
     const scene::Material& m = scene_.materials[static_cast<size_t>(material)];
-    if (m.volume_homogeneous) return kHomogeneousStep;
-    const double size = object >= 0 && static_cast<size_t>(object) < object_size_.size()
-                            ? object_size_[static_cast<size_t>(object)] : 1.0;
-    return 0.1 * size * m.volume_step_rate * settings_.volume_step_rate;
+    const VdbGrids* grids = graphs_ ? graphs_->grids(object) : nullptr;
+    if (m.volume_homogeneous && !grids) return kHomogeneousStep;
+    double size = object >= 0 && static_cast<size_t>(object) < object_size_.size()
+                      ? 0.1 * object_size_[static_cast<size_t>(object)] : 0.1;
+    if (grids && grids->count() > 0) {
+        const scene::Object::VolumeFile& vf = *scene_.objects[static_cast<size_t>(object)].volume_file;
+        double s = grids->voxel_step();
+        if (vf.step_size > 0 && !vf.object_space) {
+            s = vf.step_size;
+        } else if (vf.step_size > 0) {
+            const Vec3 w = scene_.objects[static_cast<size_t>(object)].transform.vector(
+                Vec3(vf.step_size, vf.step_size, vf.step_size));
+            s = std::min({std::fabs(w.x), std::fabs(w.y), std::fabs(w.z)});
+        }
+        if (s > 0) size = s;
+    }
+    return size * m.volume_step_rate * settings_.volume_step_rate;
 }
 
 int PathIntegrator::active_media(const MediumStack& stack, ActiveMedium* out,

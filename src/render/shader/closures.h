@@ -4,12 +4,22 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 
 #include "core/math.h"
 #include "render/ray.h"
 #include "render/shader/float3.h"
 
 namespace glint::render::shader {
+
+// A volume's grids by name (a Blender Volume object's OpenVDB grids), sampled at a world
+// point: a scalar grid gives its value in every channel.
+class VolumeGridSource {
+public:
+    virtual ~VolumeGridSource() = default;
+    // False when there is no grid of that name.
+    virtual bool grid(std::string_view name, const Vec3& p, Vec3* value) const = 0;
+};
 
 // The shading point. Directions are unit, world space. Coordinates as Cycles' Texture
 // Coordinate and Geometry nodes give them.
@@ -30,6 +40,7 @@ struct ShaderGlobals {
     float3 tangent;     // Cycles' tangent: around the texture space's Z axis, normal to N
     float3 uv_tangent;  // the normal map's tangent: dPdu where the mesh has uvs
     AttributePoint attributes;  // the mesh's named layers at P (Attribute nodes)
+    const VolumeGridSource* grids = nullptr;  // a volume shader's grids at P (Volume objects)
     bool backfacing = false;
     // Object Info.
     float3 object_location;

@@ -503,8 +503,13 @@ void ShaderProgram::walk_volume(int index, const Color& weight, const float3* r,
     };
     // The mix weight scales the density (Cycles keeps it a float: the channels' mean).
     const double mix = (weight.r + weight.g + weight.b) / 3;
-    const double density = mix * std::max(value(S::kDensity, 1), 0.0);
-    const Color color = colour(S::kColor, Color(0.5, 0.5, 0.5));
+    double density = mix * std::max(value(S::kDensity, 1), 0.0);
+    Color color = colour(S::kColor, Color(0.5, 0.5, 0.5));
+    // Principled Volume's grids (Volume objects), where the object has them.
+    auto grid = [&](int slot) { return n.in[slot] >= 0 && r[n.in[slot + 1]].x != 0; };
+    if (density > kCutoff && grid(S::kDensityGrid))
+        density = std::max(density * static_cast<double>(r[n.in[S::kDensityGrid]].x), 0.0);
+    if (grid(S::kColorGrid)) color = color * to_color(r[n.in[S::kColorGrid]]);
     auto add_lobe = [&](const Color& sigma_s) {
         if (out->count == VolumeClosures::kMax) return;
         double g = value(S::kAnisotropy, 0);
@@ -535,7 +540,9 @@ void ShaderProgram::walk_volume(int index, const Color& weight, const float3* r,
     if (emission > kCutoff) out->emission += colour(S::kEmission, Color(1, 1, 1)) * emission;
     const double blackbody = value(S::kBlackbody, 0);
     if (blackbody > kCutoff) {
-        const double t = std::max(value(S::kTemperature, 1000), 0.0);
+        double t = std::max(value(S::kTemperature, 1000), 0.0);
+        if (grid(S::kTemperatureGrid))
+            t *= std::max(static_cast<double>(r[n.in[S::kTemperatureGrid]].x), 0.0);
         const double t4 = (t * t) * (t * t);
         const double sigma = 5.670373e-8 * 1e-6 / kPi;  // Stefan-Boltzmann, per steradian
         const double intensity = sigma * (1 + (t4 - 1) * blackbody);

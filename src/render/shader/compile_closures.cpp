@@ -184,6 +184,25 @@ int transparent(Compiler& c, int n) {
 }
 
 // Volume Scatter, Volume Absorption and Principled Volume: read by the volume shader only.
+// A grid of the volume's object by name at P (`value`), and 1 in `found` where the object has
+// it (Cycles' find_attribute: a missing one changes nothing).
+void grid_op(Compiler& c, const std::string& name, int value, int found) {
+    auto q = std::make_shared<std::string>(name);
+    Op op;
+    op.data = q.get();
+    c.program_keep(q);
+    op.out[0] = value;
+    op.out[1] = found;
+    op.fn = [](const Op& o, R r, G sg) {
+        Vec3 v;
+        const bool f = sg.grids &&
+                       sg.grids->grid(*static_cast<const std::string*>(o.data), sg.P.to_vec3(), &v);
+        r[o.out[0]] = f ? float3(v) : float3();
+        r[o.out[1]] = float3(f ? 1.0f : 0.0f, 0, 0);
+    };
+    c.emit(op, false);
+}
+
 int volume(Compiler& c, int n, ClosureNode::VolumeKind kind) {
     using S = ClosureNode;
     ClosureNode v;
@@ -201,9 +220,18 @@ int volume(Compiler& c, int n, ClosureNode::VolumeKind kind) {
         v.in[S::kBlackbody] = c.in(n, "Blackbody Intensity", 'f', float3(0));
         v.in[S::kBlackbodyTint] = c.in(n, "Blackbody Tint", 'c', float3(1));
         v.in[S::kTemperature] = c.in(n, "Temperature", 'f', float3(1000));
-        // Grids of Volume objects (density, color, temperature attributes) are not read.
-        for (const char* a : {"Density Attribute", "Color Attribute", "Temperature Attribute"})
-            if (c.linked(n, a)) c.unsupported(n, "reads its attribute inputs as empty");
+        // The grids its attribute inputs name (Volume objects), multiplied in where they exist.
+        const std::pair<const char*, int> attrs[] = {{"Density Attribute", S::kDensityGrid},
+                                                     {"Color Attribute", S::kColorGrid},
+                                                     {"Temperature Attribute", S::kTemperatureGrid}};
+        for (const auto& [id, slot] : attrs) {
+            const scene::ShaderInput* in = c.node(n).input(id);
+            if (!in || in->text.empty()) continue;
+            if (in->link.linked()) c.unsupported(n, std::string(id) + " linked: its own value");
+            v.in[slot] = c.fresh();
+            v.in[slot + 1] = c.fresh();
+            grid_op(c, in->text, v.in[slot], v.in[slot + 1]);
+        }
     }
     return c.add_closure(v);
 }
@@ -417,6 +445,16 @@ void add_shader_nodes(NodeTables& t) {
     s["ShaderNodeMixShader"] = mix_shader;
     s["ShaderNodeAddShader"] = add_shader;
     t.values["ShaderNodeBump"] = bump;
+    // Volume Info: the Volume object's standard grids (zero where it has none).
+    t.values["ShaderNodeVolumeInfo"] = [](Compiler& c, int n) {
+        for (const char* grid : {"Color", "Density", "Flame", "Temperature"}) {
+            std::string name = grid;
+            name[0] = static_cast<char>(name[0] - 'A' + 'a');
+            const int value = c.fresh(), found = c.fresh();
+            grid_op(c, name, value, found);
+            c.set_out(n, grid, value);
+        }
+    };
     t.values["ShaderNodeNormalMap"] = normal_map;
 }
 

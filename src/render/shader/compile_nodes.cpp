@@ -96,8 +96,11 @@ int attribute_op(Compiler& c, const std::string& name, AttributeSource::Want wan
         Vec3 v;
         double a = 0;
         const AttributePoint& at = sg.attributes;
-        if (!at.source ||
-            !at.source->attribute(q->name, q->want, at.face, at.b1, at.b2, &v, &a)) {
+        if (sg.grids && q->want == AttributeSource::Want::Any &&
+            sg.grids->grid(q->name, sg.P.to_vec3(), &v)) {
+            a = 1;  // a Volume object's grid
+        } else if (!at.source ||
+                   !at.source->attribute(q->name, q->want, at.face, at.b1, at.b2, &v, &a)) {
             v = Vec3();
             a = 0;
         }

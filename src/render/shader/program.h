@@ -66,6 +66,9 @@ struct ClosureNode {
         kSubsurfaceAnisotropy,
         // Volumes (colour, emission and its strength use the slots above).
         kDensity, kAbsorptionColor, kBlackbody, kBlackbodyTint, kTemperature,
+        // Principled Volume's attribute inputs: the grid's value, and 1 where it exists.
+        kDensityGrid, kDensityGridFound, kColorGrid, kColorGridFound, kTemperatureGrid,
+        kTemperatureGridFound,
         kSlots
     };
     int in[kSlots];

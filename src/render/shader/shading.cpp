@@ -1,5 +1,7 @@
 #include "render/shader/shading.h"
 
+#include "render/textures/vdb_grids.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -45,8 +47,11 @@ GraphShading::GraphShading(const scene::Scene& scene, int width, int height,
     if (programs_.empty()) return;
 
     objects_.resize(scene.objects.size());
+    grids_.resize(scene.objects.size());
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const scene::Object& o = scene.objects[i];
+        if (o.volume_file)
+            grids_[i] = std::make_unique<VdbGrids>(o.volume_file->path, o.transform, diag, o.loc);
         ObjectInfo& info = objects_[i];
         to_rows(o.transform.matrix(), info.o2w);
         to_rows(o.transform.inverse_matrix(), info.w2o);
@@ -140,9 +145,17 @@ void GraphShading::object_globals(int object, ShaderGlobals* sg) const {
     }
 }
 
+GraphShading::~GraphShading() = default;
+
+const VdbGrids* GraphShading::grids(int object) const {
+    return object >= 0 && static_cast<size_t>(object) < grids_.size()
+               ? grids_[static_cast<size_t>(object)].get() : nullptr;
+}
+
 ShaderGlobals GraphShading::volume_globals(int object, const Vec3& p, const Vec3& dir) const {
     ShaderGlobals sg;
     sg.P = float3(p);
+    sg.grids = grids(object);
     sg.I = sg.N = sg.Ng = float3(-dir);
     object_globals(object, &sg);
     camera_coords(p, &sg);

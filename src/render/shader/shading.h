@@ -12,6 +12,7 @@
 
 namespace glint::render {
 class TextureCache;
+class VdbGrids;
 }
 
 namespace glint::render::shader {
@@ -31,6 +32,7 @@ public:
     // Compiles every graph of `scene` (materials, world); warnings go to `diag`.
     GraphShading(const scene::Scene& scene, int width, int height, TextureCache* textures,
                  Diagnostics& diag);
+    ~GraphShading();
 
     bool any() const { return !programs_.empty(); }
     // The program of material `m`, null when it has none.
@@ -46,6 +48,8 @@ public:
     // A volume shader's globals at `p` inside `object` (-1: the world's volume), on a ray
     // along the unit `dir` (Cycles' shader_setup_from_volume: N and Ng face back along it).
     ShaderGlobals volume_globals(int object, const Vec3& p, const Vec3& dir) const;
+    // A Volume object's grids (null for other objects).
+    const VdbGrids* grids(int object) const;
 
 private:
     struct ObjectInfo {
@@ -63,6 +67,7 @@ private:
     std::vector<const ShaderProgram*> by_material_;
     const ShaderProgram* world_ = nullptr;
     std::vector<ObjectInfo> objects_;
+    std::vector<std::unique_ptr<VdbGrids>> grids_;  // per object; only Volume objects have any
     // The camera, for Camera Data, the Camera and Window coordinates and bump's footprint.
     Vec3 cam_location_, cam_right_, cam_up_, cam_forward_, cam_direction_;
     double cam_len_right_ = 1, cam_len_up_ = 1;
