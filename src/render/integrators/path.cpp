@@ -59,6 +59,7 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
     // Media: each material's interior media (POV-Ray) or volume shader (Blender) become one
     // medium, the atmosphere's or the world's volume another.
     material_medium_.assign(scene_.materials.size(), -1);
+    material_grid_medium_.assign(scene_.materials.size(), -1);
     for (size_t m = 0; m < scene_.materials.size(); ++m) {
         const auto& media = scene_.materials[m].interior.media;
         const PathMaterial* row = materials_.path(static_cast<int>(m));
@@ -70,6 +71,12 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
             shader::VolumeClosures v;
             volume->evaluate_volume(shader::ShaderGlobals{}, &v);
             media_.emplace_back(PathMedium::from_closures(v));
+            // In a Volume object it reads the grids: marched there (Cycles'
+            // volume_is_homogeneous), the same everywhere else.
+            if (volume->volume_grids()) {
+                material_grid_medium_[m] = static_cast<int>(media_.size());
+                media_.emplace_back(volume, graphs_);
+            }
         } else if (volume) {
             media_.emplace_back(volume, graphs_);
         } else {

@@ -162,6 +162,8 @@ private:
     // Media: one per material whose interior holds any, and the world's.
     std::vector<PathMedium> media_;
     std::vector<int> material_medium_;  // per material: media_ index or -1
+    // Per material: its medium inside Volume objects (grids), where that differs; else -1.
+    std::vector<int> material_grid_medium_;
     std::vector<double> object_size_;   // per object: the mean side of its world bounds
     int world_medium_ = -1;
     bool has_media_ = false;

@@ -44,6 +44,9 @@ void PathIntegrator::MediumStack::cross(const Hit& hit, const Vec3& dir,
         object[count] = hit.object;
         medium[count] = hit.material >= 0 ? pi.material_medium_[static_cast<size_t>(hit.material)]
                                           : -1;
+        if (hit.material >= 0 && pi.material_grid_medium_[static_cast<size_t>(hit.material)] >= 0 &&
+            pi.graphs_->grids(hit.object))
+            medium[count] = pi.material_grid_medium_[static_cast<size_t>(hit.material)];
         // Blender's objects (node-graph materials) hold their volumes whatever encloses them.
         hollow[count] = pi.scene_.objects[static_cast<size_t>(hit.object)].hollow ||
                         (hit.material >= 0 &&

@@ -466,11 +466,11 @@ void ShaderProgram::evaluate_volume(const ShaderGlobals& sg, VolumeClosures* out
     regs.assign(init_.begin(), init_.end());
     load_globals(sg, regs.data());
     run(ops_.data(), ops_.data() + main_end_, regs.data(), sg);
-    walk_volume(volume_root_, Color(1, 1, 1), regs.data(), out);
+    walk_volume(volume_root_, Color(1, 1, 1), regs.data(), sg, out);
 }
 
 void ShaderProgram::walk_volume(int index, const Color& weight, const float3* r,
-                                VolumeClosures* out) const {
+                                const ShaderGlobals& sg, VolumeClosures* out) const {
     // svm_node_closure_volume and svm_node_principled_volume (Cycles 3.4, kernel/svm/
     // closure.h), in the volume shader's context: BSDFs, transparency and holdouts do nothing
     // there.
@@ -479,13 +479,13 @@ void ShaderProgram::walk_volume(int index, const Color& weight, const float3* r,
     switch (n.kind) {
         case ClosureNode::Kind::Mix: {
             const float fac = std::clamp(r[n.fac].x, 0.0f, 1.0f);
-            walk_volume(n.a, weight * (1.0 - fac), r, out);
-            walk_volume(n.b, weight * static_cast<double>(fac), r, out);
+            walk_volume(n.a, weight * (1.0 - fac), r, sg, out);
+            walk_volume(n.b, weight * static_cast<double>(fac), r, sg, out);
             return;
         }
         case ClosureNode::Kind::Add:
-            walk_volume(n.a, weight, r, out);
-            walk_volume(n.b, weight, r, out);
+            walk_volume(n.a, weight, r, sg, out);
+            walk_volume(n.b, weight, r, sg, out);
             return;
         case ClosureNode::Kind::Emission:
             out->emission += weight * to_color(r[n.in[0]]) * static_cast<double>(r[n.in[1]].x);
@@ -505,11 +505,14 @@ void ShaderProgram::walk_volume(int index, const Color& weight, const float3* r,
     const double mix = (weight.r + weight.g + weight.b) / 3;
     double density = mix * std::max(value(S::kDensity, 1), 0.0);
     Color color = colour(S::kColor, Color(0.5, 0.5, 0.5));
-    // Principled Volume's grids (Volume objects), where the object has them.
-    auto grid = [&](int slot) { return n.in[slot] >= 0 && r[n.in[slot + 1]].x != 0; };
-    if (density > kCutoff && grid(S::kDensityGrid))
-        density = std::max(density * static_cast<double>(r[n.in[S::kDensityGrid]].x), 0.0);
-    if (grid(S::kColorGrid)) color = color * to_color(r[n.in[S::kColorGrid]]);
+    // Principled Volume's grids (Volume objects), where the object has them, each looked up
+    // only where Cycles looks it up.
+    Vec3 gv;
+    auto grid = [&](int k) {
+        return n.grids[k] && sg.grids && sg.grids->grid(*n.grids[k], sg.P.to_vec3(), &gv);
+    };
+    if (density > kCutoff && grid(0)) density = std::max(density * gv.x, 0.0);
+    if (density > kCutoff && grid(1)) color = color * Color(gv.x, gv.y, gv.z);
     auto add_lobe = [&](const Color& sigma_s) {
         if (out->count == VolumeClosures::kMax) return;
         double g = value(S::kAnisotropy, 0);
@@ -541,8 +544,7 @@ void ShaderProgram::walk_volume(int index, const Color& weight, const float3* r,
     const double blackbody = value(S::kBlackbody, 0);
     if (blackbody > kCutoff) {
         double t = std::max(value(S::kTemperature, 1000), 0.0);
-        if (grid(S::kTemperatureGrid))
-            t *= std::max(static_cast<double>(r[n.in[S::kTemperatureGrid]].x), 0.0);
+        if (grid(2)) t *= std::max(gv.x, 0.0);
         const double t4 = (t * t) * (t * t);
         const double sigma = 5.670373e-8 * 1e-6 / kPi;  // Stefan-Boltzmann, per steradian
         const double intensity = sigma * (1 + (t4 - 1) * blackbody);

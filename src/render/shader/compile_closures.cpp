@@ -184,25 +184,6 @@ int transparent(Compiler& c, int n) {
 }
 
 // Volume Scatter, Volume Absorption and Principled Volume: read by the volume shader only.
-// A grid of the volume's object by name at P (`value`), and 1 in `found` where the object has
-// it (Cycles' find_attribute: a missing one changes nothing).
-void grid_op(Compiler& c, const std::string& name, int value, int found) {
-    auto q = std::make_shared<std::string>(name);
-    Op op;
-    op.data = q.get();
-    c.program_keep(q);
-    op.out[0] = value;
-    op.out[1] = found;
-    op.fn = [](const Op& o, R r, G sg) {
-        Vec3 v;
-        const bool f = sg.grids &&
-                       sg.grids->grid(*static_cast<const std::string*>(o.data), sg.P.to_vec3(), &v);
-        r[o.out[0]] = f ? float3(v) : float3();
-        r[o.out[1]] = float3(f ? 1.0f : 0.0f, 0, 0);
-    };
-    c.emit(op, false);
-}
-
 int volume(Compiler& c, int n, ClosureNode::VolumeKind kind) {
     using S = ClosureNode;
     ClosureNode v;
@@ -221,16 +202,15 @@ int volume(Compiler& c, int n, ClosureNode::VolumeKind kind) {
         v.in[S::kBlackbodyTint] = c.in(n, "Blackbody Tint", 'c', float3(1));
         v.in[S::kTemperature] = c.in(n, "Temperature", 'f', float3(1000));
         // The grids its attribute inputs name (Volume objects), multiplied in where they exist.
-        const std::pair<const char*, int> attrs[] = {{"Density Attribute", S::kDensityGrid},
-                                                     {"Color Attribute", S::kColorGrid},
-                                                     {"Temperature Attribute", S::kTemperatureGrid}};
-        for (const auto& [id, slot] : attrs) {
-            const scene::ShaderInput* in = c.node(n).input(id);
+        const char* attrs[] = {"Density Attribute", "Color Attribute", "Temperature Attribute"};
+        for (int k = 0; k < 3; ++k) {
+            const scene::ShaderInput* in = c.node(n).input(attrs[k]);
             if (!in || in->text.empty()) continue;
-            if (in->link.linked()) c.unsupported(n, std::string(id) + " linked: its own value");
-            v.in[slot] = c.fresh();
-            v.in[slot + 1] = c.fresh();
-            grid_op(c, in->text, v.in[slot], v.in[slot + 1]);
+            if (in->link.linked()) c.unsupported(n, std::string(attrs[k]) + " linked: its own value");
+            auto name = std::make_shared<std::string>(in->text);
+            v.grids[k] = name.get();
+            c.program_keep(name);
+            c.reads_volume_grids();
         }
     }
     return c.add_closure(v);
@@ -333,6 +313,25 @@ int bump_normal(Compiler& c, int height, int normal, int strength, int distance,
 }
 
 namespace {
+
+// A grid of the volume's object by name at P (`value`), and 1 in `found` where the object has
+// it (Cycles' find_attribute: a missing one changes nothing).
+void grid_op(Compiler& c, const std::string& name, int value, int found) {
+    auto q = std::make_shared<std::string>(name);
+    Op op;
+    op.data = q.get();
+    c.program_keep(q);
+    op.out[0] = value;
+    op.out[1] = found;
+    op.fn = [](const Op& o, R r, G sg) {
+        Vec3 v;
+        const bool f = sg.grids &&
+                       sg.grids->grid(*static_cast<const std::string*>(o.data), sg.P.to_vec3(), &v);
+        r[o.out[0]] = f ? float3(v) : float3();
+        r[o.out[1]] = float3(f ? 1.0f : 0.0f, 0, 0);
+    };
+    c.emit(op, false);
+}
 
 // Cycles 3.4's Normal Map (svm_node_normal_map). Tangent space works in object space: the
 // MikkTSpace tangent and bitangent sign Blender computed for the node's UV map (the mesh's

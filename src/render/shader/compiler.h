@@ -69,6 +69,8 @@ public:
     // Keeps a table (ramps, curves) for the program's lifetime; ops point into it.
     const float* keep(const std::vector<float>& table);
     void program_keep(std::shared_ptr<const void> data) { program_.keep_.push_back(std::move(data)); }
+    // The volume shader reads its object's grids (ShaderProgram::volume_grids).
+    void reads_volume_grids() { program_.volume_grids_ = true; }
 
     // Node settings.
     std::string enum_prop(int node, const char* key, const std::string& fallback) const;

@@ -66,15 +66,15 @@ struct ClosureNode {
         kSubsurfaceAnisotropy,
         // Volumes (colour, emission and its strength use the slots above).
         kDensity, kAbsorptionColor, kBlackbody, kBlackbodyTint, kTemperature,
-        // Principled Volume's attribute inputs: the grid's value, and 1 where it exists.
-        kDensityGrid, kDensityGridFound, kColorGrid, kColorGridFound, kTemperatureGrid,
-        kTemperatureGridFound,
         kSlots
     };
     int in[kSlots];
     Distribution distribution = Distribution::GGX;
     bool glossy = false;  // Toon's glossy component
     SubsurfaceMethod subsurface = SubsurfaceMethod::RandomWalk;
+    // Principled Volume's Density, Color and Temperature Attributes: the grids it reads where
+    // the volume's object has them (null: none), looked up only when needed, as in Cycles.
+    const std::string* grids[3] = {nullptr, nullptr, nullptr};
     ClosureNode() { std::fill(std::begin(in), std::end(in), -1); }
 };
 
@@ -98,6 +98,9 @@ public:
     // the same everywhere, and its closures at `sg` (the program's values run first).
     bool has_volume() const { return volume_root_ >= 0; }
     bool volume_constant() const { return !volume_varying_; }
+    // Whether the volume shader reads its object's grids (then it varies in space inside a
+    // Volume object, whatever volume_constant() says for other objects).
+    bool volume_grids() const { return volume_grids_; }
     void evaluate_volume(const ShaderGlobals& sg, VolumeClosures* out) const;
     const std::string& name() const { return name_; }
     // Re-runs the first `end` operations on `regs` for the shading point `sg` (Bump's height at
@@ -110,7 +113,7 @@ private:
     friend class Compiler;
     void run(const Op* begin, const Op* end, float3* regs, const ShaderGlobals& sg) const;
     void walk(int node, const Color& weight, const float3* regs, ClosureList* out) const;
-    void walk_volume(int node, const Color& weight, const float3* regs,
+    void walk_volume(int node, const Color& weight, const float3* regs, const ShaderGlobals& sg,
                      VolumeClosures* out) const;
 
     std::string name_;
@@ -124,6 +127,7 @@ private:
     int root_ = -1;
     int volume_root_ = -1;
     bool volume_varying_ = false;
+    bool volume_grids_ = false;
     int varying_ops_ = 0;
     bool closure_varying_ = false;
 };

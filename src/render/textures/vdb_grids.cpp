@@ -159,6 +159,22 @@ bool VdbGrids::grid(std::string_view name, const Vec3& p, Vec3* value) const {
             const int y = static_cast<int>(std::clamp(fy, -2e9, 2e9));
             const int z = static_cast<int>(std::clamp(fz, -2e9, 2e9));
             const double tx = q[0] - fx, ty = q[1] - fy, tz = q[2] - fz;
+            const int ix = x - g.lo[0], iy = y - g.lo[1], iz = z - g.lo[2];
+            if (g.channels == 1 && ix >= 0 && iy >= 0 && iz >= 0 && ix + 1 < g.dim[0] &&
+                iy + 1 < g.dim[1] && iz + 1 < g.dim[2]) {
+                // All eight inside the dense copy (most lookups): straight from the array.
+                const size_t sy = static_cast<size_t>(g.dim[2]);
+                const size_t sx = sy * static_cast<size_t>(g.dim[1]);
+                const float* c = g.dense.data() + static_cast<size_t>(ix) * sx +
+                                 static_cast<size_t>(iy) * sy + static_cast<size_t>(iz);
+                auto lerp = [](double a, double b, double t) { return a + (b - a) * t; };
+                const double v = lerp(lerp(lerp(c[0], c[1], tz), lerp(c[sy], c[sy + 1], tz), ty),
+                                      lerp(lerp(c[sx], c[sx + 1], tz),
+                                           lerp(c[sx + sy], c[sx + sy + 1], tz), ty),
+                                      tx);
+                *value = Vec3(v, v, v);
+                return true;
+            }
             double acc[3] = {0, 0, 0};
             for (int corner = 0; corner < 8; ++corner) {
                 const int dx = corner >> 2, dy = (corner >> 1) & 1, dz = corner & 1;
