@@ -104,7 +104,7 @@ struct ReportArgs {
     std::string peer_steps;  // empty: spp_steps
     std::string peer_name = "peer";
     bool verbose = false;
-    bool given_width = false, given_height = false;
+    bool given_width = false, given_height = false, given_max_depth = false;
 };
 
 // `glint convert IN.exr -o OUT.png [--view ...]` (convert_command.cpp).

@@ -587,31 +587,14 @@ int render_frame(const RenderArgs& args) {
     scene::Scene scene = load_scene(args.scene, args.verbose);
     if (scene.blender_render) {
         // A Blender scene carries its render settings; the flags given win over them.
-        const scene::BlenderRender& b = *scene.blender_render;
-        if (!args.given.width) options.width = b.width;
-        if (!args.given.height) options.height = b.height;
-        if (!args.given.integrator) options.integrator = render::IntegratorKind::Path;
-        if (!args.given.spp) options.spp = b.samples;
-        if (!args.given.seed) options.seed = static_cast<uint32_t>(b.seed);
-        if (!args.given.max_depth) options.max_depth = b.max_bounces + 1;
-        options.pixel_filter = b.pixel_filter == "BOX"        ? render::PixelFilterKind::Box
-                               : b.pixel_filter == "GAUSSIAN" ? render::PixelFilterKind::Gaussian
-                                                              : render::PixelFilterKind::BlackmanHarris;
-        options.filter_width = b.filter_width;
-        options.clamp_direct = b.clamp_direct;
-        options.clamp_indirect = b.clamp_indirect;
-        options.filter_glossy = b.filter_glossy;
-        // Cycles' limits per kind stay whatever --max-depth says of the total (the add-on
-        // passes its own total), as Cycles' own panel keeps them apart.
-        options.diffuse_bounces = b.diffuse_bounces;
-        options.glossy_bounces = b.glossy_bounces;
-        options.transmission_bounces = b.transmission_bounces;
-        options.transparent_bounces = b.transparent_bounces;
-        options.volume_bounces = b.volume_bounces;
-        options.film_transparent = b.film_transparent;
-        options.film_transparent_glass = b.film_transparent_glass;
-        options.volume_step_rate = b.volume_step_rate;
-        options.volume_max_steps = b.volume_max_steps;
+        GivenSettings given;
+        given.width = args.given.width;
+        given.height = args.given.height;
+        given.integrator = args.given.integrator;
+        given.spp = args.given.spp;
+        given.seed = args.given.seed;
+        given.max_depth = args.given.max_depth;
+        apply_blender_render(*scene.blender_render, given, &options);
     }
     double parse_seconds = seconds_since(start);
     if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");

@@ -240,6 +240,7 @@ CLI::App* add_report_command(CLI::App& app, ReportArgs& args) {
     cmd->parse_complete_callback([cmd, &args] {
         args.given_width = cmd->count("--width") > 0;
         args.given_height = cmd->count("--height") > 0;
+        args.given_max_depth = cmd->count("--max-depth") > 0;
     });
     return cmd;
 }
@@ -298,6 +299,12 @@ int run_report(const ReportArgs& args) {
             options.spp = spp;
             options.max_depth = args.max_depth;
             options.seed = args.seed + static_cast<unsigned>(k);
+            // A Blender scene renders with its own settings (filter, bounce limits, volume
+            // steps), as `glint render` renders it; the report's own flags win.
+            if (scene.blender_render) {
+                GivenSettings given{true, true, true, true, true, args.given_max_depth};
+                apply_blender_render(*scene.blender_render, given, &options);
+            }
             options.cancel = &cancel_flag();
             Clock::time_point t = Clock::now();
             render::RenderResult result = render::render(scene, options, diag);

@@ -178,4 +178,32 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose) {
     return scene;
 }
 
+void apply_blender_render(const scene::BlenderRender& b, const GivenSettings& given,
+                          render::RenderOptions* options) {
+    if (!given.width) options->width = b.width;
+    if (!given.height) options->height = b.height;
+    if (!given.integrator) options->integrator = render::IntegratorKind::Path;
+    if (!given.spp) options->spp = b.samples;
+    if (!given.seed) options->seed = static_cast<uint32_t>(b.seed);
+    if (!given.max_depth) options->max_depth = b.max_bounces + 1;
+    options->pixel_filter = b.pixel_filter == "BOX"        ? render::PixelFilterKind::Box
+                            : b.pixel_filter == "GAUSSIAN" ? render::PixelFilterKind::Gaussian
+                                                           : render::PixelFilterKind::BlackmanHarris;
+    options->filter_width = b.filter_width;
+    options->clamp_direct = b.clamp_direct;
+    options->clamp_indirect = b.clamp_indirect;
+    options->filter_glossy = b.filter_glossy;
+    // Cycles' limits per kind stay whatever --max-depth says of the total (the add-on
+    // passes its own total), as Cycles' own panel keeps them apart.
+    options->diffuse_bounces = b.diffuse_bounces;
+    options->glossy_bounces = b.glossy_bounces;
+    options->transmission_bounces = b.transmission_bounces;
+    options->transparent_bounces = b.transparent_bounces;
+    options->volume_bounces = b.volume_bounces;
+    options->film_transparent = b.film_transparent;
+    options->film_transparent_glass = b.film_transparent_glass;
+    options->volume_step_rate = b.volume_step_rate;
+    options->volume_max_steps = b.volume_max_steps;
+}
+
 }  // namespace glint::app

@@ -12,6 +12,9 @@
 namespace CLI {
 class App;
 }
+namespace glint::render {
+struct RenderOptions;
+}
 
 namespace glint::app {
 
@@ -53,5 +56,16 @@ void add_scene_options(CLI::App& cmd, SceneRequest& request, bool scene_required
 // Throws glint::Error. Warnings go to stderr as `file:line:col: warning: ...` as they come;
 // informational messages only when `verbose`.
 scene::Scene load_scene(const SceneRequest& request, bool verbose);
+
+// What the command line gave of the settings a Blender scene carries too.
+struct GivenSettings {
+    bool width = false, height = false, integrator = false, spp = false, seed = false,
+         max_depth = false;
+};
+// A Blender scene's render settings (its Cycles panel: filter, clamping, bounce limits,
+// transparent film, volume steps) into `options`; the given ones stay as they are. `render`
+// and `report` both read a Blender scene through this, so that they render the same image.
+void apply_blender_render(const scene::BlenderRender& b, const GivenSettings& given,
+                          render::RenderOptions* options);
 
 }  // namespace glint::app
