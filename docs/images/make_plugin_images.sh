@@ -39,5 +39,5 @@ picture plugin_scenes.png cornell:0001:cornell principled:0001:principled \
     textured:0001:textured lamps:0001:lamps anim:0002:anim_f2
 # The volumes (issue 31): docs/blender.md and README.md.
 picture volumes.png volume:0001:volume volume_noise:0001:volume_noise \
-    volume_world:0001:volume_world
+    volume_world:0001:volume_world vdb_volume:0001:vdb_volume
 picture subsurface.png subsurface:0001:subsurface
