@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <random>
 
 #include "core/log.h"
@@ -26,33 +27,44 @@ struct Walks {
     double exit_distance = 0;  // mean distance from the entry to the exit
 };
 
-// `n` walks into the top face (z = 0) of the scene's first object from the origin.
-Walks walk(const std::string& pov, const Bssrdf& b, int n, uint64_t seed = 1) {
-    scene::Scene s = pov::testing::parse(pov);
-    Diagnostics diag;
-    render::RenderOptions opts;
-    opts.integrator = render::IntegratorKind::Path;
-    auto prepared = render::prepare(s, opts, diag);
+// Walks into the top face (z = 0) of a parsed scene's first object, from the origin.
+struct Walker {
+    std::unique_ptr<render::PreparedScene> prepared;
     Hit entry;
-    entry.p = Vec3(0, 0, 0);
-    entry.p_error = Vec3(1e-12, 1e-12, 1e-12);
-    entry.ng = entry.n = Vec3(0, 0, 1);
-    entry.object = 0;
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> u(0, 1);
-    const std::function<double()> random = [&] { return u(rng); };
+    std::mt19937_64 rng;
+    std::uniform_real_distribution<double> u{0, 1};
+    uint64_t rays = 0;
+
+    Walker(const std::string& pov, uint64_t seed) : rng(seed) {
+        scene::Scene s = pov::testing::parse(pov);
+        Diagnostics diag;
+        render::RenderOptions opts;
+        opts.integrator = render::IntegratorKind::Path;
+        prepared = render::prepare(s, opts, diag);
+        entry.p_error = Vec3(1e-12, 1e-12, 1e-12);
+        entry.ng = entry.n = Vec3(0, 0, 1);
+        entry.object = 0;
+    }
+    // One walk, its throughput starting at the albedo (which the walk divides out again).
+    bool next(const Bssrdf& b, Color* beta, Hit* exit, Vec3* dir) {
+        *beta = b.albedo;
+        const std::function<double()> random = [this] { return u(rng); };
+        return render::subsurface_walk(*prepared->geometry, b, entry, Vec3(0, 0, 1), random,
+                                       beta, exit, dir, &rays);
+    }
+};
+
+// `n` walks: the mean throughput where they leave (0 for lost ones) and how far they go.
+Walks walk(const std::string& pov, const Bssrdf& b, int n, uint64_t seed = 1) {
+    Walker walker(pov, seed);
     Color sum, sum2;
     double dist = 0;
-    uint64_t rays = 0;
     for (int i = 0; i < n; ++i) {
-        Color beta = b.albedo;  // the weight the walk divides out again
+        Color beta;
         Hit exit;
         Vec3 dir;
-        if (!render::subsurface_walk(*prepared->geometry, b, entry, Vec3(0, 0, 1), random,
-                                     &beta, &exit, &dir, &rays))
-            beta = Color();
-        else
-            dist += length(exit.p - entry.p);
+        if (!walker.next(b, &beta, &exit, &dir)) beta = Color();
+        else dist += length(exit.p - walker.entry.p);
         sum += beta;
         sum2 += beta * beta;
     }
@@ -164,27 +176,13 @@ TEST(Subsurface, WalkSeesOnlyItsObject) {
         "box { <-100, -100, -0.05> <100, 100, 0> }\n"
         "box { <-100, -100, -0.03> <100, 100, -0.02> }";  // inside the slab, another object
     const Bssrdf b = bssrdf(Color(0.9, 0.9, 0.9), Color(0.2, 0.2, 0.2), 0);
-    scene::Scene s = pov::testing::parse(slab);
-    Diagnostics diag;
-    render::RenderOptions opts;
-    opts.integrator = render::IntegratorKind::Path;
-    auto prepared = render::prepare(s, opts, diag);
-    Hit entry;
-    entry.p_error = Vec3(1e-12, 1e-12, 1e-12);
-    entry.ng = entry.n = Vec3(0, 0, 1);
-    entry.object = 0;
-    std::mt19937_64 rng(3);
-    std::uniform_real_distribution<double> u(0, 1);
-    const std::function<double()> random = [&] { return u(rng); };
+    Walker walker(slab, 3);
     int through = 0, back = 0;
-    uint64_t rays = 0;
     for (int i = 0; i < 2000; ++i) {
-        Color beta = b.albedo;
+        Color beta;
         Hit exit;
         Vec3 dir;
-        if (!render::subsurface_walk(*prepared->geometry, b, entry, Vec3(0, 0, 1), random,
-                                     &beta, &exit, &dir, &rays))
-            continue;
+        if (!walker.next(b, &beta, &exit, &dir)) continue;
         EXPECT_EQ(exit.object, 0);
         if (exit.p.z < -0.04) {
             ++through;
