@@ -107,8 +107,11 @@ bool ClosureSet::sample(double u1, double u2, ClosureSample* out) const {
     // The closure by its share; u1 rescaled within it keeps the sampler's stratification.
     // The BSSRDFs come after the BSDFs.
     double u = u1 * total_;
-    double bsdf_total = 0;
-    for (int i = 0; i < count_; ++i) bsdf_total += items_[i].share;
+    double bsdf_total = total_;
+    if (bssrdf_count_ > 0) {  // (only then: BSDF samples are the hot path)
+        bsdf_total = 0;
+        for (int i = 0; i < count_; ++i) bsdf_total += items_[i].share;
+    }
     if (bssrdf_count_ > 0 && (u >= bsdf_total || count_ == 0)) {
         u -= bsdf_total;
         int b = 0;
