@@ -65,6 +65,10 @@ public:
                             std::to_string(im.interpolate) + " filter_all " + num(im.filter_all) +
                             " transmit_all " + num(im.transmit_all) +
                             (im.gamma != 0 ? " gamma " + num(im.gamma) : "") + tail(p));
+                for (const ImageMap::PaletteEdit& e : im.palette_edits)
+                    if (e.index >= 0)
+                        line(d + 1, std::string(e.filter ? "filter " : "transmit ") +
+                                        std::to_string(e.index) + ", " + num(e.value));
                 break;
             }
             default:

@@ -150,16 +150,24 @@ void Parser::parse_image_map_body(scene::ImageMap& im, double* bump_size) {
             im.interpolate = to_int(parse_float());
         } else if (k.is("filter") || k.is("transmit")) {
             bool filter = k.text == "filter";
+            scene::ImageMap::PaletteEdit edit;
+            edit.filter = filter;
+            edit.loc = loc();
             if (!accept("all")) {
-                // filter/transmit N, V for one palette index: read and left out.
-                warn_unsupported(*this, "per-palette-index filter/transmit in image_map",
-                                 loc(), "ignored");
-                parse_float();
+                // filter/transmit N, V: entry N of the image's palette. Whether the image has
+                // a palette (and N entries) is checked where the image is read.
+                double n = parse_float();
+                if (n + 0.01 < 0)
+                    fail(std::string(filter ? "filter" : "transmit") +
+                         " colour register value out of range");
+                edit.index = static_cast<int>(n + 0.01);
                 skip_comma();
-                parse_float();
-                continue;
+                edit.value = parse_float();
+            } else {
+                edit.value = parse_float();
+                (filter ? im.filter_all : im.transmit_all) = edit.value;
             }
-            (filter ? im.filter_all : im.transmit_all) = parse_float();
+            im.palette_edits.push_back(edit);
         } else if (k.is("gamma")) {
             if (accept("srgb")) {
                 im.gamma = -1;  // -1 = the sRGB transfer function

@@ -105,6 +105,16 @@ struct ImageMap {
     int interpolate = 0;        // 0 none, 2 bilinear, 4 normalized distance
     double filter_all = 0;
     double transmit_all = 0;
+    // `filter N, V` / `transmit N, V` (index N) and `filter all` / `transmit all` (index -1),
+    // in the order written: on a palette image they set the entries' values, later edits
+    // winning (filter_all/transmit_all, added to every texel, are for other images).
+    struct PaletteEdit {
+        int index = -1;
+        bool filter = true;  // or transmit
+        double value = 0;
+        FileLoc loc;
+    };
+    std::vector<PaletteEdit> palette_edits;
     // `gamma G` on the image; 0 = POV-Ray's default for the file type and #version.
     double gamma = 0;
     bool premultiplied = false;

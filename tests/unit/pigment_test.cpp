@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
+#include <png.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 
+#include "core/error.h"
 #include "render/materials/opacity.h"
 #include "render/textures/pigment.h"
 
@@ -238,6 +240,70 @@ TEST_F(ImageMapTest, OpacityFollowsAlphaOnceAndFilter) {
     EXPECT_TRUE(render::pigment_can_be_transparent(filtered, &cache));
     EXPECT_TRUE(render::pigment_can_be_transparent(transmitted, &cache));
     std::remove(rgb.c_str());
+}
+
+// Writes a 2 x 1 palette PNG at `path`: pixel 0 uses entry 2, pixel 1 entry 0; the palette
+// has three entries, the first and last of the same colour.
+void write_palette_png(const std::string& path) {
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    ASSERT_TRUE(f);
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png_create_info_struct(png);
+    png_init_io(png, f);
+    png_set_IHDR(png, info, 2, 1, 8, PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_color palette[3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}};
+    png_set_PLTE(png, info, palette, 3);
+    png_write_info(png, info);
+    png_byte row[2] = {2, 0};
+    png_write_row(png, row);
+    png_write_end(png, nullptr);
+    png_destroy_write_struct(&png, &info);
+    std::fclose(f);
+}
+
+// filter N, V and transmit N, V set one palette entry, and on a palette image filter all /
+// transmit all set every entry, in the order written (POV-Ray's Parse_Image_Map).
+TEST_F(ImageMapTest, PaletteEntriesTakeFilterAndTransmitInOrder) {
+    write_palette_png(path_);
+    Pigment p = image_pigment();
+    using Edit = scene::ImageMap::PaletteEdit;
+    p.params.image.palette_edits = {Edit{2, false, 0.7, {}}, Edit{-1, true, 0.3, {}},
+                                    Edit{0, true, 0.9, {}}, Edit{-1, false, 0.25, {}},
+                                    Edit{2, false, 0.6, {}}};
+    p.params.image.filter_all = 0.3;
+    p.params.image.transmit_all = 0.25;
+    scene::Scene s;
+    s.materials.resize(1);
+    s.materials[0].texture.pigment = p;
+    TextureCache cache(image_gamma(s));
+    cache.preload(s);
+    PigmentEvaluator e(&cache);
+    ColorFT left = eval(e, p, Vec3(0.25, 0.5, 0)), right = eval(e, p, Vec3(0.75, 0.5, 0));
+    EXPECT_EQ(left.rgb, Color(0, 0, 1));  // entry 2
+    EXPECT_DOUBLE_EQ(left.filter, 0.3);
+    EXPECT_DOUBLE_EQ(left.transmit, 0.6);
+    EXPECT_EQ(right.rgb, Color(1, 0, 0));  // entry 0
+    EXPECT_DOUBLE_EQ(right.filter, 0.9);
+    EXPECT_DOUBLE_EQ(right.transmit, 0.25);
+    EXPECT_TRUE(render::pigment_can_be_transparent(p, &cache));
+
+    // Entry 3 does not exist; an RGB image has no entries at all.
+    Pigment past = p;
+    past.params.image.palette_edits = {Edit{3, true, 0.5, {}}};
+    s.materials[0].texture.pigment = past;
+    TextureCache cache2(image_gamma(s));
+    EXPECT_THROW(cache2.preload(s), Error);
+}
+
+TEST_F(ImageMapTest, PaletteEditsNeedAPaletteImage) {
+    Pigment p = image_pigment();  // the fixture's RGBA image
+    p.params.image.palette_edits = {scene::ImageMap::PaletteEdit{0, false, 0.5, {}}};
+    scene::Scene s;
+    s.materials.resize(1);
+    s.materials[0].texture.pigment = p;
+    TextureCache cache(image_gamma(s));
+    EXPECT_THROW(cache.preload(s), Error);
 }
 
 TEST_F(ImageMapTest, GammaDecodingFollowsTheSceneVersion) {

@@ -9,7 +9,9 @@ bool pigment_can_be_transparent(const scene::Pigment& p, const TextureCache* tex
     if (p.kind == scene::PatternKind::ImageMap) {
         const scene::ImageMap& im = p.params.image;
         // `once`: clear beyond the image.
-        if (im.once || im.filter_all != 0 || im.transmit_all != 0 || !textures) return true;
+        if (im.once || im.filter_all != 0 || im.transmit_all != 0 || !im.palette_edits.empty() ||
+            !textures)
+            return true;
         const ImageTexture* image = textures->find(im);
         return !image || image->has_alpha();
     }

@@ -7,14 +7,12 @@
 // y in 1/65536 units) inside the box between water_level and the highest point.
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
-#include <iterator>
 #include <vector>
 
 #include "core/error.h"
+#include "image/palette.h"
 #include "image/png_reader.h"
 #include "image/image_limits.h"
 #include "core/quiet_stderr.h"
@@ -241,37 +239,6 @@ private:
     double ylo_, yhi_, sx_, sz_;
 };
 
-// The colour table of a palette image (PNG colour type 3, GIF's global table); empty for
-// other files. POV-Ray takes a palette image's heights from the indices (256 * index).
-std::vector<std::array<uint8_t, 3>> read_palette(const std::string& path) {
-    std::vector<std::array<uint8_t, 3>> table;
-    std::ifstream f(path, std::ios::binary);
-    std::vector<unsigned char> d((std::istreambuf_iterator<char>(f)),
-                                 std::istreambuf_iterator<char>());
-    auto be32 = [&](size_t i) {
-        return uint32_t(d[i]) << 24 | uint32_t(d[i + 1]) << 16 | uint32_t(d[i + 2]) << 8 | d[i + 3];
-    };
-    static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
-    if (d.size() > 33 && std::equal(kPng, kPng + 8, d.begin())) {
-        if (d[25] != 3) return table;  // IHDR colour type: not a palette image
-        for (size_t i = 8; i + 8 <= d.size();) {
-            size_t len = be32(i);
-            if (i + 12 + len > d.size()) break;
-            if (std::equal(d.begin() + i + 4, d.begin() + i + 8, "PLTE")) {
-                for (size_t k = 0; k + 3 <= len; k += 3)
-                    table.push_back({d[i + 8 + k], d[i + 9 + k], d[i + 10 + k]});
-                break;
-            }
-            i += 12 + len;
-        }
-    } else if (d.size() > 13 && d[0] == 'G' && d[1] == 'I' && d[2] == 'F' && (d[10] & 0x80)) {
-        size_t n = size_t(2) << (d[10] & 7);
-        for (size_t k = 0; k < n && 13 + 3 * k + 3 <= d.size(); ++k)
-            table.push_back({d[13 + 3 * k], d[14 + 3 * k], d[15 + 3 * k]});
-    }
-    return table;
-}
-
 }  // namespace
 
 std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const FileLoc& loc,
@@ -299,7 +266,7 @@ std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const 
     const bool png_format = spec.format == "png";
     const bool high_depth = spec.type != PixelType::UInt8;
     in.reset();
-    const std::vector<std::array<uint8_t, 3>> palette_colors = read_palette(path);
+    const std::vector<PaletteColor> palette_colors = read_palette(path);
     const bool palette = !palette_colors.empty();
     const bool png_grey8 = png_format && !high_depth && !palette;
     const int colors = nc >= 3 ? 3 : 1;
@@ -310,14 +277,8 @@ std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const 
             const float* px = row + static_cast<size_t>(x) * nc;
             double v;
             if (palette) {
-                // The reader expands indices to colours; the first palette entry with the
-                // pixel's colour gives the index back.
-                std::array<uint8_t, 3> c{};
-                for (int k = 0; k < 3; ++k)
-                    c[k] = static_cast<uint8_t>(std::round(px[std::min(k, nc - 1)] * 255.0));
-                size_t index = 0;
-                while (index < palette_colors.size() && palette_colors[index] != c) ++index;
-                if (index == palette_colors.size()) index = c[0];
+                // The reader expands indices to colours: palette_index() finds them back.
+                const int index = palette_index(palette_colors, px, nc);
                 v = static_cast<double>(index) * 256.0;
             } else if (colors == 1 && png_grey8) {
                 // POV-Ray reads 8-bit grey PNGs through a grey colour table and stores each

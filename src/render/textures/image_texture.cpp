@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "image/palette.h"
 #include "image/png_reader.h"
 #include "image/image_limits.h"
 #include "core/quiet_stderr.h"
@@ -88,6 +89,7 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const scene::ImageMap& ma
     float file_gamma = spec.gamma;
     const bool tabulate = spec.type == PixelType::UInt8;
     in.reset();
+    const std::vector<PaletteColor> palette = read_palette(path);
 
     // Transfer function from file values to the working space (POV-Ray 3.7 parstxtr.cpp,
     // Parse_Image: defaultGamma / workingGamma per gamma mode; `gamma G` overrides).
@@ -149,6 +151,12 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const scene::ImageMap& ma
         d[3] = 0;  // filter
         d[4] = alpha_channel >= 0 ? 1.0f - s[alpha_channel] : 0.0f;  // transmit
     }
+    if (!palette.empty()) {
+        tex->palette_size_ = static_cast<int>(palette.size());
+        tex->indices_.resize(static_cast<size_t>(w) * h);
+        for (size_t i = 0; i < tex->indices_.size(); ++i)
+            tex->indices_[i] = static_cast<uint8_t>(palette_index(palette, &raw[i * nc], nc));
+    }
     return tex;
 }
 
@@ -158,8 +166,25 @@ TextureCache::KeyView TextureCache::key(const scene::ImageMap& map) {
 
 void TextureCache::add(const scene::ImageMap& map) {
     KeyView k = key(map);
-    if (images_.find(k) != images_.end()) return;
-    images_.emplace(Key{std::string(k.path), k.gamma}, ImageTexture::load(map, gamma_));
+    auto it = images_.find(k);
+    if (it == images_.end())
+        it = images_.emplace(Key{std::string(k.path), k.gamma}, ImageTexture::load(map, gamma_))
+                 .first;
+    // POV-Ray's parser reads the image and stops on these; glint reads images here.
+    const ImageTexture& image = *it->second;
+    for (const scene::ImageMap::PaletteEdit& e : map.palette_edits) {
+        if (e.index < 0) continue;
+        const char* what = e.filter ? "filter" : "transmit";
+        if (!image.indexed())
+            throw Error(ErrorKind::Scene, e.loc,
+                        std::string(what) + " N, V sets a palette entry, and image '" +
+                            map.file + "' has no palette (use '" + what + " all')");
+        if (e.index >= image.palette_size())
+            throw Error(ErrorKind::Scene, e.loc,
+                        std::string(what) + " colour register " + std::to_string(e.index) +
+                            " is out of range: image '" + map.file + "' has " +
+                            std::to_string(image.palette_size()) + " palette entries");
+    }
 }
 
 void TextureCache::preload(const scene::Scene& scene) {

@@ -45,6 +45,10 @@ public:
     // Whether the file holds 8-bit values in the sRGB encoding (8 bits a channel and no gamma
     // of its own), whatever this texture decoded them to.
     bool srgb8() const { return srgb8_; }
+    // Palette images: the entries' count, and texel (x, y)'s index.
+    bool indexed() const { return palette_size_ > 0; }
+    int palette_size() const { return palette_size_; }
+    int index(int x, int y) const { return indices_[static_cast<size_t>(y) * width_ + x]; }
 
     // Throws Error(MissingFile) if the file cannot be read.
     static std::shared_ptr<const ImageTexture> load(const scene::ImageMap& map,
@@ -55,7 +59,9 @@ private:
     int height_ = 0;
     bool has_alpha_ = false;
     bool srgb8_ = false;
+    int palette_size_ = 0;
     std::vector<float> data_;
+    std::vector<uint8_t> indices_;  // palette images only
 };
 
 // All images of one render, keyed by resolved path and gamma override; filled at prepare time

@@ -242,7 +242,14 @@ ColorFT image_map_sample(const scene::ImageMap& im, const ImageTexture& image, d
             iy = static_cast<int>(wrap(y, ih));
         }
         const float* t = tex->texel(ix, iy);
-        return ColorFT(Color(t[0], t[1], t[2]), t[3] + im.filter_all, t[4] + im.transmit_all);
+        if (im.palette_edits.empty() || !tex->indexed())
+            return ColorFT(Color(t[0], t[1], t[2]), t[3] + im.filter_all, t[4] + im.transmit_all);
+        // A palette image keeps filter and transmit per entry: the edits set them.
+        double filter = t[3], transmit = t[4];
+        const int index = tex->index(ix, iy);
+        for (const scene::ImageMap::PaletteEdit& e : im.palette_edits)
+            if (e.index < 0 || e.index == index) (e.filter ? filter : transmit) = e.value;
+        return ColorFT(Color(t[0], t[1], t[2]), filter, transmit);
     };
     switch (im.interpolate) {
         case 2:
