@@ -656,7 +656,7 @@ BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "msglass": build_msglass, "film_glass": more.build_film_glass,
             "volume": more.build_volume, "volume_noise": more.build_volume_noise,
             "volume_world": more.build_volume_world, "subsurface": more.build_subsurface,
-            "vdb_volume": more.build_vdb_volume}
+            "vdb_volume": more.build_vdb_volume, "smoke": more.build_smoke}
 
 
 def build(name, out_dir):

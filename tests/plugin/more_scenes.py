@@ -356,7 +356,8 @@ def write_smoke_vdb(path):
 def build_vdb_volume(out_dir):
     """(issue 31) Volume objects as Cycles 3.4 renders them: one OpenVDB file (smoke.vdb,
     written by write_smoke_vdb) imported twice, once without a material (Cycles' default
-    volume: Principled Volume reading 'density'), once rotated and scaled with a Principled
+    volume: Principled Volume reading 'density'), once rotated and scaled to 0.75 (Cycles
+    scales the density of a Volume in object space by 1/0.75) with a Principled
     Volume of its own (colour, density 4, blackbody from the 'temperature' grid), over a floor
     under a sun and a dim world; one volume bounce, step size from the voxels."""
     path = os.path.join(out_dir, "smoke.vdb")
@@ -365,9 +366,10 @@ def build_vdb_volume(out_dir):
     bpy.ops.object.volume_import(filepath=path, location=(-0.9, 0.3, 1.05))
     bpy.context.active_object.name = "puff"
     bpy.ops.object.volume_import(filepath=path, location=(0.9, 0.4, 0.9),
-                                 rotation=(0.3, 0.0, 0.6), scale=(0.9, 0.9, 0.9))
+                                 rotation=(0.3, 0.0, 0.6))
     fire = bpy.context.active_object
     fire.name = "fire"
+    fire.scale = (0.75, 0.75, 0.75)  # (the operator's scale is not applied)
     mat, nt, out = ms.bare_material("fire")
     vol = nt.nodes.new("ShaderNodeVolumePrincipled")
     vol.inputs["Color"].default_value = (0.8, 0.6, 0.4, 1.0)
@@ -382,3 +384,43 @@ def build_vdb_volume(out_dir):
 
 
 AFTER_SETUP["vdb_volume"] = lambda scene: setattr(scene.cycles, "volume_bounces", 1)
+
+
+def build_smoke(out_dir):
+    """(issue 31) A smoke and fire simulation as Cycles 3.4 renders it: Quick Smoke (smoke and
+    fire) on a small cube over a floor, baked into smoke_cache/ beside the .blend from frame
+    -10 so that frame 1 shows eleven frames of it. The domain's own material (Principled
+    Volume: density from 'density', blackbody from 'temperature') and grids (upscaled by the
+    noise, heat kept at the base resolution) are what the add-on reads from the evaluated Fluid
+    modifier; the domain is scaled unevenly and lifted. A sun, a dim world, one volume
+    bounce."""
+    ms.floor(ms.cy.diffuse_material("floor", (0.6, 0.6, 0.6)))
+    bpy.ops.mesh.primitive_cube_add(size=0.5, location=(0.0, 0.4, 0.5))
+    emitter = bpy.context.active_object
+    emitter.name = "burner"
+    emitter.data.materials.append(ms.cy.diffuse_material("burner", (0.2, 0.2, 0.2)))
+    bpy.ops.object.select_all(action="DESELECT")
+    emitter.select_set(True)
+    bpy.context.view_layer.objects.active = emitter
+    bpy.ops.object.quick_smoke(style="BOTH")
+    domain = bpy.context.active_object
+    domain.name = "smoke domain"
+    domain.scale = (1.1, 0.9, 1.6)
+    domain.location = (0.0, 0.4, 1.55)
+    settings = next(m for m in domain.modifiers if m.type == "FLUID").domain_settings
+    settings.resolution_max = 40
+    settings.cache_type = "ALL"
+    settings.cache_directory = os.path.join(out_dir, "smoke_cache")
+    settings.cache_frame_start, settings.cache_frame_end = -10, 1
+    scene = bpy.context.scene
+    scene.frame_start = -10
+    with bpy.context.temp_override(object=domain, active_object=domain):
+        bpy.ops.fluid.bake_all()
+    scene.frame_start = 1
+    sun = ms.add_light("sun", "SUN", (0, 0, 5), energy=3.0, angle=0.05)
+    ms.aim(sun, (-0.3, 0.6, -0.6))
+    ms.cy.add_camera((0.0, -3.0, 1.3), (0.0, 0.4, 0.9), lens_mm=35.0)
+    ms.cy.set_world_color((0.05, 0.06, 0.08))
+
+
+AFTER_SETUP["smoke"] = lambda scene: setattr(scene.cycles, "volume_bounces", 1)

@@ -463,6 +463,50 @@ def test_left_out():
     assert any("volume objects" in w for w in warnings), warnings
 
 
+def test_smoke_domain():
+    """A Quick Smoke domain is a volume object over its texture space with its frame's grids
+    in an OpenVDB file (density at the domain's resolution, heat at the base one); before the
+    simulation has data it is left out with a warning, never drawn as a box of uniform
+    density."""
+    def quick_smoke():
+        reset()
+        cube = bpy.data.objects["Cube"]
+        bpy.context.view_layer.objects.active = cube
+        cube.select_set(True)
+        bpy.ops.object.quick_smoke()
+        return cube, bpy.context.active_object
+
+    reset()  # a gas domain with no flow: its grids are empty
+    domain = bpy.data.objects["Cube"]
+    domain.modifiers.new("Fluid", "FLUID").fluid_type = "DOMAIN"
+    doc, _, warnings, _, _ = export("smoke_empty")
+    assert any("has no smoke at frame 1" in w for w in warnings), warnings
+    assert not any(o["name"] == domain.name for o in doc["objects"]), doc["objects"]
+    cube, domain = quick_smoke()
+    for frame in range(1, 6):  # the replay cache simulates frame by frame
+        bpy.context.scene.frame_set(frame)
+    doc, _, warnings, _, _ = export("smoke")
+    assert not warnings, warnings
+    entry = next(o for o in doc["objects"] if o["name"] == domain.name)
+    assert entry["volume"]["space"] == "WORLD", entry["volume"]
+    path = os.path.join(TMP, "smoke", entry["volume"]["file"])
+    import pyopenvdb
+    grids = {g.name: g for g in pyopenvdb.readAll(path)[0]}
+    ev = domain.evaluated_get(bpy.context.evaluated_depsgraph_get())
+    res = tuple(next(m for m in ev.modifiers if m.type == "FLUID").domain_settings
+                .domain_resolution)
+    assert {"density", "heat", "color"} <= set(grids), sorted(grids)
+    density = grids["density"]
+    assert density.activeVoxelCount() > 0
+    # Voxel (0, 0, 0) starts at the texture space's corner; (res) ends at the far one.
+    lo = [a - b for a, b in zip(domain.data.texspace_location, domain.data.texspace_size)]
+    hi = [a + b for a, b in zip(domain.data.texspace_location, domain.data.texspace_size)]
+    assert all(abs(a - b) < 1e-5 for a, b in zip(density.transform.indexToWorld((0, 0, 0)), lo))
+    assert all(abs(a - b) < 1e-5 for a, b in zip(density.transform.indexToWorld(res), hi))
+    vmin, vmax = density.evalActiveVoxelBoundingBox()
+    assert all(0 <= v < r for v, r in zip(vmin + vmax, res + res)), (vmin, vmax, res)
+
+
 # ----------------------------------------------------------------------------- timing
 
 
@@ -532,7 +576,8 @@ def test_timing_suzannes():
 
 
 TESTS = [test_default_cube, test_muted_and_dangling, test_instances, test_motion_blur,
-         test_camera_and_lights, test_object_kinds, test_left_out]
+         test_camera_and_lights, test_object_kinds, test_left_out,
+         test_smoke_domain]
 TIMING = [test_timing_grid, test_timing_suzannes]
 
 

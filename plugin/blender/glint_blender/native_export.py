@@ -30,7 +30,7 @@ import shlex
 import bpy
 import numpy as np
 
-from . import exporter, images, node_graphs
+from . import exporter, images, node_graphs, smoke
 from .mesh_data import Buffer, add_tangents, mesh_entry, mesh_motion_arrays, tangent_maps
 
 FORMAT_VERSION = 1
@@ -100,6 +100,13 @@ def _matrix(m):
 
 def _original(idb):
     return idb.original if idb is not None and idb.original is not None else idb
+
+
+def _bounds(ob):
+    """The object-space box of an (evaluated) object's geometry: min and max corners."""
+    lo = [min(c[k] for c in ob.bound_box) for k in range(3)]
+    hi = [max(c[k] for c in ob.bound_box) for k in range(3)]
+    return lo, hi
 
 
 def _visibility(ob):
@@ -205,6 +212,7 @@ class _Exporter:
         self.object_info = {}                   # per instanced object: the shared parts
         self.parent_info = {}                   # per parent: visibility, holdout, ...
         self.names = {"object": {}, "material": {}}
+        self.smoke_files = {}  # smoke domain (evaluated object's name) -> its .vdb ("": none)
         vl = depsgraph.view_layer_eval
         self.view_layer = vl
         self.override = vl.material_override
@@ -338,8 +346,37 @@ class _Exporter:
         if any(m.show_render for m in orig.modifiers):
             self.warn("volume object '%s': its modifiers are not applied (the file's grids "
                       "are rendered)" % orig.name)
-        lo = [min(c[k] for c in ob.bound_box) for k in range(3)]
-        hi = [max(c[k] for c in ob.bound_box) for k in range(3)]
+        self._volume_object(inst, ob, _bounds(ob), "volume object '%s'" % orig.name,
+                            {"file": path, "step_size": vol.render.step_size,
+                             "space": vol.render.space})
+
+    def add_smoke(self, inst, ob, domain):
+        """A smoke or fire domain (smoke.py): the frame's grids written to an OpenVDB file
+        over the evaluated domain mesh's texture space, rendered as a Volume object stepping
+        by its voxels; as in Cycles, its density does not scale with the object."""
+        orig = _original(ob)
+        what = "smoke domain '%s'" % orig.name
+        vdb = smoke.openvdb_module()
+        if vdb is None:
+            self.warn("%s left out: writing its grids needs pyopenvdb (Debian: python3-openvdb)"
+                      % what)
+            return
+        lo, hi = smoke.texture_space(ob)
+        path = self.smoke_files.get(ob.name)
+        if path is None:
+            path = os.path.join(self.out_dir, "smoke_%d.vdb" % len(self.smoke_files))
+            if smoke.write_grids(vdb, domain, lo, hi, path) == 0:
+                self.warn("%s has no smoke at frame %d (bake the simulation, or play the "
+                          "timeline up to the frame): left out" % (what, self.scene.frame_current))
+                path = ""
+            self.smoke_files[ob.name] = path
+        if path:
+            self._volume_object(inst, ob, (lo, hi), what,
+                                {"file": os.path.basename(path), "space": "WORLD",
+                                 "step_size": 0.0})
+
+    def _volume_object(self, inst, ob, bounds, what, volume):
+        lo, hi = bounds
         if not all(h > l for l, h in zip(lo, hi)):
             return  # no active voxels
         key = ("volume box",) + tuple(lo) + tuple(hi)
@@ -365,16 +402,14 @@ class _Exporter:
         vis = _visibility(ob)
         if not any(vis.values()):
             return
-        self.names["object"].setdefault(ob.name, "volume object '%s'" % orig.name)
+        self.names["object"].setdefault(ob.name, what)
         random_id = (inst.random_id & _U32) if inst.is_instance else \
             hash_uint2(hash_string(ob.name), 0)
         self.objects.append({
             "name": ob.name, "mesh": self.mesh_index[key], "matrix": _matrix(inst.matrix_world),
             "materials": mats[:1], "visibility": vis, "holdout": False, "shadow_catcher": False,
             "color": list(ob.color), "pass_index": ob.pass_index,
-            "random": random_float(random_id), "random_id": random_id,
-            "volume": {"file": path, "step_size": vol.render.step_size,
-                       "space": vol.render.space}})
+            "random": random_float(random_id), "random_id": random_id, "volume": volume})
 
     def _default_volume(self):
         idx = self.material_index.get("default volume")
@@ -653,6 +688,8 @@ class _Exporter:
                     ob = inst.object
                     if ob.type == 'LIGHT':
                         self.add_light(inst, ob)
+                    elif inst.show_self and smoke.gas_domain(ob) is not None:
+                        self.add_smoke(inst, ob, smoke.gas_domain(ob))
                     elif inst.show_self and isinstance(ob.data, bpy.types.Mesh):
                         self.add_object(inst, ob)
                     elif inst.show_self and ob.type == 'VOLUME':

@@ -60,6 +60,8 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
     // medium, the atmosphere's or the world's volume another.
     material_medium_.assign(scene_.materials.size(), -1);
     material_grid_medium_.assign(scene_.materials.size(), -1);
+    bool volume_objects = false;
+    for (const scene::Object& o : scene_.objects) volume_objects |= o.volume_file.has_value();
     for (size_t m = 0; m < scene_.materials.size(); ++m) {
         const auto& media = scene_.materials[m].interior.media;
         const PathMaterial* row = materials_.path(static_cast<int>(m));
@@ -71,9 +73,10 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
             shader::VolumeClosures v;
             volume->evaluate_volume(shader::ShaderGlobals{}, &v);
             media_.emplace_back(PathMedium::from_closures(v));
-            // In a Volume object it reads the grids: marched there (Cycles'
-            // volume_is_homogeneous), the same everywhere else.
-            if (volume->volume_grids()) {
+            // In a Volume object it reads the grids, or is scaled with the object: marched
+            // there (Cycles' volume_is_homogeneous, object_volume_density), the same
+            // everywhere else.
+            if (volume->volume_grids() || volume_objects) {
                 material_grid_medium_[m] = static_cast<int>(media_.size());
                 media_.emplace_back(volume, graphs_);
             }

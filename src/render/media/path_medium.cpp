@@ -197,6 +197,12 @@ void PathMedium::at(const Vec3& p, int object, const Vec3& dir, MediumPoint* out
     shader::VolumeClosures v;
     program_->evaluate_volume(shading_->volume_globals(object, p, dir), &v);
     *out = from_closures(v);
+    const double density = shading_->volume_density(object);
+    if (density != 1.0) {
+        out->sigma_a *= density;
+        out->emission *= density;
+        for (int i = 0; i < out->lobe_count; ++i) out->lobes[i].sigma_s *= density;
+    }
 }
 
 PathMedium::PathMedium(const MediumPoint& constant) : constant_(constant) {

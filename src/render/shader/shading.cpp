@@ -50,9 +50,14 @@ GraphShading::GraphShading(const scene::Scene& scene, int width, int height,
     grids_.resize(scene.objects.size());
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const scene::Object& o = scene.objects[i];
-        if (o.volume_file)
-            grids_[i] = std::make_unique<VdbGrids>(o.volume_file->path, o.transform, diag, o.loc);
         ObjectInfo& info = objects_[i];
+        if (o.volume_file) {
+            grids_[i] = std::make_unique<VdbGrids>(o.volume_file->path, o.transform, diag, o.loc);
+            if (o.volume_file->object_space) {
+                const double l = length(o.transform.vector(normalize(Vec3(1, 1, 1))));
+                if (l > 0) info.volume_density = 1.0 / l;
+            }
+        }
         to_rows(o.transform.matrix(), info.o2w);
         to_rows(o.transform.inverse_matrix(), info.w2o);
         info.location = float3(o.transform.point(Vec3(0, 0, 0)));

@@ -50,6 +50,13 @@ public:
     ShaderGlobals volume_globals(int object, const Vec3& p, const Vec3& dir) const;
     // A Volume object's grids (null for other objects).
     const VdbGrids* grids(int object) const;
+    // What Cycles scales a volume's coefficients by in `object` (object_volume_density): for a
+    // Volume object whose space is its own, 1 / |M normalize(1, 1, 1)|, so the density stays
+    // with the object as it is scaled; 1 for everything else.
+    double volume_density(int object) const {
+        return object >= 0 && static_cast<size_t>(object) < objects_.size()
+                   ? objects_[static_cast<size_t>(object)].volume_density : 1.0;
+    }
 
 private:
     struct ObjectInfo {
@@ -57,6 +64,7 @@ private:
         float w2o[3][4];
         float3 location, gen_location, gen_scale{0.5f, 0.5f, 0.5f}, color{1, 1, 1};
         float pass_index = 0, random = 0;
+        double volume_density = 1;
     };
     void camera_coords(const Vec3& p, ShaderGlobals* sg) const;
     // The object's part of the globals (transforms, Object and Generated coordinates, Object
