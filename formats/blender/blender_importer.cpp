@@ -336,6 +336,8 @@ scene::Camera read_camera(const JsonReader& r, int width, int height, double asp
     }
     c.right = X * w;
     c.up = Y * h;
+    c.clip_start = std::max(0.0, r.number("clip_start", 0));
+    c.clip_end = std::max(c.clip_start, r.number("clip_end", kInfinity));
     if (type == "PANO") read_panorama(r, wx, wy, X, Y, Z, &c);
     if (r.has("dof") && r.at("dof").boolean("use", false)) {
         const JsonReader d = r.at("dof");
@@ -661,6 +663,12 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
             scene.shader_graphs.push_back(read_graph(w.at("graph"), "world", dir));
             scene.shader_graphs.back().loc = loc;
             scene.world_graph = static_cast<int>(scene.shader_graphs.size()) - 1;
+            if (w.has("cycles")) {
+                const JsonReader cy = w.at("cycles");
+                scene.world_volume_step = cy.number("volume_step_size", 1.0);
+                if (!(scene.world_volume_step > 0)) scene.world_volume_step = 1.0;
+                scene.world_volume_homogeneous = cy.boolean("homogeneous_volume", false);
+            }
         } else {
             scene.background = scene::ColorFT(w.color("color", Color(0.05, 0.05, 0.05)));
         }

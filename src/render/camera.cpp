@@ -31,6 +31,10 @@ Camera::Camera(const scene::Camera& camera, int width, int height)
     }
     length_right_ = lr;
     length_up_ = lu;
+    forward_ = cross(camera.up, camera.right);
+    if (dot(forward_, camera.direction) < 0) forward_ = -forward_;  // either handedness
+    forward_ = length_squared(forward_) > 0 ? normalize(forward_) : normalize(camera.direction);
+    clips_ = camera.clip_start > 0 || std::isfinite(camera.clip_end);
     if (unit) {
         camera_.right = normalize(camera_.right);
         camera_.up = normalize(camera_.up);
@@ -64,6 +68,33 @@ Vec3 rotate_about(const Vec3& v, const Vec3& axis, double angle) {
 }  // namespace
 
 std::optional<Ray> Camera::generate(double x, double y) const {
+    std::optional<Ray> ray = pinhole(x, y);
+    if (ray && clips_) clip(ray->dir, &*ray);
+    return ray;
+}
+
+void Camera::clip(const Vec3& pinhole, Ray* ray) const {
+    // Perspective: the distances are along the view axis, so a ray off-centre starts and
+    // stops further out by 1 / cos of its angle to the axis (that of the pinhole ray, with a
+    // lens too). Orthographic: every ray starts on the plane clip_start ahead. Panoramas:
+    // along the ray itself.
+    const scene::Camera& c = camera_;
+    const double length = c.clip_end - c.clip_start;  // inf without a clip end
+    if (c.kind == CameraKind::Perspective) {
+        const double z = dot(normalize(pinhole), forward_);
+        if (!(z > 0)) return;
+        ray->origin = ray->origin + ray->dir * (c.clip_start / z);
+        ray->tmax = length / z;
+    } else if (c.kind == CameraKind::Orthographic) {
+        ray->origin = ray->origin + forward_ * c.clip_start;
+        ray->tmax = length;
+    } else {
+        ray->origin = ray->origin + ray->dir * c.clip_start;
+        ray->tmax = length;
+    }
+}
+
+std::optional<Ray> Camera::pinhole(double x, double y) const {
     double sx, sy;
     screen(x, y, &sx, &sy);
     const scene::Camera& c = camera_;
@@ -215,14 +246,26 @@ void polygon_sample(int corners, double rotation, double u, double v, double* x,
 
 std::optional<Ray> Camera::generate(double x, double y, double lens_u, double lens_v) const {
     const scene::Camera& c = camera_;
-    if (c.kind == CameraKind::BlenderPanorama) return generate_panorama(x, y, lens_u, lens_v);
-    std::optional<Ray> ray = generate(x, y);
+    std::optional<Ray> ray;
+    if (c.kind == CameraKind::BlenderPanorama) {
+        ray = generate_panorama(x, y, lens_u, lens_v);
+        if (ray && clips_) clip(ray->dir, &*ray);
+        return ray;
+    }
+    ray = pinhole(x, y);
+    if (!ray) return ray;
+    const Vec3 pinhole_dir = ray->dir;
+    with_lens(lens_u, lens_v, &*ray);
+    if (clips_) clip(pinhole_dir, &*ray);
+    return ray;
+}
+
+void Camera::with_lens(double lens_u, double lens_v, Ray* ray) const {
+    const scene::Camera& c = camera_;
     const bool linear = c.kind == CameraKind::Perspective || c.kind == CameraKind::Orthographic;
-    if (!ray || !linear || !(c.lens.radius > 0)) return ray;
+    if (!linear || !(c.lens.radius > 0)) return;
     const Vec3 r = normalize(c.right), u = normalize(c.up);
-    Vec3 fwd = cross(u, r);
-    if (dot(fwd, c.direction) < 0) fwd = -fwd;  // either handedness
-    fwd = normalize(fwd);
+    const Vec3 fwd = forward_;
     double lx, ly;
     if (c.lens.blades >= 3)
         polygon_sample(c.lens.blades, c.lens.rotation, lens_u, lens_v, &lx, &ly);
@@ -231,13 +274,12 @@ std::optional<Ray> Camera::generate(double x, double y, double lens_u, double le
     lx *= c.lens.radius / c.lens.ratio;
     ly *= c.lens.radius;
     const double along = dot(ray->dir, fwd);
-    if (!(along > 0)) return ray;
+    if (!(along > 0)) return;
     const Vec3 focus = ray->origin + ray->dir * (c.lens.focal_distance / along);
     ray->origin = ray->origin + r * lx + u * ly;
     const Vec3 d = focus - ray->origin;
-    if (!(length_squared(d) > 0)) return ray;
+    if (!(length_squared(d) > 0)) return;
     ray->dir = normalize(d);
-    return ray;
 }
 
 // Cycles samples the aperture as for the other cameras and moves the ray in the panorama's

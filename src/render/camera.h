@@ -32,6 +32,12 @@ public:
     void screen(double x, double y, double* sx, double* sy) const;
 
 private:
+    std::optional<Ray> pinhole(double x, double y) const;
+    // Blender's clipping (scene::Camera::clip_start, clip_end) of a ray whose direction
+    // without the lens was `pinhole`, as Cycles' camera_sample_* clip.
+    void clip(const Vec3& pinhole, Ray* ray) const;
+    // Moves a perspective or orthographic ray through the thin lens (scene::Lens).
+    void with_lens(double lens_u, double lens_v, Ray* ray) const;
     std::optional<Ray> generate_panorama(double x, double y, double lens_u, double lens_v) const;
 
     scene::Camera camera_;
@@ -39,6 +45,8 @@ private:
     double height_;
     double aspect_ = 1;
     double length_right_ = 1, length_up_ = 1;
+    bool clips_ = false;
+    Vec3 forward_;  // the unit view axis (clipping distances are along it)
 };
 
 }  // namespace glint::render

@@ -80,6 +80,11 @@ struct Camera {
     double v_angle = 180;
     Lens lens;
     Panorama panorama;       // kind BlenderPanorama only
+    // Blender's Clip Start / End: camera rays start clip_start in front of the camera (along
+    // its axis for perspective and orthographic views, along the ray for panoramas) and see
+    // nothing past clip_end, as Cycles clips them. POV-Ray cameras never clip.
+    double clip_start = 0;
+    double clip_end = kInfinity;
     // Motion blur (Blender): the camera's matrix (scale cleared) at evenly spaced shutter
     // times 0 ... 1, beside `centre`, the one the fields above were resolved from. Empty: the
     // camera stays put.

@@ -82,6 +82,10 @@ struct Scene {
     // world_graph index them.
     std::vector<ShaderGraph> shader_graphs;
     int world_graph = -1;
+    // The world's Volume settings in Cycles (World > Settings > Volume): the ray-marching step
+    // of a world volume that varies in space, and Homogeneous (shade it once per segment).
+    double world_volume_step = 1.0;
+    bool world_volume_homogeneous = false;
     std::optional<BlenderRender> blender_render;
     // Files the scene was read from (main file first), for messages and `glint ir`.
     std::vector<std::string> source_files;

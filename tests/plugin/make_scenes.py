@@ -655,7 +655,8 @@ BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "motion_deform": more.build_motion_deform, "normal_map": more.build_normal_map,
             "msglass": build_msglass, "film_glass": more.build_film_glass,
             "volume": more.build_volume, "volume_noise": more.build_volume_noise,
-            "volume_world": more.build_volume_world, "subsurface": more.build_subsurface,
+            "volume_world": more.build_volume_world,
+            "world_fog": more.build_world_fog, "subsurface": more.build_subsurface,
             "vdb_volume": more.build_vdb_volume, "smoke": more.build_smoke}
 
 

@@ -229,6 +229,19 @@ def build_volume(out_dir):
 AFTER_SETUP = {"volume": lambda scene: setattr(scene.cycles, "volume_bounces", 2)}
 
 
+def noise_ramp(nt, scale, detail, low, high):
+    """A Noise Texture through a ColorRamp from black at `low` to white at `high` (the everyday
+    cloud density); returns the ramp."""
+    noise = nt.nodes.new("ShaderNodeTexNoise")
+    noise.inputs["Scale"].default_value = scale
+    noise.inputs["Detail"].default_value = detail
+    ramp = nt.nodes.new("ShaderNodeValToRGB")
+    ramp.color_ramp.elements[0].position = low
+    ramp.color_ramp.elements[1].position = high
+    nt.links.new(noise.outputs["Fac"], ramp.inputs["Fac"])
+    return ramp
+
+
 def build_volume_noise(out_dir):
     """(issue 31) A volume that varies in space, ray marched as Cycles marches it: a cube of
     Principled Volume whose density is a Noise Texture through a ColorRamp (the everyday smoke
@@ -237,16 +250,10 @@ def build_volume_noise(out_dir):
     at 0.5; a sun and a dim world, one volume bounce."""
     ms.floor(ms.cy.diffuse_material("floor", (0.6, 0.6, 0.6)))
     mat, nt, out = ms.bare_material("cloud")
-    noise = nt.nodes.new("ShaderNodeTexNoise")
-    noise.inputs["Scale"].default_value = 3.0
-    noise.inputs["Detail"].default_value = 4.0
-    ramp = nt.nodes.new("ShaderNodeValToRGB")
-    ramp.color_ramp.elements[0].position = 0.45
-    ramp.color_ramp.elements[1].position = 0.65
+    ramp = noise_ramp(nt, 3.0, 4.0, 0.45, 0.65)
     vol = nt.nodes.new("ShaderNodeVolumePrincipled")
     vol.inputs["Color"].default_value = (0.9, 0.85, 0.8, 1.0)
     vol.inputs["Density"].default_value = 6.0
-    nt.links.new(noise.outputs["Fac"], ramp.inputs["Fac"])
     nt.links.new(ramp.outputs["Color"], vol.inputs["Density"])
     nt.links.new(vol.outputs["Volume"], out.inputs["Volume"])
     ms.cy.add_box("cloud", (-0.8, 0.2, 0.82), (1.6, 1.6, 1.6), 15, mat)
@@ -293,6 +300,43 @@ def build_volume_world(out_dir):
     scat.inputs["Density"].default_value = 0.04
     scat.inputs["Anisotropy"].default_value = 0.5
     nt.links.new(scat.outputs["Volume"], out.inputs["Volume"])
+
+
+def build_world_fog(out_dir):
+    """(issue 31) A world volume that varies in space: patchy fog filling the world (Principled
+    Volume whose density is a Noise Texture through a ColorRamp over world coordinates, at the
+    world's own Volume step size 0.5) in a closed room, lit by a point light and an area light.
+    (In Cycles a ray that meets no surface sees no light through such a world, and a sun's
+    light does not come through it: the room keeps every ray on surfaces.) The camera's Clip
+    Start 0.6 m leaves out a small sphere in front of it."""
+    ms.cy.add_box("room", (0.0, 2.0, 2.5), (10.0, 16.0, 5.0), 0, ms.cy.diffuse_material(
+        "room", (0.6, 0.6, 0.6)))
+    ms.cy.add_box("block", (-0.6, 1.0, 0.5), (1.0, 1.0, 1.0), 25, ms.cy.diffuse_material(
+        "block", (0.7, 0.3, 0.2)))
+    ms.add_sphere("ball", (1.2, 2.0, 0.6), 0.6, ms.cy.principled_material(
+        "ball", base=(0.3, 0.4, 0.8), roughness=0.3))
+    ms.add_sphere("near", (0.15, -4.65, 1.45), 0.12, ms.cy.diffuse_material(
+        "near", (0.9, 0.1, 0.1)))
+    ms.add_light("bulb", "POINT", (0.3, 0.5, 2.6), energy=400.0, shadow_soft_size=0.1)
+    area = ms.add_light("panel", "AREA", (3.0, -1.0, 3.0), energy=300.0, size=1.5)
+    ms.aim(area, (0.5, 1.0, 0.5))
+    cam = ms.cy.add_camera((0.0, -5.0, 1.5), (0.2, 2.0, 0.8), lens_mm=30.0)
+    cam.data.clip_start = 0.6
+    ms.cy.set_world_color((0.08, 0.09, 0.12))
+    world = bpy.context.scene.world
+    world.cycles.volume_step_size = 0.5
+    nt = world.node_tree
+    out = next(n for n in nt.nodes if n.type == "OUTPUT_WORLD")
+    ramp = noise_ramp(nt, 0.8, 2.0, 0.5, 0.65)
+    vol = nt.nodes.new("ShaderNodeVolumePrincipled")
+    vol.inputs["Color"].default_value = (0.85, 0.9, 1.0, 1.0)
+    vol.inputs["Anisotropy"].default_value = 0.3
+    math_node = nt.nodes.new("ShaderNodeMath")
+    math_node.operation = "MULTIPLY"
+    math_node.inputs[1].default_value = 0.35
+    nt.links.new(ramp.outputs["Color"], math_node.inputs[0])
+    nt.links.new(math_node.outputs["Value"], vol.inputs["Density"])
+    nt.links.new(vol.outputs["Volume"], out.inputs["Volume"])
 
 
 def build_subsurface(out_dir):

@@ -1,6 +1,7 @@
 // formats/blender: the add-on's exchange read into the IR, and its errors.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -131,6 +132,27 @@ TEST(BlenderImporter, CameraFollowsBlendersSensorFit) {
     EXPECT_NEAR(length(s.camera.right), 36.0 / 50.0, 1e-9);
     EXPECT_NEAR(length(s.camera.up), 36.0 / 50.0 * 24 / 32, 1e-9);
     EXPECT_NEAR(s.camera.direction.z, -1, 1e-12);  // looks along its -Z
+}
+
+TEST(BlenderImporter, CameraClipsAndWorldVolumeSettingsAreRead) {
+    Exchange ex;
+    std::string json = Exchange::scene(
+        object(0), R"(, "world": {"color": [0, 0, 0], "graph": {"output": 0, "nodes": [
+              {"type": "ShaderNodeOutputWorld", "name": "World Output", "inputs": []}]},
+            "cycles": {"volume_step_size": 0.25, "homogeneous_volume": true}})");
+    const std::string lens = R"("lens": 50,)";
+    json.replace(json.find(lens), lens.size(), lens + R"( "clip_start": 0.5, "clip_end": 40,)");
+    const scene::Scene s = load(ex.write(json));
+    EXPECT_DOUBLE_EQ(s.camera.clip_start, 0.5);
+    EXPECT_DOUBLE_EQ(s.camera.clip_end, 40);
+    EXPECT_DOUBLE_EQ(s.world_volume_step, 0.25);
+    EXPECT_TRUE(s.world_volume_homogeneous);
+    // Without them: no clipping, Cycles' defaults.
+    const scene::Scene d = load(ex.write(Exchange::scene(object(0))));
+    EXPECT_EQ(d.camera.clip_start, 0);
+    EXPECT_TRUE(std::isinf(d.camera.clip_end));
+    EXPECT_DOUBLE_EQ(d.world_volume_step, 1.0);
+    EXPECT_FALSE(d.world_volume_homogeneous);
 }
 
 TEST(BlenderImporter, PanoramicCameraCarriesCyclesSettings) {

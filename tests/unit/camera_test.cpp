@@ -2,6 +2,9 @@
 // and orthographic cameras, and its non-linear projections.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <utility>
+
 #include "render/camera.h"
 
 namespace glint::render {
@@ -68,6 +71,73 @@ TEST(Camera, OrthographicMovesOriginNotDirection) {
     EXPECT_NEAR(r.origin.y, -2.25, 1e-14);
     EXPECT_NEAR(r.origin.z, -5.0, 1e-14);
     EXPECT_EQ(r.dir, Vec3(0, 0, 1));
+}
+
+// Blender's Clip Start / End, as Cycles' camera_sample_perspective clips: distances along the
+// view axis, so a ray at angle a to it starts at clip_start / cos a and reaches
+// (clip_end - clip_start) / cos a further.
+TEST(Camera, PerspectiveClipIsMeasuredAlongTheViewAxis) {
+    scene::Camera c = basic_camera();
+    c.clip_start = 0.5;
+    c.clip_end = 10;
+    Camera cam(c, 64, 48);
+    for (const auto& [x, y] : {std::pair{31.5, 23.5}, std::pair{0.0, 0.0}, std::pair{63.0, 10.0}}) {
+        const Ray r = *cam.generate(x, y);
+        const double cos_a = r.dir.z;  // the view axis is +z
+        EXPECT_NEAR(r.origin.z - (-5), 0.5, 1e-12) << x << "," << y;
+        EXPECT_NEAR(length(r.origin - c.location), 0.5 / cos_a, 1e-12);
+        EXPECT_NEAR(r.tmax, 9.5 / cos_a, 1e-12);
+        // The far end lies on the plane clip_end ahead.
+        EXPECT_NEAR((r.origin + r.dir * r.tmax).z - (-5), 10, 1e-12);
+    }
+}
+
+TEST(Camera, ClipWithALensKeepsThePinholeRaysDistances) {
+    // Through a thin lens the ray leaves from the aperture, but Cycles moves it by the pinhole
+    // ray's 1 / cos a (not its own).
+    scene::Camera c = basic_camera();
+    c.clip_start = 0.25;
+    c.clip_end = 4;
+    c.lens.radius = 0.2;
+    c.lens.focal_distance = 3;
+    Camera cam(c, 64, 48);
+    const Ray pin = *cam.generate(5, 7);
+    const Ray r = *cam.generate(5, 7, 0.9, 0.2);
+    const double k = 1 / pin.dir.z;
+    EXPECT_NEAR(r.tmax, 3.75 * k, 1e-12);
+    EXPECT_GT(length(r.dir - pin.dir), 1e-3);  // the lens turned it
+    // Its start: on the aperture, then 0.25 k along its own direction.
+    const Ray lens_only = [&] {
+        scene::Camera u = c;
+        u.clip_start = 0;
+        u.clip_end = kInfinity;
+        return *Camera(u, 64, 48).generate(5, 7, 0.9, 0.2);
+    }();
+    EXPECT_TRUE(std::isinf(lens_only.tmax));
+    const Vec3 expected = lens_only.origin + lens_only.dir * (0.25 * k);
+    EXPECT_NEAR(length(r.origin - expected), 0, 1e-12);
+}
+
+TEST(Camera, OrthographicClipStartsEveryRayOnOnePlane) {
+    scene::Camera c = basic_camera();
+    c.kind = scene::CameraKind::Orthographic;
+    c.right = Vec3(8, 0, 0);
+    c.up = Vec3(0, 6, 0);
+    c.clip_start = 1;
+    c.clip_end = 3;
+    Camera cam(c, 4, 4);
+    for (int x = 0; x < 4; ++x) {
+        const Ray r = *cam.generate(x, 3);
+        EXPECT_NEAR(r.origin.z, -4, 1e-14);
+        EXPECT_NEAR(r.tmax, 2, 1e-14);
+    }
+}
+
+TEST(Camera, PovRayCamerasDoNotClip) {
+    Camera cam(basic_camera(), 64, 48);
+    const Ray r = *cam.generate(3, 40);
+    EXPECT_EQ(r.origin, Vec3(0, 0, -5));
+    EXPECT_TRUE(std::isinf(r.tmax));
 }
 
 TEST(Camera, FisheyeTracesNoRayOutsideItsCircle) {

@@ -12,6 +12,7 @@
 #include "render/integrators/path.h"
 #include "render/media/path_medium.h"
 #include "render/prepare/prepared_scene.h"
+#include "unit/graph_builder.h"
 #include "unit/pov_test_util.h"
 
 namespace glint {
@@ -213,6 +214,68 @@ TEST(PathMedia, EquiangularSamplingAgreesWithDistanceSamplingWithLessNoise) {
     EXPECT_GT(s_without.mean.r, 0.001);
     EXPECT_NEAR(s_with.mean.r, s_without.mean.r,
                 4 * std::hypot(s_with.stderr_.r, s_without.stderr_.r));
+}
+
+// Blender's world volume when it varies in space: ray marched at the world's step up to the
+// surface a ray meets; a ray that meets none sees no light through it, however the camera
+// clips it (Cycles' shade_volume makes such a segment FLT_MAX long, and its steps of FLT_MAX /
+// max steps put all of the volume at the first).
+TEST(PathMedia, WorldVolumeThatVariesIsMarchedUpToTheSurface) {
+    using scene::SocketType;
+    testing::GraphBuilder b;
+    const int out = b.node("ShaderNodeOutputWorld");
+    b.g.output = out;
+    // Absorption of density x (a linear Gradient over world coordinates, clamped to [0, 1]).
+    const int grad =
+        b.node("ShaderNodeTexGradient", {{"Color", SocketType::Rgba}, {"Fac", SocketType::Value}});
+    b.prop(grad, "gradient_type", "LINEAR");
+    b.in(grad, "Vector", SocketType::Vector, 0);  // unlinked: the volume's own coordinates
+    const int vol = b.node("ShaderNodeVolumeAbsorption", {{"Volume", SocketType::Shader}});
+    b.in(vol, "Color", SocketType::Rgba, 0, 0, 0);  // (what it lets through)
+    b.in(vol, "Density", SocketType::Value, 1);
+    b.link(vol, "Density", grad, "Fac");
+    b.link(out, "Volume", vol, "Volume");
+    // A wall y = 3 shining 1 (an Emission of strength 1).
+    testing::GraphBuilder w;
+    const int white = w.node("ShaderNodeRGB", {{"Color", SocketType::Rgba}});
+    for (int c = 0; c < 4; ++c) w.g.nodes[white].outputs[0].value[c] = 1;
+    w.emit(white, "Color");
+    scene::Scene s;
+    s.shader_graphs = {b.g, w.g};
+    s.world_graph = 0;
+    s.world_volume_step = 0.01;
+    scene::Material wall;
+    wall.graph = 1;
+    s.materials.push_back(wall);
+    scene::Object plane;
+    plane.shape = scene::Plane{Vec3(0, -1, 0), -3};
+    plane.material = 0;
+    s.objects.push_back(plane);
+    Diagnostics diag;
+    render::RenderOptions opts;
+    opts.integrator = render::IntegratorKind::Path;
+    auto prepared = render::prepare(s, opts, diag);
+    ASSERT_TRUE(prepared);
+    PathIntegrator pi(*prepared, PathSettings{});
+    auto mean = [&](Vec3 o, Vec3 d, double tmax) {
+        render::Ray r;
+        r.origin = o;
+        r.dir = normalize(d);
+        r.tmax = tmax;
+        double sum = 0;
+        for (uint32_t i = 0; i < 64; ++i) sum += pi.li(r, PixelSampler(1, 2, i, 3)).g;
+        return sum / 64;
+    };
+    // Where the density is nil (x < 0) the wall is seen whole.
+    EXPECT_NEAR(mean(Vec3(-1, -2, 0), Vec3(0, 1, 0), kInfinity), 1.0, 1e-6);
+    // Along the ramp at x = 0.3 for 5 units: exp(-1.5).
+    EXPECT_NEAR(mean(Vec3(0.3, -2, 0), Vec3(0, 1, 0), kInfinity), std::exp(-1.5), 2e-4);
+    // Across it, x from 0 to 1 over sqrt(26): exp(-sqrt(26) / 2).
+    EXPECT_NEAR(mean(Vec3(0, -2, 0), Vec3(1, 5, 0), kInfinity), std::exp(-std::sqrt(26.0) / 2),
+                2e-4);
+    // Away from the wall, clipped or not: nothing.
+    EXPECT_EQ(mean(Vec3(0.3, -2, 0), Vec3(0, -1, 0), kInfinity), 0.0);
+    EXPECT_EQ(mean(Vec3(0.3, -2, 0), Vec3(0, -1, 0), 5.0), 0.0);
 }
 
 }  // namespace

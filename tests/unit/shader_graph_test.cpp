@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "render/shader/program.h"
+#include "unit/graph_builder.h"
 
 namespace glint::render::shader {
 namespace {
@@ -14,69 +15,7 @@ using scene::ShaderInput;
 using scene::ShaderNode;
 using scene::SocketType;
 
-// A small builder: nodes by type with their inputs' values and links.
-struct G {
-    ShaderGraph g;
-    int node(const std::string& type, std::vector<std::pair<std::string, SocketType>> outs = {}) {
-        ShaderNode n;
-        n.type = type;
-        n.name = type + "." + std::to_string(g.nodes.size());
-        for (auto& [id, t] : outs) {
-            scene::ShaderOutput o;
-            o.id = id;
-            o.type = t;
-            n.outputs.push_back(o);
-        }
-        g.nodes.push_back(n);
-        return static_cast<int>(g.nodes.size()) - 1;
-    }
-    ShaderInput& in(int node, const std::string& id, SocketType type, double a, double b = 0,
-                    double c = 0) {
-        ShaderInput i;
-        i.id = id;
-        i.type = type;
-        i.value[0] = a;
-        i.value[1] = b;
-        i.value[2] = c;
-        g.nodes[node].inputs.push_back(i);
-        return g.nodes[node].inputs.back();
-    }
-    void link(int to, const std::string& input, int from, const std::string& output) {
-        for (ShaderInput& i : g.nodes[to].inputs)
-            if (i.id == input) {
-                i.link = {from, output};
-                return;
-            }
-        ShaderInput i;
-        i.id = input;
-        i.type = SocketType::Shader;
-        i.link = {from, output};
-        g.nodes[to].inputs.push_back(i);
-    }
-    void prop(int node, const std::string& key, const std::string& text) {
-        scene::ShaderProp p;
-        p.text = text;
-        p.is_text = true;
-        g.nodes[node].props[key] = p;
-    }
-    int output() {
-        const int o = node("ShaderNodeOutputMaterial");
-        g.output = o;
-        return o;
-    }
-    // An Emission whose colour comes from `from`'s `output`, into the output node.
-    void emit(int from, const std::string& output) {
-        const int e = node("ShaderNodeEmission", {{"Emission", SocketType::Shader}});
-        in(e, "Color", SocketType::Rgba, 1, 1, 1);
-        in(e, "Strength", SocketType::Value, 1);
-        link(e, "Color", from, output);
-        link(output_node(), "Surface", e, "Emission");
-    }
-    int output_node() {
-        if (g.output < 0) output();
-        return g.output;
-    }
-};
+using G = testing::GraphBuilder;
 
 TEST(ShaderGraph, ConstantMathFoldsToOneEvaluation) {
     G b;
@@ -302,7 +241,7 @@ TEST(ShaderGraph, VolumeShadersGiveCyclesCoefficients) {
     EXPECT_EQ(cl.transparent, Color(1, 1, 1));
 }
 
-TEST(ShaderGraph, VaryingVolumeIsFlaggedAndWarnedInTheWorldOnly) {
+TEST(ShaderGraph, VaryingVolumeIsFlagged) {
     G b;
     const int tc = b.node("ShaderNodeTexCoord", {{"Object", SocketType::Vector}});
     const int sep = b.node("ShaderNodeSeparateXYZ", {{"X", SocketType::Value}});
@@ -316,9 +255,7 @@ TEST(ShaderGraph, VaryingVolumeIsFlaggedAndWarnedInTheWorldOnly) {
     Diagnostics diag;
     auto p = ShaderProgram::compile(b.g, nullptr, diag);
     EXPECT_FALSE(p->volume_constant());
-    EXPECT_EQ(diag.warning_count(), 0);  // objects' varying volumes are ray marched
-    auto w = ShaderProgram::compile(b.g, nullptr, diag, true);
-    EXPECT_EQ(diag.warning_count(), 1);  // the world's are not yet
+    EXPECT_EQ(diag.warning_count(), 0);  // ray marched, in objects and in the world
 }
 
 }  // namespace

@@ -90,12 +90,16 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
     if (!scene_.media.empty()) {
         world_medium_ = static_cast<int>(media_.size());
         media_.emplace_back(scene_.media, &pigments_);
-    } else if (world_graph && world_graph->has_volume() && world_graph->volume_constant()) {
-        // (A world volume that varies in space was warned about and is left out.)
-        shader::VolumeClosures v;
-        world_graph->evaluate_volume(shader::ShaderGlobals{}, &v);
+    } else if (world_graph && world_graph->has_volume()) {
         world_medium_ = static_cast<int>(media_.size());
-        media_.emplace_back(PathMedium::from_closures(v));
+        if (world_graph->volume_constant()) {
+            shader::VolumeClosures v;
+            world_graph->evaluate_volume(shader::ShaderGlobals{}, &v);
+            media_.emplace_back(PathMedium::from_closures(v));
+        } else {
+            media_.emplace_back(world_graph, graphs_);
+            world_step_ = world_volume_step();
+        }
     }
     // The objects' sizes, for the steps of volumes ray marched inside them.
     bool marched = false;
@@ -309,7 +313,10 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
     uint32_t alpha_tests = 0;
     // Media: the objects the ray is in, and the random numbers their collisions draw.
     MediumStack stack;
-    if (has_media_ && r.origin == scene_.camera.location) stack = camera_stack_;
+    if (has_media_ && starts_at_camera(r)) stack = camera_stack_;
+    // How far the segment may reach: a Blender camera's clip end, through transparent
+    // surfaces too (Cycles keeps the camera ray's tmax across them); endless after a bounce.
+    double seg_end = r.tmax;
     VolumeRandom volume_random{&sampler, alpha_base + kAlphaPairs};
     int volume_depth = 0;
     uint32_t scatterings = 0;  // BSDF samples so far (bounces and pass-throughs)
@@ -360,6 +367,8 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             int event = 0;  // 0: through, 1: scattered, 2: absorbed
             double t = 0;
             MediumPoint mp;
+            // (A ray that meets nothing goes on for ever through the media, clipped camera
+            // rays too: Cycles' shade_volume sets FLT_MAX where no primitive was hit.)
             const double tmax = found ? hit.t : kInfinity;
             // Point lights' direct light in homogeneous media also comes by equiangular
             // sampling, MIS-weighted against the distance-sampled scattering below.
@@ -456,7 +465,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                 if (beta.is_black() || !finite(beta)) break;
                 r.origin = sp;
                 r.dir = wi;
-                r.tmax = kInfinity;
+                r.tmax = seg_end = kInfinity;
                 travelled += seg_dist + t;
                 seg_dist = 0;
                 prev_p = sp;
@@ -466,7 +475,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         // Blender lights on the way (Cycles' lamps: rays pass through them).
         if (lights.has_visible_blender() && !at_exit)
             add(beta * lights.blender_emission(prev_p, r.dir, seg_dist,
-                                               found ? seg_dist + hit.t : kInfinity,
+                                               seg_dist + (found ? hit.t : r.tmax),
                                                specular ? -1.0 : prev_pdf, scatterings == 0));
         if (!found) {
             if (camera_view && settings_.film_transparent) {
@@ -526,7 +535,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                     const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
                     seg_dist += length(o - r.origin);
                     r.origin = o;
-                    r.tmax = kInfinity;
+                    r.tmax = seg_end - seg_dist;
                     continue;
                 }
                 shade = 1 / (1 - q);
@@ -584,7 +593,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                 const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
                 seg_dist += length(o - r.origin);
                 r.origin = o;
-                r.tmax = kInfinity;
+                r.tmax = seg_end - seg_dist;
                 continue;
             }
             if (camera_view && hit.object >= 0 &&
@@ -671,6 +680,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             camera_view = false;
             travelled += seg_dist + hit.t;
             seg_dist = 0;
+            seg_end = kInfinity;
             r.origin = exit_hit.p;
             r.dir = -out;  // as if arriving from outside, so the exit is shaded outside
             continue;
@@ -693,7 +703,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             const Vec3 o = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
             seg_dist += length(o - r.origin);
             r.origin = o;
-            r.tmax = kInfinity;
+            r.tmax = seg_end - seg_dist;
             continue;
         }
         specular = bs.delta;
@@ -725,7 +735,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         if (has_media_ && !bs.reflected) stack.cross(hit, wi, *this);
         r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, wi);
         r.dir = wi;
-        r.tmax = kInfinity;
+        r.tmax = seg_end = kInfinity;
         travelled += seg_dist + hit.t;
         seg_dist = 0;
         prev_p = hit.p;

@@ -141,6 +141,11 @@ private:
     static double distance_pdf(const Color& beta0, const MediumPoint& m, double t);
     // A medium's ray-marching step in `object` (Cycles' Object::compute_volume_step_size).
     double volume_step(int object, int material) const;
+    // The step of a world volume that varies in space (Cycles' background volume_step_size).
+    double world_volume_step() const;
+    // Whether a camera ray starts where the camera is (then it is inside the volumes that
+    // hold the camera): at its location, or moved straight ahead from it by the clip start.
+    bool starts_at_camera(const Ray& r) const;
     // Light passing from `origin` along `dir` for `dist`: through alpha holes and
     // index-matched (IOR 1) transmissive surfaces, tinted, and through the media on the way;
     // any other surface blocks it; at the path's shutter time. `stack` holds the media at
@@ -166,6 +171,7 @@ private:
     std::vector<int> material_grid_medium_;
     std::vector<double> object_size_;   // per object: the mean side of its world bounds
     int world_medium_ = -1;
+    double world_step_ = kInfinity;  // its ray-marching step, where it varies in space
     bool has_media_ = false;
     MediumStack camera_stack_;
     mutable std::atomic<uint64_t> nonfinite_{0};

@@ -95,6 +95,21 @@ double PathIntegrator::volume_step(int object, int material) const {
     return size * m.volume_step_rate * settings_.volume_step_rate;
 }
 
+double PathIntegrator::world_volume_step() const {
+    // Cycles 3.4 scales the world's step by the scene's step rate twice: once when it stores
+    // it (Background::device_update), again where it reads it (volume_stack_step_size).
+    if (scene_.world_volume_homogeneous) return kHomogeneousStep;
+    return scene_.world_volume_step * settings_.volume_step_rate * settings_.volume_step_rate;
+}
+
+bool PathIntegrator::starts_at_camera(const Ray& r) const {
+    const Vec3 off = r.origin - scene_.camera.location;
+    if (off == Vec3(0, 0, 0)) return true;
+    if (!(scene_.camera.clip_start > 0)) return false;
+    const double along = dot(off, r.dir);
+    return along > 0 && length(off - r.dir * along) <= 1e-9 * (1 + along);
+}
+
 int PathIntegrator::active_media(const MediumStack& stack, ActiveMedium* out,
                                  double* step) const {
     // As in POV-Ray's classic renderer: media act only while every object the ray is inside
@@ -108,7 +123,10 @@ int PathIntegrator::active_media(const MediumStack& stack, ActiveMedium* out,
             out[n++] = {&media_[static_cast<size_t>(stack.medium[i])], stack.object[i]};
             *step = std::min(*step, stack.step[i]);
         }
-    if (world_medium_ >= 0) out[n++] = {&media_[static_cast<size_t>(world_medium_)], -1};
+    if (world_medium_ >= 0) {
+        out[n++] = {&media_[static_cast<size_t>(world_medium_)], -1};
+        *step = std::min(*step, world_step_);
+    }
     return n;
 }
 
@@ -295,7 +313,10 @@ int PathIntegrator::march(const ActiveMedium* act, int na, double step, const Ra
     // homogeneous: emission integrated in closed form, and a scattering distance drawn with
     // one random number carried from step to step, in the channel picked by throughput times
     // albedo.
-    if (std::isinf(tmax)) return 2;  // (an endless segment in a varying medium: no light)
+    // An endless segment (a ray leaving into a world volume): Cycles' steps of FLT_MAX / max
+    // steps shade the volume impossibly far away and let no light through; a Homogeneous one
+    // shades once at the start and goes on below.
+    if (std::isinf(tmax) && step < kHomogeneousStep) return 2;
     double h, shade, offset;
     int max_steps;
     if (step >= kHomogeneousStep) {
@@ -324,7 +345,10 @@ int PathIntegrator::march(const ActiveMedium* act, int na, double step, const Ra
         };
         const Color tr = transmit(dt);
         if (!mp->emission.is_black()) {
-            auto integral = [dt](double s, double trc) { return s > 0 ? (1 - trc) / s : dt; };
+            // (No extinction over an endless step: the emission would be infinite; none.)
+            auto integral = [dt](double s, double trc) {
+                return s > 0 ? (1 - trc) / s : std::isinf(dt) ? 0.0 : dt;
+            };
             *emitted += *beta * mp->emission *
                         Color(integral(st.r, tr.r), integral(st.g, tr.g), integral(st.b, tr.b));
         }

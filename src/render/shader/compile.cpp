@@ -295,8 +295,8 @@ int Compiler::compile_output() {
 }
 
 std::unique_ptr<ShaderProgram> ShaderProgram::compile(const scene::ShaderGraph& graph,
-                                                      TextureCache* textures, Diagnostics& diag,
-                                                      bool world) {
+                                                      TextureCache* textures,
+                                                      Diagnostics& diag) {
     auto program = std::make_unique<ShaderProgram>();
     program->name_ = graph.name;
     Compiler c(graph, *program, textures, diag);
@@ -324,9 +324,6 @@ std::unique_ptr<ShaderProgram> ShaderProgram::compile(const scene::ShaderGraph& 
         todo.push_back(n.a);
         todo.push_back(n.b);
     }
-    if (program->volume_varying_ && world)
-        diag.warning(graph.loc, "'" + graph.name + "': a world volume that varies in space is "
-                                                   "not supported yet: the volume is left out");
     return program;
 }
 

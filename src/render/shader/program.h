@@ -83,8 +83,7 @@ public:
     // Compiles `graph`; each node kind glint lacks is one warning naming it and the graph (the
     // node then gives its outputs' default values, or no closure). `textures` opens images.
     static std::unique_ptr<ShaderProgram> compile(const scene::ShaderGraph& graph,
-                                                  TextureCache* textures, Diagnostics& diag,
-                                                  bool world = false);
+                                                  TextureCache* textures, Diagnostics& diag);
 
     // Runs the program at `sg`, adding the closures it leaves to `out` (cleared first).
     void evaluate(const ShaderGlobals& sg, ClosureList* out) const;

@@ -35,8 +35,7 @@ GraphShading::GraphShading(const scene::Scene& scene, int width, int height,
     auto program = [&](int g) -> const ShaderProgram* {
         if (g < 0 || static_cast<size_t>(g) >= scene.shader_graphs.size()) return nullptr;
         if (!by_graph[g]) {
-            programs_.push_back(ShaderProgram::compile(scene.shader_graphs[g], textures, diag,
-                                                       g == scene.world_graph));
+            programs_.push_back(ShaderProgram::compile(scene.shader_graphs[g], textures, diag));
             by_graph[g] = programs_.back().get();
         }
         return by_graph[g];
