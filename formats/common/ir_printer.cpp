@@ -194,6 +194,7 @@ public:
         if (!f.emission.is_black()) s += " emission " + rgb(f.emission);
         if (f.conserve_energy) s += " conserve_energy";
         if (f.crand != 0) s += " crand " + num(f.crand);
+        if (f.subsurface) s += " subsurface translucency " + rgb(f.translucency);
         line(d, s);
         const Reflection& r = f.reflection;
         if (!r.min.is_black() || !r.max.is_black() || r.fresnel || r.metallic != 0 ||
@@ -390,7 +391,12 @@ std::string print_ir(const scene::Scene& s) {
                   (g.assumed_gamma ? num(*g.assumed_gamma) : std::string("default")) +
                   " ambient_light " + rgb(g.ambient_light) + " max_trace_level " +
                   std::to_string(g.max_trace_level) + " adc_bailout " + num(g.adc_bailout) +
-                  " noise_generator " + std::to_string(g.noise_generator));
+                  " noise_generator " + std::to_string(g.noise_generator) +
+                  (g.mm_per_unit != 10 ? " mm_per_unit " + num(g.mm_per_unit) : std::string()) +
+                  (g.subsurface ? " subsurface samples " +
+                                      std::to_string(g.subsurface_samples_diffuse) + ", " +
+                                      std::to_string(g.subsurface_samples_single)
+                                : std::string()));
     const Camera& c = s.camera;
     p.line(0, std::string("camera ") +
                   camera_kind_name(c.kind) +

@@ -204,14 +204,33 @@ void Parser::parse_global_settings() {
             scene.global.noise_generator = to_int(parse_float());
         } else if (w == "number_of_waves") {
             scene.global.number_of_waves = to_int(parse_float());
-        } else if (w == "radiosity" || w == "photons" || w == "subsurface") {
+        } else if (w == "subsurface") {
+            expect_open("subsurface");
+            FileLoc so = loc();
+            scene.global.subsurface = true;
+            for (;;) {
+                if (accept("samples")) {
+                    scene.global.subsurface_samples_diffuse = to_int(parse_float());
+                    skip_comma();
+                    scene.global.subsurface_samples_single = to_int(parse_float());
+                } else if (accept("radiosity")) {
+                    // Only matters with radiosity, which glint warns about on its own.
+                    parse_float();
+                } else {
+                    break;
+                }
+            }
+            expect_close("subsurface", so);
+        } else if (w == "mm_per_unit") {
+            scene.global.mm_per_unit = parse_float();
+        } else if (w == "radiosity" || w == "photons") {
             diag.warning(loc(), "global_settings '" + w + "' is not supported and is ignored");
             skip_block_tokens(*this, w);
         } else if (w == "charset") {
             diag.warning(loc(), "global_settings 'charset' is ignored");
             next();
         } else if (w == "max_intersections" || w == "irid_wavelength" ||
-                   w == "hf_gray_16" || w == "mm_per_unit") {
+                   w == "hf_gray_16") {
             diag.warning(loc(), "global_settings '" + w + "' is ignored");
             if (w == "irid_wavelength") parse_rgb();
             else allow_float(0);

@@ -286,7 +286,21 @@ void Parser::parse_finish_body(scene::Finish& f) {
             f.conserve_energy = allow_float(1.0) != 0;
         } else if (w == "crand") {
             f.crand = parse_float();
-        } else if (w == "irid" || w == "subsurface") {
+        } else if (w == "subsurface") {
+            expect_open("subsurface");
+            FileLoc o = loc();
+            f.subsurface = true;
+            for (;;) {
+                if (accept("translucency")) {
+                    f.translucency = parse_rgb();
+                } else if (accept("anisotropy")) {
+                    parse_rgb();  // (parsed by POV-Ray 3.7, and unused by it too)
+                } else {
+                    break;
+                }
+            }
+            expect_close("subsurface", o);
+        } else if (w == "irid") {
             warn_unsupported(*this, w, loc(), "the finish's " + w + " block is ignored");
             skip_braced_block(*this, w);
         } else if (w == "ior" || w == "caustics" || w == "fade_distance" || w == "fade_power" ||

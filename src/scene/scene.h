@@ -27,6 +27,12 @@ struct GlobalSettings {
     std::optional<double> assumed_gamma;
     int noise_generator = 2;
     int number_of_waves = 10;  // ripples and waves sum this many wave sources
+    // Scene units in millimetres, for subsurface light transport.
+    double mm_per_unit = 10;
+    // `subsurface { samples diffuse, single }`: present turns subsurface light transport on
+    // for finishes that have it; the samples per shading point of its two terms.
+    bool subsurface = false;
+    int subsurface_samples_diffuse = 50, subsurface_samples_single = 50;
     FileLoc loc;
 };
 

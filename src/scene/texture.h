@@ -236,6 +236,11 @@ struct Finish {
     Reflection reflection;
     bool conserve_energy = false;
     double crand = 0;
+    // `subsurface { translucency C }`: POV-Ray's subsurface light transport (with the global
+    // settings' subsurface block) replaces the diffuse term; C is the mean free path in mm
+    // (its inverse the reduced scattering coefficient).
+    bool subsurface = false;
+    Color translucency{0, 0, 0};
     FileLoc loc;
 };
 

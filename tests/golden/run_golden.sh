@@ -2,7 +2,7 @@
 # One golden test: render SCENE with glint exactly like the reference (320x240; no
 # anti-aliasing, or AA=adaptive:0.3 against POV-Ray's +A0.3 -J), then compare with the POV-Ray
 # reference in 8-bit output space. Passes when >= 99% of pixels are within 2/255 in every
-# channel (VALIDATION.md "agrees").
+# channel (VALIDATION.md "agrees"), or for scenes marked `// golden: close` when close.
 #
 #   run_golden.sh GLINT SCENE REF OUT DIFF [AA]
 set -u
@@ -15,8 +15,16 @@ if [ $rc -ne 0 ]; then
     echo "glint render failed with exit code $rc"
     exit 1
 fi
-echo "bound: within >= 0.99 at tolerance 2/255"
-"$glint" compare "$out" "$ref" --diff "$diff" --tolerance 2 --min-fraction 0.99
+# A scene whose renders draw random numbers (its header says `// golden: close`) may instead
+# agree as VALIDATION.md's "close": SSIM >= 0.95 and MAE <= 2%.
+close=()
+if grep -q '^// golden: close' "$scene"; then
+    close=(--close)
+    echo "bound: within >= 0.99 at tolerance 2/255, or SSIM >= 0.95 and MAE <= 2%"
+else
+    echo "bound: within >= 0.99 at tolerance 2/255"
+fi
+"$glint" compare "$out" "$ref" --diff "$diff" --tolerance 2 --min-fraction 0.99 "${close[@]}"
 rc=$?
 case $rc in
     0) exit 0 ;;

@@ -353,6 +353,24 @@ TEST(PovScene, GlobalSettingsBackgroundSky) {
     EXPECT_EQ(diag.warning_count(), 1);  // radiosity ignored, with a warning
 }
 
+TEST(PovScene, GlobalSubsurfaceSettings) {
+    Diagnostics diag;
+    auto s = parse_string(
+        "#version 3.7;\n"
+        "global_settings { mm_per_unit 40 subsurface { samples 400, 40 radiosity off } }\n",
+        "t.pov", {}, diag);
+    EXPECT_EQ(s.global.mm_per_unit, 40);
+    EXPECT_TRUE(s.global.subsurface);
+    EXPECT_EQ(s.global.subsurface_samples_diffuse, 400);
+    EXPECT_EQ(s.global.subsurface_samples_single, 40);
+    EXPECT_EQ(diag.warning_count(), 0);
+    // Without the block: off, POV-Ray's defaults.
+    auto d = parse_string("#version 3.7; global_settings { }\n", "t.pov", {}, diag);
+    EXPECT_FALSE(d.global.subsurface);
+    EXPECT_EQ(d.global.mm_per_unit, 10);
+    EXPECT_EQ(d.global.subsurface_samples_diffuse, 50);
+}
+
 TEST(PovScene, VersionTracking) {
     // No #version at all: POV-Ray 3.7 takes the scene as 3.62 (EffectiveLanguageVersion).
     Diagnostics diag;

@@ -127,12 +127,14 @@ TEST(PovUnsupported, FinishFeatures) {
     const auto& f = p.scene.materials[p.scene.objects[0].material].texture.finish;
     EXPECT_DOUBLE_EQ(f.diffuse, 0.6);
     EXPECT_DOUBLE_EQ(f.phong, 0.5);
+    // (Subsurface light transport is supported: parsed, no warning.)
+    EXPECT_TRUE(f.subsurface);
+    EXPECT_DOUBLE_EQ(f.translucency.g, 0.5);
     EXPECT_EQ(p.warnings,
               (std::vector<std::string>{
                   "2:32: 'albedo' is not supported: ignored",
                   "2:42: 'diffuse backside illumination' is not supported: ignored",
                   "2:48: 'irid' is not supported: the finish's irid block is ignored",
-                  "3:3: 'subsurface' is not supported: the finish's subsurface block is ignored",
                   "3:35: 'finish ior' is not supported: ignored (write it in interior)"}));
 }
 

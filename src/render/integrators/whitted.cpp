@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 
 #include "core/float.h"
 #include "render/lights/blender_lights.h"
 #include "render/lights/area_light.h"
 #include "render/lights/sky.h"
+#include "render/materials/sslt.h"
 #include "render/prepare/containing.h"
 #include "render/textures/normal.h"
 
@@ -349,7 +351,16 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
         // (bogus, but compatible) formula.
         const double att = legacy_ ? 1.0 - (pig.filter * pig.rgb.max() + pig.transmit)
                                    : 1.0 - pig.filter - pig.transmit;
-        Color tmp = pig.rgb * f.ambient * scene_.global.ambient_light * att;
+        // Subsurface light transport stands in for the diffuse term (POV-Ray keeps no
+        // diffuse beside it: a surface-only diffuse is a layer of its own).
+        const bool sslt = f.subsurface && scene_.global.subsurface;
+        Color tmp;
+        if (sslt && features_.lights) {
+            Vec3 raw_n = hit.n;
+            if (dot(raw_n, ray.dir) > 0) raw_n = -raw_n;
+            tmp = subsurface(f, pig.rgb, ray, hit, raw_n, state);
+        }
+        tmp += pig.rgb * f.ambient * scene_.global.ambient_light * att;
         tmp += pig.rgb * f.emission * att;
         if (features_.lights && (f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0)) {
             for (size_t light_index = 0; light_index < lights_.size(); ++light_index) {
@@ -377,7 +388,7 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
                           std::fabs(lc.b) > kPovEpsilon))
                         continue;
                 }
-                tmp += diffuse_term(f, lay_n, ls.dir, pig.rgb, lc, att);
+                if (!sslt) tmp += diffuse_term(f, lay_n, ls.dir, pig.rgb, lc, att);
                 // shadowless lights are POV-Ray's FILL_LIGHT_SOURCE: diffuse only.
                 if (!light.casts_shadows()) continue;
                 if (f.phong > 0.0) tmp += phong_term(f, lay_n, ls.dir, ray.dir, pig.rgb, lc);
@@ -431,6 +442,82 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
         result += r.reflec * rfl;
     }
     return result;
+}
+
+namespace {
+
+// The subsurface estimate's view of the classic renderer: every object, the POV-Ray lights
+// with their shadows, and rays traced on from inside one subsurface sample (where the samples
+// drop to one of each kind, and stop one level further down).
+class WhittedSslt final : public SsltScene {
+public:
+    using Shadow = std::function<Color(size_t, const Hit&, const LightSample&)>;
+    using Trace = std::function<Color(const Ray&, double)>;
+    WhittedSslt(const Geometry& g, const std::vector<PreparedLight>& lights, bool shadows,
+                Shadow shadow, Trace trace)
+        : geometry_(g), lights_(lights), shadows_(shadows), shadow_(std::move(shadow)),
+          trace_(std::move(trace)) {}
+    bool intersect(const Vec3& origin, const Vec3& dir, double tmax, Hit* hit) const override {
+        Ray r;
+        r.origin = origin;
+        r.dir = dir;
+        r.tmax = tmax;
+        return geometry_.intersect(r, hit);
+    }
+    size_t light_count() const override { return lights_.size(); }
+    bool light_direction(size_t k, const Vec3& p, Vec3* dir) const override {
+        LightSample ls;
+        if (lights_[k].light().blender || !lights_[k].sample(p, &ls)) return false;
+        *dir = ls.dir;
+        return true;
+    }
+    Color light(size_t k, const Hit& at, Vec3* dir) const override {
+        const PreparedLight& light = lights_[k];
+        LightSample ls;
+        if (light.light().blender || !light.sample(at.p, &ls)) return Color();
+        if (!(std::fabs(ls.color.r) >= kPovEpsilon || std::fabs(ls.color.g) >= kPovEpsilon ||
+              std::fabs(ls.color.b) >= kPovEpsilon))
+            return Color();
+        *dir = ls.dir;
+        return shadows_ && light.casts_shadows() ? shadow_(k, at, ls) : ls.color;
+    }
+    Color trace(const Ray& ray, double weight) const override { return trace_(ray, weight); }
+
+private:
+    const Geometry& geometry_;
+    const std::vector<PreparedLight>& lights_;
+    bool shadows_;
+    Shadow shadow_;
+    Trace trace_;
+};
+
+}  // namespace
+
+Color Whitted::subsurface(const ClassicFinish& f, const Color& pigment, const Ray& ray,
+                          const Hit& out, const Vec3& raw_n, const RayState& state) const {
+    if (state.subsurface_depth >= 2) return Color();
+    RayState inner = state;
+    ++inner.subsurface_depth;
+    const scene::GlobalSettings& g = scene_.global;
+    SsltSettings s;
+    s.samples_diffuse = state.subsurface_depth == 1 ? 1 : g.subsurface_samples_diffuse;
+    s.samples_single = state.subsurface_depth == 1 ? 1 : g.subsurface_samples_single;
+    s.mm_per_unit = g.mm_per_unit;
+    s.adc_bailout = adc_bailout_;
+    const WhittedSslt view(
+        geometry_, lights_, features_.shadows,
+        [&](size_t k, const Hit& at, const LightSample& ls) {
+            return shadow_filter(at.p, at, ls, inner, k);
+        },
+        [&](const Ray& r, double weight) {
+            RayState next = inner;
+            next.primary = false;
+            next.refraction = true;
+            return trace(r, weight, next, false);
+        });
+    const double ior = scene_.materials[static_cast<size_t>(out.material)].interior.ior;
+    return subsurface_light(view, s, f.translucency, pigment * f.diffuse,
+                            relative_ior(state, out.object, ior), ray, out, raw_n);
 }
 
 Color Whitted::reflect(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3& raw_n,

@@ -13,6 +13,8 @@
 
 namespace glint::render {
 
+struct ClassicFinish;
+
 class Whitted {
 public:
     // `prepared` (made for IntegratorKind::Whitted) must outlive the integrator.
@@ -40,6 +42,7 @@ private:
         bool reflection = false;
         bool refraction = false;
         int level = 0;  // trace level before this ray (POV-Ray's ticket.traceLevel)
+        int subsurface_depth = 0;  // subsurface samples this ray is inside of
         Interiors interiors;
         bool image_ray() const { return primary || (refraction && !reflection); }
     };
@@ -93,7 +96,10 @@ private:
     bool hollow(const Interiors& in) const;
     Color fade(const scene::Interior& interior, double depth) const;
     double relative_ior(const RayState& state, int object, double ior) const;
-
+    // Subsurface light transport (materials/sslt.h) of finish `f` with `pigment` at `out`,
+    // seen along `ray`: it stands in for the diffuse term; `raw_n` faces the ray.
+    Color subsurface(const ClassicFinish& f, const Color& pigment, const Ray& ray, const Hit& out,
+                     const Vec3& raw_n, const RayState& state) const;
     const scene::Scene& scene_;
     const scene::Features& features_;
     const Geometry& geometry_;

@@ -21,7 +21,9 @@ ClassicFinish::ClassicFinish(const scene::Finish& f)
       fresnel(f.reflection.fresnel),
       reflect_metallic(f.reflection.metallic),
       reflect_exponent(f.reflection.exponent != 0.0 ? 1.0 / f.reflection.exponent : 1.0),
-      conserve_energy(f.conserve_energy) {}
+      conserve_energy(f.conserve_energy),
+      subsurface(f.subsurface),
+      translucency(f.translucency) {}
 
 double metallic_fresnel(double cos_angle) {
     double x = std::fabs(std::acos(std::clamp(cos_angle, -1.0, 1.0))) / (kPi / 2);

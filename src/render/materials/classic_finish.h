@@ -26,6 +26,10 @@ struct ClassicFinish {
     double reflect_metallic = 0;
     double reflect_exponent = 1;  // 1 / reflection_exponent
     bool conserve_energy = false;
+    // Subsurface light transport (finish `subsurface`; only with global_settings'
+    // subsurface block): it stands in for the diffuse term.
+    bool subsurface = false;
+    Color translucency;
 
     explicit ClassicFinish(const scene::Finish& f);
     bool reflects() const { return !reflection_min.is_black() || !reflection_max.is_black(); }
