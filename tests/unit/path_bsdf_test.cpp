@@ -15,6 +15,7 @@
 #include "formats/obj/obj_importer.h"
 #include "render/bsdf/bsdf.h"
 #include "render/bsdf/pov_to_pbr.h"
+#include "render/materials/sslt.h"
 #include "render/sampling/sampler.h"
 #include "scene/scene.h"
 
@@ -374,6 +375,28 @@ TEST(PathPbrMapping, DiffuseModelFollowsTheSource) {
     f.phong = 1;
     EXPECT_EQ(pov_to_pbr(f, scene::Interior{}, scene::ColorFT(Color(1, 1, 1))).bsdf.diffuse_model,
               DiffuseModel::Lambert);
+}
+
+TEST(PathPbrMapping, PovSubsurfaceBecomesARandomWalkOfTheDiffusionLength) {
+    scene::Finish f;
+    f.subsurface = true;
+    f.translucency = Color(2, 1, 0.5);  // mm
+    scene::Interior in;
+    in.ior = 1.45;
+    const scene::ColorFT pigment(Color(0.8, 0.5, 0.1));
+    // Off without global_settings' subsurface (mm_per_unit 0): plain Lambert.
+    SurfacePbr off = pov_to_pbr(f, in, pigment);
+    EXPECT_TRUE(off.subsurface_radius.is_black());
+    EXPECT_TRUE(off.bsdf.diffuse_lobe);
+    // On, 40 mm per unit: the BSSRDF replaces the diffuse lobe, its radius the diffusion
+    // length 1 / sqrt(3 sigma_a sigma'_t) of the classic renderer's coefficients, in units.
+    SurfacePbr on = pov_to_pbr(f, in, pigment, 40);
+    EXPECT_FALSE(on.bsdf.diffuse_lobe);
+    const SsltCoefficients k(f.translucency, on.bsdf.base, 1.45);
+    EXPECT_NEAR(on.subsurface_radius.g,
+                1 / (std::sqrt(3 * k.sigma_a.g * k.sigma_prime_t.g) * 40), 1e-12);
+    // A darker channel diffuses less far.
+    EXPECT_GT(on.subsurface_radius.r, on.subsurface_radius.b);
 }
 
 TEST(PathPbrMapping, PovFinishesMapAsDocumented) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/materials/sslt.h"
+
 namespace glint::render {
 namespace {
 
@@ -16,7 +18,7 @@ double roughness_from_exponent(double n) {
 }  // namespace
 
 SurfacePbr pov_to_pbr(const scene::Finish& finish, const scene::Interior& interior,
-                      const scene::ColorFT& pigment) {
+                      const scene::ColorFT& pigment, double mm_per_unit) {
     SurfacePbr s;
     PrincipledParams& p = s.bsdf;
     p.diffuse_model = DiffuseModel::Lambert;  // POV-Ray's diffuse is Lambert
@@ -78,6 +80,22 @@ SurfacePbr pov_to_pbr(const scene::Finish& finish, const scene::Interior& interi
         if (p.transmission > 0) p.roughness = 0;  // POV-Ray's refraction is sharp
     }
     s.emission = pigment.rgb * finish.emission;
+    if (finish.subsurface && mm_per_unit > 0 && p.transmission < 1) {
+        // The classic renderer's coefficients (render/materials/sslt.h): reduced scattering
+        // 1 / translucency (per mm), the reduced albedo that gives the base colour as its
+        // diffuse reflectance (the base colour, as the Lambert lobe it replaces); the walk's
+        // length scale is the diffusion length 1 / sigma_tr.
+        const SsltCoefficients k(finish.translucency, p.base, p.ior);
+        auto radius = [mm_per_unit](double sa, double st) {
+            const double tr = std::sqrt(3 * sa * st);
+            // (No absorption: light diffuses without end; a thousand free paths stand in.)
+            return 1 / (std::max(tr, 1e-3 * st) * mm_per_unit);
+        };
+        s.subsurface_radius = Color(radius(k.sigma_a.r, k.sigma_prime_t.r),
+                                    radius(k.sigma_a.g, k.sigma_prime_t.g),
+                                    radius(k.sigma_a.b, k.sigma_prime_t.b));
+        p.diffuse_lobe = false;
+    }
     return s;
 }
 

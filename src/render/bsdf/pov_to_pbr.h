@@ -14,12 +14,17 @@ struct SurfacePbr {
     PrincipledParams bsdf;
     Color emission;     // emitted radiance (both sides)
     double alpha = 1;   // coverage; 1 - alpha of the rays pass straight through
+    // POV-Ray's subsurface light transport as a random-walk BSSRDF of the base colour in
+    // place of the diffuse lobe: per channel its diffusion length (Cycles' subsurface radius)
+    // in scene units; black: none.
+    Color subsurface_radius;
 };
 
 // POV-Ray finish + interior + the pigment color at the hit -> the Principled BSDF with a Lambert
-// diffuse (docs/pbr-mapping.md).
+// diffuse (docs/pbr-mapping.md). `mm_per_unit` > 0: the scene's subsurface light transport is
+// on (global_settings subsurface), and a finish with `subsurface` gets a BSSRDF.
 SurfacePbr pov_to_pbr(const scene::Finish& finish, const scene::Interior& interior,
-                      const scene::ColorFT& pigment);
+                      const scene::ColorFT& pigment, double mm_per_unit = 0);
 
 // An importer-filled Pbr; `base` is the base color at the hit (base_color or its map).
 SurfacePbr pbr_surface(const scene::Pbr& pbr, const Color& base);

@@ -58,6 +58,7 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
                     world);
     // Media: each material's interior media (POV-Ray) or volume shader (Blender) become one
     // medium, the atmosphere's or the world's volume another.
+    sslt_mm_ = scene_.global.subsurface ? scene_.global.mm_per_unit : 0;
     material_medium_.assign(scene_.materials.size(), -1);
     material_grid_medium_.assign(scene_.materials.size(), -1);
     bool volume_objects = false;
@@ -180,6 +181,30 @@ Color PathIntegrator::environment(const Vec3& dir, const shader::RayState& state
     return environment(dir);
 }
 
+void PathIntegrator::add_pov_subsurface(const SurfacePbr& s, const Hit& hit, const Vec3& dir,
+                                        bool diffuse_ancestor, ClosureSet* set) const {
+    // POV-Ray's subsurface in place of the diffuse lobe: a random walk of the base colour
+    // (as Cycles' Random Walk), plain diffuse after a diffuse bounce.
+    const PrincipledParams& p = s.bsdf;
+    const Color weight = p.base * ((1 - p.metallic) * (1 - p.transmission));
+    if (!(std::fabs(average(weight)) >= 1e-5)) return;
+    const Vec3 n = dot(hit.n, dir) > 0 ? -hit.n : hit.n;
+    if (diffuse_ancestor) {
+        set->add(Bsdf::lambert(Color(1, 1, 1)), weight, n, std::fabs(average(weight)));
+        return;
+    }
+    Bssrdf b;
+    b.weight = weight;
+    b.radius = s.subsurface_radius;
+    b.albedo = p.base;
+    b.n = n;
+    Color diffuse;
+    b.setup(false, std::clamp(p.ior, 1.01, 3.8), &diffuse);
+    if (!diffuse.is_black())
+        set->add(Bsdf::lambert(Color(1, 1, 1)), diffuse, n, std::fabs(average(diffuse)));
+    set->add(b);
+}
+
 SurfacePbr PathIntegrator::surface(Hit& hit) const {
     const PathMaterial* row = materials_.path(hit.material);
     if (!row) {
@@ -202,7 +227,7 @@ SurfacePbr PathIntegrator::surface(Hit& hit) const {
     const scene::Texture& t = base_texture(m.texture);
     scene::ColorFT c;
     if (!pigments_.evaluate(t.pigment, at, &c)) c = scene::ColorFT(Color(1, 1, 1), 0, 1);
-    return pov_to_pbr(t.finish, m.interior, c);
+    return pov_to_pbr(t.finish, m.interior, c, sslt_mm_);
 }
 
 Color PathIntegrator::environment(const Vec3& dir) const {
@@ -607,6 +632,8 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
             // costs Fresnel terms and a square root.
             set.add(row && row->constant_bsdf ? *row->constant_bsdf : Bsdf::principled(s.bsdf),
                     Color(1, 1, 1), hit.n, 1);
+            if (!s.subsurface_radius.is_black())
+                add_pov_subsurface(s, hit, r.dir, diffuse_ancestor, &set);
         }
         if (first && !first->hit) {
             first->hit = true;

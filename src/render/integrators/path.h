@@ -70,6 +70,9 @@ public:
 private:
     // The surface at a hit. Bump and normal maps (OBJ/MTL map_Bump) bend hit.n in place.
     SurfacePbr surface(Hit& hit) const;
+    // A POV-Ray subsurface finish's BSSRDF (SurfacePbr::subsurface_radius) into `set`.
+    void add_pov_subsurface(const SurfacePbr& s, const Hit& hit, const Vec3& dir,
+                            bool diffuse_ancestor, ClosureSet* set) const;
     // Radiance from the environment along a direction: the background with the sky_sphere's
     // layers over it (POV-Ray 3.7's sky).
     // With a world node graph (Blender), its emission for a ray in `state`.
@@ -172,6 +175,8 @@ private:
     std::vector<double> object_size_;   // per object: the mean side of its world bounds
     int world_medium_ = -1;
     double world_step_ = kInfinity;  // its ray-marching step, where it varies in space
+    // mm_per_unit where POV-Ray's subsurface light transport is on, else 0.
+    double sslt_mm_ = 0;
     bool has_media_ = false;
     MediumStack camera_stack_;
     mutable std::atomic<uint64_t> nonfinite_{0};

@@ -26,8 +26,9 @@ bool lets_shadow_rays_through(const SurfacePbr& s) {
 }
 
 // The path tracer's view of material `m`; its maps, if any, are appended to `maps`.
+// `sslt_mm`: the scene's mm_per_unit where subsurface light transport is on, else 0.
 PathMaterial prepare_path(const scene::Material& m, TextureCache* textures,
-                          std::vector<PbrMaps>* maps) {
+                          std::vector<PbrMaps>* maps, double sslt_mm) {
     PathMaterial row;
     const scene::Pbr& p = m.pbr;
     if (!p.derived) {
@@ -47,7 +48,7 @@ PathMaterial prepare_path(const scene::Material& m, TextureCache* textures,
     } else {
         const scene::Texture& t = base_texture(m.texture);
         if (t.pigment.kind == scene::PatternKind::Plain)
-            row.constant = pov_to_pbr(t.finish, m.interior, t.pigment.color);
+            row.constant = pov_to_pbr(t.finish, m.interior, t.pigment.color, sslt_mm);
     }
     if (row.constant) {
         row.emission = row.constant->emission;
@@ -94,7 +95,10 @@ void MaterialTable::prepare_for(const scene::Scene& scene, IntegratorKind integr
             const shader::ShaderProgram* program =
                 graphs ? graphs->material(static_cast<int>(i)) : nullptr;
             path_.push_back(program ? prepare_graph(*program)
-                                    : prepare_path(scene.materials[i], textures, &maps_));
+                                    : prepare_path(scene.materials[i], textures, &maps_,
+                                                   scene.global.subsurface
+                                                       ? scene.global.mm_per_unit
+                                                       : 0));
             any_alpha_ = any_alpha_ || path_.back().has_alpha;
             any_holdout_ = any_holdout_ || (program && program->has_holdout());
         }
