@@ -327,6 +327,8 @@ public:
         if (o.no_image) s += " no_image";
         if (o.no_reflection) s += " no_reflection";
         if (o.double_illuminate) s += " double_illuminate";
+        if (o.no_radiosity) s += " no_radiosity";
+        if (o.radiosity_importance >= 0) s += " radiosity_importance " + num(o.radiosity_importance);
         if (!o.name.empty()) s += " name " + o.name;
         line(d, s + where(o.loc));
         if (!o.transform.is_identity()) line(d + 1, "transform " + matrix(o.transform));
@@ -397,6 +399,23 @@ std::string print_ir(const scene::Scene& s) {
                                       std::to_string(g.subsurface_samples_diffuse) + ", " +
                                       std::to_string(g.subsurface_samples_single)
                                 : std::string()));
+    if (const auto& r = g.radiosity) {
+        p.line(1, "radiosity brightness " + num(r->brightness) + " count " +
+                      std::to_string(r->count) + ", " + std::to_string(r->direction_pool) +
+                      " error_bound " + num(r->error_bound) + " gray_threshold " +
+                      num(r->gray_threshold) + " low_error_factor " + num(r->low_error_factor) +
+                      " minimum_reuse " + num(r->minimum_reuse) + " maximum_reuse " +
+                      num(r->maximum_reuse) + " nearest_count " +
+                      std::to_string(r->nearest_count) + ", " +
+                      std::to_string(r->nearest_count_pretrace) + " recursion_limit " +
+                      std::to_string(r->recursion_limit) + " max_sample " + num(r->max_sample) +
+                      " adc_bailout " + num(r->adc_bailout) + " pretrace " +
+                      num(r->pretrace_start) + " " + num(r->pretrace_end) +
+                      (r->normal ? " normal" : "") + (r->media ? " media" : "") +
+                      (r->subsurface ? " subsurface" : "") +
+                      (r->always_sample ? " always_sample" : "") + " default_importance " +
+                      num(g.radiosity_importance));
+    }
     const Camera& c = s.camera;
     p.line(0, std::string("camera ") +
                   camera_kind_name(c.kind) +

@@ -214,8 +214,11 @@ void Parser::parse_global_settings() {
                     skip_comma();
                     scene.global.subsurface_samples_single = to_int(parse_float());
                 } else if (accept("radiosity")) {
-                    // Only matters with radiosity, which glint warns about on its own.
-                    parse_float();
+                    // Radiosity's ambient through the subsurface transport: not modelled.
+                    if (parse_float() != 0)
+                        diag.warning(loc(), "global_settings subsurface 'radiosity on' is "
+                                            "ignored: radiosity lights subsurface finishes "
+                                            "as plain ones");
                 } else {
                     break;
                 }
@@ -223,7 +226,9 @@ void Parser::parse_global_settings() {
             expect_close("subsurface", so);
         } else if (w == "mm_per_unit") {
             scene.global.mm_per_unit = parse_float();
-        } else if (w == "radiosity" || w == "photons") {
+        } else if (w == "radiosity") {
+            parse_radiosity_settings();
+        } else if (w == "photons") {
             diag.warning(loc(), "global_settings '" + w + "' is not supported and is ignored");
             skip_block_tokens(*this, w);
         } else if (w == "charset") {
@@ -239,6 +244,101 @@ void Parser::parse_global_settings() {
                  got(t));
         }
     }
+}
+
+void Parser::parse_radiosity_settings() {
+    // parse.cpp Parse_Global_Settings, RADIOSITY_TOKEN: POV-Ray's checks and messages.
+    expect_open("radiosity");
+    FileLoc o = loc();
+    scene::Radiosity r;
+    bool min_set = false, max_set = false;
+    auto positive = [&](const char* what, double v, bool zero_ok = false) {
+        if (zero_ok ? v < 0 : v <= 0)
+            fail(std::string("radiosity ") + what + " must be a " +
+                 (zero_ok ? "non-negative" : "positive") + " number");
+        return v;
+    };
+    auto in_range = [&](const char* what, double v, int lo, int hi, bool lo_open) {
+        if ((lo_open ? v <= lo : v < lo) || v > hi)
+            fail(std::string("radiosity ") + what + " must be " +
+                 (lo_open ? "greater than " : "at least ") + std::to_string(lo) +
+                 " and at most " + std::to_string(hi));
+        return v;
+    };
+    for (;;) {
+        FileLoc at = loc();
+        if (accept("load_file") || accept("save_file")) {
+            diag.warning(at, "radiosity load_file/save_file is ignored: POV-Ray 3.7 takes "
+                             "them on the command line only, and glint keeps no cache file");
+            parse_string();
+        } else if (accept("always_sample")) {
+            r.always_sample = parse_float() != 0;
+        } else if (accept("pretrace_start")) {
+            r.pretrace_start = in_range("pretrace_start", parse_float(), 0, 1, true);
+        } else if (accept("pretrace_end")) {
+            r.pretrace_end = in_range("pretrace_end", parse_float(), 0, 1, true);
+        } else if (accept("brightness")) {
+            r.brightness = positive("brightness", parse_float());
+        } else if (accept("count")) {
+            const double c = parse_float();
+            if (static_cast<int>(c) <= 0) fail("radiosity count must be a positive number");
+            r.count = static_cast<int>(c);
+            skip_comma();
+            r.direction_pool = static_cast<int>(allow_float(std::max(1600, r.count)));
+            if (r.direction_pool < r.count)
+                fail("radiosity count can not be more than its direction pool (count's second "
+                     "value)");
+        } else if (accept("error_bound")) {
+            r.error_bound = positive("error_bound", parse_float());
+        } else if (accept("gray_threshold")) {
+            r.gray_threshold = in_range("gray_threshold", parse_float(), 0, 1, false);
+        } else if (accept("low_error_factor")) {
+            r.low_error_factor = positive("low_error_factor", parse_float());
+        } else if (accept("maximum_reuse")) {
+            r.maximum_reuse = positive("maximum_reuse", parse_float());
+            max_set = true;
+        } else if (accept("minimum_reuse")) {
+            r.minimum_reuse = positive("minimum_reuse", parse_float(), true);
+            min_set = true;
+        } else if (accept("nearest_count")) {
+            r.nearest_count = static_cast<int>(in_range("nearest_count", parse_float(), 1, 20, false));
+            skip_comma();
+            const double apt = allow_float(0);
+            if (apt < 0 || static_cast<int>(apt) >= r.nearest_count)
+                fail("radiosity nearest_count for adaptive pretrace (its second value) must be "
+                     "non-negative and smaller than nearest_count");
+            r.nearest_count_pretrace = static_cast<int>(apt);
+        } else if (accept("recursion_limit")) {
+            r.recursion_limit =
+                static_cast<int>(in_range("recursion_limit", parse_float(), 1, 20, false));
+        } else if (accept("max_sample")) {
+            r.max_sample = parse_float();
+        } else if (accept("adc_bailout")) {
+            r.adc_bailout = positive("adc_bailout", parse_float());
+        } else if (accept("normal")) {
+            r.normal = parse_float() != 0;
+        } else if (accept("media")) {
+            r.media = parse_float() != 0;
+        } else if (accept("subsurface")) {
+            r.subsurface = parse_float() != 0;
+        } else {
+            break;
+        }
+    }
+    expect_close("radiosity", o);
+    // parse.cpp's end-of-scene checks.
+    if (r.pretrace_end > r.pretrace_start)
+        fail_at(o, "radiosity pretrace_end must be smaller than or equal to pretrace_start");
+    if (r.minimum_reuse > r.maximum_reuse * 0.5) {
+        if (!min_set) {
+            r.minimum_reuse = r.maximum_reuse * 0.5;
+        } else if (!max_set) {
+            r.maximum_reuse = r.minimum_reuse * 2.0;
+        } else if (r.minimum_reuse >= r.maximum_reuse) {
+            fail_at(o, "radiosity maximum_reuse must be larger than minimum_reuse");
+        }
+    }
+    scene.global.radiosity = r;
 }
 
 void Parser::parse_background() {

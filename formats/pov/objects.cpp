@@ -285,8 +285,22 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
             o.obj.no_reflection = flag();
         } else if (w == "double_illuminate") {
             o.obj.double_illuminate = flag();
-        } else if (w == "no_radiosity" || w == "hierarchy") {
+        } else if (w == "no_radiosity") {
+            o.obj.no_radiosity = flag();
+        } else if (w == "hierarchy") {
             flag();
+        } else if (w == "radiosity") {
+            // radiosity { importance F } (parse.cpp): the share of a radiosity sample's rays
+            // that may end on this object.
+            expect_open("radiosity");
+            FileLoc lo = loc();
+            while (accept("importance")) {
+                const double v = parse_float();
+                if (!(v > 0 && v <= 1))
+                    fail("radiosity importance must be greater than 0.0 and at most 1.0");
+                o.obj.radiosity_importance = v;
+            }
+            expect_close("radiosity", lo);
         } else if (w == "sturm") {
             bool on = flag();
             if (auto tor = std::get_if<scene::Torus>(&o.obj.shape)) tor->sturm = on;
@@ -315,7 +329,7 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
                 }
             }
             expect_close(w.c_str(), lo);
-        } else if (w == "photons" || w == "radiosity" || w == "interior_texture") {
+        } else if (w == "photons" || w == "interior_texture") {
             warn_unsupported(*this, w, loc(), "the object's " + w + " block is ignored");
             skip_braced_block(*this, w);
         } else if (w == "uv_mapping" || w == "cutaway_textures") {

@@ -53,6 +53,8 @@ static void propagate_flags(scene::Object& o) {
         c.no_shadow = c.no_shadow || o.no_shadow;
         c.no_image = c.no_image || o.no_image;
         c.no_reflection = c.no_reflection || o.no_reflection;
+        c.no_radiosity = c.no_radiosity || o.no_radiosity;
+        if (c.radiosity_importance < 0) c.radiosity_importance = o.radiosity_importance;
         propagate_flags(c);
     }
 }
@@ -259,8 +261,19 @@ void Parser::parse_default() {
             FileLoc lo = loc();
             parse_normal_body(default_texture_.normal);
             expect_close("normal", lo);
+        } else if (w == "radiosity") {
+            expect_open("radiosity");
+            FileLoc lo = loc();
+            while (accept("importance")) {
+                const double v = parse_float();
+                if (!(v > 0 && v <= 1))
+                    fail("radiosity importance must be greater than 0.0 and at most 1.0");
+                scene.global.radiosity_importance = v;
+            }
+            expect_close("radiosity", lo);
         } else {
-            fail("expected texture, pigment, finish or normal in #default, got " + got(t));
+            fail("expected texture, pigment, finish, normal or radiosity in #default, got " +
+                 got(t));
         }
     }
     expect_close("#default", o);

@@ -153,6 +153,7 @@ public:
     // ---- camera and scene settings (camera.cpp)
     void parse_camera_body(scene::Camera& cam);
     void parse_global_settings();
+    void parse_radiosity_settings();  // after `radiosity` in global_settings
     void parse_background();
     void parse_sky_sphere();
     // ---- atmosphere (atmosphere.cpp): fog { ... } and rainbow { ... } statements

@@ -46,6 +46,7 @@ enum ObjectFlags : uint32_t {
     kNoImage = 1u << 1,
     kNoReflection = 1u << 2,
     kDoubleIlluminate = 1u << 3,
+    kNoRadiosity = 1u << 4,
 };
 
 struct Hit {

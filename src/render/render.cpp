@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <memory>
+#include <optional>
+#include <string>
 #include <utility>
 
 #include "render/film/driver.h"
@@ -74,7 +76,38 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
     result.prepare_seconds = seconds_since(t0);
 
     auto t1 = std::chrono::steady_clock::now();
-    RadianceFn radiance = [&whitted](const Ray& ray, const SampleId&) { return whitted.li(ray); };
+    Radiosity* radiosity = whitted.radiosity();
+    if (radiosity) {
+        // The pretrace fills the irradiance cache over the whole image, whatever region is
+        // rendered, so farm parts share one cache.
+        const Camera& camera = prepared->camera;
+        auto pixel = [&](double x, double y, RadiosityTicket& ticket) {
+            if (std::optional<Ray> ray = camera.generate(x, y)) whitted.li(*ray, &ticket);
+        };
+        if (!radiosity->pretrace(options.width, options.height, options.threads, options.cancel,
+                                 pixel)) {
+            // Cancelled before any pixel of the final render: all of it black.
+            auto partial = std::make_shared<PartialRender>();
+            const Region r = options.region.empty()
+                                 ? Region{0, 0, options.width, options.height}
+                                 : options.region;
+            partial->film.image.width = r.width();
+            partial->film.image.height = r.height();
+            partial->film.image.rgba.assign(static_cast<size_t>(r.width()) * r.height() * 4, 0.0f);
+            partial->tiles_total = static_cast<size_t>((r.width() + kBlockSize - 1) / kBlockSize) *
+                                   ((r.height() + kBlockSize - 1) / kBlockSize);
+            throw Interrupted(std::move(partial));
+        }
+        radiosity->start_final(options.width, options.height);
+        diag.info("radiosity: " + std::to_string(radiosity->cache_size()) +
+                  " samples from the pretrace");
+    }
+    RadianceFn radiance = [&whitted, radiosity](const Ray& ray, const SampleId& id) {
+        if (!radiosity) return whitted.li(ray);
+        RadiosityTicket ticket;
+        ticket.block = radiosity->final_block(id.block);
+        return whitted.li(ray, &ticket);
+    };
     result.image = run_tiles(prepared->camera, options, settings, radiance);
     result.render_seconds = seconds_since(t1);
     return result;

@@ -21,6 +21,7 @@ public:
             for (const Pigment& p : scene_.sky_sphere->pigments) pigment(p);
         }
         for (const Media& m : scene_.media) media(m);
+        f_.radiosity = scene_.global.radiosity.has_value();
         std::vector<bool> used(scene_.materials.size(), false);
         for (const Object& o : scene_.objects) object(o, &used);
         for (size_t i = 0; i < used.size(); ++i)
@@ -187,6 +188,7 @@ std::vector<std::string> Features::used() const {
     add(texture_maps, "texture maps/layered textures");
     add(sky_sphere, "sky_sphere");
     add(media, "media");
+    add(radiosity, "radiosity");
     return out;
 }
 
@@ -197,6 +199,7 @@ std::vector<std::string> Features::skipped() const {
     else if (!shadows) out.push_back("shadow rays (all lights shadowless)");
     if (!secondary_rays()) out.push_back("secondary rays (nothing reflects or refracts)");
     if (!highlights) out.push_back("highlight evaluation (no phong/specular)");
+    if (!radiosity) out.push_back("radiosity pretrace and cache (no radiosity block)");
     return out;
 }
 

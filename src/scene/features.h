@@ -35,6 +35,7 @@ struct Features {
     bool texture_maps = false;    // texture_map, block patterns of textures, layered textures
     bool sky_sphere = false;
     bool media = false;  // participating media: in a hollow object's interior or everywhere
+    bool radiosity = false;  // global_settings radiosity: the classic renderer's irradiance cache
 
     // Whether rays other than primary and shadow rays can be spawned.
     bool secondary_rays() const { return reflection || refraction || transparency; }

@@ -19,6 +19,26 @@
 
 namespace glint::scene {
 
+// global_settings { radiosity { ... } } with POV-Ray 3.7's defaults (radiosity.h
+// SceneRadiositySettings); the parser checks the ranges POV-Ray checks.
+struct Radiosity {
+    double brightness = 1;
+    int count = 35;
+    int direction_pool = 1600;  // count's second value
+    double error_bound = 1.8;
+    double gray_threshold = 0;
+    double low_error_factor = 0.5;
+    double minimum_reuse = 0.015;
+    double maximum_reuse = 0.2;
+    int nearest_count = 5;
+    int nearest_count_pretrace = 0;  // nearest_count's second value: adaptive pretrace
+    int recursion_limit = 2;
+    double max_sample = -1;  // <= 0: no limit
+    double adc_bailout = 0.01;
+    bool normal = false, media = false, subsurface = false, always_sample = false;
+    double pretrace_start = 0.08, pretrace_end = 0.04;
+};
+
 struct GlobalSettings {
     Color ambient_light{1, 1, 1};
     int max_trace_level = 5;
@@ -33,6 +53,10 @@ struct GlobalSettings {
     // for finishes that have it; the samples per shading point of its two terms.
     bool subsurface = false;
     int subsurface_samples_diffuse = 50, subsurface_samples_single = 50;
+    // `radiosity { ... }`: POV-Ray's irradiance cache (render/gi/radiosity.h); absent: off.
+    std::optional<Radiosity> radiosity;
+    // `#default { radiosity { importance } }`: objects without their own importance.
+    double radiosity_importance = 1;
     FileLoc loc;
 };
 

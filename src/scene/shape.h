@@ -179,6 +179,10 @@ struct Object {
     bool no_image = false;
     bool no_reflection = false;
     bool double_illuminate = false;
+    bool no_radiosity = false;  // invisible to radiosity's sample rays
+    // `radiosity { importance }`: the share of a sample's rays that may hit this object
+    // (0, 1]; negative: the #default importance.
+    double radiosity_importance = -1;
     // Blender's ray visibility (Object Properties > Visibility), holdout and the values the
     // Object Info node reads; POV-Ray's objects keep the defaults.
     struct RayVisibility {

@@ -350,7 +350,62 @@ TEST(PovScene, GlobalSettingsBackgroundSky) {
     EXPECT_EQ(s.background.rgb, Color(0.1, 0.2, 0.3));
     ASSERT_TRUE(s.sky_sphere.has_value());
     EXPECT_EQ(s.sky_sphere->pigments.size(), 2u);
-    EXPECT_EQ(diag.warning_count(), 1);  // radiosity ignored, with a warning
+    ASSERT_TRUE(s.global.radiosity.has_value());
+    EXPECT_EQ(s.global.radiosity->count, 10);
+    EXPECT_EQ(diag.warning_count(), 0);
+}
+
+TEST(PovScene, GlobalRadiositySettings) {
+    Diagnostics diag;
+    auto s = parse_string(
+        "#version 3.7;\n"
+        "global_settings { radiosity { pretrace_start 0.16 pretrace_end 0.02 count 80, 2000\n"
+        "  nearest_count 8, 3 error_bound 0.5 recursion_limit 3 low_error_factor 0.7\n"
+        "  gray_threshold 0.2 minimum_reuse 0.01 maximum_reuse 0.1 brightness 1.3\n"
+        "  adc_bailout 0.005 normal on media on always_sample off max_sample 2 } }\n"
+        "#default { radiosity { importance 0.25 } }\n"
+        "sphere { 0, 1 no_radiosity } sphere { 0, 1 radiosity { importance 0.5 } }\n",
+        "t.pov", {}, diag);
+    ASSERT_TRUE(s.global.radiosity.has_value());
+    const scene::Radiosity& r = *s.global.radiosity;
+    EXPECT_EQ(r.pretrace_start, 0.16);
+    EXPECT_EQ(r.pretrace_end, 0.02);
+    EXPECT_EQ(r.count, 80);
+    EXPECT_EQ(r.direction_pool, 2000);
+    EXPECT_EQ(r.nearest_count, 8);
+    EXPECT_EQ(r.nearest_count_pretrace, 3);
+    EXPECT_EQ(r.error_bound, 0.5);
+    EXPECT_EQ(r.recursion_limit, 3);
+    EXPECT_EQ(r.low_error_factor, 0.7);
+    EXPECT_EQ(r.gray_threshold, 0.2);
+    EXPECT_EQ(r.minimum_reuse, 0.01);
+    EXPECT_EQ(r.maximum_reuse, 0.1);
+    EXPECT_EQ(r.brightness, 1.3);
+    EXPECT_EQ(r.adc_bailout, 0.005);
+    EXPECT_TRUE(r.normal);
+    EXPECT_TRUE(r.media);
+    EXPECT_FALSE(r.always_sample);
+    EXPECT_EQ(r.max_sample, 2);
+    EXPECT_EQ(s.global.radiosity_importance, 0.25);
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_TRUE(s.objects[0].no_radiosity);
+    EXPECT_EQ(s.objects[0].radiosity_importance, -1);
+    EXPECT_EQ(s.objects[1].radiosity_importance, 0.5);
+    EXPECT_EQ(diag.warning_count(), 0);
+    // An empty block is POV-Ray's defaults; minimum_reuse follows a small maximum_reuse down.
+    auto d = parse_string("global_settings { radiosity { maximum_reuse 0.02 } }", "t.pov", {},
+                          diag);
+    EXPECT_EQ(d.global.radiosity->count, 35);
+    EXPECT_EQ(d.global.radiosity->error_bound, 1.8);
+    EXPECT_EQ(d.global.radiosity->minimum_reuse, 0.01);
+    // POV-Ray's range checks.
+    for (const char* bad : {"global_settings { radiosity { count 0 } }",
+                            "global_settings { radiosity { pretrace_start 0.01 pretrace_end 0.1 } }",
+                            "global_settings { radiosity { nearest_count 21 } }",
+                            "global_settings { radiosity { recursion_limit 0 } }",
+                            "global_settings { radiosity { error_bound -1 } }",
+                            "sphere { 0, 1 radiosity { importance 0 } }"})
+        EXPECT_THROW(parse_string(bad, "t.pov", {}, diag), Error) << bad;
 }
 
 TEST(PovScene, GlobalSubsurfaceSettings) {

@@ -71,7 +71,7 @@ TEST(PovUnsupported, CsgKeepsItsOtherChildrenAndDeclarationsWork) {
                   "6:28: 'ovus' is not supported: the object is left out"}));
 }
 
-TEST(PovUnsupported, PhotonsAndRadiosityAreIgnoredBesideMedia) {
+TEST(PovUnsupported, PhotonsAreIgnoredBesideMediaAndRadiosity) {
     Parsed p = parse_warn(
         "media { intervals 10 scattering { 1, rgb 0.1 } }\n"
         "#declare D = density { spherical color_map { [0 rgb 0] [1 rgb 1] } }\n"
@@ -88,10 +88,10 @@ TEST(PovUnsupported, PhotonsAndRadiosityAreIgnoredBesideMedia) {
     // The media are read (pov_media_test covers them); the rest is left out with a warning.
     EXPECT_EQ(p.scene.media.size(), 1u);
     EXPECT_EQ(p.scene.materials[p.scene.objects[0].material].interior.media.size(), 1u);
+    EXPECT_DOUBLE_EQ(p.scene.objects[0].radiosity_importance, 0.5);
     EXPECT_EQ(p.warnings,
               (std::vector<std::string>{
                   "6:3: 'photons' is not supported: the object's photons block is ignored",
-                  "7:3: 'radiosity' is not supported: the object's radiosity block is ignored",
                   "8:3: 'interior_texture' is not supported: the object's interior_texture "
                   "block is ignored"}));
 }

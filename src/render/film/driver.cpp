@@ -34,6 +34,9 @@ struct Tile {
     int x0, y0, x1, y1;  // [x0, x1) x [y0, y1)
 };
 
+// The block the calling thread renders (SampleId::block).
+thread_local int current_block = -1;
+
 // The pixels to render: the options' region, or the whole image.
 Region film_region(const RenderOptions& o) {
     return o.region.empty() ? Region{0, 0, o.width, o.height} : o.region;
@@ -55,6 +58,8 @@ public:
 
     // False when cancelled before the tile was finished (its pixels are then incomplete).
     bool render(const Tile& t) const {
+        const int columns = (opt_.width + kBlockSize - 1) / kBlockSize;
+        current_block = (t.y0 / kBlockSize) * columns + t.x0 / kBlockSize;
         switch (opt_.aa) {
             case AaMode::None: return none(t);
             case AaMode::Grid: return grid(t);
@@ -71,7 +76,7 @@ private:
     Color sample(double x, double y, int px, int py, uint32_t index) const {
         std::optional<Ray> ray = camera_.generate(x, y);
         if (!ray) return Color(0, 0, 0);
-        return radiance_(*ray, SampleId{px, py, index});
+        return radiance_(*ray, SampleId{px, py, index, current_block});
     }
     Color sample(int px, int py) const { return sample(px, py, px, py, 0); }
 

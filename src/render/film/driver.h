@@ -27,6 +27,10 @@ struct SampleId {
     int x = 0;           // pixel column (may be -1 for adaptive AA's border samples)
     int y = 0;           // pixel row
     uint32_t index = 0;  // sample number within the pixel, in the driver's fixed order
+    // The image block (kBlockSize pixels square, numbered in rows over the whole image) the
+    // sample is taken for; -1 outside run_tiles. Adaptive AA's border samples belong to the
+    // block that traces them.
+    int block = -1;
 };
 
 // Radiance along a camera ray. Must be thread-safe (called concurrently).

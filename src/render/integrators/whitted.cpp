@@ -9,7 +9,7 @@
 #include "render/lights/blender_lights.h"
 #include "render/lights/area_light.h"
 #include "render/lights/sky.h"
-#include "render/materials/sslt.h"
+#include "render/materials/sslt_scene.h"
 #include "render/prepare/containing.h"
 #include "render/textures/normal.h"
 
@@ -94,7 +94,11 @@ Whitted::Whitted(const PreparedScene& prepared)
       serial_(next_serial()) {
     for (const scene::Media& m : scene_.media) atmosphere_media_.push_back(&m);
     if (features_.secondary_rays() || features_.media) find_camera_interiors();
+    if (scene_.global.radiosity)
+        radiosity_ = std::make_unique<Radiosity>(*scene_.global.radiosity, scene_.camera.location);
 }
+
+Whitted::~Whitted() = default;
 
 void Whitted::find_camera_interiors() {
     // Only refraction, interior fading and media care which objects contain the eye.
@@ -103,9 +107,12 @@ void Whitted::find_camera_interiors() {
                                  c.material);
 }
 
-Color Whitted::li(const Ray& ray) const {
+Color Whitted::li(const Ray& ray, RadiosityTicket* ticket) const {
     RayState state;
     state.primary = true;
+    state.max_level = max_level_;
+    state.adc = adc_bailout_;
+    if (radiosity_ && ticket && ticket->block) state.rad = ticket;
     if (camera_interiors_.count > 0 && ray.origin == scene_.camera.location)
         state.interiors = camera_interiors_;
     return trace(ray, 1.0, state, false);
@@ -117,6 +124,7 @@ bool Whitted::find_hit(const Ray& ray, const RayState& state, Hit* hit) const {
     uint32_t skip = 0;
     if (state.image_ray()) skip |= kNoImage;
     if (state.reflection) skip |= kNoReflection;
+    if (state.radiosity) skip |= kNoRadiosity;
     Ray r = ray;
     double travelled = 0;
     for (int i = 0; i < 64; ++i) {
@@ -134,16 +142,31 @@ bool Whitted::find_hit(const Ray& ray, const RayState& state, Hit* hit) const {
     return false;
 }
 
-Color Whitted::trace(const Ray& ray, double weight, const RayState& in, bool continued) const {
+Color Whitted::trace(const Ray& ray, double weight, const RayState& in, bool continued,
+                     double* depth_out) const {
     // TraceRay: max_trace_level and adc_bailout end the recursion with black.
-    if (in.level >= max_level_ || weight < adc_bailout_) return Color();
+    if (depth_out) *depth_out = kInfinity;
+    if (in.level >= in.max_level || weight < in.adc) return Color();
     Hit hit;
     bool found = find_hit(ray, in, &hit);
+    const double len = length(ray.dir);
+    if (depth_out && found) *depth_out = hit.t * len;
+    if (in.rad && in.rad->importance_queried >= 0) {
+        // A radiosity sample ray past its share gives up on objects of lower importance.
+        double importance = scene_.global.radiosity_importance;
+        if (found && scene_.objects[static_cast<size_t>(hit.object)].radiosity_importance >= 0)
+            importance = scene_.objects[static_cast<size_t>(hit.object)].radiosity_importance;
+        in.rad->importance_found = importance;
+        if (importance < in.rad->importance_queried) return Color();
+        in.rad->importance_queried = -1;  // rays traced on from here do not ask
+    }
     RayState state = in;
     if (!continued) ++state.level;
     Color c = found ? shade(ray, hit, weight, state) : sky(ray.dir);
     if (!features_.media && atmosphere_.empty()) return c;
-    const double len = length(ray.dir);
+    // Radiosity's rays see no media, fog or rainbow unless its `media on` (POV-Ray clears
+    // Q_VOLUME for them).
+    if (in.radiosity && !radiosity_->settings().media) return c;
     const Vec3 dir = ray.dir / len;
     const double depth = found ? hit.t * len : Atmosphere::kMissDepth;
     auto light = [&](size_t l, const Vec3& p, Color* lc, Vec3* ld) {
@@ -326,7 +349,11 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
     bool one_colour_found = false;
     Vec3 top_normal = n;
     const bool double_illuminate = (hit.flags & kDoubleIlluminate) != 0;
-    for (int li = 0; li < layer_count && trans > adc_bailout_; ++li) {
+    // Radiosity's indirect light, once per hit (the first layer that can show enough of it).
+    const bool radiosity_needed = state.rad && radiosity_->recurses(*state.rad);
+    bool radiosity_done = false;
+    Color ambient_light;
+    for (int li = 0; li < layer_count && trans > state.adc; ++li) {
         const scene::Texture& layer = layer_at(li);
         const ClassicFinish& f = materials_.classic_finish(layer.finish, hit.material);
         const Vec3 lay_n = layer_normal(layer.normal, at, n, stack);
@@ -360,9 +387,22 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
             if (dot(raw_n, ray.dir) > 0) raw_n = -raw_n;
             tmp = subsurface(f, pig.rgb, ray, hit, raw_n, state);
         }
-        tmp += pig.rgb * f.ambient * scene_.global.ambient_light * att;
+        if (radiosity_needed) {
+            if (!radiosity_done) {
+                const double most = greyscale(fil_col * pig.rgb) * att * f.diffuse;
+                if (most > state.adc) {
+                    ambient_light = radiosity_ambient(hit, n, lay_n, weight * most, state);
+                    radiosity_done = true;
+                }
+            }
+            tmp += pig.rgb * ambient_light * (att * f.diffuse);
+        }
+        // 3.7 scenes with radiosity keep `ambient` out: radiosity is their ambient light.
+        if (!radiosity_ || legacy_) tmp += pig.rgb * f.ambient * scene_.global.ambient_light * att;
         tmp += pig.rgb * f.emission * att;
-        if (features_.lights && (f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0)) {
+        // A pretrace camera ray only feeds the cache: no direct light.
+        const bool lit = !(state.rad && state.rad->pretrace && !state.radiosity);
+        if (lit && features_.lights && (f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0)) {
             for (size_t light_index = 0; light_index < lights_.size(); ++light_index) {
                 const PreparedLight& light = lights_[light_index];
                 LightSample ls;
@@ -375,7 +415,8 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
                 if (!double_illuminate && dot(lay_n, ls.dir) < kPovEpsilon) continue;
                 Color lc = ls.color;
                 if (features_.shadows && light.casts_shadows()) {
-                    if (light.light().area) {
+                    // Radiosity's rays see area lights as point lights (no Q_AREA_LIGHT).
+                    if (light.light().area && !state.radiosity) {
                         lc = area_light_shadow(
                             light, hit.p, lc, [&](const Vec3& d, double depth, const Color& c) {
                                 return shadow_filter(hit.p, hit, LightSample{d, depth, c},
@@ -389,8 +430,9 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
                         continue;
                 }
                 if (!sslt) tmp += diffuse_term(f, lay_n, ls.dir, pig.rgb, lc, att);
-                // shadowless lights are POV-Ray's FILL_LIGHT_SOURCE: diffuse only.
-                if (!light.casts_shadows()) continue;
+                // shadowless lights are POV-Ray's FILL_LIGHT_SOURCE: diffuse only; and
+                // radiosity's rays see no highlights.
+                if (!light.casts_shadows() || state.radiosity) continue;
                 if (f.phong > 0.0) tmp += phong_term(f, lay_n, ls.dir, ray.dir, pig.rgb, lc);
                 if (f.specular > 0.0)
                     tmp += specular_term(f, lay_n, ls.dir, ray.dir, pig.rgb, lc);
@@ -410,7 +452,7 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
     }
 
     bool tir = false;
-    if (trans > adc_bailout_ && features_.secondary_rays()) {
+    if (trans > state.adc && features_.secondary_rays()) {
         double w1 = std::max(std::fabs(fil_col.r), std::max(std::fabs(fil_col.g),
                                                             std::fabs(fil_col.b)));
         Color rfr;
@@ -444,54 +486,23 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
     return result;
 }
 
-namespace {
-
-// The subsurface estimate's view of the classic renderer: every object, the POV-Ray lights
-// with their shadows, and rays traced on from inside one subsurface sample (where the samples
-// drop to one of each kind, and stop one level further down).
-class WhittedSslt final : public SsltScene {
-public:
-    using Shadow = std::function<Color(size_t, const Hit&, const LightSample&)>;
-    using Trace = std::function<Color(const Ray&, double)>;
-    WhittedSslt(const Geometry& g, const std::vector<PreparedLight>& lights, bool shadows,
-                Shadow shadow, Trace trace)
-        : geometry_(g), lights_(lights), shadows_(shadows), shadow_(std::move(shadow)),
-          trace_(std::move(trace)) {}
-    bool intersect(const Vec3& origin, const Vec3& dir, double tmax, Hit* hit) const override {
-        Ray r;
-        r.origin = origin;
-        r.dir = dir;
-        r.tmax = tmax;
-        return geometry_.intersect(r, hit);
-    }
-    size_t light_count() const override { return lights_.size(); }
-    bool light_direction(size_t k, const Vec3& p, Vec3* dir) const override {
-        LightSample ls;
-        if (lights_[k].light().blender || !lights_[k].sample(p, &ls)) return false;
-        *dir = ls.dir;
-        return true;
-    }
-    Color light(size_t k, const Hit& at, Vec3* dir) const override {
-        const PreparedLight& light = lights_[k];
-        LightSample ls;
-        if (light.light().blender || !light.sample(at.p, &ls)) return Color();
-        if (!(std::fabs(ls.color.r) >= kPovEpsilon || std::fabs(ls.color.g) >= kPovEpsilon ||
-              std::fabs(ls.color.b) >= kPovEpsilon))
-            return Color();
-        *dir = ls.dir;
-        return shadows_ && light.casts_shadows() ? shadow_(k, at, ls) : ls.color;
-    }
-    Color trace(const Ray& ray, double weight) const override { return trace_(ray, weight); }
-
-private:
-    const Geometry& geometry_;
-    const std::vector<PreparedLight>& lights_;
-    bool shadows_;
-    Shadow shadow_;
-    Trace trace_;
-};
-
-}  // namespace
+Color Whitted::radiosity_ambient(const Hit& hit, const Vec3& raw_n, const Vec3& lay_n,
+                                 double weight, const RayState& state) const {
+    // The sample rays are new rays (RadiosityFunction::GatherLight): no interiors, not image
+    // rays, restarted at the depth's trace level with radiosity's adc_bailout.
+    auto trace_sample = [&](const Ray& r, double w, int level, RadiosityTicket& ticket,
+                            double* depth) {
+        RayState next;
+        next.level = level;
+        next.max_level = std::max(state.max_level, level + 1);
+        next.adc = radiosity_->settings().adc_bailout;
+        next.radiosity = true;
+        next.rad = &ticket;
+        return trace(r, w, next, false, depth);
+    };
+    const RadiosityPoint at{hit.p, hit.p_error, hit.ng, raw_n, lay_n};
+    return radiosity_->ambient(at, weight, *state.rad, trace_sample);
+}
 
 Color Whitted::subsurface(const ClassicFinish& f, const Color& pigment, const Ray& ray,
                           const Hit& out, const Vec3& raw_n, const RayState& state) const {
@@ -504,7 +515,7 @@ Color Whitted::subsurface(const ClassicFinish& f, const Color& pigment, const Ra
     s.samples_single = state.subsurface_depth == 1 ? 1 : g.subsurface_samples_single;
     s.mm_per_unit = g.mm_per_unit;
     s.adc_bailout = adc_bailout_;
-    const WhittedSslt view(
+    const CallbackSsltScene view(
         geometry_, lights_, features_.shadows,
         [&](size_t k, const Hit& at, const LightSample& ls) {
             return shadow_filter(at.p, at, ls, inner, k);

@@ -3,8 +3,10 @@
 // per-ray function the tile driver calls. Prepared once per render; read-only while rendering.
 #pragma once
 
+#include <memory>
 #include <vector>
 
+#include "render/gi/radiosity.h"
 #include "render/integrators/atmosphere.h"
 #include "render/media/pov_media.h"
 #include "render/lights/light.h"
@@ -20,8 +22,15 @@ public:
     // `prepared` (made for IntegratorKind::Whitted) must outlive the integrator.
     explicit Whitted(const PreparedScene& prepared);
 
-    // Radiance (in POV-Ray's working color space) arriving along a primary ray.
-    Color li(const Ray& ray) const;
+    ~Whitted();
+
+    // Radiance (in POV-Ray's working color space) arriving along a primary ray. With
+    // radiosity, `ticket` names the image block the ray belongs to (Radiosity::final_block,
+    // or a pretrace block); without, it may be null.
+    Color li(const Ray& ray, RadiosityTicket* ticket = nullptr) const;
+    // The scene's radiosity (global_settings radiosity), or null. Its pretrace must run
+    // before the final render (render.cpp).
+    Radiosity* radiosity() const { return radiosity_.get(); }
 
 private:
     // The objects a ray is inside, innermost last (POV-Ray's ray interior list); bounded so
@@ -42,6 +51,10 @@ private:
         bool reflection = false;
         bool refraction = false;
         int level = 0;  // trace level before this ray (POV-Ray's ticket.traceLevel)
+        int max_level = 0;   // ticket.maxAllowedTraceLevel
+        double adc = 0;      // ticket.adcBailout
+        bool radiosity = false;  // a radiosity sample ray or one traced on from it
+        RadiosityTicket* rad = nullptr;  // the camera sample's radiosity state, if any
         int subsurface_depth = 0;  // subsurface samples this ray is inside of
         Interiors interiors;
         bool image_ray() const { return primary || (refraction && !reflection); }
@@ -49,7 +62,12 @@ private:
 
     // POV-Ray's InitRayContainerState: the objects the perspective camera sits inside.
     void find_camera_interiors();
-    Color trace(const Ray& ray, double weight, const RayState& state, bool continued) const;
+    // `depth`, when given, receives the distance to the hit (infinity on a miss).
+    Color trace(const Ray& ray, double weight, const RayState& state, bool continued,
+                double* depth = nullptr) const;
+    // Radiosity's indirect light at a hit (ComputeAmbient), facing `raw_n` / `lay_n`.
+    Color radiosity_ambient(const Hit& hit, const Vec3& raw_n, const Vec3& lay_n, double weight,
+                            const RayState& state) const;
     bool find_hit(const Ray& ray, const RayState& state, Hit* hit) const;
     Color shade(const Ray& ray, const Hit& hit, double weight, const RayState& state) const;
     // The patterned textures a hit point was routed through (POV-Ray's texture warps list):
@@ -113,6 +131,7 @@ private:
     double adc_bailout_;
     bool legacy_;  // #version < 3.7: POV-Ray's 3.6 transparency and sky formulas
     Interiors camera_interiors_;
+    std::unique_ptr<Radiosity> radiosity_;
     // Names this integrator's slots in each thread's shadow cache (whitted.cpp).
     uint64_t serial_;
 };

@@ -248,6 +248,7 @@ void flatten(const scene::Object& o, std::vector<scene::Object>* out) {
         part.no_shadow = part.no_shadow || o.no_shadow;
         part.no_image = part.no_image || o.no_image;
         part.no_reflection = part.no_reflection || o.no_reflection;
+        part.no_radiosity = part.no_radiosity || o.no_radiosity;
         part.double_illuminate = part.double_illuminate || o.double_illuminate;
         flatten(part, out);
     }
@@ -287,7 +288,8 @@ bool same_frame(const scene::Object& a, const scene::Object& b) {
     return a.transform.matrix() == b.transform.matrix() &&
            a.transform.inverse_matrix() == b.transform.inverse_matrix() &&
            a.no_shadow == b.no_shadow && a.no_image == b.no_image &&
-           a.no_reflection == b.no_reflection && a.double_illuminate == b.double_illuminate;
+           a.no_reflection == b.no_reflection && a.double_illuminate == b.double_illuminate &&
+           a.no_radiosity == b.no_radiosity;
 }
 
 // One mesh primitive for parts[first, end) (all mergeable_mesh, one frame), as a node with

@@ -47,6 +47,7 @@ uint32_t object_flags(const scene::Object& o) {
     if (o.no_image) f |= kNoImage;
     if (o.no_reflection) f |= kNoReflection;
     if (o.double_illuminate) f |= kDoubleIlluminate;
+    if (o.no_radiosity) f |= kNoRadiosity;
     return f;
 }
 
