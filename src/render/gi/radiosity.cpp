@@ -360,6 +360,17 @@ bool Radiosity::pretrace(int width, int height, int threads, const std::atomic<b
         for (size_t i = 0; i < blocks.size(); ++i)
             if (!blocks[i].open.empty()) todo.push_back(i);
         if (todo.empty()) break;
+        if (pass == 0) {
+            // The first, coarsest pass runs block after block, each seeing the ones before:
+            // it fills the deeper recursion depths, which every later block then reuses
+            // instead of gathering its own (POV-Ray shares them across threads).
+            for (size_t i : todo) {
+                if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+                pretrace_block(blocks[i], pass, steps, start, end, pixel);
+                cache_.merge(blocks[i].state.local);
+            }
+            continue;
+        }
         std::atomic<bool> stopped{false};
         arena.execute([&] {
             tbb::parallel_for(tbb::blocked_range<size_t>(0, todo.size(), 1),
