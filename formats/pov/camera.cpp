@@ -172,17 +172,6 @@ void Parser::parse_camera_body(scene::Camera& cam) {
     cam = n;
 }
 
-static void skip_block_tokens(Parser& p, const std::string& what) {
-    p.expect_open(what.c_str());
-    int depth = 1;
-    while (depth > 0) {
-        const Token& c = p.next();
-        if (c.kind == TokKind::End) p.fail("unterminated '" + what + "' block");
-        if (c.is_symbol('{')) ++depth;
-        if (c.is_symbol('}')) --depth;
-    }
-}
-
 void Parser::parse_global_settings() {
     expect_open("global_settings");
     FileLoc o = loc();
@@ -229,8 +218,7 @@ void Parser::parse_global_settings() {
         } else if (w == "radiosity") {
             parse_radiosity_settings();
         } else if (w == "photons") {
-            diag.warning(loc(), "global_settings '" + w + "' is not supported and is ignored");
-            skip_block_tokens(*this, w);
+            parse_photon_settings();
         } else if (w == "charset") {
             diag.warning(loc(), "global_settings 'charset' is ignored");
             next();
@@ -339,6 +327,69 @@ void Parser::parse_radiosity_settings() {
         }
     }
     scene.global.radiosity = r;
+}
+
+void Parser::parse_photon_settings() {
+    // parse.cpp Parse_Global_Settings, PHOTONS_TOKEN.
+    expect_open("photons");
+    FileLoc o = loc();
+    scene::Photons ph;
+    for (;;) {
+        FileLoc at = loc();
+        if (accept("radius")) {
+            ph.radius = allow_float(-1);
+            skip_comma();
+            ph.radius_multiplier = allow_float(1);
+            skip_comma();
+            ph.media_radius = allow_float(-1);
+            skip_comma();
+            ph.media_radius_multiplier = allow_float(1);
+        } else if (accept("spacing")) {
+            ph.spacing = parse_float();
+            if (!(ph.spacing > 0)) fail("photons spacing must be positive");
+        } else if (accept("count")) {
+            ph.count = static_cast<int>(parse_float());
+            if (ph.count <= 0) fail("photons count must be positive");
+        } else if (accept("expand_thresholds")) {
+            ph.expand_tolerance = std::max(0.0, parse_float());
+            skip_comma();
+            ph.expand_min = std::max(0, static_cast<int>(parse_float()));
+        } else if (accept("gather")) {
+            ph.gather_min = static_cast<int>(parse_float());
+            skip_comma();
+            ph.gather_max = static_cast<int>(parse_float());
+            if (ph.gather_min < 0 || ph.gather_max < 0)
+                fail("photons gather counts cannot be negative");
+            if (ph.gather_min > ph.gather_max)
+                fail("photons gather: the minimum must be less than the maximum");
+        } else if (accept("jitter")) {
+            ph.jitter = parse_float();
+        } else if (accept("autostop")) {
+            ph.autostop = parse_float();
+        } else if (accept("adc_bailout")) {
+            ph.adc_bailout = parse_float();
+        } else if (accept("max_trace_level")) {
+            ph.max_trace_level = static_cast<int>(parse_float());
+        } else if (accept("load_file") || accept("save_file")) {
+            diag.warning(at, "photons load_file/save_file is ignored: glint shoots the photons "
+                             "every render");
+            parse_string();
+        } else if (accept("media")) {
+            ph.media_steps = static_cast<int>(parse_float());
+            if (ph.media_steps < 0) fail("photons media: max media steps must be non-negative");
+            skip_comma();
+            ph.media_factor = allow_float(1);
+            if (!(ph.media_factor > 0)) fail("photons media: the spacing factor must be positive");
+            if (ph.media_steps > 0)
+                warn_unsupported(*this, "media photons", at,
+                                 "media collect no photons; light refracted into media is lost");
+        } else {
+            break;
+        }
+    }
+    expect_close("photons", o);
+    // gather's maximum 0 turns photons off (parse.cpp).
+    if (ph.gather_max > 0) scene.global.photons = ph;
 }
 
 void Parser::parse_background() {

@@ -192,7 +192,9 @@ void Parser::parse_light_body(scene::Light& l, std::optional<PovObject>* looks_l
             parse_object_mods(obj, "looks_like", lo);
             obj.obj.no_shadow = true;
             *looks_like = std::move(obj);
-        } else if (w == "projected_through" || w == "photons") {
+        } else if (w == "photons") {
+            parse_light_photons(l);
+        } else if (w == "projected_through") {
             warn_unsupported(*this, w, loc(), "ignored in light_source");
             skip_braced_block(*this, w);
         } else if (w == "looks_like") {
@@ -329,7 +331,9 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
                 }
             }
             expect_close(w.c_str(), lo);
-        } else if (w == "photons" || w == "interior_texture") {
+        } else if (w == "photons") {
+            parse_object_photons(o.obj);
+        } else if (w == "interior_texture") {
             warn_unsupported(*this, w, loc(), "the object's " + w + " block is ignored");
             skip_braced_block(*this, w);
         } else if (w == "uv_mapping" || w == "cutaway_textures") {
@@ -346,6 +350,47 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
             apply_transform(o, delta);
         }
     }
+}
+
+void Parser::parse_object_photons(scene::Object& o) {
+    // parse.cpp Parse_Object_Mods, PHOTONS_TOKEN.
+    expect_open("photons");
+    FileLoc lo = loc();
+    for (;;) {
+        if (accept("target")) {
+            o.photon_target = std::max(0.0, allow_float(1));
+        } else if (accept("refraction")) {
+            o.photon_refraction = parse_float() != 0 ? 1 : 0;
+        } else if (accept("reflection")) {
+            o.photon_reflection = parse_float() != 0 ? 1 : 0;
+        } else if (accept("pass_through")) {
+            o.photon_pass_through = allow_float(1) != 0;
+        } else if (accept("collect")) {
+            o.photon_collect = allow_float(1) > 0;
+        } else if (accept("split_union")) {
+            allow_float(1);  // how POV-Ray bounds a union's photons: no effect here
+        } else {
+            break;
+        }
+    }
+    expect_close("photons", lo);
+}
+
+void Parser::parse_light_photons(scene::Light& l) {
+    expect_open("photons");
+    FileLoc lo = loc();
+    for (;;) {
+        if (accept("refraction")) {
+            l.photon_refraction = parse_float() != 0 ? 1 : 0;
+        } else if (accept("reflection")) {
+            l.photon_reflection = parse_float() != 0 ? 1 : 0;
+        } else if (accept("area_light")) {
+            l.photon_area_light = allow_float(1) != 0;
+        } else {
+            break;
+        }
+    }
+    expect_close("photons", lo);
 }
 
 }  // namespace glint::pov

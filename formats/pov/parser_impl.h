@@ -154,6 +154,10 @@ public:
     void parse_camera_body(scene::Camera& cam);
     void parse_global_settings();
     void parse_radiosity_settings();  // after `radiosity` in global_settings
+    void parse_photon_settings();     // after `photons` in global_settings
+    // An object's or a light's `photons { ... }` block (objects.cpp), after the keyword.
+    void parse_object_photons(scene::Object& o);
+    void parse_light_photons(scene::Light& l);
     void parse_background();
     void parse_sky_sphere();
     // ---- atmosphere (atmosphere.cpp): fog { ... } and rainbow { ... } statements

@@ -76,6 +76,11 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
     result.prepare_seconds = seconds_since(t0);
 
     auto t1 = std::chrono::steady_clock::now();
+    if (scene.global.photons) {
+        whitted.shoot_photons(options.threads);
+        diag.info("photons: " + std::to_string(whitted.photons()->size()) +
+                  " stored, gather radius " + std::to_string(whitted.photons()->gather_radius()));
+    }
     Radiosity* radiosity = whitted.radiosity();
     if (radiosity) {
         // The pretrace fills the irradiance cache over the whole image, whatever region is

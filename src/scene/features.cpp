@@ -22,6 +22,7 @@ public:
         }
         for (const Media& m : scene_.media) media(m);
         f_.radiosity = scene_.global.radiosity.has_value();
+        f_.photons = scene_.global.photons.has_value();
         std::vector<bool> used(scene_.materials.size(), false);
         for (const Object& o : scene_.objects) object(o, &used);
         for (size_t i = 0; i < used.size(); ++i)
@@ -189,6 +190,7 @@ std::vector<std::string> Features::used() const {
     add(sky_sphere, "sky_sphere");
     add(media, "media");
     add(radiosity, "radiosity");
+    add(photons, "photons");
     return out;
 }
 

@@ -36,6 +36,7 @@ struct Features {
     bool sky_sphere = false;
     bool media = false;  // participating media: in a hollow object's interior or everywhere
     bool radiosity = false;  // global_settings radiosity: the classic renderer's irradiance cache
+    bool photons = false;    // global_settings photons: the classic renderer's caustic photons
 
     // Whether rays other than primary and shadow rays can be spawned.
     bool secondary_rays() const { return reflection || refraction || transparency; }

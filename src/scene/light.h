@@ -59,6 +59,9 @@ struct Light {
     // `media_attenuation on` dims it through the atmosphere's media (and fog) on the way.
     bool media_interaction = true;
     bool media_attenuation = false;
+    // `photons { refraction B reflection B area_light }`: -1 unset, 0 off, 1 on.
+    int photon_refraction = -1, photon_reflection = -1;
+    bool photon_area_light = false;
     std::optional<AreaLight> area;
     std::optional<BlenderLight> blender;  // blender_light: only location and color used too
     FileLoc loc;

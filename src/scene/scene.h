@@ -39,6 +39,23 @@ struct Radiosity {
     double pretrace_start = 0.08, pretrace_end = 0.04;
 };
 
+// global_settings { photons { ... } } with POV-Ray 3.7's defaults (parse.cpp).
+struct Photons {
+    double spacing = 1;  // surface separation at a target (times its own multiplier)
+    int count = 0;       // > 0: spacing follows from this photon count instead
+    int gather_min = 20, gather_max = 100;
+    double radius = -1, radius_multiplier = 1;  // radius <= 0: estimated from the map
+    double media_radius = -1, media_radius_multiplier = 1;
+    double jitter = 0.4;
+    double autostop = 0.5;
+    double expand_tolerance = 0.2;
+    int expand_min = 35;
+    int max_trace_level = -1;  // < 0: global_settings max_trace_level
+    double adc_bailout = -1;   // < 0: global_settings adc_bailout
+    int media_steps = 0;       // media photons: max steps (0: off)
+    double media_factor = 1;
+};
+
 struct GlobalSettings {
     Color ambient_light{1, 1, 1};
     int max_trace_level = 5;
@@ -57,6 +74,8 @@ struct GlobalSettings {
     std::optional<Radiosity> radiosity;
     // `#default { radiosity { importance } }`: objects without their own importance.
     double radiosity_importance = 1;
+    // `photons { ... }`: POV-Ray's caustic photon map (render/gi/photon_map.h); absent: off.
+    std::optional<Photons> photons;
     FileLoc loc;
 };
 

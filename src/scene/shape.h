@@ -183,6 +183,13 @@ struct Object {
     // `radiosity { importance }`: the share of a sample's rays that may hit this object
     // (0, 1]; negative: the #default importance.
     double radiosity_importance = -1;
+    // `photons { target [F] refraction B reflection B pass_through collect B }`: photons are
+    // shot at targets (spacing times `photon_target`; 0: not a target). -1 / 0 / 1: unset,
+    // off, on (merged with the light's flags).
+    double photon_target = 0;
+    int photon_refraction = -1, photon_reflection = -1;
+    bool photon_pass_through = false;
+    bool photon_collect = true;  // false: `collect off`, no photons land on it
     // Blender's ray visibility (Object Properties > Visibility), holdout and the values the
     // Object Info node reads; POV-Ray's objects keep the defaults.
     struct RayVisibility {

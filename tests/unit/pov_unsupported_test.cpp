@@ -71,29 +71,44 @@ TEST(PovUnsupported, CsgKeepsItsOtherChildrenAndDeclarationsWork) {
                   "6:28: 'ovus' is not supported: the object is left out"}));
 }
 
-TEST(PovUnsupported, PhotonsAreIgnoredBesideMediaAndRadiosity) {
+TEST(PovUnsupported, MediaPhotonsRadiosityAndInteriorTexture) {
     Parsed p = parse_warn(
+        "global_settings { photons { count 20000 gather 10, 50 media 100, 2 } }\n"
         "media { intervals 10 scattering { 1, rgb 0.1 } }\n"
         "#declare D = density { spherical color_map { [0 rgb 0] [1 rgb 1] } }\n"
         "sphere { 0, 1 hollow\n"
         "  interior { ior 1.5 media { emission 1 density { D } } }\n"
-        "  photons { target reflection on }\n"
+        "  photons { target 0.5 reflection on refraction off collect off pass_through }\n"
         "  radiosity { importance 0.5 }\n"
         "  interior_texture { pigment { rgb 1 } }\n"
         "}\n"
-        "light_source { <0, 5, 0> rgb 1 photons { refraction on } }\n");
+        "light_source { <0, 5, 0> rgb 1 photons { refraction on area_light } }\n");
     ASSERT_EQ(p.scene.objects.size(), 1u);
-    EXPECT_DOUBLE_EQ(p.scene.materials[p.scene.objects[0].material].interior.ior, 1.5);
-    EXPECT_EQ(p.scene.lights.size(), 1u);
-    // The media are read (pov_media_test covers them); the rest is left out with a warning.
+    const glint::scene::Object& o = p.scene.objects[0];
+    EXPECT_DOUBLE_EQ(p.scene.materials[o.material].interior.ior, 1.5);
+    ASSERT_EQ(p.scene.lights.size(), 1u);
+    EXPECT_EQ(p.scene.lights[0].photon_refraction, 1);
+    EXPECT_EQ(p.scene.lights[0].photon_reflection, -1);
+    EXPECT_TRUE(p.scene.lights[0].photon_area_light);
+    // The media are read (pov_media_test covers them), and so are photons and radiosity.
     EXPECT_EQ(p.scene.media.size(), 1u);
-    EXPECT_EQ(p.scene.materials[p.scene.objects[0].material].interior.media.size(), 1u);
-    EXPECT_DOUBLE_EQ(p.scene.objects[0].radiosity_importance, 0.5);
+    EXPECT_EQ(p.scene.materials[o.material].interior.media.size(), 1u);
+    ASSERT_TRUE(p.scene.global.photons.has_value());
+    EXPECT_EQ(p.scene.global.photons->count, 20000);
+    EXPECT_EQ(p.scene.global.photons->gather_min, 10);
+    EXPECT_EQ(p.scene.global.photons->gather_max, 50);
+    EXPECT_EQ(p.scene.global.photons->media_steps, 100);
+    EXPECT_DOUBLE_EQ(o.photon_target, 0.5);
+    EXPECT_EQ(o.photon_reflection, 1);
+    EXPECT_EQ(o.photon_refraction, 0);
+    EXPECT_FALSE(o.photon_collect);
+    EXPECT_TRUE(o.photon_pass_through);
+    EXPECT_DOUBLE_EQ(o.radiosity_importance, 0.5);
     EXPECT_EQ(p.warnings,
-              (std::vector<std::string>{
-                  "6:3: 'photons' is not supported: the object's photons block is ignored",
-                  "8:3: 'interior_texture' is not supported: the object's interior_texture "
-                  "block is ignored"}));
+              (std::vector<std::string>{"2:55: 'media photons' is not supported: media collect "
+                                        "no photons; light refracted into media is lost",
+                                        "9:3: 'interior_texture' is not supported: the object's "
+                                        "interior_texture block is ignored"}));
 }
 
 TEST(PovUnsupported, CameraFeatures) {

@@ -212,10 +212,11 @@ bool Whitted::media_light(size_t light_index, const Vec3& p, const Interiors& ey
     if (features_.shadows && light.casts_shadows()) {
         if (light.light().area) {
             lc = area_light_shadow(light, p, lc, [&](const Vec3& d, double depth, const Color& c) {
-                return shadow_walk(p, p + d * depth, d, c, eye, light_index);
+                return shadow_walk(p, p + d * depth, d, c, eye, light_index, photons_ != nullptr);
             });
         } else {
-            lc = shadow_walk(p, p + ls.dir * ls.distance, ls.dir, lc, eye, light_index);
+            lc = shadow_walk(p, p + ls.dir * ls.distance, ls.dir, lc, eye, light_index,
+                             photons_ != nullptr);
         }
         if (dark(lc)) return false;
     }
@@ -353,6 +354,10 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
     const bool radiosity_needed = state.rad && radiosity_->recurses(*state.rad);
     bool radiosity_done = false;
     Color ambient_light;
+    // The photons around the hit, gathered once (for the first layer that asks).
+    PhotonGather gathered;
+    const bool collects = photons_ && photons_->size() > 0 &&
+                          scene_.objects[static_cast<size_t>(hit.object)].photon_collect;
     for (int li = 0; li < layer_count && trans > state.adc; ++li) {
         const scene::Texture& layer = layer_at(li);
         const ClassicFinish& f = materials_.classic_finish(layer.finish, hit.material);
@@ -438,6 +443,8 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
                     tmp += specular_term(f, lay_n, ls.dir, ray.dir, pig.rgb, lc);
             }
         }
+        if (collects)
+            tmp += photon_light(f, hit, ray, lay_n, n, pig.rgb, att, !state.radiosity, &gathered);
         result += tmp * fil_col;
 
         // New filter color and remaining translucency.
@@ -531,18 +538,22 @@ Color Whitted::subsurface(const ClassicFinish& f, const Color& pigment, const Ra
                             relative_ior(state, out.object, ior), ray, out, raw_n);
 }
 
-Color Whitted::reflect(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3& raw_n,
-                       double weight, const RayState& state) const {
+Vec3 reflected_direction(const Vec3& dir, const Vec3& n, const Vec3& raw_n) {
     // ComputeReflection: mirror about the (perturbed) normal; a mirror ray that would enter
     // the surface is corrected with the raw normal.
-    Vec3 d = ray.dir + n * (-2.0 * dot(ray.dir, n));
+    Vec3 d = dir + n * (-2.0 * dot(dir, n));
     if (dot(d, raw_n) < 0.0) {
         if (dot(d, n) < 0.0)
-            d = ray.dir + raw_n * (-2.0 * dot(ray.dir, raw_n));
+            d = dir + raw_n * (-2.0 * dot(dir, raw_n));
         else
             d = d + raw_n * (-2.0 * dot(d, raw_n));
     }
-    d = normalize(d);
+    return normalize(d);
+}
+
+Color Whitted::reflect(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3& raw_n,
+                       double weight, const RayState& state) const {
+    const Vec3 d = reflected_direction(ray.dir, n, raw_n);
     Ray r;
     r.dir = d;
     r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, d);
@@ -552,29 +563,47 @@ Color Whitted::reflect(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3
     return trace(r, weight, next, false);
 }
 
+double Whitted::cross_interface(const Hit& hit, Interiors* in) const {
+    // ComputeRefraction: relative ior from the interiors the ray traverses; nested objects
+    // count as outside their container, overlaps belong to the last one entered.
+    const double ior_obj = scene_.materials[hit.material].interior.ior;
+    if (in->count == 0) {
+        in->append(hit.object, ior_obj, hit.material);
+        return 1.0 / ior_obj;
+    }
+    if (in->object[in->count - 1] == hit.object) {
+        in->remove(hit.object);
+        return in->count == 0 ? ior_obj : ior_obj / in->ior[in->count - 1];
+    }
+    if (in->remove(hit.object)) return 1.0;
+    const double ior = in->ior[in->count - 1] / ior_obj;
+    in->append(hit.object, ior_obj, hit.material);
+    return ior;
+}
+
+bool refracted_direction(const Vec3& dir, const Vec3& n, double ior, Vec3* out) {
+    // TraceRefractionRay (Heckbert's method) with the normal turned against the ray (a
+    // perturbed normal may not be); false on total internal reflection.
+    double c = dot(dir, n);
+    Vec3 local_n = n;
+    if (c <= 0.0) {
+        c = -c;
+    } else {
+        local_n = -n;
+    }
+    double t = 1.0 + ior * ior * (c * c - 1.0);
+    if (t < 0.0) return false;
+    t = ior * c - std::sqrt(t);
+    *out = normalize(dir * ior + local_n * t);
+    return true;
+}
+
 bool Whitted::refract(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3& raw_n,
                       double weight, const RayState& state, Color* out) const {
-    const double ior_obj = scene_.materials[hit.material].interior.ior;
     RayState next = state;
     next.primary = false;
     next.refraction = true;  // SetFlags(RefractionRay, ray): reflection flag is kept
-    Interiors& in = next.interiors;
-    // ComputeRefraction: relative ior from the interiors the ray traverses; nested objects
-    // count as outside their container, overlaps belong to the last one entered.
-    double ior;
-    if (in.count == 0) {
-        in.append(hit.object, ior_obj, hit.material);
-        ior = 1.0 / ior_obj;
-    } else if (in.object[in.count - 1] == hit.object) {
-        in.remove(hit.object);
-        ior = in.count == 0 ? ior_obj : ior_obj / in.ior[in.count - 1];
-    } else if (in.remove(hit.object)) {
-        ior = 1.0;
-    } else {
-        ior = in.ior[in.count - 1] / ior_obj;
-        in.append(hit.object, ior_obj, hit.material);
-    }
-
+    const double ior = cross_interface(hit, &next.interiors);
     Ray r;
     if (std::fabs(ior - 1.0) < kPovEpsilon) {
         // Same medium on both sides: the ray continues without counting a trace level.
@@ -583,22 +612,10 @@ bool Whitted::refract(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3&
         *out = trace(r, weight, next, true);
         return false;
     }
-    // TraceRefractionRay (Heckbert's method) with the normal turned against the ray (a
-    // perturbed normal may not be).
-    double c = dot(ray.dir, n);
-    Vec3 local_n = n;
-    if (c <= 0.0) {
-        c = -c;
-    } else {
-        local_n = -n;
-    }
-    double t = 1.0 + ior * ior * (c * c - 1.0);
-    if (t < 0.0) {
+    if (!refracted_direction(ray.dir, n, ior, &r.dir)) {
         *out = reflect(ray, hit, n, raw_n, weight, state);
         return true;
     }
-    t = ior * c - std::sqrt(t);
-    r.dir = normalize(ray.dir * ior + local_n * t);
     r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
     *out = trace(r, weight, next, false);
     return false;
@@ -606,12 +623,15 @@ bool Whitted::refract(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3&
 
 Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls,
                              const RayState& eye, size_t light) const {
+    const bool collects =
+        photons_ && scene_.objects[static_cast<size_t>(at.object)].photon_collect;
     return shadow_walk(offset_ray_origin(p, at.p_error, at.ng, ls.dir), p + ls.dir * ls.distance,
-                       ls.dir, ls.color, eye.interiors, light);
+                       ls.dir, ls.color, eye.interiors, light, collects);
 }
 
 Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& light_dir,
-                           const Color& light_colour, const Interiors& eye, size_t light) const {
+                           const Color& light_colour, const Interiors& eye, size_t light,
+                           bool collects) const {
     Ray r;
     r.origin = origin;
     r.dir = target - r.origin;
@@ -669,6 +689,11 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
         }
         if (!(hit.flags & kNoShadow)) {
             if (materials_.opaque(hit.material)) return Color();
+            // Light refracted by a photon target reaches a collecting surface as photons
+            // only: the target's shadow is full (ComputeShadowColour).
+            if (collects && photons_->size() > 0 &&
+                photon_refracts(lights_[light].light(), hit.object))
+                return Color();
             // ComputeShadowColour / ComputeShadowTexture.
             const scene::Material& mat = scene_.materials[hit.material];
             // POV-Ray stores interior { caustics C } as the exponent 45 C (Parse_Interior).

@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "render/gi/photon_map.h"
 #include "render/gi/radiosity.h"
 #include "render/integrators/atmosphere.h"
 #include "render/media/pov_media.h"
@@ -16,6 +17,13 @@
 namespace glint::render {
 
 struct ClassicFinish;
+
+// The refracted direction of unit `dir` through a surface with normal `n` (either side) and
+// relative index `ior`; false on total internal reflection.
+bool refracted_direction(const Vec3& dir, const Vec3& n, double ior, Vec3* out);
+// The mirror direction of `dir` about `n`, turned back out with the raw normal `raw_n` (which
+// faces the incoming ray) where a perturbed normal would send it into the surface.
+Vec3 reflected_direction(const Vec3& dir, const Vec3& n, const Vec3& raw_n);
 
 class Whitted {
 public:
@@ -31,6 +39,11 @@ public:
     // The scene's radiosity (global_settings radiosity), or null. Its pretrace must run
     // before the final render (render.cpp).
     Radiosity* radiosity() const { return radiosity_.get(); }
+    // POV-Ray's photon pass (gi/classic_photons.cpp): shoots photons from every light at every
+    // target object and builds the map the render gathers from. Run before the render when
+    // the scene has global_settings photons; the same photons whatever `threads` is.
+    void shoot_photons(int threads);
+    const PhotonMap* photons() const { return photons_.get(); }
 
 private:
     // The objects a ray is inside, innermost last (POV-Ray's ray interior list); bounded so
@@ -60,6 +73,16 @@ private:
         bool image_ray() const { return primary || (refraction && !reflection); }
     };
 
+    // Photons (gi/classic_photons.cpp): one photon's state, its travel, the surface it meets,
+    // and what the gathered photons add to a surface's light.
+    struct PhotonPath;
+    void photon_trace(const Ray& ray, const Color& light, double weight, int level,
+                      const Interiors& in, bool continued, PhotonPath& path) const;
+    void photon_surface(const Ray& ray, const Hit& hit, Color light, double weight, int level,
+                        const Interiors& in, PhotonPath& path) const;
+    Color photon_light(const ClassicFinish& f, const Hit& hit, const Ray& ray, const Vec3& lay_n,
+                       const Vec3& raw_n, const Color& pigment, double att, bool highlights,
+                       PhotonGather* gathered) const;
     // POV-Ray's InitRayContainerState: the objects the perspective camera sits inside.
     void find_camera_interiors();
     // `depth`, when given, receives the distance to the hit (infinity on a miss).
@@ -96,8 +119,13 @@ private:
                         const RayState& eye, size_t light) const;
     // The shadow ray from `origin` to the light at `ls`, through transparent objects and
     // media (TracePointLightShadowRay with ComputeShadowColour and ComputeShadowMedia).
+    // `collects`: the lit point gathers photons (targets that refract this light then cast
+    // full shadows: their light arrives as photons).
     Color shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& light_dir,
-                      const Color& light_colour, const Interiors& eye, size_t light) const;
+                      const Color& light_colour, const Interiors& eye, size_t light,
+                      bool collects = false) const;
+    // Whether `light`'s photons refract through scene object `object` (a target).
+    bool photon_refracts(const scene::Light& light, int object) const;
     // Media: the light reaching a point in a medium (TestShadow), the media of the objects a
     // ray is inside, and the interior media over a segment that ends at a surface.
     bool media_light(size_t light, const Vec3& p, const Interiors& eye, Color* colour,
@@ -106,6 +134,9 @@ private:
     // `n` is the (perturbed) normal, `raw_n` the surface normal facing the ray.
     Color reflect(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3& raw_n, double weight,
                   const RayState& state) const;
+    // The relative ior a ray meets crossing `hit`'s surface, entering or leaving its
+    // object in `in` (ComputeRefraction's interior bookkeeping).
+    double cross_interface(const Hit& hit, Interiors* in) const;
     // Returns true on total internal reflection.
     bool refract(const Ray& ray, const Hit& hit, const Vec3& n, const Vec3& raw_n, double weight,
                  const RayState& state, Color* out) const;
@@ -132,6 +163,7 @@ private:
     bool legacy_;  // #version < 3.7: POV-Ray's 3.6 transparency and sky formulas
     Interiors camera_interiors_;
     std::unique_ptr<Radiosity> radiosity_;
+    std::unique_ptr<PhotonMap> photons_;
     // Names this integrator's slots in each thread's shadow cache (whitted.cpp).
     uint64_t serial_;
 };

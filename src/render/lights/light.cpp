@@ -100,6 +100,28 @@ bool PreparedLight::sample(const Vec3& p, LightSample* out) const {
            std::fabs(out->color.b) >= kPovEpsilon;
 }
 
+double PreparedLight::beam(const Vec3& origin, const Vec3& dir) const {
+    const scene::Light& l = light_;
+    if (l.kind == scene::LightKind::Spot) {
+        const double c = dot(dir, direction_);
+        if (c <= 0.0) return 0.0;
+        double att = std::pow(c, l.tightness);
+        if (cos_radius_ > 0.0) att *= cubic_spline(cos_falloff_, cos_radius_, c);
+        return att;
+    }
+    if (l.kind == scene::LightKind::Cylinder) {
+        if (dot(dir, direction_) <= 0.0) return 0.0;
+        const double len = length(origin - l.location);
+        if (len >= cos_falloff_) return 0.0;
+        const double d = 1.0 - len / cos_falloff_;
+        double att = std::pow(d, l.tightness);
+        if (cos_radius_ > 0.0 && len > cos_radius_)
+            att *= cubic_spline(0.0, 1.0 - cos_radius_ / cos_falloff_, d);
+        return att;
+    }
+    return 1.0;
+}
+
 std::vector<PreparedLight> prepare_lights(const std::vector<scene::Light>& lights) {
     std::vector<PreparedLight> out;
     out.reserve(lights.size());

@@ -26,6 +26,9 @@ public:
     // light sample), without attenuation: POV-Ray's ComputeOneWhiteLightRay.
     void white_ray(const Vec3& p, const Vec3& offset, Vec3* dir, double* depth) const;
     bool casts_shadows() const { return !light_.shadowless; }
+    // The share of the light a photon leaving `origin` along unit `dir` carries: the spot
+    // or cylinder beam's falloff (POV-Ray's PhotonShootingTask::computeAttenuation).
+    double beam(const Vec3& origin, const Vec3& dir) const;
     const scene::Light& light() const { return light_; }
 
 private:

@@ -8,16 +8,21 @@ namespace glint::render {
 
 std::vector<Containing> objects_containing_camera(const scene::Scene& scene,
                                                   const Geometry& geometry) {
-    std::vector<Containing> inside;
     const scene::CameraKind k = scene.camera.kind;
     if (k == scene::CameraKind::Orthographic || k == scene::CameraKind::Cylinder3 ||
         k == scene::CameraKind::Cylinder4)
-        return inside;
-    // Walk a ray from the eye: an object whose first crossing leaves it (the normal, which
-    // points out of the solid, along the ray) contains the eye.
+        return {};
+    return objects_containing(geometry, scene.camera.location, scene.camera.direction);
+}
+
+std::vector<Containing> objects_containing(const Geometry& geometry, const Vec3& p,
+                                           const Vec3& dir) {
+    std::vector<Containing> inside;
+    // Walk a ray from the point: an object whose first crossing leaves it (the normal, which
+    // points out of the solid, along the ray) contains the point.
     Ray r;
-    r.origin = scene.camera.location;
-    r.dir = normalize(scene.camera.direction);
+    r.origin = p;
+    r.dir = normalize(dir);
     std::vector<int> seen;
     for (int i = 0; i < 256; ++i) {
         Hit hit;

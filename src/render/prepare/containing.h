@@ -17,5 +17,8 @@ struct Containing {
 // In scene order; empty for projections whose rays do not all start at the camera location.
 std::vector<Containing> objects_containing_camera(const scene::Scene& scene,
                                                   const Geometry& geometry);
+// The objects around point `p`, found along a walk in direction `dir`; in scene order.
+std::vector<Containing> objects_containing(const Geometry& geometry, const Vec3& p,
+                                           const Vec3& dir);
 
 }  // namespace glint::render

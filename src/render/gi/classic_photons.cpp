@@ -1,0 +1,432 @@
+// The classic renderer's photon pass: POV-Ray 3.7's photon shooting and tracing
+// (backend/lighting/photonshootingtask.cpp ShootPhotonsAtObject, photons.cpp PhotonTrace and
+// LightTargetCombo) and the photons' share of a surface's light (trace.cpp
+// ComputePhotonDiffuseLight). These are members of the Whitted integrator (whitted.h): the
+// photons go through the same textures, reflectivity and interiors as its rays.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/float.h"
+#include "render/integrators/whitted.h"
+#include "render/materials/classic_finish.h"
+#include "render/prepare/containing.h"
+#include "render/prepare/geometry.h"
+#include "render/textures/pattern.h"
+#include "scene/features.h"
+
+namespace glint::render {
+namespace {
+
+// splitmix64 seeded per light and target: the shooting's jitter, the same every render.
+struct PhotonRandom {
+    uint64_t state;
+    double operator()() {
+        uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        z ^= z >> 31;
+        return static_cast<double>(z >> 11) / 9007199254740992.0;
+    }
+};
+
+double greyscale(const Color& c) { return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b; }
+
+// Rotation of `v` about unit `axis` by `angle` (Rodrigues).
+Vec3 rotate_about(const Vec3& v, const Vec3& axis, double angle) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1 - c));
+}
+
+// A flag merged from the light's and the target's photons blocks: on in one, off in neither.
+bool merged_on(int light, int object) {
+    return (light == 1 || object == 1) && light != 0 && object != 0;
+}
+
+}  // namespace
+
+// One photon's travel (POV-Ray's per-thread photon state).
+struct Whitted::PhotonPath {
+    const scene::Light* light = nullptr;
+    int target = -1;
+    double spread = 0;  // photon separation at one unit from the light (parallel: absolute)
+    double depth = 0;   // length travelled from the light
+    bool pass_prev = true, pass_this = false;
+    bool hit_target = false;
+    int max_level = 5;
+    double adc = 1.0 / 255;
+    std::vector<Photon>* out = nullptr;
+};
+
+void Whitted::shoot_photons(int threads) {
+    const scene::Photons& settings = *scene_.global.photons;
+    // The targets and their bounding spheres (ShootingDirection::compute).
+    struct Target {
+        int object;
+        Vec3 centre;
+        double radius;
+    };
+    std::vector<Target> targets;
+    Diagnostics quiet;
+    for (size_t i = 0; i < scene_.objects.size(); ++i) {
+        if (!(scene_.objects[i].photon_target > 0)) continue;
+        scene::Scene one;
+        one.objects.push_back(scene_.objects[i]);
+        one.meshes = scene_.meshes;
+        one.materials = scene_.materials;
+        const Bounds3 box = build_geometry(one, scene::analyze(one), quiet)->bounds();
+        if (box.empty() || !std::isfinite(box.lo.x + box.lo.y + box.lo.z + box.hi.x + box.hi.y + box.hi.z))
+            continue;
+        targets.push_back({static_cast<int>(i), (box.lo + box.hi) * 0.5, length(box.hi - box.lo) * 0.5});
+    }
+    struct Combo {
+        const scene::Light* light;
+        const Target* target;
+    };
+    std::vector<Combo> combos;
+    for (const scene::Light& l : scene_.lights) {
+        if (l.blender || l.shadowless) continue;  // fill lights shoot no photons
+        for (const Target& t : targets) {
+            const scene::Object& o = scene_.objects[static_cast<size_t>(t.object)];
+            if (merged_on(l.photon_refraction, o.photon_refraction) ||
+                merged_on(l.photon_reflection, o.photon_reflection))
+                combos.push_back({&l, &t});
+        }
+    }
+    double separation = settings.spacing;
+    if (settings.count > 0 && !combos.empty()) {
+        // PhotonEstimationTask: guess the photons the spacing would give, then scale it.
+        double estimate = 0;
+        for (const Combo& c : combos) {
+            const scene::Object& o = scene_.objects[static_cast<size_t>(c.target->object)];
+            const bool rfr = merged_on(c.light->photon_refraction, o.photon_refraction);
+            const bool rfl = merged_on(c.light->photon_reflection, o.photon_reflection);
+            double x = c.target->radius / (o.photon_target * settings.spacing);
+            x = x * x * kPi;
+            if (rfr && rfl) x *= 1.5;
+            if (o.photon_collect && rfr) x *= rfl ? 3 : 2;
+            estimate += x * 0.5;
+        }
+        separation *= std::sqrt(estimate / settings.count);
+    }
+    std::vector<std::vector<Photon>> found(combos.size());
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    arena.execute([&] {
+        tbb::parallel_for(size_t(0), combos.size(), [&](size_t k) {
+            const Combo& c = combos[k];
+            const scene::Light& light = *c.light;
+            const Target& t = *c.target;
+            const scene::Object& o = scene_.objects[static_cast<size_t>(t.object)];
+            PhotonPath path;
+            path.light = &light;
+            path.target = t.object;
+            path.max_level = settings.max_trace_level >= 0 ? settings.max_trace_level
+                                                           : max_level_;
+            path.adc = settings.adc_bailout >= 0 ? settings.adc_bailout : adc_bailout_;
+            path.out = &found[k];
+            // LightTargetCombo::computeAnglesAndDeltas.
+            const Vec3 to_centre_v = t.centre - light.location;
+            double dist = length(to_centre_v);
+            Vec3 to_centre = dist > 0 ? to_centre_v / dist : Vec3(0, 0, 1);
+            const bool parallel = light.parallel;
+            const Vec3 light_dir = normalize(light.point_at - light.location);
+            const Vec3 up = std::fabs(std::fabs(to_centre.z) - 1) < 0.1 ? Vec3(0, 1, 0)
+                                                                       : Vec3(0, 0, 1);
+            Vec3 left = normalize(cross(parallel ? light_dir : to_centre, up));
+            double spread = o.photon_target * separation;
+            if (!parallel) spread /= dist;
+            const bool area = light.area && light.photon_area_light && !parallel;
+            const int ax = area ? light.area->size1 : 1, ay = area ? light.area->size2 : 1;
+            if (area) spread *= std::sqrt(static_cast<double>(ax * ay));
+            if (!(spread > 0)) return;
+            path.spread = spread;
+            const double dtheta = parallel ? spread : std::atan(spread);
+            double max_theta;
+            if (parallel) {
+                max_theta = t.radius;
+            } else if (dist >= t.radius) {
+                max_theta = std::asin(t.radius / dist);
+            } else {
+                max_theta = kPi;
+                if (std::fabs(dist) < kPovEpsilon) {
+                    left = Vec3(0, 1, 0);
+                    to_centre = Vec3(0, 0, 1);
+                }
+                dist = t.radius;
+            }
+            PhotonRandom random{0x9E3779B97F4A7C15ull * (k + 1)};
+            const PreparedLight beam(light);
+            bool hit_once = false;
+            for (double theta = 0; theta < max_theta; theta += dtheta) {
+                path.hit_target = false;
+                const double dphi = theta < kPovEpsilon ? 2 * kPi
+                                    : parallel          ? dtheta / theta
+                                                        : dtheta / std::sin(theta);
+                const double min_phi = -kPi + dphi * random() * 0.5;
+                const double max_phi = kPi - dphi / 2 + (min_phi + kPi);
+                for (double phi = min_phi; phi < max_phi; phi += dphi) {
+                    const double jphi = phi + dphi * (random() - 0.5) * settings.jitter;
+                    const double jtheta = theta + dtheta * (random() - 0.5) * settings.jitter;
+                    for (int i = 0; i < ax; ++i) {
+                        for (int j = 0; j < ay; ++j) {
+                            Ray ray;
+                            ray.origin = light.location;
+                            if (parallel) {
+                                ray.dir = light_dir;
+                                // From the plane through the target's centre across the
+                                // beam, "theta" being the radius.
+                                const Vec3 base = t.centre - light_dir * dot(light_dir, to_centre_v);
+                                ray.origin = base - light_dir * dist +
+                                             rotate_about(left * jtheta, light_dir, jphi);
+                            } else {
+                                const Vec3 v = -left * std::sin(jtheta) + to_centre * std::cos(jtheta);
+                                ray.dir = rotate_about(v, to_centre, jphi);
+                                if (area) {
+                                    // recomputeForAreaLight: from the grid's cell centre.
+                                    const scene::AreaLight& a = *light.area;
+                                    const double fu = ax > 1 ? (i - (ax - 1) / 2.0) / (ax - 1) : 0;
+                                    const double fv = ay > 1 ? (j - (ay - 1) / 2.0) / (ay - 1) : 0;
+                                    ray.origin = light.location + a.axis1 * fu + a.axis2 * fv;
+                                }
+                            }
+                            // Spot and cylinder light: the beam's falloff.
+                            const double attenuation = beam.beam(ray.origin, ray.dir) / (ax * ay);
+                            if (attenuation < 0.00001) continue;
+                            path.depth = 0;
+                            path.pass_prev = true;
+                            path.pass_this = false;
+                            Interiors inside;
+                            for (const Containing& ci :
+                                 objects_containing(geometry_, ray.origin, ray.dir))
+                                inside.append(ci.object,
+                                              scene_.materials[static_cast<size_t>(ci.material)]
+                                                  .interior.ior,
+                                              ci.material);
+                            photon_trace(ray, light.color * attenuation, 1.0, 0, inside, false,
+                                         path);
+                        }
+                    }
+                }
+                if (path.hit_target) hit_once = true;
+                // autostop: once the target was hit, a ring that misses it ends the shooting.
+                if (hit_once && !path.hit_target && theta > settings.autostop * max_theta) break;
+            }
+        });
+    });
+    std::vector<Photon> all;
+    for (auto& f : found) all.insert(all.end(), f.begin(), f.end());
+    photons_ = std::make_unique<PhotonMap>(std::move(all), settings);
+}
+
+bool Whitted::photon_refracts(const scene::Light& light, int object) const {
+    const scene::Object& o = scene_.objects[static_cast<size_t>(object)];
+    return o.photon_target > 0 && merged_on(light.photon_refraction, o.photon_refraction);
+}
+
+void Whitted::photon_trace(const Ray& ray, const Color& light, double weight, int level,
+                           const Interiors& in, bool continued, PhotonPath& path) const {
+    // PhotonTrace::TraceRay.
+    // Every surface counts a level here, even where the ray goes on unbent (POV-Ray's
+    // PhotonTrace ignores continuedRay): the first surface must be the target.
+    (void)continued;
+    if (level >= path.max_level || weight < path.adc) return;
+    ++level;
+    Hit hit;
+    RayState state;
+    state.primary = level == 1;
+    if (!find_hit(ray, state, &hit)) return;
+    const bool old_prev = path.pass_prev;
+    path.pass_prev = path.pass_this;
+    auto restore = [&] {
+        path.pass_this = path.pass_prev;
+        path.pass_prev = old_prev;
+    };
+    const scene::Object& obj = scene_.objects[static_cast<size_t>(hit.object)];
+    path.pass_this = false;
+    if (level == 1 || path.pass_prev) {
+        // The first surface must be the target (or something photons pass through).
+        if (hit.object == path.target && obj.photon_target > 0) {
+            path.hit_target = true;
+        } else if (obj.photon_pass_through) {
+            path.pass_this = true;
+        } else {
+            restore();
+            return;
+        }
+    }
+    photon_surface(ray, hit, light, weight, level, in, path);
+    restore();
+}
+
+void Whitted::photon_surface(const Ray& ray, const Hit& hit, Color light, double weight,
+                             int level, const Interiors& in, PhotonPath& path) const {
+    // PhotonTrace::ComputeLightedTexture.
+    const scene::Material& mat = scene_.materials[static_cast<size_t>(hit.material)];
+    const scene::Object& obj = scene_.objects[static_cast<size_t>(hit.object)];
+    const double len = length(ray.dir);
+    if (in.contains(hit.object) && std::fabs(mat.interior.fade_distance) > kPovEpsilon &&
+        mat.interior.fade_power > 0)
+        light *= fade(mat.interior, hit.t * len);
+    path.depth += hit.t * len;
+    if (level > 1 && !path.pass_prev && obj.photon_collect) {
+        // addSurfacePhoton: POV-Ray's light fading undone, spread over the path's length.
+        const scene::Light& l = *path.light;
+        double att = 1;
+        if (l.fade_power > 0 && std::fabs(l.fade_distance) > kPovEpsilon)
+            att = 2.0 / (1.0 + std::pow(path.depth / l.fade_distance, l.fade_power));
+        Color power = light * (att * path.spread * path.spread);
+        if (!l.parallel) power *= path.depth * path.depth;
+        path.out->push_back({hit.p, normalize(-ray.dir), power});
+    }
+    Vec3 n = hit.n;
+    if (dot(n, ray.dir) > 0) n = -n;
+    if (path.pass_this) {
+        // Straight through an object photons pass.
+        Interiors next = in;
+        if (!next.remove(hit.object)) next.append(hit.object, mat.interior.ior, hit.material);
+        Ray r;
+        r.dir = ray.dir;
+        r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, ray.dir);
+        photon_trace(r, light, weight, level, next, true, path);
+        path.depth -= hit.t * len;
+        return;
+    }
+    // The texture the photon meets: patterned textures pick the nearer entry of their map.
+    const scene::Texture* tex = &mat.texture;
+    Vec3 at_p = hit.p;
+    for (int guard = 0; guard < 16 && tex->kind != scene::PatternKind::Plain; ++guard) {
+        const Vec3 local =
+            tex->transform.is_identity() ? at_p : tex->transform.inverse_point(at_p);
+        const Vec3 tp = tex->params.warps.empty() ? local : warp_point(tex->kind, tex->params, local);
+        if (tex->kind == scene::PatternKind::Average) {
+            if (tex->texture_map.empty()) return;
+            tex = &tex->texture_map[0].texture[0];
+        } else {
+            const double value = evaluate_pattern(tex->kind, tex->params, local, pigments_.context());
+            if (is_block_pattern(tex->kind)) {
+                tex = &tex->entries[block_index(value, tex->entries.size())];
+            } else {
+                if (tex->texture_map.empty()) return;
+                const BlendPick b = search_blend_map(tex->texture_map, value);
+                tex = &tex->texture_map[b.fraction >= 0.5 ? b.cur : b.prev].texture[0];
+            }
+        }
+        at_p = tp;
+    }
+    const PatternPoint at{at_p, hit.uv, hit.has_uv};
+    const int layer_count = 1 + static_cast<int>(tex->layers.size());
+    struct LayerReflection {
+        double weight;
+        Vec3 normal;
+        Color reflec;
+        double exponent;
+    };
+    constexpr int kMaxLayers = 16;
+    LayerReflection refl[kMaxLayers];
+    int used = 0;
+    Color fil_col(1.0);
+    double trans = 1.0;
+    Vec3 top_normal = n;
+    const TextureStack no_stack{};
+    for (int li = 0; li < layer_count && trans > path.adc && used < kMaxLayers; ++li) {
+        const scene::Texture& layer = li == layer_count - 1 ? *tex : tex->layers[layer_count - 2 - li];
+        const ClassicFinish& f = materials_.classic_finish(layer.finish, hit.material);
+        const Vec3 lay_n = layer_normal(layer.normal, at, n, no_stack);
+        if (li == 0) top_normal = lay_n;
+        scene::ColorFT pig;
+        const bool found = pigments_.evaluate(layer.pigment, at, &pig);
+        double refl_weight = weight * trans;
+        const double cos_incidence = -dot(normalize(ray.dir), lay_n);
+        RayState rs;
+        rs.interiors = in;
+        Color reflec = f.reflects() ? reflectivity(f, cos_incidence,
+                                                   relative_ior(rs, hit.object, mat.interior.ior),
+                                                   &refl_weight)
+                                    : Color();
+        if (f.reflect_metallic != 0.0)
+            reflec = metallic_tint(f.reflect_metallic, cos_incidence, pig.rgb * fil_col, reflec);
+        refl[used++] = {refl_weight, lay_n, reflec, f.reflect_exponent};
+        if (found) {
+            fil_col *= Color(pig.rgb.r * pig.filter + pig.transmit,
+                             pig.rgb.g * pig.filter + pig.transmit,
+                             pig.rgb.b * pig.filter + pig.transmit);
+            if (f.conserve_energy)
+                fil_col *= Color(std::min(1.0, 1.0 - reflec.r), std::min(1.0, 1.0 - reflec.g),
+                                 std::min(1.0, 1.0 - reflec.b));
+        }
+        trans = std::min(1.0, std::fabs(greyscale(fil_col)));
+    }
+    const scene::Light& l = *path.light;
+    bool tir = false;
+    if (merged_on(l.photon_refraction, obj.photon_refraction) && trans > path.adc &&
+        features_.secondary_rays()) {
+        // ComputeRefractionForPhotons: the light through the layers' filter.
+        const double w = weight * std::max({fil_col.r, fil_col.g, fil_col.b, 0.0});
+        Interiors next = in;
+        const double ior = cross_interface(hit, &next);
+        Ray r;
+        const Vec3 d = normalize(ray.dir);
+        if (std::fabs(ior - 1.0) < kPovEpsilon) {
+            r.dir = d;
+            r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
+            photon_trace(r, light * fil_col, w, level, next, true, path);
+        } else if (refracted_direction(d, top_normal, ior, &r.dir)) {
+            r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
+            photon_trace(r, light * fil_col, w, level, next, false, path);
+        } else {
+            tir = true;  // the whole light reflects
+            Ray m;
+            m.dir = reflected_direction(d, top_normal, n);
+            m.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, m.dir);
+            photon_trace(m, light, w, level, in, false, path);
+        }
+    }
+    if (merged_on(l.photon_reflection, obj.photon_reflection)) {
+        for (int i = 0; i < used; ++i) {
+            const LayerReflection& r = refl[i];
+            if (tir && std::fabs(top_normal.x - r.normal.x) <= kPovEpsilon &&
+                std::fabs(top_normal.y - r.normal.y) <= kPovEpsilon &&
+                std::fabs(top_normal.z - r.normal.z) <= kPovEpsilon)
+                continue;
+            if (r.reflec.is_black()) continue;
+            Color c = light;
+            if (r.exponent != 1.0)
+                c = Color(std::pow(c.r, r.exponent), std::pow(c.g, r.exponent),
+                          std::pow(c.b, r.exponent));
+            c *= r.reflec;
+            Ray m;
+            m.dir = reflected_direction(normalize(ray.dir), r.normal, n);
+            m.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, m.dir);
+            photon_trace(m, c, r.weight * r.reflec.max(), level, in, false, path);
+        }
+    }
+    path.depth -= hit.t * len;
+}
+
+Color Whitted::photon_light(const ClassicFinish& f, const Hit& hit, const Ray& ray,
+                            const Vec3& lay_n, const Vec3& raw_n, const Color& pigment,
+                            double att, bool highlights, PhotonGather* gathered) const {
+    // ComputePhotonDiffuseLight: each photon lights the point like a light from where it came
+    // (the Lambert cosine undone, at most tenfold), over the disc it was gathered from.
+    if (f.diffuse == 0.0 && f.specular == 0.0 && f.phong == 0.0) return Color();
+    if (gathered->radius == 0 && gathered->photons.empty()) photons_->gather(hit.p, lay_n, gathered);
+    if (!(gathered->radius > 0)) return Color();
+    const bool double_illuminate = (hit.flags & kDoubleIlluminate) != 0;
+    Color sum;
+    for (const Photon* ph : gathered->photons) {
+        const Vec3& dir = ph->to_source;
+        const double c = std::clamp(dot(raw_n, dir), 0.1, 1.0);
+        const Color lc = ph->power / c;
+        if (!double_illuminate && dot(lay_n, dir) < kPovEpsilon) continue;
+        sum += diffuse_term(f, lay_n, dir, pigment, lc, att);
+        if (!highlights) continue;
+        if (f.phong > 0.0) sum += phong_term(f, lay_n, dir, ray.dir, pigment, lc);
+        if (f.specular > 0.0) sum += specular_term(f, lay_n, dir, ray.dir, pigment, lc);
+    }
+    return sum / (kPi * gathered->radius * gathered->radius);
+}
+
+}  // namespace glint::render

@@ -1,0 +1,154 @@
+#include "render/gi/photon_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <utility>
+
+namespace glint::render {
+namespace {
+
+// photons.cpp: PhotonMap's gatherNumSteps (the adaptive gather widens at most once).
+constexpr int kGatherSteps = 2;
+// The "flattened" gather: a photon's squared distance grows by 16 times its share out of the
+// surface's plane.
+constexpr double kFlatten = 16;
+
+double axis_of(const Vec3& v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
+
+// splitmix64: the radius estimate's choice of sample photons, fixed by the seed.
+uint64_t next_random(uint64_t* state) {
+    uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+}  // namespace
+
+PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::Photons& settings)
+    : photons_(std::move(photons)), axis_(photons_.size(), 0), settings_(settings) {
+    build(0, static_cast<uint32_t>(photons_.size()));
+    estimate_radius();
+}
+
+void PhotonMap::build(uint32_t lo, uint32_t hi) {
+    if (hi <= lo) return;
+    const uint32_t mid = lo + (hi - lo) / 2;
+    Vec3 a(kInfinity), b(-kInfinity);
+    for (uint32_t i = lo; i < hi; ++i) {
+        a = min(a, photons_[i].p);
+        b = max(b, photons_[i].p);
+    }
+    const Vec3 e = b - a;
+    const int axis = e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
+    std::nth_element(photons_.begin() + lo, photons_.begin() + mid, photons_.begin() + hi,
+                     [axis](const Photon& l, const Photon& r) {
+                         return axis_of(l.p, axis) < axis_of(r.p, axis);
+                     });
+    axis_[mid] = static_cast<uint8_t>(axis);
+    build(lo, mid);
+    build(mid + 1, hi);
+}
+
+double PhotonMap::nearest(const Vec3& p, double size, const Vec3* n, int max_count,
+                          std::vector<std::pair<double, uint32_t>>* heap) const {
+    heap->clear();
+    double dmax = size * size;
+    if (max_count <= 0) return size;
+    auto visit = [&](auto&& self, uint32_t lo, uint32_t hi) -> void {
+        if (hi <= lo) return;
+        const uint32_t mid = lo + (hi - lo) / 2;
+        const Photon& ph = photons_[mid];
+        const Vec3 v = ph.p - p;
+        double d = dot(v, v);
+        if (n) d += std::fabs(dot(*n, v)) * d * kFlatten;
+        if (d < dmax) {
+            if (static_cast<int>(heap->size()) < max_count) {
+                heap->emplace_back(d, mid);
+                std::push_heap(heap->begin(), heap->end());
+            } else {
+                // Full: the farthest makes way, and the search shrinks to the new farthest.
+                std::pop_heap(heap->begin(), heap->end());
+                heap->back() = {d, mid};
+                std::push_heap(heap->begin(), heap->end());
+                dmax = heap->front().first;
+            }
+        }
+        const int axis = axis_[mid];
+        const double delta = axis_of(p, axis) - axis_of(ph.p, axis);
+        const uint32_t near_lo = delta < 0 ? lo : mid + 1, near_hi = delta < 0 ? mid : hi;
+        const uint32_t far_lo = delta < 0 ? mid + 1 : lo, far_hi = delta < 0 ? hi : mid;
+        self(self, near_lo, near_hi);
+        if (delta * delta < dmax) self(self, far_lo, far_hi);
+    };
+    visit(visit, 0, static_cast<uint32_t>(photons_.size()));
+    return std::sqrt(dmax);
+}
+
+void PhotonMap::gather(const Vec3& p, const Vec3& n, PhotonGather* out) const {
+    out->photons.clear();
+    out->radius = 0;
+    if (photons_.empty() || !(radius_ > 0)) return;
+    std::vector<std::pair<double, uint32_t>> heap, wider;
+    double size = radius_;
+    double r = nearest(p, size, &n, settings_.gather_max, &heap);
+    int num = static_cast<int>(heap.size());
+    double prev = num / (r * r);
+    if (prev == 0) prev = 1e-16;
+    for (int step = 1; num < settings_.gather_min && step < kGatherSteps; ++step) {
+        size += radius_step_;
+        const double tr = nearest(p, size, &n, settings_.gather_max, &wider);
+        const int tn = static_cast<int>(wider.size());
+        const double density = tn / (tr * tr);
+        // Keep the wider gather while the density holds, or when it still found too few.
+        if ((density - prev) / prev < settings_.expand_tolerance ||
+            (tn < settings_.expand_min && tn > 0)) {
+            prev = density == 0 ? 1e-16 : density;
+            r = tr;
+            num = tn;
+            heap.swap(wider);
+        } else {
+            break;
+        }
+    }
+    std::sort(heap.begin(), heap.end());
+    for (const auto& [d, i] : heap) out->photons.push_back(&photons_[i]);
+    out->radius = r;
+}
+
+void PhotonMap::estimate_radius() {
+    // PhotonMap::setGatherOptions.
+    if (settings_.radius > 0) {
+        radius_ = settings_.radius;
+    } else if (!photons_.empty()) {
+        const size_t n = photons_.size();
+        const size_t samples = std::clamp<size_t>(n / 20, 100, 1000);
+        uint64_t rng = 0x5EED0F9407005ull;
+        std::vector<std::pair<double, uint32_t>> heap;
+        double sum = 0;
+        for (size_t i = 0; i < samples; ++i) {
+            const Vec3& at = photons_[next_random(&rng) % n].p;
+            const double r = nearest(at, 10000000.0, nullptr, settings_.gather_max, &heap);
+            // All photons at one point (radius 0): count the running average instead.
+            sum += r > 0 ? heap.size() / (kPi * r * r) : (i > 0 ? sum / i : 0.0);
+        }
+        const double average = sum / samples;
+        radius_ = average > 0 ? std::sqrt(settings_.gather_max / (average * kPi)) : 0.0;
+        // Widen it where many places are sparser than the average.
+        size_t sparse = 0;
+        for (size_t i = 0; i < samples && radius_ > 0; ++i) {
+            const Vec3& at = photons_[next_random(&rng) % n].p;
+            const double r = nearest(at, radius_, nullptr, settings_.gather_max, &heap);
+            if (r > 0) {
+                const double density = heap.size() / (kPi * r * r);
+                if (density < average * 0.7 && density > average * 0.05) ++sparse;
+            }
+        }
+        radius_ *= 1.0 + 20.0 * static_cast<double>(sparse) / samples;
+    }
+    radius_ *= settings_.radius_multiplier;
+    radius_step_ = 2 * radius_;
+}
+
+}  // namespace glint::render
