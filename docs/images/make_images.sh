@@ -11,7 +11,8 @@ root=$(cd "$here/../.." && pwd)
 glint=${1:-$root/build/glint}
 shift || true
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(demo refraction_tir csg image_maps pov_chars media_interior media_density_file)
+[ ${#names[@]} -gt 0 ] || names=(demo refraction_tir csg image_maps pov_chars media_interior media_density_file radiosity
+    photons)
 source "$root/tests/golden/golden_scenes.sh"
 
 work=$(mktemp -d /tmp/glint-docimages.XXXXXX)
