@@ -380,9 +380,6 @@ void Parser::parse_photon_settings() {
             skip_comma();
             ph.media_factor = allow_float(1);
             if (!(ph.media_factor > 0)) fail("photons media: the spacing factor must be positive");
-            if (ph.media_steps > 0)
-                warn_unsupported(*this, "media photons", at,
-                                 "media collect no photons; light refracted into media is lost");
         } else {
             break;
         }

@@ -36,7 +36,8 @@ TEST(PhotonMap, GathersTheNearestPhotonsOfABruteForceSearch) {
     EXPECT_DOUBLE_EQ(map.gather_radius(), 0.35);
     for (const Vec3& p : {Vec3(3, 0, 3), Vec3(0.02, 0, 5.5), Vec3(4.4, 0, 1.23)}) {
         PhotonGather g;
-        map.gather(p, Vec3(0, 1, 0), &g);
+        const Vec3 up(0, 1, 0);
+        map.gather(p, &up, &g);
         // Brute force: all photons within the radius if fewer than 30, else the 30 nearest
         // and the disc they span.
         std::vector<double> d;
@@ -50,7 +51,8 @@ TEST(PhotonMap, GathersTheNearestPhotonsOfABruteForceSearch) {
     }
     // Where fewer than gather's minimum lie within the radius the gather widens once.
     PhotonGather edge;
-    map.gather(Vec3(-0.5, 0, -0.5), Vec3(0, 1, 0), &edge);
+    const Vec3 up(0, 1, 0);
+    map.gather(Vec3(-0.5, 0, -0.5), &up, &edge);
     EXPECT_GT(edge.radius, 0.35);
 }
 

@@ -105,9 +105,7 @@ TEST(PovUnsupported, MediaPhotonsRadiosityAndInteriorTexture) {
     EXPECT_TRUE(o.photon_pass_through);
     EXPECT_DOUBLE_EQ(o.radiosity_importance, 0.5);
     EXPECT_EQ(p.warnings,
-              (std::vector<std::string>{"2:55: 'media photons' is not supported: media collect "
-                                        "no photons; light refracted into media is lost",
-                                        "9:3: 'interior_texture' is not supported: the object's "
+              (std::vector<std::string>{"9:3: 'interior_texture' is not supported: the object's "
                                         "interior_texture block is ignored"}));
 }
 

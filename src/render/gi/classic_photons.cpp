@@ -22,16 +22,13 @@ namespace glint::render {
 namespace {
 
 // splitmix64 seeded per light and target: the shooting's jitter, the same every render.
-struct PhotonRandom {
-    uint64_t state;
-    double operator()() {
-        uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        z ^= z >> 31;
-        return static_cast<double>(z >> 11) / 9007199254740992.0;
-    }
-};
+double draw(uint64_t* state) {
+    uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return static_cast<double>(z >> 11) / 9007199254740992.0;
+}
 
 double greyscale(const Color& c) { return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b; }
 
@@ -59,6 +56,8 @@ struct Whitted::PhotonPath {
     int max_level = 5;
     double adc = 1.0 / 255;
     std::vector<Photon>* out = nullptr;
+    std::vector<Photon>* media_out = nullptr;  // media photons
+    uint64_t random = 0;                         // the shooting's random state
 };
 
 void Whitted::shoot_photons(int threads) {
@@ -112,7 +111,7 @@ void Whitted::shoot_photons(int threads) {
         }
         separation *= std::sqrt(estimate / settings.count);
     }
-    std::vector<std::vector<Photon>> found(combos.size());
+    std::vector<std::vector<Photon>> found(combos.size()), found_media(combos.size());
     tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
     arena.execute([&] {
         tbb::parallel_for(size_t(0), combos.size(), [&](size_t k) {
@@ -127,6 +126,7 @@ void Whitted::shoot_photons(int threads) {
                                                            : max_level_;
             path.adc = settings.adc_bailout >= 0 ? settings.adc_bailout : adc_bailout_;
             path.out = &found[k];
+            path.media_out = &found_media[k];
             // LightTargetCombo::computeAnglesAndDeltas.
             const Vec3 to_centre_v = t.centre - light.location;
             double dist = length(to_centre_v);
@@ -157,7 +157,8 @@ void Whitted::shoot_photons(int threads) {
                 }
                 dist = t.radius;
             }
-            PhotonRandom random{0x9E3779B97F4A7C15ull * (k + 1)};
+            path.random = 0x9E3779B97F4A7C15ull * (k + 1);
+            auto random = [&path] { return draw(&path.random); };
             const PreparedLight beam(light);
             bool hit_once = false;
             for (double theta = 0; theta < max_theta; theta += dtheta) {
@@ -216,9 +217,59 @@ void Whitted::shoot_photons(int threads) {
             }
         });
     });
-    std::vector<Photon> all;
+    std::vector<Photon> all, media;
     for (auto& f : found) all.insert(all.end(), f.begin(), f.end());
+    for (auto& f : found_media) media.insert(media.end(), f.begin(), f.end());
     photons_ = std::make_unique<PhotonMap>(std::move(all), settings);
+    if (!media.empty()) {
+        media_photons_ = std::make_unique<PhotonMap>(std::move(media), settings, true);
+        media_.set_photons(media_photons_.get());
+    }
+}
+
+void Whitted::photon_media(const Ray& ray, double seg, Color* light, int level,
+                           const Interiors& in, PhotonPath& path) const {
+    // The media of the hollow objects the photon crosses (not the atmosphere's): they dim
+    // it, and with `media` photons on they keep photons along the way
+    // (PhotonMediaFunction::DepositMediaPhotons, one interval).
+    if (!features_.media || in.count == 0 || !hollow(in)) return;
+    std::vector<const scene::Media*> media;
+    interior_media(in, &media);
+    if (media.empty()) return;
+    const scene::Photons& settings = *scene_.global.photons;
+    const Vec3 dir = ray.dir / length(ray.dir);
+    bool extinction = false, scattering = false, collects = false;
+    for (const scene::Media* m : media) {
+        extinction = extinction || !m->absorption.is_black() || !m->scattering.is_black();
+        scattering = scattering || !m->scattering.is_black();
+        collects = collects || m->collect;
+    }
+    const scene::Light& l = *path.light;
+    if (level > 1 && !path.pass_prev && settings.media_steps > 0 && extinction && scattering &&
+        collects) {
+        const double step = path.spread * (l.parallel ? 1.0 : path.depth);
+        int n = step > 0 ? static_cast<int>(seg / (step * settings.media_factor)) : 0;
+        double factor = settings.media_factor;
+        if (n > settings.media_steps) {
+            n = settings.media_steps;
+            factor = seg / (step * n);
+        }
+        for (int j = 0; j < n; ++j) {
+            const double d =
+                (j + 0.5 + (draw(&path.random) - 0.5) * settings.jitter) / n * seg;
+            const double travelled = path.depth + d;
+            // addMediaPhoton over the colour the photon had entering the medium.
+            double fade = 1;
+            if (l.fade_power > 0 && std::fabs(l.fade_distance) > kPovEpsilon)
+                fade = 2.0 / (1.0 + std::pow(travelled / l.fade_distance, l.fade_power));
+            Color power = *light * (factor * path.spread * (l.parallel ? 1.0 : travelled));
+            power *= fade * path.spread * path.spread;
+            if (!l.parallel) power *= travelled * travelled;
+            path.media_out->push_back({ray.origin + dir * d, -dir, power});
+        }
+    }
+    auto no_light = [](size_t, const Vec3&, Color*, Vec3*) { return false; };
+    media_.compute(media, ray.origin, dir, seg, true, no_light, light, nullptr);
 }
 
 bool Whitted::photon_refracts(const scene::Light& light, int object) const {
@@ -267,6 +318,7 @@ void Whitted::photon_surface(const Ray& ray, const Hit& hit, Color light, double
     const scene::Material& mat = scene_.materials[static_cast<size_t>(hit.material)];
     const scene::Object& obj = scene_.objects[static_cast<size_t>(hit.object)];
     const double len = length(ray.dir);
+    photon_media(ray, hit.t * len, &light, level, in, path);
     if (in.contains(hit.object) && std::fabs(mat.interior.fade_distance) > kPovEpsilon &&
         mat.interior.fade_power > 0)
         light *= fade(mat.interior, hit.t * len);
@@ -412,7 +464,8 @@ Color Whitted::photon_light(const ClassicFinish& f, const Hit& hit, const Ray& r
     // ComputePhotonDiffuseLight: each photon lights the point like a light from where it came
     // (the Lambert cosine undone, at most tenfold), over the disc it was gathered from.
     if (f.diffuse == 0.0 && f.specular == 0.0 && f.phong == 0.0) return Color();
-    if (gathered->radius == 0 && gathered->photons.empty()) photons_->gather(hit.p, lay_n, gathered);
+    if (gathered->radius == 0 && gathered->photons.empty())
+        photons_->gather(hit.p, &lay_n, gathered);
     if (!(gathered->radius > 0)) return Color();
     const bool double_illuminate = (hit.flags & kDoubleIlluminate) != 0;
     Color sum;

@@ -26,8 +26,13 @@ uint64_t next_random(uint64_t* state) {
 
 }  // namespace
 
-PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::Photons& settings)
-    : photons_(std::move(photons)), axis_(photons_.size(), 0), settings_(settings) {
+PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::Photons& settings, bool volume)
+    : photons_(std::move(photons)), axis_(photons_.size(), 0), settings_(settings),
+      volume_(volume) {
+    if (volume_) {
+        settings_.radius = settings.media_radius;
+        settings_.radius_multiplier = settings.media_radius_multiplier;
+    }
     build(0, static_cast<uint32_t>(photons_.size()));
     estimate_radius();
 }
@@ -86,19 +91,19 @@ double PhotonMap::nearest(const Vec3& p, double size, const Vec3* n, int max_cou
     return std::sqrt(dmax);
 }
 
-void PhotonMap::gather(const Vec3& p, const Vec3& n, PhotonGather* out) const {
+void PhotonMap::gather(const Vec3& p, const Vec3* n, PhotonGather* out) const {
     out->photons.clear();
     out->radius = 0;
     if (photons_.empty() || !(radius_ > 0)) return;
     std::vector<std::pair<double, uint32_t>> heap, wider;
     double size = radius_;
-    double r = nearest(p, size, &n, settings_.gather_max, &heap);
+    double r = nearest(p, size, n, settings_.gather_max, &heap);
     int num = static_cast<int>(heap.size());
     double prev = num / (r * r);
     if (prev == 0) prev = 1e-16;
     for (int step = 1; num < settings_.gather_min && step < kGatherSteps; ++step) {
         size += radius_step_;
-        const double tr = nearest(p, size, &n, settings_.gather_max, &wider);
+        const double tr = nearest(p, size, n, settings_.gather_max, &wider);
         const int tn = static_cast<int>(wider.size());
         const double density = tn / (tr * tr);
         // Keep the wider gather while the density holds, or when it still found too few.
@@ -117,6 +122,10 @@ void PhotonMap::gather(const Vec3& p, const Vec3& n, PhotonGather* out) const {
     out->radius = r;
 }
 
+double PhotonMap::density(size_t count, double r) const {
+    return volume_ ? 3.0 * count / (4.0 * kPi * r * r * r) : count / (kPi * r * r);
+}
+
 void PhotonMap::estimate_radius() {
     // PhotonMap::setGatherOptions.
     if (settings_.radius > 0) {
@@ -131,23 +140,26 @@ void PhotonMap::estimate_radius() {
             const Vec3& at = photons_[next_random(&rng) % n].p;
             const double r = nearest(at, 10000000.0, nullptr, settings_.gather_max, &heap);
             // All photons at one point (radius 0): count the running average instead.
-            sum += r > 0 ? heap.size() / (kPi * r * r) : (i > 0 ? sum / i : 0.0);
+            sum += r > 0 ? density(heap.size(), r) : (i > 0 ? sum / i : 0.0);
         }
         const double average = sum / samples;
-        radius_ = average > 0 ? std::sqrt(settings_.gather_max / (average * kPi)) : 0.0;
+        radius_ = !(average > 0) ? 0.0
+                  : volume_      ? std::pow(3.0 * settings_.gather_max / (average * kPi * 4.0), 0.3333)
+                                 : std::sqrt(settings_.gather_max / (average * kPi));
         // Widen it where many places are sparser than the average.
         size_t sparse = 0;
         for (size_t i = 0; i < samples && radius_ > 0; ++i) {
             const Vec3& at = photons_[next_random(&rng) % n].p;
             const double r = nearest(at, radius_, nullptr, settings_.gather_max, &heap);
             if (r > 0) {
-                const double density = heap.size() / (kPi * r * r);
-                if (density < average * 0.7 && density > average * 0.05) ++sparse;
+                const double d = density(heap.size(), r);
+                if (d < average * 0.7 && d > average * 0.05) ++sparse;
             }
         }
         radius_ *= 1.0 + 20.0 * static_cast<double>(sparse) / samples;
     }
     radius_ *= settings_.radius_multiplier;
+    if (volume_) radius_ *= 2;
     radius_step_ = 2 * radius_;
 }
 

@@ -32,16 +32,17 @@ class PhotonMap {
 public:
     // Takes the photons (in a fixed order, so the tree and every gather are the same whatever
     // the thread count), builds the tree and sets the gather radius (settings' radius, or
-    // estimated from the density with a fixed-seed choice of sample photons).
-    PhotonMap(std::vector<Photon> photons, const scene::Photons& settings);
+    // estimated from the density with a fixed-seed choice of sample photons). `volume`: a
+    // media photon map (densities per volume, the media radius settings, the radius doubled).
+    PhotonMap(std::vector<Photon> photons, const scene::Photons& settings, bool volume = false);
 
     size_t size() const { return photons_.size(); }
     double gather_radius() const { return radius_; }
 
-    // PhotonGatherer::gatherPhotonsAdaptive at `p` on a surface with normal `n`: the nearest
-    // photons (at most gather max) within the radius, widened in steps while fewer than
-    // gather min were found and the density holds (expand_thresholds).
-    void gather(const Vec3& p, const Vec3& n, PhotonGather* out) const;
+    // PhotonGatherer::gatherPhotonsAdaptive at `p` on a surface with normal `n` (null in a
+    // medium): the nearest photons (at most gather max) within the radius, widened in steps
+    // while fewer than gather min were found and the density holds (expand_thresholds).
+    void gather(const Vec3& p, const Vec3* n, PhotonGather* out) const;
 
 private:
     // gatherPhotons: up to `max_count` nearest within `size`; returns the radius counted over.
@@ -49,10 +50,12 @@ private:
                    std::vector<std::pair<double, uint32_t>>* heap) const;
     void build(uint32_t lo, uint32_t hi);
     void estimate_radius();
+    double density(size_t count, double r) const;  // photons per area (volume) within r
 
     std::vector<Photon> photons_;  // in kd-tree order (median of each range at its middle)
     std::vector<uint8_t> axis_;    // split axis of each range's median
     scene::Photons settings_;
+    bool volume_ = false;
     double radius_ = 0;
     double radius_step_ = 0;
 };

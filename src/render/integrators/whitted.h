@@ -80,6 +80,10 @@ private:
                       const Interiors& in, bool continued, PhotonPath& path) const;
     void photon_surface(const Ray& ray, const Hit& hit, Color light, double weight, int level,
                         const Interiors& in, PhotonPath& path) const;
+    // The interior media over the `seg` a photon crossed: they dim its `light` and keep media
+    // photons along the way.
+    void photon_media(const Ray& ray, double seg, Color* light, int level, const Interiors& in,
+                      PhotonPath& path) const;
     Color photon_light(const ClassicFinish& f, const Hit& hit, const Ray& ray, const Vec3& lay_n,
                        const Vec3& raw_n, const Color& pigment, double att, bool highlights,
                        PhotonGather* gathered) const;
@@ -164,6 +168,7 @@ private:
     Interiors camera_interiors_;
     std::unique_ptr<Radiosity> radiosity_;
     std::unique_ptr<PhotonMap> photons_;
+    std::unique_ptr<PhotonMap> media_photons_;
     // Names this integrator's slots in each thread's shadow cache (whitted.cpp).
     uint64_t serial_;
 };

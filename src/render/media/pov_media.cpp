@@ -51,6 +51,7 @@ struct PovMedia::Context {
     bool shadow;
     const LightFn& light;
     bool use_scattering = false;
+    bool collects = false;            // some medium takes photons (not `collect off`)
     double jitter = 0.0;              // the lead medium's
     double aa_threshold = HUGE_VAL;   // the smallest of all media
     std::vector<SegmentLight> lights;
@@ -119,7 +120,7 @@ void PovMedia::compute(const std::vector<const scene::Media*>& media, const Vec3
                        const Vec3& dir, double depth, bool shadow, const LightFn& light,
                        Color* colour, double* transm) const {
     if (media.empty()) return;
-    Context c{media, origin, dir, depth, shadow, light, false, 0.0, HUGE_VAL, {}, 0};
+    Context c{media, origin, dir, depth, shadow, light, false, false, 0.0, HUGE_VAL, {}, 0};
     c.state = mix(mix(mix(mix(mix(mix(0x243F6A8885A308D3ull, origin.x), origin.y), origin.z),
                           dir.x), dir.y), dir.z);
 
@@ -133,6 +134,7 @@ void PovMedia::compute(const std::vector<const scene::Media*>& media, const Vec3
         c.aa_threshold = std::min(c.aa_threshold, m->aa_threshold);
         use_extinction = use_extinction || !m->absorption.is_black() || !m->scattering.is_black();
         c.use_scattering = c.use_scattering || !m->scattering.is_black();
+        c.collects = c.collects || m->collect;
         if (!m->density.empty())
             constant_shadow =
                 constant_shadow && m->density.back().kind == scene::PatternKind::Plain;
@@ -372,6 +374,31 @@ void PovMedia::light_intervals(const Context& c, std::vector<SegmentLight>* out)
     }
 }
 
+double PovMedia::phase(const std::vector<const scene::Media*>& media, const Vec3& to_light,
+                       const Vec3& dir) {
+    // ComputeMediaScatteringAttenuation: the phase functions of all media, averaged.
+    const double alpha = dot(to_light, dir);
+    double k = 0.0;
+    for (const scene::Media* m : media) {
+        switch (m->type) {
+            case scene::ScatteringType::Rayleigh: k += 0.799372013 * (1.0 + alpha * alpha); break;
+            case scene::ScatteringType::MieHazy:
+                k += 0.576655375 * (1.0 + 9.0 * std::pow(0.5 * (1.0 + alpha), 8.0));
+                break;
+            case scene::ScatteringType::MieMurky:
+                k += 0.495714547 * (1.0 + 50.0 * std::pow(0.5 * (1.0 + alpha), 32.0));
+                break;
+            case scene::ScatteringType::HenyeyGreenstein: {
+                const double g = m->eccentricity;
+                k += (1.0 - g * g) / std::pow(1.0 + g * g - 2.0 * g * alpha, 1.5);
+                break;
+            }
+            case scene::ScatteringType::Isotropic: k += 1.0; break;
+        }
+    }
+    return k / static_cast<double>(media.size());
+}
+
 void PovMedia::sample(Context& c, Interval& iv, double d0, int method, Color* col,
                       Color* od) const {
     // ComputeOneMediaSample: coefficients at the sample, light scattered there.
@@ -404,30 +431,19 @@ void PovMedia::sample(Context& c, Interval& iv, double d0, int method, Color* co
             Color lc;
             Vec3 ldir;
             if (!c.light(sl.light, h, &lc, &ldir)) continue;
-            // ComputeMediaScatteringAttenuation: the phase functions of all media, averaged.
-            const double alpha = dot(ldir, c.dir);
-            double k = 0.0;
-            for (const scene::Media* m : c.media) {
-                switch (m->type) {
-                    case scene::ScatteringType::Rayleigh:
-                        k += 0.799372013 * (1.0 + alpha * alpha);
-                        break;
-                    case scene::ScatteringType::MieHazy:
-                        k += 0.576655375 * (1.0 + 9.0 * std::pow(0.5 * (1.0 + alpha), 8.0));
-                        break;
-                    case scene::ScatteringType::MieMurky:
-                        k += 0.495714547 * (1.0 + 50.0 * std::pow(0.5 * (1.0 + alpha), 32.0));
-                        break;
-                    case scene::ScatteringType::HenyeyGreenstein: {
-                        const double g = m->eccentricity;
-                        k += (1.0 - g * g) / std::pow(1.0 + g * g - 2.0 * g * alpha, 1.5);
-                        break;
-                    }
-                    case scene::ScatteringType::Isotropic: k += 1.0; break;
-                }
-            }
-            k /= static_cast<double>(c.media.size());
-            emission += scattering * lc * k;
+            emission += scattering * lc * phase(c.media, ldir, c.dir);
+        }
+    }
+    if (!c.shadow && c.use_scattering && photons_ && photons_->size() > 0 && c.collects) {
+        // ComputeMediaPhotons: each photon near the sample scatters like a light from where
+        // it came, over the sphere it was gathered from.
+        PhotonGather g;
+        photons_->gather(h, nullptr, &g);
+        if (g.radius > 0) {
+            Color sum;
+            for (const Photon* ph : g.photons)
+                sum += scattering * ph->power * phase(c.media, ph->to_source, c.dir);
+            emission += sum * (3.0 / (4.0 * kPi * g.radius * g.radius * g.radius));
         }
     }
     if (method == 3) {

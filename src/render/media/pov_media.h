@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "render/gi/photon_map.h"
 #include "render/textures/pigment.h"
 #include "scene/scene.h"
 
@@ -37,6 +38,9 @@ public:
                  const Vec3& dir, double depth, bool shadow, const LightFn& light, Color* colour,
                  double* transm) const;
 
+    // Media photons (POV-Ray's media photon map): where a medium that collects photons
+    // scatters, the photons near a sample add their light through its phase function.
+    void set_photons(const PhotonMap* photons) { photons_ = photons; }
     // The variance thresholds of method 1/2's extra samples (Media::PostProcess): entry i is
     // the largest variance accepted after i + 1 samples. Exposed for tests.
     static std::vector<double> sample_thresholds(const scene::Media& m);
@@ -70,6 +74,11 @@ private:
 
     std::vector<Geometry> lights_;
     const PigmentEvaluator* pigments_;
+    const PhotonMap* photons_ = nullptr;
+    // ComputeMediaScatteringAttenuation's phase factor for light arriving along `to_light`
+    // (unit) and leaving along the ray's `dir`, averaged over the media.
+    static double phase(const std::vector<const scene::Media*>& media, const Vec3& to_light,
+                        const Vec3& dir);
     // Media::PostProcess's thresholds, for each medium that takes extra samples.
     std::unordered_map<const scene::Media*, std::vector<double>> thresholds_;
 };
