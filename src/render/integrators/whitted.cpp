@@ -385,7 +385,9 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
                                    : 1.0 - pig.filter - pig.transmit;
         // Subsurface light transport stands in for the diffuse term (POV-Ray keeps no
         // diffuse beside it: a surface-only diffuse is a layer of its own).
-        const bool sslt = f.subsurface && scene_.global.subsurface;
+        // Radiosity's rays see subsurface finishes as plain ones unless its `subsurface on`.
+        const bool sslt = f.subsurface && scene_.global.subsurface &&
+                          !(state.radiosity && !radiosity_->settings().subsurface);
         Color tmp;
         if (sslt && features_.lights) {
             Vec3 raw_n = hit.n;
