@@ -240,6 +240,7 @@ void Parser::parse_radiosity_settings() {
     FileLoc o = loc();
     scene::Radiosity r;
     bool min_set = false, max_set = false;
+    FileLoc end_at = o, reuse_at = o;  // where pretrace_end and the reuse values were given
     auto positive = [&](const char* what, double v, bool zero_ok = false) {
         if (zero_ok ? v < 0 : v <= 0)
             fail(std::string("radiosity ") + what + " must be a " +
@@ -254,20 +255,26 @@ void Parser::parse_radiosity_settings() {
         return v;
     };
     for (;;) {
-        FileLoc at = loc();
-        if (accept("load_file") || accept("save_file")) {
+        FileLoc at;  // the keyword just read (loc() names the last token taken)
+        auto take = [&](const char* w) {
+            if (!accept(w)) return false;
+            at = loc();
+            return true;
+        };
+        if (take("load_file") || take("save_file")) {
             diag.warning(at, "radiosity load_file/save_file is ignored: POV-Ray 3.7 takes "
                              "them on the command line only, and glint keeps no cache file");
             parse_string();
-        } else if (accept("always_sample")) {
+        } else if (take("always_sample")) {
             r.always_sample = parse_float() != 0;
-        } else if (accept("pretrace_start")) {
+        } else if (take("pretrace_start")) {
             r.pretrace_start = in_range("pretrace_start", parse_float(), 0, 1, true);
-        } else if (accept("pretrace_end")) {
+        } else if (take("pretrace_end")) {
+            end_at = at;
             r.pretrace_end = in_range("pretrace_end", parse_float(), 0, 1, true);
-        } else if (accept("brightness")) {
+        } else if (take("brightness")) {
             r.brightness = positive("brightness", parse_float());
-        } else if (accept("count")) {
+        } else if (take("count")) {
             const double c = parse_float();
             if (static_cast<int>(c) <= 0) fail("radiosity count must be a positive number");
             r.count = static_cast<int>(c);
@@ -276,19 +283,24 @@ void Parser::parse_radiosity_settings() {
             if (r.direction_pool < r.count)
                 fail("radiosity count can not be more than its direction pool (count's second "
                      "value)");
-        } else if (accept("error_bound")) {
+            // Each gather shoots `count` rays: past a million, a render that never ends.
+            if (r.direction_pool > 1'000'000)
+                fail_at(at, "radiosity count and its direction pool must be at most 1000000");
+        } else if (take("error_bound")) {
             r.error_bound = positive("error_bound", parse_float());
-        } else if (accept("gray_threshold")) {
+        } else if (take("gray_threshold")) {
             r.gray_threshold = in_range("gray_threshold", parse_float(), 0, 1, false);
-        } else if (accept("low_error_factor")) {
+        } else if (take("low_error_factor")) {
             r.low_error_factor = positive("low_error_factor", parse_float());
-        } else if (accept("maximum_reuse")) {
+        } else if (take("maximum_reuse")) {
+            reuse_at = at;
             r.maximum_reuse = positive("maximum_reuse", parse_float());
             max_set = true;
-        } else if (accept("minimum_reuse")) {
+        } else if (take("minimum_reuse")) {
+            reuse_at = at;
             r.minimum_reuse = positive("minimum_reuse", parse_float(), true);
             min_set = true;
-        } else if (accept("nearest_count")) {
+        } else if (take("nearest_count")) {
             r.nearest_count = static_cast<int>(in_range("nearest_count", parse_float(), 1, 20, false));
             skip_comma();
             const double apt = allow_float(0);
@@ -296,18 +308,18 @@ void Parser::parse_radiosity_settings() {
                 fail("radiosity nearest_count for adaptive pretrace (its second value) must be "
                      "non-negative and smaller than nearest_count");
             r.nearest_count_pretrace = static_cast<int>(apt);
-        } else if (accept("recursion_limit")) {
+        } else if (take("recursion_limit")) {
             r.recursion_limit =
                 static_cast<int>(in_range("recursion_limit", parse_float(), 1, 20, false));
-        } else if (accept("max_sample")) {
+        } else if (take("max_sample")) {
             r.max_sample = parse_float();
-        } else if (accept("adc_bailout")) {
+        } else if (take("adc_bailout")) {
             r.adc_bailout = positive("adc_bailout", parse_float());
-        } else if (accept("normal")) {
+        } else if (take("normal")) {
             r.normal = parse_float() != 0;
-        } else if (accept("media")) {
+        } else if (take("media")) {
             r.media = parse_float() != 0;
-        } else if (accept("subsurface")) {
+        } else if (take("subsurface")) {
             r.subsurface = parse_float() != 0;
         } else {
             break;
@@ -316,14 +328,14 @@ void Parser::parse_radiosity_settings() {
     expect_close("radiosity", o);
     // parse.cpp's end-of-scene checks.
     if (r.pretrace_end > r.pretrace_start)
-        fail_at(o, "radiosity pretrace_end must be smaller than or equal to pretrace_start");
+        fail_at(end_at, "radiosity pretrace_end must be smaller than or equal to pretrace_start");
     if (r.minimum_reuse > r.maximum_reuse * 0.5) {
         if (!min_set) {
             r.minimum_reuse = r.maximum_reuse * 0.5;
         } else if (!max_set) {
             r.maximum_reuse = r.minimum_reuse * 2.0;
         } else if (r.minimum_reuse >= r.maximum_reuse) {
-            fail_at(o, "radiosity maximum_reuse must be larger than minimum_reuse");
+            fail_at(reuse_at, "radiosity maximum_reuse must be larger than minimum_reuse");
         }
     }
     scene.global.radiosity = r;
@@ -334,9 +346,15 @@ void Parser::parse_photon_settings() {
     expect_open("photons");
     FileLoc o = loc();
     scene::Photons ph;
+    ph.loc = o;
     for (;;) {
-        FileLoc at = loc();
-        if (accept("radius")) {
+        FileLoc at;  // the keyword just read (loc() names the last token taken)
+        auto take = [&](const char* w) {
+            if (!accept(w)) return false;
+            at = loc();
+            return true;
+        };
+        if (take("radius")) {
             ph.radius = allow_float(-1);
             skip_comma();
             ph.radius_multiplier = allow_float(1);
@@ -344,37 +362,39 @@ void Parser::parse_photon_settings() {
             ph.media_radius = allow_float(-1);
             skip_comma();
             ph.media_radius_multiplier = allow_float(1);
-        } else if (accept("spacing")) {
+        } else if (take("spacing")) {
+            ph.loc = at;
             ph.spacing = parse_float();
             if (!(ph.spacing > 0)) fail("photons spacing must be positive");
-        } else if (accept("count")) {
+        } else if (take("count")) {
+            ph.loc = at;
             ph.count = static_cast<int>(parse_float());
-            if (ph.count <= 0) fail("photons count must be positive");
-        } else if (accept("expand_thresholds")) {
+            if (ph.count <= 0) fail_at(at, "photons count must be positive");
+        } else if (take("expand_thresholds")) {
             ph.expand_tolerance = std::max(0.0, parse_float());
             skip_comma();
             ph.expand_min = std::max(0, static_cast<int>(parse_float()));
-        } else if (accept("gather")) {
+        } else if (take("gather")) {
             ph.gather_min = static_cast<int>(parse_float());
             skip_comma();
             ph.gather_max = static_cast<int>(parse_float());
             if (ph.gather_min < 0 || ph.gather_max < 0)
-                fail("photons gather counts cannot be negative");
+                fail_at(at, "photons gather counts cannot be negative");
             if (ph.gather_min > ph.gather_max)
-                fail("photons gather: the minimum must be less than the maximum");
-        } else if (accept("jitter")) {
+                fail_at(at, "photons gather: the minimum must be less than the maximum");
+        } else if (take("jitter")) {
             ph.jitter = parse_float();
-        } else if (accept("autostop")) {
+        } else if (take("autostop")) {
             ph.autostop = parse_float();
-        } else if (accept("adc_bailout")) {
+        } else if (take("adc_bailout")) {
             ph.adc_bailout = parse_float();
-        } else if (accept("max_trace_level")) {
+        } else if (take("max_trace_level")) {
             ph.max_trace_level = static_cast<int>(parse_float());
-        } else if (accept("load_file") || accept("save_file")) {
+        } else if (take("load_file") || take("save_file")) {
             diag.warning(at, "photons load_file/save_file is ignored: glint shoots the photons "
                              "every render");
             parse_string();
-        } else if (accept("media")) {
+        } else if (take("media")) {
             ph.media_steps = static_cast<int>(parse_float());
             if (ph.media_steps < 0) fail("photons media: max media steps must be non-negative");
             skip_comma();

@@ -54,6 +54,7 @@ struct Photons {
     double adc_bailout = -1;   // < 0: global_settings adc_bailout
     int media_steps = 0;       // media photons: max steps (0: off)
     double media_factor = 1;
+    FileLoc loc;  // the photons block, for errors while shooting
 };
 
 struct GlobalSettings {

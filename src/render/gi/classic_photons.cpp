@@ -8,8 +8,11 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <string>
 
+#include "core/error.h"
 #include "core/float.h"
 #include "render/integrators/whitted.h"
 #include "render/materials/classic_finish.h"
@@ -32,6 +35,9 @@ double draw(uint64_t* state) {
 
 double greyscale(const Color& c) { return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b; }
 
+// The most photons a scene may store (surface and media together): about 0.7 GB.
+constexpr size_t kMaxPhotons = 10'000'000;
+
 // Rotation of `v` about unit `axis` by `angle` (Rodrigues).
 Vec3 rotate_about(const Vec3& v, const Vec3& axis, double angle) {
     const double c = std::cos(angle), s = std::sin(angle);
@@ -41,6 +47,65 @@ Vec3 rotate_about(const Vec3& v, const Vec3& axis, double angle) {
 // A flag merged from the light's and the target's photons blocks: on in one, off in neither.
 bool merged_on(int light, int object) {
     return (light == 1 || object == 1) && light != 0 && object != 0;
+}
+
+[[noreturn]] void too_many_photons(const FileLoc& at) {
+    throw Error(ErrorKind::Render, at,
+                "photons: the spacing would shoot more than " + std::to_string(10 * kMaxPhotons) +
+                    " or store more than " + std::to_string(kMaxPhotons) +
+                    " photons; raise spacing (or lower count)");
+}
+
+// LightTargetCombo::computeAnglesAndDeltas: how photons from `light` are aimed at a target's
+// bounding sphere, `separation` apart at the target.
+struct Aim {
+    Vec3 to_centre, left, light_dir;
+    double dist = 0, spread = 0, dtheta = 0, max_theta = 0;
+    bool area = false;
+    int ax = 1, ay = 1;  // area_light grid of shooting positions
+    bool parallel = false;
+    // About how many photons the rings shoot: the cone's solid angle (a parallel beam's disc)
+    // over each photon's.
+    double shots() const {
+        if (!(dtheta > 0)) return 0;
+        const double cover = parallel ? kPi * max_theta * max_theta
+                                      : 2 * kPi * (1 - std::cos(std::min(max_theta, kPi)));
+        return cover / (dtheta * dtheta) * ax * ay;
+    }
+};
+
+Aim aim_at(const scene::Light& light, const Vec3& centre, double radius, double separation) {
+    Aim a;
+    a.parallel = light.parallel;
+    const Vec3 v = centre - light.location;
+    a.dist = length(v);
+    a.to_centre = a.dist > 0 ? v / a.dist : Vec3(0, 0, 1);
+    a.light_dir = normalize(light.point_at - light.location);
+    const Vec3 up = std::fabs(std::fabs(a.to_centre.z) - 1) < 0.1 ? Vec3(0, 1, 0) : Vec3(0, 0, 1);
+    a.left = normalize(cross(light.parallel ? a.light_dir : a.to_centre, up));
+    a.spread = separation;
+    if (!light.parallel) a.spread /= a.dist;
+    a.area = light.area && light.photon_area_light && !light.parallel;
+    if (a.area) {
+        a.ax = light.area->size1;
+        a.ay = light.area->size2;
+        a.spread *= std::sqrt(static_cast<double>(a.ax * a.ay));
+    }
+    if (!(a.spread > 0)) return a;
+    a.dtheta = light.parallel ? a.spread : std::atan(a.spread);
+    if (light.parallel) {
+        a.max_theta = radius;
+    } else if (a.dist >= radius) {
+        a.max_theta = std::asin(radius / a.dist);
+    } else {
+        a.max_theta = kPi;
+        if (std::fabs(a.dist) < kPovEpsilon) {
+            a.left = Vec3(0, 1, 0);
+            a.to_centre = Vec3(0, 0, 1);
+        }
+        a.dist = radius;
+    }
+    return a;
 }
 
 }  // namespace
@@ -111,7 +176,19 @@ void Whitted::shoot_photons(int threads) {
         }
         separation *= std::sqrt(estimate / settings.count);
     }
+    // A spacing too fine for the scene would shoot for hours: estimate first.
+    double shots = 0;
+    for (const Combo& c : combos) {
+        const scene::Object& o = scene_.objects[static_cast<size_t>(c.target->object)];
+        shots += aim_at(*c.light, c.target->centre, c.target->radius, o.photon_target * separation)
+                     .shots();
+    }
+    if (shots > 10.0 * kMaxPhotons) too_many_photons(settings.loc);
     std::vector<std::vector<Photon>> found(combos.size()), found_media(combos.size());
+    // A spacing too fine for the scene would store photons until memory runs out: stop at
+    // kMaxPhotons with an error instead.
+    std::atomic<size_t> stored{0}, shot{0};
+    std::atomic<bool> too_many{false};
     tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
     arena.execute([&] {
         tbb::parallel_for(size_t(0), combos.size(), [&](size_t k) {
@@ -127,48 +204,29 @@ void Whitted::shoot_photons(int threads) {
             path.adc = settings.adc_bailout >= 0 ? settings.adc_bailout : adc_bailout_;
             path.out = &found[k];
             path.media_out = &found_media[k];
-            // LightTargetCombo::computeAnglesAndDeltas.
+            const Aim aim = aim_at(light, t.centre, t.radius, o.photon_target * separation);
+            if (!(aim.spread > 0)) return;
+            const Vec3& to_centre = aim.to_centre;
+            const Vec3& left = aim.left;
+            const Vec3& light_dir = aim.light_dir;
             const Vec3 to_centre_v = t.centre - light.location;
-            double dist = length(to_centre_v);
-            Vec3 to_centre = dist > 0 ? to_centre_v / dist : Vec3(0, 0, 1);
+            const double dist = aim.dist, dtheta = aim.dtheta, max_theta = aim.max_theta;
             const bool parallel = light.parallel;
-            const Vec3 light_dir = normalize(light.point_at - light.location);
-            const Vec3 up = std::fabs(std::fabs(to_centre.z) - 1) < 0.1 ? Vec3(0, 1, 0)
-                                                                       : Vec3(0, 0, 1);
-            Vec3 left = normalize(cross(parallel ? light_dir : to_centre, up));
-            double spread = o.photon_target * separation;
-            if (!parallel) spread /= dist;
-            const bool area = light.area && light.photon_area_light && !parallel;
-            const int ax = area ? light.area->size1 : 1, ay = area ? light.area->size2 : 1;
-            if (area) spread *= std::sqrt(static_cast<double>(ax * ay));
-            if (!(spread > 0)) return;
-            path.spread = spread;
-            const double dtheta = parallel ? spread : std::atan(spread);
-            double max_theta;
-            if (parallel) {
-                max_theta = t.radius;
-            } else if (dist >= t.radius) {
-                max_theta = std::asin(t.radius / dist);
-            } else {
-                max_theta = kPi;
-                if (std::fabs(dist) < kPovEpsilon) {
-                    left = Vec3(0, 1, 0);
-                    to_centre = Vec3(0, 0, 1);
-                }
-                dist = t.radius;
-            }
+            const bool area = aim.area;
+            const int ax = aim.ax, ay = aim.ay;
+            path.spread = aim.spread;
             path.random = 0x9E3779B97F4A7C15ull * (k + 1);
             auto random = [&path] { return draw(&path.random); };
             const PreparedLight beam(light);
             bool hit_once = false;
-            for (double theta = 0; theta < max_theta; theta += dtheta) {
+            for (double theta = 0; theta < max_theta && !too_many; theta += dtheta) {
                 path.hit_target = false;
                 const double dphi = theta < kPovEpsilon ? 2 * kPi
                                     : parallel          ? dtheta / theta
                                                         : dtheta / std::sin(theta);
                 const double min_phi = -kPi + dphi * random() * 0.5;
                 const double max_phi = kPi - dphi / 2 + (min_phi + kPi);
-                for (double phi = min_phi; phi < max_phi; phi += dphi) {
+                for (double phi = min_phi; phi < max_phi && !too_many; phi += dphi) {
                     const double jphi = phi + dphi * (random() - 0.5) * settings.jitter;
                     const double jtheta = theta + dtheta * (random() - 0.5) * settings.jitter;
                     for (int i = 0; i < ax; ++i) {
@@ -206,8 +264,16 @@ void Whitted::shoot_photons(int threads) {
                                               scene_.materials[static_cast<size_t>(ci.material)]
                                                   .interior.ior,
                                               ci.material);
+                            const size_t before = found[k].size() + found_media[k].size();
                             photon_trace(ray, light.color * attenuation, 1.0, 0, inside, false,
                                          path);
+                            const size_t added =
+                                found[k].size() + found_media[k].size() - before;
+                            // Shots that store nothing count a tenth: a spacing that misses
+                            // everything must end too.
+                            if (stored.fetch_add(added) + added > kMaxPhotons ||
+                                shot.fetch_add(1) + 1 > 10 * kMaxPhotons)
+                                too_many = true;
                         }
                     }
                 }
@@ -217,6 +283,7 @@ void Whitted::shoot_photons(int threads) {
             }
         });
     });
+    if (too_many) too_many_photons(settings.loc);
     std::vector<Photon> all, media;
     for (auto& f : found) all.insert(all.end(), f.begin(), f.end());
     for (auto& f : found_media) media.insert(media.end(), f.begin(), f.end());

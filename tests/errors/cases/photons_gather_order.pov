@@ -1,0 +1,2 @@
+global_settings { photons { gather 50, 20 } }
+sphere { 0, 1 pigment { rgb 1 } }
