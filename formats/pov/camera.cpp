@@ -255,12 +255,8 @@ void Parser::parse_radiosity_settings() {
         return v;
     };
     for (;;) {
-        FileLoc at;  // the keyword just read (loc() names the last token taken)
-        auto take = [&](const char* w) {
-            if (!accept(w)) return false;
-            at = loc();
-            return true;
-        };
+        FileLoc at;  // the keyword just taken
+        auto take = [&](const char* w) { return accept_at(w, &at); };
         if (take("load_file") || take("save_file")) {
             diag.warning(at, "radiosity load_file/save_file is ignored: POV-Ray 3.7 takes "
                              "them on the command line only, and glint keeps no cache file");
@@ -348,12 +344,8 @@ void Parser::parse_photon_settings() {
     scene::Photons ph;
     ph.loc = o;
     for (;;) {
-        FileLoc at;  // the keyword just read (loc() names the last token taken)
-        auto take = [&](const char* w) {
-            if (!accept(w)) return false;
-            at = loc();
-            return true;
-        };
+        FileLoc at;  // the keyword just taken
+        auto take = [&](const char* w) { return accept_at(w, &at); };
         if (take("radius")) {
             ph.radius = allow_float(-1);
             skip_comma();

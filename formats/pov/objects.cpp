@@ -292,17 +292,7 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
         } else if (w == "hierarchy") {
             flag();
         } else if (w == "radiosity") {
-            // radiosity { importance F } (parse.cpp): the share of a radiosity sample's rays
-            // that may end on this object.
-            expect_open("radiosity");
-            FileLoc lo = loc();
-            while (accept("importance")) {
-                const double v = parse_float();
-                if (!(v > 0 && v <= 1))
-                    fail("radiosity importance must be greater than 0.0 and at most 1.0");
-                o.obj.radiosity_importance = v;
-            }
-            expect_close("radiosity", lo);
+            parse_radiosity_importance(&o.obj.radiosity_importance);
         } else if (w == "sturm") {
             bool on = flag();
             if (auto tor = std::get_if<scene::Torus>(&o.obj.shape)) tor->sturm = on;
@@ -350,6 +340,20 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
             apply_transform(o, delta);
         }
     }
+}
+
+void Parser::parse_radiosity_importance(double* importance) {
+    // radiosity { importance F } (parse.cpp): the share of a radiosity sample's rays that may
+    // end on the object.
+    expect_open("radiosity");
+    FileLoc lo = loc();
+    while (accept("importance")) {
+        const double v = parse_float();
+        if (!(v > 0 && v <= 1))
+            fail("radiosity importance must be greater than 0.0 and at most 1.0");
+        *importance = v;
+    }
+    expect_close("radiosity", lo);
 }
 
 void Parser::parse_object_photons(scene::Object& o) {

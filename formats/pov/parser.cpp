@@ -262,15 +262,7 @@ void Parser::parse_default() {
             parse_normal_body(default_texture_.normal);
             expect_close("normal", lo);
         } else if (w == "radiosity") {
-            expect_open("radiosity");
-            FileLoc lo = loc();
-            while (accept("importance")) {
-                const double v = parse_float();
-                if (!(v > 0 && v <= 1))
-                    fail("radiosity importance must be greater than 0.0 and at most 1.0");
-                scene.global.radiosity_importance = v;
-            }
-            expect_close("radiosity", lo);
+            parse_radiosity_importance(&scene.global.radiosity_importance);
         } else {
             fail("expected texture, pigment, finish, normal or radiosity in #default, got " +
                  got(t));

@@ -158,6 +158,14 @@ public:
     // An object's or a light's `photons { ... }` block (objects.cpp), after the keyword.
     void parse_object_photons(scene::Object& o);
     void parse_light_photons(scene::Light& l);
+    // `radiosity { importance F }` (an object's, or #default's), after the keyword.
+    void parse_radiosity_importance(double* importance);
+    // accept(w), and the place of the keyword taken in *at (loc() names the last token).
+    bool accept_at(const char* w, FileLoc* at) {
+        if (!accept(w)) return false;
+        *at = loc();
+        return true;
+    }
     void parse_background();
     void parse_sky_sphere();
     // ---- atmosphere (atmosphere.cpp): fog { ... } and rainbow { ... } statements
