@@ -329,6 +329,11 @@ public:
         if (o.double_illuminate) s += " double_illuminate";
         if (o.no_radiosity) s += " no_radiosity";
         if (o.radiosity_importance >= 0) s += " radiosity_importance " + num(o.radiosity_importance);
+        if (o.photon_target > 0) s += " photons_target " + num(o.photon_target);
+        if (o.photon_refraction >= 0) s += " photons_refraction " + std::to_string(o.photon_refraction);
+        if (o.photon_reflection >= 0) s += " photons_reflection " + std::to_string(o.photon_reflection);
+        if (o.photon_pass_through) s += " photons_pass_through";
+        if (!o.photon_collect) s += " photons_collect off";
         if (!o.name.empty()) s += " name " + o.name;
         line(d, s + where(o.loc));
         if (!o.transform.is_identity()) line(d + 1, "transform " + matrix(o.transform));
@@ -351,6 +356,9 @@ public:
         if (l.shadowless) s += " shadowless";
         if (!l.media_interaction) s += " media_interaction off";
         if (l.media_attenuation) s += " media_attenuation on";
+        if (l.photon_refraction >= 0) s += " photons_refraction " + std::to_string(l.photon_refraction);
+        if (l.photon_reflection >= 0) s += " photons_reflection " + std::to_string(l.photon_reflection);
+        if (l.photon_area_light) s += " photons_area_light";
         if (l.fade_distance != 0 || l.fade_power != 0)
             s += " fade_distance " + num(l.fade_distance) + " fade_power " + num(l.fade_power);
         line(0, s + where(l.loc));
@@ -415,6 +423,19 @@ std::string print_ir(const scene::Scene& s) {
                       (r->subsurface ? " subsurface" : "") +
                       (r->always_sample ? " always_sample" : "") + " default_importance " +
                       num(g.radiosity_importance));
+    }
+    if (const auto& ph = g.photons) {
+        p.line(1, "photons " + (ph->count > 0 ? "count " + std::to_string(ph->count)
+                                              : "spacing " + num(ph->spacing)) +
+                      " gather " + std::to_string(ph->gather_min) + ", " +
+                      std::to_string(ph->gather_max) + " radius " + num(ph->radius) + ", " +
+                      num(ph->radius_multiplier) + ", " + num(ph->media_radius) + ", " +
+                      num(ph->media_radius_multiplier) + " jitter " + num(ph->jitter) +
+                      " autostop " + num(ph->autostop) + " expand_thresholds " +
+                      num(ph->expand_tolerance) + ", " + std::to_string(ph->expand_min) +
+                      " max_trace_level " + std::to_string(ph->max_trace_level) +
+                      " adc_bailout " + num(ph->adc_bailout) + " media " +
+                      std::to_string(ph->media_steps) + ", " + num(ph->media_factor));
     }
     const Camera& c = s.camera;
     p.line(0, std::string("camera ") +
