@@ -219,6 +219,9 @@ void Whitted::shoot_photons(int threads) {
             auto random = [&path] { return draw(&path.random); };
             const PreparedLight beam(light);
             bool hit_once = false;
+            Interiors inside;
+            Vec3 inside_at;
+            bool have_inside = false;
             for (double theta = 0; theta < max_theta && !too_many; theta += dtheta) {
                 path.hit_target = false;
                 const double dphi = theta < kPovEpsilon ? 2 * kPi
@@ -257,13 +260,20 @@ void Whitted::shoot_photons(int threads) {
                             path.depth = 0;
                             path.pass_prev = true;
                             path.pass_this = false;
-                            Interiors inside;
-                            for (const Containing& ci :
-                                 objects_containing(geometry_, ray.origin, ray.dir))
-                                inside.append(ci.object,
-                                              scene_.materials[static_cast<size_t>(ci.material)]
-                                                  .interior.ior,
-                                              ci.material);
+                            // The objects around the photon's start: found once per start
+                            // point (a point light's photons all share one).
+                            if (!have_inside || !(ray.origin == inside_at)) {
+                                inside = Interiors();
+                                for (const Containing& ci :
+                                     objects_containing(geometry_, ray.origin, ray.dir))
+                                    inside.append(
+                                        ci.object,
+                                        scene_.materials[static_cast<size_t>(ci.material)]
+                                            .interior.ior,
+                                        ci.material);
+                                inside_at = ray.origin;
+                                have_inside = true;
+                            }
                             const size_t before = found[k].size() + found_media[k].size();
                             photon_trace(ray, light.color * attenuation, 1.0, 0, inside, false,
                                          path);
