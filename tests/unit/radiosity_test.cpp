@@ -92,6 +92,19 @@ TEST(RadiosityCache, FindsSamplesFiledAtEveryScaleAndPlace) {
     }
 }
 
+TEST(RadiosityCache, OddReachesNeitherHangNorGetLost) {
+    // An infinite reach (a huge maximum_reuse and rays that all miss) is filed at a huge but
+    // finite cube; a NaN reach as no reach; a sample at a non-finite point is not kept.
+    RadiosityCache cache;
+    cache.add(sample_at(Vec3(1, 2, 3), Vec3(0, 1, 0), Color(1), 1e300), kInfinity);
+    cache.add(sample_at(Vec3(4, 5, 6), Vec3(0, 1, 0), Color(1), 0.5), std::nan(""));
+    cache.add(sample_at(Vec3(kInfinity, 0, 0), Vec3(0, 1, 0), Color(1), 0.5), 1.0);
+    EXPECT_EQ(cache.size(), 2u);
+    RadiosityReuse r;
+    cache.gather(Vec3(1, 2, 3.5), Vec3(0, 1, 0), 0, 1.8, false, &r);
+    EXPECT_GT(r.weight, 0.0);
+}
+
 RadiosityPoint point_up() {
     RadiosityPoint at;
     at.p = Vec3(0, 0, 0);

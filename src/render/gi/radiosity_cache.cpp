@@ -40,7 +40,10 @@ size_t RadiosityCache::KeyHash::operator()(const Key& k) const {
 void RadiosityCache::add(const RadiositySample& s, double address_radius) {
     // ot_index_sphere / ot_index_box: the power of two at or below the sphere's diameter,
     // the cube holding its centre, then parents until both box corners lie in the extent.
-    const double r = std::max(address_radius, 0.0);
+    // A sample must sit somewhere finite to be filed; its reach is kept finite (a huge
+    // maximum_reuse can make it infinite) so the cube search ends.
+    if (!std::isfinite(s.p.x + s.p.y + s.p.z)) return;
+    const double r = address_radius >= 0 ? std::min(address_radius, 1.0e30) : 0.0;
     const Vec3 lo = s.p - Vec3(r), hi = s.p + Vec3(r);
     int level = 0;
     if (2 * r > 0) {
