@@ -33,6 +33,12 @@ PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::Photons& settings
         settings_.radius = settings.media_radius;
         settings_.radius_multiplier = settings.media_radius_multiplier;
     }
+    // Photons somewhere non-finite, or with a non-finite power, would break the tree's order
+    // and reach the image: they are dropped.
+    std::erase_if(photons_, [](const Photon& ph) {
+        return !std::isfinite(ph.p.x + ph.p.y + ph.p.z + ph.power.r + ph.power.g + ph.power.b);
+    });
+    axis_.assign(photons_.size(), 0);
     build(0, static_cast<uint32_t>(photons_.size()));
     estimate_radius();
 }
