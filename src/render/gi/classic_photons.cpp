@@ -447,13 +447,6 @@ void Whitted::photon_surface(const Ray& ray, const Hit& hit, Color light, double
     }
     const PatternPoint at{at_p, hit.uv, hit.has_uv};
     const int layer_count = 1 + static_cast<int>(tex->layers.size());
-    struct LayerReflection {
-        double weight;
-        Vec3 normal;
-        Color reflec;
-        double exponent;
-    };
-    constexpr int kMaxLayers = 16;
     LayerReflection refl[kMaxLayers];
     int used = 0;
     Color fil_col(1.0);

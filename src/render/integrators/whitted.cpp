@@ -334,13 +334,6 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
     auto layer_at = [&](int i) -> const scene::Texture& {  // 0 = top
         return i == layer_count - 1 ? tex : tex.layers[layer_count - 2 - i];
     };
-    struct LayerReflection {
-        double weight;
-        Vec3 normal;
-        Color reflec;
-        double exponent;
-    };
-    constexpr int kMaxLayers = 16;
     LayerReflection refl[kMaxLayers];
     int used = 0;
 

@@ -87,6 +87,15 @@ private:
     Color photon_light(const ClassicFinish& f, const Hit& hit, const Ray& ray, const Vec3& lay_n,
                        const Vec3& raw_n, const Color& pigment, double att, bool highlights,
                        PhotonGather* gathered) const;
+    // One texture layer's reflection, kept while its layers are lit and traced after them
+    // (POV-Ray's WNRX list), for rays and photons alike; at most kMaxLayers layers.
+    struct LayerReflection {
+        double weight;
+        Vec3 normal;
+        Color reflec;
+        double exponent;
+    };
+    static constexpr int kMaxLayers = 16;
     // POV-Ray's InitRayContainerState: the objects the perspective camera sits inside.
     void find_camera_interiors();
     // `depth`, when given, receives the distance to the hit (infinity on a miss).
