@@ -28,6 +28,8 @@ struct RenderArgs {
     int max_depth = 8;
     unsigned seed = 0;
     double time_limit = 0;
+    long photons = 0;             // --integrator sppm: photons per pass (0: one per pixel)
+    double photon_radius = 2.0;   // --integrator sppm: initial radius in pixel footprints
     // Path tracer outputs beside OUT: --aov albedo,normal,depth and --variance write
     // <out-stem>.<name>.exr (render_command.cpp: aov_output_path).
     std::string aov;

@@ -151,9 +151,11 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
         ->capture_default_str()
         ->check(CLI::Range(0, 4096));
     cmd->add_option("--integrator", args.integrator,
-                    "whitted (POV-Ray's classic model) or path (Monte Carlo path tracer)")
+                    "whitted (POV-Ray's classic model), path (Monte Carlo path tracer) or sppm "
+                    "(stochastic progressive photon mapping: the path tracer's materials and "
+                    "lights, caustics of point lights too; --spp passes)")
         ->capture_default_str()
-        ->check(CLI::IsMember({"whitted", "path"}));
+        ->check(CLI::IsMember({"whitted", "path", "sppm"}));
     cmd->add_option("--spp", args.spp, "Path tracer: samples per pixel (at most, with --time-limit)")
         ->capture_default_str()
         ->check(CLI::Range(1, 1 << 24));
@@ -161,6 +163,14 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
         ->capture_default_str()
         ->check(CLI::Range(0, 4096));
     cmd->add_option("--seed", args.seed, "Path tracer: sampler seed")->capture_default_str();
+    cmd->add_option("--photons", args.photons,
+                    "sppm: photons per pass (0: one per pixel of the image)")
+        ->capture_default_str()
+        ->check(CLI::Range(0L, 1L << 30));
+    cmd->add_option("--photon-radius", args.photon_radius,
+                    "sppm: initial gather radius, in pixel footprints at the visible point")
+        ->capture_default_str()
+        ->check(CLI::Range(0.01, 1000.0));
     cmd->add_option("--time-limit", args.time_limit,
                     "Path tracer: stop after the progressive pass that passes S seconds (0: none)")
         ->capture_default_str()
@@ -474,10 +484,12 @@ std::string job_settings(const RenderArgs& a) {
     s += ";size=" + std::to_string(a.scene.width) + "x" + std::to_string(a.scene.height);
     s += ";aa=" + a.aa + ";aa_depth=" + std::to_string(a.aa_depth);
     s += ";integrator=" + a.integrator;
-    if (a.integrator == "path")
+    if (a.integrator == "path" || a.integrator == "sppm")
         s += ";spp=" + std::to_string(a.spp) + ";max_depth=" + std::to_string(a.max_depth) +
              ";seed=" + std::to_string(a.seed) + ";time_limit=" + num(a.time_limit) +
              ";aov=" + a.aov + ";variance=" + std::to_string(a.variance);
+    if (a.integrator == "sppm")
+        s += ";photons=" + std::to_string(a.photons) + ";photon_radius=" + num(a.photon_radius);
     if (a.animation_frame)
         s += ";frames=" + std::to_string(a.scene.initial_frame) + "-" +
              std::to_string(a.scene.final_frame) + ";clock=" +
@@ -534,6 +546,9 @@ int render_frame(const RenderArgs& args) {
     parse_aa(args.aa, options);
     options.aa_depth = args.aa_depth;
     if (args.integrator == "path") options.integrator = render::IntegratorKind::Path;
+    if (args.integrator == "sppm") options.integrator = render::IntegratorKind::Sppm;
+    options.photons = args.photons;
+    options.photon_radius = args.photon_radius;
     options.spp = args.spp;
     options.max_depth = args.max_depth;
     options.seed = args.seed;
@@ -543,7 +558,8 @@ int render_frame(const RenderArgs& args) {
     if ((!aovs.empty() || args.variance) && options.integrator != render::IntegratorKind::Path)
         throw Error(ErrorKind::Usage, {},
                     std::string(aovs.empty() ? "--variance" : "--aov") +
-                        " needs --integrator path (the Whitted integrator has no AOVs)");
+                        " needs --integrator path (the Whitted and photon integrators have no "
+                        "AOVs)");
     options.aovs = !aovs.empty();
     options.variance = args.variance;
     if (!args.region.empty()) {

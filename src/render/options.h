@@ -20,6 +20,7 @@ enum class AaMode {
 enum class IntegratorKind {
     Whitted,  // POV-Ray's classic model
     Path,     // Monte Carlo path tracer (spp samples per pixel, averaged)
+    Sppm,     // stochastic progressive photon mapping (spp passes; gi/sppm.h)
 };
 
 // A rectangle of pixels, [x0, x1) x [y0, y1), row 0 at the top.
@@ -52,6 +53,10 @@ struct RenderOptions {
     int max_depth = 8;
     uint32_t seed = 0;
     double time_limit = 0;
+    // Photon integrator (IntegratorKind::Sppm): photons per pass (0: one per pixel) and the
+    // initial gather radius in pixel footprints.
+    long photons = 0;
+    double photon_radius = 2.0;
     // Path tracer: also average the first hit's albedo, normal and depth per pixel, and
     // estimate the variance of each pixel's mean (RenderResult::albedo ... variance).
     bool aovs = false;

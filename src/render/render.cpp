@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "render/film/driver.h"
+#include "render/gi/sppm.h"
 #include "render/integrators/path.h"
 #include "render/integrators/whitted.h"
 #include "render/prepare/prepared_scene.h"
@@ -24,8 +25,33 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
     auto t0 = std::chrono::steady_clock::now();
     RenderResult result;
     // Prepare: the IR becomes what the integrators read (prepare/prepared_scene.h).
-    std::unique_ptr<PreparedScene> prepared = prepare(scene, options, diag);
+    // The photon integrator shades with the path tracer's materials and lights.
+    RenderOptions prepare_options = options;
+    if (options.integrator == IntegratorKind::Sppm) prepare_options.integrator = IntegratorKind::Path;
+    std::unique_ptr<PreparedScene> prepared = prepare(scene, prepare_options, diag);
     result.features = prepared->features;
+    if (options.integrator == IntegratorKind::Sppm) {
+        PathSettings ps;
+        ps.max_depth = std::max(0, options.max_depth);
+        PathIntegrator path(*prepared, ps);
+        result.prepare_seconds = seconds_since(t0);
+        auto t1 = std::chrono::steady_clock::now();
+        SppmSettings ss;
+        ss.max_depth = ps.max_depth;
+        ss.passes = options.spp;
+        ss.photons = options.photons;
+        ss.radius = options.photon_radius;
+        SppmResult r = render_sppm(*prepared, path, options, ss, diag);
+        diag.info("sppm: " + std::to_string(r.passes) + " passes of " +
+                  std::to_string(r.photons) + " photons, " + std::to_string(r.stored) +
+                  " stored");
+        result.image = std::move(r.image);
+        result.samples_per_pixel = r.passes;
+        result.nonfinite_paths = path.nonfinite();
+        result.rays = path.rays();
+        result.render_seconds = seconds_since(t1);
+        return result;
+    }
     if (options.integrator == IntegratorKind::Path) {
         PathSettings ps;
         ps.max_depth = std::max(0, options.max_depth);

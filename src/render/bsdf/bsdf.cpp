@@ -174,6 +174,17 @@ Bsdf::LobeProbs Bsdf::lobe_probs(const Vec3& wo) const {
     return l;
 }
 
+double Bsdf::delta_probability(const Vec3& wo) const {
+    if (wo.z == 0) return 0;
+    const LobeProbs l = lobe_probs(wo);
+    const double sum = l.sum();
+    if (!(sum > 0)) return 0;
+    double d = spec_delta_ ? l.s : 0.0;
+    if (refl_delta_) d += l.gr;
+    if (trans_delta_ || std::fabs(eta_ - 1) < kIndexMatched) d += l.gt;
+    return d / sum;
+}
+
 Color Bsdf::eval(const Vec3& wo, const Vec3& wi, double diffuse_scale) const {
     Color f;
     const double s = wo.z < 0 ? -1.0 : 1.0;

@@ -114,6 +114,8 @@ public:
     bool empty() const {
         return w_diffuse_ == 0 && w_spec_ == 0 && w_trans_ == 0 && w_phong_ == 0;
     }
+    // The chance that sample() picks a delta lobe for `wo`.
+    double delta_probability(const Vec3& wo) const;
     // True when every lobe is a delta (then light sampling is pointless).
     bool all_delta() const {
         return w_diffuse_ == 0 && w_phong_ == 0 && (w_spec_ == 0 || spec_delta_) &&

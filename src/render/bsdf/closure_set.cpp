@@ -1,5 +1,6 @@
 #include "render/bsdf/closure_set.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "render/bsdf/shading_normal.h"
@@ -78,6 +79,20 @@ bool ClosureSet::all_delta() const {
         if (items_[i].is_lobe ? !items_[i].lobe.delta() : !items_[i].bsdf.all_delta())
             return false;
     return true;
+}
+
+double ClosureSet::delta_probability() const {
+    if (!(total_ > 0)) return 0;
+    double p = 0;
+    for (int i = 0; i < count_; ++i) {
+        const Item& it = items_[i];
+        const double pick = it.share / total_;
+        if (it.is_lobe)
+            p += it.lobe.delta() ? pick : 0.0;
+        else
+            p += pick * it.bsdf.delta_probability(it.wo);
+    }
+    return std::clamp(p, 0.0, 1.0);
 }
 
 Color ClosureSet::eval(const Vec3& wi, double* pdf) const {

@@ -55,6 +55,9 @@ public:
     void add(const Bssrdf& bssrdf);
     int count() const { return count_ + bssrdf_count_; }
     bool all_delta() const;
+    bool has_bssrdf() const { return bssrdf_count_ > 0; }
+    // The chance that sample() picks a delta lobe (a mirror, a smooth refraction).
+    double delta_probability() const;
 
     // Sum over the closures of weight f |cos wi| (about each closure's normal), and the
     // mixture pdf of sample() for wi.

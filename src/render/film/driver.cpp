@@ -302,6 +302,23 @@ struct PixelAccumulators {
 
 }  // namespace
 
+std::optional<Ray> path_camera_ray(const Camera& camera, const PixelFilter& filter,
+                                   const Shutter* shutter, const PixelSampler& ps, int x, int y) {
+    const Sample2 j = ps.get2(0);
+    const double fx = x + filter.offset(j.u), fy = y + filter.offset(j.v);
+    std::optional<Ray> ray;
+    if (camera.has_lens()) {
+        // A pair no bounce uses: the aperture's point.
+        const Sample2 l = ps.get2(kLensPair);
+        ray = camera.generate(fx, fy, l.u, l.v);
+    } else {
+        ray = camera.generate(fx, fy);
+    }
+    if (ray && shutter && shutter->active())
+        shutter->expose(Shutter::time(ps.get2(kTimePair).u), &*ray);
+    return ray;
+}
+
 int run_path_tiles(const Camera& camera, const RenderOptions& options,
                    const PathRadianceFn& radiance, PathFilm* film, const Shutter* shutter) {
     check_region(options);
@@ -383,18 +400,8 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
                             }
                             const uint32_t index = static_cast<uint32_t>(s);
                             const PixelSampler ps(x, y, index, options.seed);
-                            const Sample2 j = ps.get2(0);
-                            const double fx = x + filter.offset(j.u), fy = y + filter.offset(j.v);
-                            std::optional<Ray> ray;
-                            if (camera.has_lens()) {
-                                // A pair no bounce uses: the aperture's point.
-                                const Sample2 l = ps.get2(kLensPair);
-                                ray = camera.generate(fx, fy, l.u, l.v);
-                            } else {
-                                ray = camera.generate(fx, fy);
-                            }
-                            if (ray && shutter)
-                                shutter->expose(Shutter::time(ps.get2(kTimePair).u), &*ray);
+                            const std::optional<Ray> ray =
+                                path_camera_ray(camera, filter, shutter, ps, x, y);
                             float value[3] = {0, 0, 0};
                             FirstHit first;
                             if (ray) {

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include "core/error.h"
@@ -16,8 +17,10 @@
 #include "render/camera.h"
 #include "render/film/aov.h"
 #include "render/film/film.h"
+#include "render/film/pixel_filter.h"
 #include "render/film/shutter.h"
 #include "render/options.h"
+#include "render/sampling/sampler.h"
 
 namespace glint::render {
 
@@ -64,6 +67,11 @@ using PathRadianceFn =
 int run_path_tiles(const Camera& camera, const RenderOptions& options,
                    const PathRadianceFn& radiance, PathFilm* film,
                    const Shutter* shutter = nullptr);
+// The camera ray of the path tracer's sample `ps` at pixel (x, y): the pixel filter's offset
+// from pair 0, the lens point and the shutter time (with an active `shutter`) from pairs no
+// bounce uses. Empty where the camera sends no ray.
+std::optional<Ray> path_camera_ray(const Camera& camera, const PixelFilter& filter,
+                                   const Shutter* shutter, const PixelSampler& ps, int x, int y);
 // The same without AOVs or variance, for a plain radiance function.
 // Both check cancellation before every sample and throw Interrupted.
 int run_path_tiles(const Camera& camera, const RenderOptions& options, const RadianceFn& radiance,

@@ -11,7 +11,6 @@
 #include "render/bsdf/shading_normal.h"
 #include "render/lights/sky.h"
 #include "render/media/subsurface.h"
-#include "render/prepare/containing.h"
 
 namespace glint::render {
 namespace {
@@ -56,87 +55,7 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
     lights_.emplace(scene_, materials_.emission(),
                     [this](const Vec3& d) { return environment(d); }, prepared.textures.get(),
                     world);
-    // Media: each material's interior media (POV-Ray) or volume shader (Blender) become one
-    // medium, the atmosphere's or the world's volume another.
-    sslt_mm_ = scene_.global.subsurface ? scene_.global.mm_per_unit : 0;
-    material_medium_.assign(scene_.materials.size(), -1);
-    material_grid_medium_.assign(scene_.materials.size(), -1);
-    bool volume_objects = false;
-    for (const scene::Object& o : scene_.objects) volume_objects |= o.volume_file.has_value();
-    for (size_t m = 0; m < scene_.materials.size(); ++m) {
-        const auto& media = scene_.materials[m].interior.media;
-        const PathMaterial* row = materials_.path(static_cast<int>(m));
-        const shader::ShaderProgram* volume = row && row->program && row->program->has_volume()
-                                                  ? row->program : nullptr;
-        if (media.empty() && !volume) continue;
-        material_medium_[m] = static_cast<int>(media_.size());
-        if (volume && volume->volume_constant()) {
-            shader::VolumeClosures v;
-            volume->evaluate_volume(shader::ShaderGlobals{}, &v);
-            media_.emplace_back(PathMedium::from_closures(v));
-            // In a Volume object it reads the grids, or is scaled with the object: marched
-            // there (Cycles' volume_is_homogeneous, object_volume_density), the same
-            // everywhere else.
-            if (volume->volume_grids() || volume_objects) {
-                material_grid_medium_[m] = static_cast<int>(media_.size());
-                media_.emplace_back(volume, graphs_);
-            }
-        } else if (volume) {
-            media_.emplace_back(volume, graphs_);
-        } else {
-            media_.emplace_back(media, &pigments_);
-        }
-    }
-    const shader::ShaderProgram* world_graph = graphs_ ? graphs_->world() : nullptr;
-    if (!scene_.media.empty()) {
-        world_medium_ = static_cast<int>(media_.size());
-        media_.emplace_back(scene_.media, &pigments_);
-    } else if (world_graph && world_graph->has_volume()) {
-        world_medium_ = static_cast<int>(media_.size());
-        if (world_graph->volume_constant()) {
-            shader::VolumeClosures v;
-            world_graph->evaluate_volume(shader::ShaderGlobals{}, &v);
-            media_.emplace_back(PathMedium::from_closures(v));
-        } else {
-            media_.emplace_back(world_graph, graphs_);
-            world_step_ = world_volume_step();
-        }
-    }
-    // The objects' sizes, for the steps of volumes ray marched inside them.
-    bool marched = false;
-    for (const PathMedium& m : media_) marched = marched || m.marched();
-    if (marched) {
-        object_size_.assign(scene_.objects.size(), 1.0);
-        for (size_t o = 0; o < scene_.objects.size(); ++o) {
-            const auto* ref = std::get_if<scene::MeshRef>(&scene_.objects[o].shape);
-            if (!ref || ref->mesh < 0 || static_cast<size_t>(ref->mesh) >= scene_.meshes.size())
-                continue;
-            const std::vector<Vec3>& pos = scene_.meshes[static_cast<size_t>(ref->mesh)].positions;
-            if (pos.empty()) continue;
-            // Cycles' Object::bounds: the mesh's bounds, their corners transformed.
-            Vec3 lo = pos[0], hi = pos[0];
-            for (const Vec3& q : pos) lo = min(lo, q), hi = max(hi, q);
-            const Transform& t = scene_.objects[o].transform;
-            Vec3 wlo(kInfinity, kInfinity, kInfinity), whi = -wlo;
-            for (int k = 0; k < 8; ++k) {
-                const Vec3 c = t.point(Vec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y,
-                                            k & 4 ? hi.z : lo.z));
-                wlo = min(wlo, c);
-                whi = max(whi, c);
-            }
-            const Vec3 size = whi - wlo;
-            object_size_[o] = (size.x + size.y + size.z) / 3;
-        }
-    }
-    has_media_ = !media_.empty();
-    if (has_media_)
-        for (const Containing& c : objects_containing_camera(scene_, geometry_)) {
-            Hit h;
-            h.object = c.object;
-            h.material = c.material;
-            h.ng = Vec3(0, 0, 1);
-            camera_stack_.cross(h, Vec3(0, 0, -1), *this);  // entering it
-        }
+    setup_media();
 }
 
 
@@ -313,14 +232,69 @@ Color PathIntegrator::transmittance(const Vec3& origin, const Vec3& dir, double 
     return Color();
 }
 
+bool PathIntegrator::photon_surface(Hit& hit, const Vec3& dir, double coin,
+                                    PhotonSurface* out) const {
+    out->set = ClosureSet(hit.ng, -dir);
+    out->pass = false;
+    const PathMaterial* row = materials_.path(hit.material);
+    if (row && row->program) {
+        shader::RayState state;
+        state.camera = false;
+        state.reflection = true;
+        shader::ClosureList cl;
+        graph_closures(*row, hit, dir, state, &cl);
+        // Transparency by its share against the BSDFs', as li() picks it.
+        double shade = 1;
+        const double tw = average(cl.transparent);
+        if (tw > 0) {
+            double sw = 0;
+            for (int i = 0; i < cl.count; ++i) sw += cl.items[i].sample_weight;
+            const double q = sw > 0 ? tw / (tw + sw) : 1.0;
+            if (coin < q) {
+                out->pass = true;
+                out->pass_weight = cl.transparent * (1 / q);
+                return true;
+            }
+            shade = 1 / (1 - q);
+        }
+        const bool back = dot(hit.ng, dir) > 0;
+        const Vec3 ns = length_squared(cl.N) > 0 ? normalize(cl.N) : hit.n;
+        out->set.set_smooth_normal(back ? -ns : ns);
+        for (int i = 0; i < cl.count; ++i) {
+            const shader::Closure& c = cl.items[i];
+            Vec3 n = length_squared(c.N) > 0 ? normalize(c.N) : hit.n;
+            if (back) n = -n;
+            add_graph_closure(out->set, c, n, back ? -1.0 : 1.0, shade, false);
+        }
+        return out->set.count() > 0;
+    }
+    const SurfacePbr s = surface(hit);
+    if (s.alpha < 1 && coin >= s.alpha) {
+        out->pass = true;
+        out->pass_weight = Color(1, 1, 1);
+        return true;
+    }
+    out->set.add(row && row->constant_bsdf ? *row->constant_bsdf : Bsdf::principled(s.bsdf),
+                 Color(1, 1, 1), hit.n, 1);
+    if (!s.subsurface_radius.is_black())
+        add_pov_subsurface(s, hit, dir, false, &out->set);
+    return true;
+}
+
+std::string PathIntegrator::photon_limits() const {
+    if (has_media_) return "participating media (media, interiors with media, volumes)";
+    if (sslt_mm_ > 0) return "POV-Ray's subsurface light transport";
+    return {};
+}
+
 uint64_t PathIntegrator::rays() const {
     uint64_t sum = 0;
     for (const RayCount& c : rays_) sum += c.n.load(std::memory_order_relaxed);
     return sum;
 }
 
-Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
-                         FirstHit* first) const {
+Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler, FirstHit* first,
+                         VisiblePoint* vp) const {
     Color L;
     Color beta(1, 1, 1);
     Ray r = camera_ray;
@@ -674,7 +648,8 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
                 if (tr.is_black()) return;
                 Color c = f * ls.value * tr;
                 if (ls.environment) c *= environment(ls.wi);
-                if (ls.pdf > 0) c *= power_heuristic(ls.pdf, bsdf_pdf);
+                // (The photon integrator's camera pass stops here: no BSDF sample to weigh.)
+                if (ls.pdf > 0 && !vp) c *= power_heuristic(ls.pdf, bsdf_pdf);
                 add(beta * c);
             };
             if (lights.sample_all()) {
@@ -691,7 +666,23 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler,
         const Sample2 ul = sampler.get2(base);
         const Sample2 ud = sampler.get2(base + 1);
         ClosureSample bs;
-        if (!set.sample(ud.u, ud.v, &bs)) break;
+        const bool sampled = set.sample(ud.u, ud.v, &bs);
+        if (vp && !set.all_delta() && !(sampled && bs.delta && !bs.bssrdf)) {
+            // The photon integrator's visible point: the non-delta lobes were picked (chance
+            // 1 - pd), so they stand for the whole of their share here.
+            const double pd = set.delta_probability();
+            if (pd < 1) {
+                vp->found = true;
+                vp->p = hit.p;
+                vp->ng = hit.ng;
+                vp->beta = beta * (1 / (1 - pd));
+                vp->set = set;
+                vp->depth = depth;
+                vp->distance = travelled + seg_dist + hit.t;
+            }
+            break;
+        }
+        if (!sampled) break;
         ++scatterings;
         if (bs.bssrdf) {
             // A BSSRDF: a walk under the surface (no bounce of its own, as in Cycles), then the

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "render/bsdf/bsdf.h"
@@ -52,6 +53,25 @@ struct PathSettings {
     bool volume_equiangular = true;
 };
 
+// Where a camera path of the photon integrator (gi/sppm.h) stops: its first vertex with a
+// BSDF that is not a delta, and what photons arriving there add to the pixel.
+struct VisiblePoint {
+    bool found = false;
+    Vec3 p;        // the hit
+    Vec3 ng;       // its geometric normal
+    Color beta;    // the path's throughput, over the chance of stopping here
+    ClosureSet set{Vec3(0, 0, 1), Vec3(0, 0, 1)};  // the BSDFs there, seen from the path
+    int depth = 0;           // bounces (all deltas) before it
+    double distance = 0;     // path length from the camera
+};
+
+// What a photon meets at a surface (PathIntegrator::photon_surface).
+struct PhotonSurface {
+    ClosureSet set{Vec3(0, 0, 1), Vec3(0, 0, 1)};
+    bool pass = false;  // straight through (alpha, transparent closures)
+    Color pass_weight;  // its tint over the chance of passing
+};
+
 class PathIntegrator {
 public:
     // `prepared` (made for IntegratorKind::Path) must outlive the integrator.
@@ -60,7 +80,22 @@ public:
     // Radiance along a camera ray. Pair 0 of the sampler is the driver's pixel jitter. With
     // `first`, also what the ray sees at its first visible hit (the AOVs) and how much of its
     // view is transparent (film_transparent's world, holdouts: FirstHit::transparent).
-    Color li(const Ray& ray, const PixelSampler& sampler, FirstHit* first = nullptr) const;
+    // With `vp` (the photon integrator's camera pass) the path follows delta bounces only:
+    // at its first vertex with other BSDFs it adds their direct light (light sampling alone,
+    // no MIS: photons bring the rest), then goes on along a delta lobe or stops there, in
+    // proportion to the lobes' sampling chances, and fills *vp where it stops.
+    Color li(const Ray& ray, const PixelSampler& sampler, FirstHit* first = nullptr,
+             VisiblePoint* vp = nullptr) const;
+
+    // The photon integrator's questions: the lights, the environment's radiance, and the
+    // BSDFs a photon arriving along `dir` meets at `hit` (alpha and transparency decided with
+    // the uniform `coin`); false where it meets none.
+    const PathLights& lights() const { return *lights_; }
+    Color environment_radiance(const Vec3& dir) const { return environment(dir); }
+    bool photon_surface(Hit& hit, const Vec3& dir, double coin, PhotonSurface* out) const;
+    // Why the photon integrator cannot render this scene ("" when it can): media and
+    // subsurface scattering it does not carry photons through.
+    std::string photon_limits() const;
 
     // Paths whose radiance was NaN or infinite (dropped, counted).
     uint64_t nonfinite() const { return nonfinite_.load(std::memory_order_relaxed); }
@@ -68,6 +103,8 @@ public:
     uint64_t rays() const;
 
 private:
+    // The media of materials, objects and the world (path_media.cpp), from the constructor.
+    void setup_media();
     // The surface at a hit. Bump and normal maps (OBJ/MTL map_Bump) bend hit.n in place.
     SurfacePbr surface(Hit& hit) const;
     // A POV-Ray subsurface finish's BSSRDF (SurfacePbr::subsurface_radius) into `set`.

@@ -5,6 +5,7 @@
 
 #include "render/integrators/path.h"
 
+#include "render/prepare/containing.h"
 #include "render/textures/vdb_grids.h"
 
 namespace glint::render {
@@ -443,6 +444,90 @@ Color PathIntegrator::equiangular_direct(const ActiveMedium* act, int na, const 
               sampler.get2(base + 3));
     }
     return finite(sum) ? sum : Color();
+}
+
+void PathIntegrator::setup_media() {
+    // Media: each material's interior media (POV-Ray) or volume shader (Blender) become one
+    // medium, the atmosphere's or the world's volume another.
+    sslt_mm_ = scene_.global.subsurface ? scene_.global.mm_per_unit : 0;
+    material_medium_.assign(scene_.materials.size(), -1);
+    material_grid_medium_.assign(scene_.materials.size(), -1);
+    bool volume_objects = false;
+    for (const scene::Object& o : scene_.objects) volume_objects |= o.volume_file.has_value();
+    for (size_t m = 0; m < scene_.materials.size(); ++m) {
+        const auto& media = scene_.materials[m].interior.media;
+        const PathMaterial* row = materials_.path(static_cast<int>(m));
+        const shader::ShaderProgram* volume = row && row->program && row->program->has_volume()
+                                                  ? row->program : nullptr;
+        if (media.empty() && !volume) continue;
+        material_medium_[m] = static_cast<int>(media_.size());
+        if (volume && volume->volume_constant()) {
+            shader::VolumeClosures v;
+            volume->evaluate_volume(shader::ShaderGlobals{}, &v);
+            media_.emplace_back(PathMedium::from_closures(v));
+            // In a Volume object it reads the grids, or is scaled with the object: marched
+            // there (Cycles' volume_is_homogeneous, object_volume_density), the same
+            // everywhere else.
+            if (volume->volume_grids() || volume_objects) {
+                material_grid_medium_[m] = static_cast<int>(media_.size());
+                media_.emplace_back(volume, graphs_);
+            }
+        } else if (volume) {
+            media_.emplace_back(volume, graphs_);
+        } else {
+            media_.emplace_back(media, &pigments_);
+        }
+    }
+    const shader::ShaderProgram* world_graph = graphs_ ? graphs_->world() : nullptr;
+    if (!scene_.media.empty()) {
+        world_medium_ = static_cast<int>(media_.size());
+        media_.emplace_back(scene_.media, &pigments_);
+    } else if (world_graph && world_graph->has_volume()) {
+        world_medium_ = static_cast<int>(media_.size());
+        if (world_graph->volume_constant()) {
+            shader::VolumeClosures v;
+            world_graph->evaluate_volume(shader::ShaderGlobals{}, &v);
+            media_.emplace_back(PathMedium::from_closures(v));
+        } else {
+            media_.emplace_back(world_graph, graphs_);
+            world_step_ = world_volume_step();
+        }
+    }
+    // The objects' sizes, for the steps of volumes ray marched inside them.
+    bool marched = false;
+    for (const PathMedium& m : media_) marched = marched || m.marched();
+    if (marched) {
+        object_size_.assign(scene_.objects.size(), 1.0);
+        for (size_t o = 0; o < scene_.objects.size(); ++o) {
+            const auto* ref = std::get_if<scene::MeshRef>(&scene_.objects[o].shape);
+            if (!ref || ref->mesh < 0 || static_cast<size_t>(ref->mesh) >= scene_.meshes.size())
+                continue;
+            const std::vector<Vec3>& pos = scene_.meshes[static_cast<size_t>(ref->mesh)].positions;
+            if (pos.empty()) continue;
+            // Cycles' Object::bounds: the mesh's bounds, their corners transformed.
+            Vec3 lo = pos[0], hi = pos[0];
+            for (const Vec3& q : pos) lo = min(lo, q), hi = max(hi, q);
+            const Transform& t = scene_.objects[o].transform;
+            Vec3 wlo(kInfinity, kInfinity, kInfinity), whi = -wlo;
+            for (int k = 0; k < 8; ++k) {
+                const Vec3 c = t.point(Vec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y,
+                                            k & 4 ? hi.z : lo.z));
+                wlo = min(wlo, c);
+                whi = max(whi, c);
+            }
+            const Vec3 size = whi - wlo;
+            object_size_[o] = (size.x + size.y + size.z) / 3;
+        }
+    }
+    has_media_ = !media_.empty();
+    if (has_media_)
+        for (const Containing& c : objects_containing_camera(scene_, geometry_)) {
+            Hit h;
+            h.object = c.object;
+            h.material = c.material;
+            h.ng = Vec3(0, 0, 1);
+            camera_stack_.cross(h, Vec3(0, 0, -1), *this);  // entering it
+        }
 }
 
 }  // namespace glint::render

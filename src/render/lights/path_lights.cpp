@@ -4,6 +4,8 @@
 #include <cmath>
 #include <variant>
 
+#include "render/sampling/warp.h"
+
 namespace glint::render {
 namespace {
 
@@ -15,12 +17,6 @@ double smooth_step(double low, double high, double pos) {
     if (pos >= high) return 1;
     const double t = (pos - low) / (high - low);
     return (3 - 2 * t) * t * t;
-}
-
-// Two unit vectors completing the unit vector n to an orthonormal frame.
-void tangents(const Vec3& n, Vec3* a, Vec3* b) {
-    *a = normalize(std::fabs(n.x) > 0.9 ? cross(n, Vec3(0, 1, 0)) : cross(n, Vec3(1, 0, 0)));
-    *b = cross(n, *a);
 }
 
 // Whether the linear part of `x` is a rotation times a uniform scale; *scale gets the scale.
@@ -44,14 +40,6 @@ constexpr size_t kMaxLocatableTris = 64;
 // shading points) sees the inside of the sphere, which area sampling covers.
 bool outside_sphere(double dist2_to_centre, double radius2) {
     return dist2_to_centre > radius2 * (1 + 1e-6);
-}
-
-// A uniformly distributed unit vector.
-Vec3 uniform_sphere(Sample2 u) {
-    const double z = 1 - 2 * u.u;
-    const double r = std::sqrt(std::max(0.0, 1 - z * z));
-    const double phi = 2 * kPi * u.v;
-    return Vec3(r * std::cos(phi), r * std::sin(phi), z);
 }
 
 // Solid angle of the spherical triangle of unit directions a, b, c (Van Oosterom & Strackee

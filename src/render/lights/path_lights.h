@@ -98,6 +98,7 @@ public:
     static constexpr int kSampleAllMax = 8;
 
 private:
+    friend class LightEmission;  // photons leave the same lights (light_emission.h)
     enum class SlotKind { Pov, Blender, Emitters, Environment };
     struct Slot {
         SlotKind kind;

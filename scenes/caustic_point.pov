@@ -1,0 +1,2 @@
+#declare PointLight = 1;
+#include "caustic.pov"
