@@ -100,6 +100,8 @@ struct ReportArgs {
     SceneRequest scene;  // SCENE, -I, --clock, --width/--height (default: the reference's size)
     std::string reference;
     std::string spp_steps = "1,4,16,64";
+    std::string integrators = "path";  // glint's curves: a comma list of path, sppm
+    long photons = 0;                  // sppm: photons per pass (0: one per pixel)
     std::string out = "report";
     int max_depth = 8;
     unsigned seed = 0;

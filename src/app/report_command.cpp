@@ -181,11 +181,48 @@ std::string format_number(double v) {
     return buf;
 }
 
+// The two ratios read off `other`'s curve at `base`'s final step (above 1: base is ahead).
+std::string curve_ratios(const std::string& base_name, const std::vector<Step>& base,
+                         const std::string& other_name, const std::vector<Step>& other) {
+    std::vector<double> pt, pe;
+    for (const Step& s : other) {
+        pt.push_back(s.seconds);
+        pe.push_back(s.metrics.relmse);
+    }
+    const Step& last = base.back();
+    const double gt = last.seconds, ge = last.metrics.relmse;
+    std::string txt = "\nRatios of " + other_name + " to " + base_name +
+                      " read off the curves (log-log interpolation between steps; above 1 "
+                      "means " + base_name + " is ahead):\n";
+    const io::CurveReading at_error = io::curve_x_at_y(pt, pe, ge);
+    txt += "equal-error: at " + base_name + "'s final relMSE (" + format_number(ge) + " at " +
+           format_number(gt) + " s) " + other_name + " needs ";
+    if (at_error.where == io::CurveReading::Where::None)
+        txt += "an unknown time (its curve does not reach that error or fall toward it)\n";
+    else
+        txt += format_ratio(at_error, at_error.value / gt) + "x the time (" +
+               format_number(at_error.value) + " s)" + reading_note(at_error) + "\n";
+    const io::CurveReading at_time = io::curve_y_at_x(pt, pe, gt);
+    txt += "equal-time: at " + base_name + "'s final time (" + format_number(gt) + " s) " +
+           other_name + "'s relMSE is ";
+    if (at_time.where == io::CurveReading::Where::None || !(ge > 0))
+        txt += "not comparable (too few points, or " + base_name + "'s error is 0)\n";
+    else if (at_time.where == io::CurveReading::Where::Before)
+        txt += "unknown: its first step already takes longer (" + format_number(pt[0]) +
+               " s, relMSE " + format_number(pe[0]) + ", " + format_number(pe[0] / ge) + "x " +
+               base_name + "'s final)\n";
+    else
+        txt += format_ratio(at_time, at_time.value / ge) + "x " + base_name + "'s (" +
+               format_number(at_time.value) + ")" + reading_note(at_time) + "\n";
+    return txt;
+}
+
 }  // namespace
 
 CLI::App* add_report_command(CLI::App& app, ReportArgs& args) {
     CLI::App* cmd = app.add_subcommand(
-        "report", "Error against run time of the path tracer, beside a peer");
+        "report", "Error against run time of the path tracer (and the photon integrator), "
+                  "beside a peer");
     cmd->footer(
         "Error against run time: render SCENE with the path tracer at each --spp-steps count, "
         "compare each with --reference (relMSE = mean((x-r)^2/(r^2+0.01)), RMSE on linear "
@@ -207,6 +244,15 @@ CLI::App* add_report_command(CLI::App& app, ReportArgs& args) {
         ->required();
     cmd->add_option("--spp-steps", args.spp_steps, "glint's samples per pixel, a comma list")
         ->capture_default_str();
+    cmd->add_option("--integrator", args.integrators,
+                    "glint's integrators, a comma list of path and sppm, each its own curve "
+                    "(glint-path, glint-sppm; glint alone for path alone); an sppm step's "
+                    "value is its passes. With several, the later ones' ratios against the "
+                    "first are read off the curves as the peer's are")
+        ->capture_default_str();
+    cmd->add_option("--photons", args.photons, "sppm: photons per pass (0: one per pixel)")
+        ->capture_default_str()
+        ->check(CLI::Range(0L, 1L << 30));
     cmd->add_option("--out", args.out, "Folder for the report (created)")->capture_default_str();
     cmd->add_option("--max-depth", args.max_depth, "Path tracer: maximum bounces")
         ->capture_default_str()
@@ -286,8 +332,29 @@ int run_report(const ReportArgs& args) {
             std::fprintf(stderr, "%s\n", d.message.c_str());
     });
 
-    std::vector<Step> glint_steps, peer_results;
-    auto glint_step = [&](int spp) {
+    // glint's integrators, each a curve: "glint" alone for the path tracer alone (as before),
+    // else glint-path, glint-sppm.
+    std::vector<std::string> integrators;
+    {
+        std::stringstream in(args.integrators);
+        std::string item;
+        while (std::getline(in, item, ',')) {
+            if (item != "path" && item != "sppm")
+                throw Error(ErrorKind::Usage, {},
+                            "--integrator " + args.integrators + ": '" + item +
+                                "' is not an integrator the report runs (path, sppm)");
+            if (std::find(integrators.begin(), integrators.end(), item) == integrators.end())
+                integrators.push_back(item);
+        }
+        if (integrators.empty()) throw Error(ErrorKind::Usage, {}, "--integrator is empty");
+    }
+    std::vector<std::string> glint_names;
+    for (const std::string& i : integrators)
+        glint_names.push_back(integrators.size() == 1 && i == "path" ? "glint" : "glint-" + i);
+    std::vector<std::vector<Step>> glint_steps(integrators.size());
+    std::vector<Step> peer_results;
+    auto glint_step = [&](size_t which, int spp) {
+        const std::string& name = glint_names[which];
         std::vector<Run> runs;
         for (int k = 0; k < args.seeds; ++k) {
             if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
@@ -295,8 +362,10 @@ int run_report(const ReportArgs& args) {
             options.width = request.width;
             options.height = request.height;
             options.threads = args.threads;
-            options.integrator = render::IntegratorKind::Path;
+            options.integrator = integrators[which] == "sppm" ? render::IntegratorKind::Sppm
+                                                              : render::IntegratorKind::Path;
             options.spp = spp;
+            options.photons = args.photons;
             options.max_depth = args.max_depth;
             options.seed = args.seed + static_cast<unsigned>(k);
             // A Blender scene renders with its own settings (filter, bounce limits, volume
@@ -304,6 +373,9 @@ int run_report(const ReportArgs& args) {
             if (scene.blender_render) {
                 GivenSettings given{true, true, true, true, true, args.given_max_depth};
                 apply_blender_render(*scene.blender_render, given, &options);
+                options.integrator = integrators[which] == "sppm"
+                                         ? render::IntegratorKind::Sppm
+                                         : render::IntegratorKind::Path;
             }
             options.cancel = &cancel_flag();
             Clock::time_point t = Clock::now();
@@ -317,16 +389,18 @@ int run_report(const ReportArgs& args) {
             for (size_t i = 0; i < rgba.size() / 4; ++i)
                 for (int c = 0; c < 3; ++c) image.rgb[i * 3 + c] = rgba[i * 4 + c];
             io::write_linear_exr(image,
-                                 (dir / (run_stem("glint", spp, k, args.seeds) + ".exr")).string());
+                                 (dir / (run_stem(name, spp, k, args.seeds) + ".exr")).string());
             runs.push_back(measure(seconds, image, reference));
         }
-        glint_steps.push_back(summarize("glint", spp, runs));
-        std::fprintf(stderr, "glint %d spp: %.3f s, relMSE %.6g\n", spp, glint_steps.back().seconds,
-                     glint_steps.back().metrics.relmse);
+        glint_steps[which].push_back(summarize(name, spp, runs));
+        std::fprintf(stderr, "%s %d %s: %.3f s, relMSE %.6g\n", name.c_str(), spp,
+                     integrators[which] == "sppm" ? "passes" : "spp",
+                     glint_steps[which].back().seconds, glint_steps[which].back().metrics.relmse);
     };
 
     std::string peer_file = file_safe(args.peer_name);
-    if (peer_file == "glint") peer_file = "peer-glint";  // glint's own renders are glint-N.exr
+    // glint's own renders are glint-N.exr, glint-path-N.exr, glint-sppm-N.exr.
+    if (peer_file.rfind("glint", 0) == 0) peer_file = "peer-" + peer_file;
     const bool own_time = args.peer.find("{time}") != std::string::npos;
     auto peer_step = [&](int spp) {
         std::vector<Run> runs;
@@ -388,13 +462,17 @@ int run_report(const ReportArgs& args) {
     // and timing all of one renderer's steps before the other's would put that drift into the
     // ratios.
     for (size_t i = 0; i < std::max(steps.size(), peer_steps.size()); ++i) {
-        if (i < steps.size()) glint_step(steps[i]);
+        if (i < steps.size())
+            for (size_t k = 0; k < integrators.size(); ++k) glint_step(k, steps[i]);
         if (i < peer_steps.size()) peer_step(peer_steps[i]);
     }
 
     // The CSV, glint's rows first.
     std::string csv = "renderer,spp,seconds,relmse,rmse,ssim,seeds,relmse_min,relmse_max\n";
-    for (const std::vector<Step>* rows : {&glint_steps, &peer_results})
+    std::vector<const std::vector<Step>*> tables;
+    for (const std::vector<Step>& g : glint_steps) tables.push_back(&g);
+    tables.push_back(&peer_results);
+    for (const std::vector<Step>* rows : tables)
         for (const Step& s : *rows)
             csv += s.renderer + "," + std::to_string(s.spp) + "," + format_number(s.seconds) +
                    "," + format_number(s.metrics.relmse) + "," + format_number(s.metrics.rmse) +
@@ -413,7 +491,10 @@ int run_report(const ReportArgs& args) {
         }
         return s;
     };
-    std::vector<io::PlotSeries> curves{series(glint_steps, "glint", {0.85f, 0.2f, 0.1f})};
+    std::vector<io::PlotSeries> curves;
+    const std::array<float, 3> glint_colors[] = {{0.85f, 0.2f, 0.1f}, {0.1f, 0.6f, 0.2f}};
+    for (size_t k = 0; k < glint_steps.size(); ++k)
+        curves.push_back(series(glint_steps[k], glint_names[k], glint_colors[k % 2]));
     if (!peer_results.empty())
         curves.push_back(series(peer_results, args.peer_name, {0.1f, 0.35f, 0.85f}));
     io::PlotOptions plot;
@@ -448,37 +529,11 @@ int run_report(const ReportArgs& args) {
                ", the peer's {seed} 0 .. " + std::to_string(args.seeds - 1) +
                "), the median seconds, and the range of relmse";
     txt += ".\n\n" + csv;
-    if (!peer_results.empty()) {
-        std::vector<double> pt, pe;
-        for (const Step& s : peer_results) {
-            pt.push_back(s.seconds);
-            pe.push_back(s.metrics.relmse);
-        }
-        const Step& last = glint_steps.back();
-        const double gt = last.seconds, ge = last.metrics.relmse;
-        txt += "\nRatios read off the curves (log-log interpolation between steps; above 1 "
-               "means glint is ahead):\n";
-        const io::CurveReading at_error = io::curve_x_at_y(pt, pe, ge);
-        txt += "equal-error: at glint's final relMSE (" + format_number(ge) + " at " +
-               format_number(gt) + " s) " + args.peer_name + " needs ";
-        if (at_error.where == io::CurveReading::Where::None)
-            txt += "an unknown time (its curve does not reach that error or fall toward it)\n";
-        else
-            txt += format_ratio(at_error, at_error.value / gt) + "x the time (" +
-                   format_number(at_error.value) + " s)" + reading_note(at_error) + "\n";
-        const io::CurveReading at_time = io::curve_y_at_x(pt, pe, gt);
-        txt += "equal-time: at glint's final time (" + format_number(gt) + " s) " +
-               args.peer_name + "'s relMSE is ";
-        if (at_time.where == io::CurveReading::Where::None || !(ge > 0))
-            txt += "not comparable (too few points, or glint's error is 0)\n";
-        else if (at_time.where == io::CurveReading::Where::Before)
-            txt += "unknown: its first step already takes longer (" + format_number(pt[0]) +
-                   " s, relMSE " + format_number(pe[0]) + ", " +
-                   format_number(pe[0] / ge) + "x glint's final)\n";
-        else
-            txt += format_ratio(at_time, at_time.value / ge) + "x glint's (" +
-                   format_number(at_time.value) + ")" + reading_note(at_time) + "\n";
-    }
+    if (!peer_results.empty())
+        txt += curve_ratios(glint_names[0], glint_steps[0], args.peer_name, peer_results);
+    // The photon integrator against the path tracer (or whichever came first).
+    for (size_t k = 1; k < glint_steps.size(); ++k)
+        txt += curve_ratios(glint_names[k], glint_steps[k], glint_names[0], glint_steps[0]);
     std::ofstream(dir / "report.csv") << csv;
     std::ofstream(dir / "report.txt") << txt;
     std::fputs(txt.c_str(), stdout);

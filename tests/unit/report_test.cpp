@@ -321,6 +321,33 @@ TEST_F(ReportCli, WritesCsvPlotAndSummaryWithAPeer) {
     EXPECT_TRUE(fs::exists(dir_ / "rep" / "glint-4.exr"));
 }
 
+TEST_F(ReportCli, PhotonIntegratorIsACurveBesideThePathTracers) {
+    make_reference();
+    RunResult r = run("report '" + path("scene.pov") + "' --reference '" + path("ref.exr") +
+                      "' --spp-steps 1,8 --integrator path,sppm --photons 2000 --threads 1 "
+                      "--out '" + path("rep") + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto rows = read_csv(slurp(dir_ / "rep" / "report.csv"));
+    ASSERT_EQ(rows.size(), 5u);
+    const char* names[] = {"glint-path", "glint-path", "glint-sppm", "glint-sppm"};
+    for (int i = 1; i <= 4; ++i) {
+        EXPECT_EQ(rows[i][0], names[i - 1]);
+        EXPECT_EQ(std::stoi(rows[i][1]), i % 2 ? 1 : 8);
+    }
+    // Both converge to the path tracer's reference: more passes, less error.
+    EXPECT_LT(std::stod(rows[2][3]), std::stod(rows[1][3]));
+    EXPECT_LT(std::stod(rows[4][3]), std::stod(rows[3][3]));
+    const std::string txt = slurp(dir_ / "rep" / "report.txt");
+    EXPECT_NE(txt.find("Ratios of glint-path to glint-sppm"), std::string::npos) << txt;
+    EXPECT_NE(txt.find("equal-error: at glint-sppm's final relMSE"), std::string::npos) << txt;
+    EXPECT_TRUE(fs::exists(dir_ / "rep" / "glint-sppm-8.exr"));
+    RunResult bad = run("report '" + path("scene.pov") + "' --reference '" + path("ref.exr") +
+                        "' --integrator path,whitted --out '" + path("rep2") + "'");
+    EXPECT_EQ(bad.exit_code, 1) << bad.err;
+    EXPECT_NE(bad.err.find("'whitted' is not an integrator the report runs"), std::string::npos)
+        << bad.err;
+}
+
 TEST_F(ReportCli, PeerReportsItsOwnRenderSecondsThroughTimeFile) {
     // With {time} the peer's seconds are what it writes there, not its whole process (which
     // includes a 0.2 s sleep here); a peer that does not write the file is a clear error.
