@@ -31,6 +31,20 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
     std::unique_ptr<PreparedScene> prepared = prepare(scene, prepare_options, diag);
     result.features = prepared->features;
     if (options.integrator == IntegratorKind::Sppm) {
+        // Cycles' render settings a Blender scene brings that the photons do not follow.
+        std::string ignored;
+        auto ignore = [&](bool set, const char* what) {
+            if (set) ignored += std::string(ignored.empty() ? "" : ", ") + what;
+        };
+        ignore(options.film_transparent, "Film > Transparent");
+        ignore(options.clamp_direct > 0 || options.clamp_indirect > 0, "clamping");
+        ignore(options.filter_glossy > 0, "Filter Glossy");
+        ignore(options.diffuse_bounces >= 0 || options.glossy_bounces >= 0 ||
+                   options.transmission_bounces >= 0 || options.transparent_bounces >= 0,
+               "bounce limits by kind");
+        if (!ignored.empty())
+            diag.warning({}, "--integrator sppm ignores " + ignored +
+                                 " (only --max-depth limits its paths)");
         PathSettings ps;
         ps.max_depth = std::max(0, options.max_depth);
         PathIntegrator path(*prepared, ps);
