@@ -221,8 +221,7 @@ std::string curve_ratios(const std::string& base_name, const std::vector<Step>& 
 
 CLI::App* add_report_command(CLI::App& app, ReportArgs& args) {
     CLI::App* cmd = app.add_subcommand(
-        "report", "Error against run time of the path tracer (and the photon integrator), "
-                  "beside a peer");
+        "report", "Error against run time of the path tracer or sppm, beside a peer");
     cmd->footer(
         "Error against run time: render SCENE with the path tracer at each --spp-steps count, "
         "compare each with --reference (relMSE = mean((x-r)^2/(r^2+0.01)), RMSE on linear "

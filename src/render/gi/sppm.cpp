@@ -125,30 +125,23 @@ SppmResult render_sppm(const PreparedScene& prepared, const PathIntegrator& path
     const Shutter* shutter = prepared.shutter.active() ? &prepared.shutter : nullptr;
 
     // The sphere around the scene that parallel lights and the environment shine through:
-    // the geometry's bounds, or where an infinite plane makes them endless, what the camera
-    // sees through the pixel centres (and the camera itself).
-    Bounds3 bounds = geometry.bounds();
-    if (bounds.empty() || bounds.is_infinite()) {
-        Bounds3 seen;
+    // the bounds of its finite objects and the camera (infinite planes would make it endless
+    // and spread the photons thin), or with none, what the camera sees through every fourth
+    // pixel centre.
+    Bounds3 bounds = geometry.finite_bounds();
+    if (!bounds.empty()) {
+        if (const std::optional<Ray> ray = camera.generate(0.5 * options.width,
+                                                           0.5 * options.height))
+            bounds.extend(ray->origin);
+    } else {
         for (int y = 0; y < options.height; y += 4)
             for (int x = 0; x < options.width; x += 4) {
                 const std::optional<Ray> ray = camera.generate(x + 0.5, y + 0.5);
                 if (!ray) continue;
-                seen.extend(ray->origin);
+                bounds.extend(ray->origin);
                 Hit h;
-                if (geometry.intersect(*ray, &h)) seen.extend(h.p);
+                if (geometry.intersect(*ray, &h)) bounds.extend(h.p);
             }
-        if (!bounds.empty()) {
-            // Keep the finite sides of the geometry's bounds.
-            const Vec3 lo = bounds.lo, hi = bounds.hi;
-            seen.lo = Vec3(std::isfinite(lo.x) ? std::min(lo.x, seen.lo.x) : seen.lo.x,
-                           std::isfinite(lo.y) ? std::min(lo.y, seen.lo.y) : seen.lo.y,
-                           std::isfinite(lo.z) ? std::min(lo.z, seen.lo.z) : seen.lo.z);
-            seen.hi = Vec3(std::isfinite(hi.x) ? std::max(hi.x, seen.hi.x) : seen.hi.x,
-                           std::isfinite(hi.y) ? std::max(hi.y, seen.hi.y) : seen.hi.y,
-                           std::isfinite(hi.z) ? std::max(hi.z, seen.hi.z) : seen.hi.z);
-        }
-        bounds = seen;
     }
     const Vec3 center = bounds.empty() ? Vec3() : bounds.centroid();
     const double radius = bounds.empty() ? 1.0 : std::max(1e-6, 0.5 * length(bounds.diagonal()));

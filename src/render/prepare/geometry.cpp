@@ -38,7 +38,10 @@ public:
             const Bounds3& b = nodes_[i]->bounds();
             bounds_.extend(b);
             boxes.push_back(b);
-            if (b.is_infinite()) unbounded_.push_back(static_cast<int>(i));
+            if (b.is_infinite())
+                unbounded_.push_back(static_cast<int>(i));
+            else
+                finite_bounds_.extend(b);
         }
         bvh_ = Bvh(boxes, 2);
         // The wide walk pays where the tree is deep: sombrero's 66,049 spheres rendered in
@@ -164,6 +167,7 @@ public:
     }
 
     Bounds3 bounds() const override { return bounds_; }
+    Bounds3 finite_bounds() const override { return finite_bounds_; }
 
 private:
     static bool valid(const Ray& ray) {
@@ -221,6 +225,7 @@ private:
     WideBvh wide_;  // empty below kWideFrom
     const MeshKernels& kernels_ = mesh_kernels();
     Bounds3 bounds_;
+    Bounds3 finite_bounds_;
 };
 
 // A plain union (no inverse, clipping or bounding) is only a group: its parts can join the

@@ -46,6 +46,8 @@ public:
         return false;
     }
     virtual Bounds3 bounds() const = 0;  // may be infinite (planes)
+    // The bounds of the objects whose bounds are finite (empty when there are none).
+    virtual Bounds3 finite_bounds() const { return bounds().is_infinite() ? Bounds3{} : bounds(); }
 };
 
 // Degenerate input (zero-area triangles, non-finite vertices, empty meshes) is skipped with a
