@@ -446,6 +446,14 @@ std::string print_ir(const scene::Scene& s) {
     p.line(1, "right " + vec(c.right));
     p.line(1, "up " + vec(c.up));
     p.line(1, "sky " + vec(c.sky) + " angle " + num(c.angle));
+    if (c.kind == CameraKind::Mesh) {
+        const MeshCamera& m = c.mesh_camera;
+        p.line(1, "mesh_camera rays " + std::to_string(m.rays_per_pixel) + " distribution " +
+                      std::to_string(m.distribution) + " max_distance " + num(m.max_distance) +
+                      (m.smooth ? " smooth" : ""));
+        for (const MeshCameraMesh& mm : m.meshes)
+            p.line(2, "mesh " + std::to_string(mm.mesh));
+    }
     if (c.kind == CameraKind::BlenderPanorama) {
         const Panorama& q = c.panorama;
         static const char* const kTypes[] = {"equirectangular", "fisheye_equidistant",

@@ -9,6 +9,47 @@
 
 namespace glint::pov {
 
+// mesh_camera { rays distribution [max_distance] mesh { ... }... [smooth] } with POV-Ray's
+// checks (Parse_Mesh_Camera); the meshes are parsed as objects and kept out of the scene.
+void Parser::parse_mesh_camera(scene::MeshCamera& m) {
+    expect_open("mesh_camera");
+    const FileLoc opened = loc();
+    m = scene::MeshCamera{};
+    FileLoc at = loc();
+    const double rays = parse_float();
+    if (!(rays >= 1) || rays > 1e6) fail_at(at, "rays per pixel may not be 0");
+    m.rays_per_pixel = static_cast<int>(rays);
+    at = loc();
+    const double dist = parse_float();
+    if (!(dist >= 0) || dist >= 4) fail_at(at, "unrecognized distribution method");
+    m.distribution = static_cast<int>(dist);
+    if ((m.distribution == 2 || m.distribution == 3) && m.rays_per_pixel != 1)
+        fail_at(at, "rays per pixel must be 1 for distribution method #2 or #3");
+    m.max_distance = allow_float(0.0);
+    for (;;) {
+        const Token& t = peek();
+        if (!(t.kind == TokKind::Word && (t.text == "mesh" || t.text == "mesh2"))) break;
+        const FileLoc kloc = loc();
+        const Token kw = next();
+        PovObject po;
+        parse_object(kw, po);
+        const auto* ref = std::get_if<scene::MeshRef>(&po.obj.shape);
+        if (!ref) fail_at(kloc, "expected a mesh or mesh2 in the mesh_camera");
+        m.meshes.push_back({ref->mesh, po.obj.transform});
+    }
+    if (accept("smooth")) {
+        m.smooth = true;
+        if (m.distribution != 3) fail("smooth can only be used with distribution method #3");
+    }
+    if (m.meshes.empty()) fail("expected mesh or mesh2, got " + got(peek()));
+    if (m.distribution == 0 && m.rays_per_pixel > static_cast<int>(m.meshes.size()))
+        fail_at(opened, "rays per pixel must be <= number of meshes for distribution method #0");
+    if (m.distribution == 3 && m.meshes.size() > 1)
+        diag.warning(opened, "additional meshes after the first are ignored for distribution "
+                             "method #3");
+    expect_close("mesh_camera", opened);
+}
+
 void Parser::parse_camera_body(scene::Camera& cam) {
     cam.loc = loc();
     const Token& first = peek();
@@ -65,8 +106,8 @@ void Parser::parse_camera_body(scene::Camera& cam) {
                                "; valid types are 1 to 4");
             n.kind = kCyl[i - 1];
         } else if (w == "mesh_camera") {
-            warn_unsupported(*this, w, loc(), "the camera stays a perspective camera");
-            skip_braced_block(*this, w);
+            n.kind = scene::CameraKind::Mesh;
+            parse_mesh_camera(n.mesh_camera);
         } else if (w == "angle") {
             FileLoc l = loc();
             if (n.kind == scene::CameraKind::Spherical) {

@@ -152,6 +152,7 @@ public:
 
     // ---- camera and scene settings (camera.cpp)
     void parse_camera_body(scene::Camera& cam);
+    void parse_mesh_camera(scene::MeshCamera& m);
     void parse_global_settings();
     void parse_radiosity_settings();  // after `radiosity` in global_settings
     void parse_photon_settings();     // after `photons` in global_settings

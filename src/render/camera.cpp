@@ -8,8 +8,13 @@ namespace glint::render {
 
 using scene::CameraKind;
 
-Camera::Camera(const scene::Camera& camera, int width, int height)
+Camera::Camera(const scene::Camera& camera, int width, int height,
+               const std::vector<scene::Mesh>* meshes)
     : camera_(camera), width_(width), height_(height) {
+    if (camera.kind == CameraKind::Mesh && meshes)
+        mesh_ = std::make_shared<const MeshCameraRays>(camera.mesh_camera, *meshes,
+                                                       camera.location.z,
+                                                       camera.direction.z < -1e-10);
     // TracePixel::SetupCamera: the aspect ratio each projection uses, from the vectors'
     // lengths, and the projections other than perspective/orthographic/panoramic/spherical
     // work with unit vectors.
@@ -67,7 +72,16 @@ Vec3 rotate_about(const Vec3& v, const Vec3& axis, double angle) {
 
 }  // namespace
 
+std::optional<Ray> Camera::generate(double x, double y, int ray_number) const {
+    if (camera_.kind == CameraKind::Mesh) {
+        if (!mesh_) return std::nullopt;
+        return mesh_->generate(x, y, ray_number, width_, height_);
+    }
+    return generate(x, y);
+}
+
 std::optional<Ray> Camera::generate(double x, double y) const {
+    if (camera_.kind == CameraKind::Mesh) return generate(x, y, 0);
     std::optional<Ray> ray = pinhole(x, y);
     if (ray && clips_) clip(ray->dir, &*ray);
     return ray;
@@ -189,6 +203,8 @@ std::optional<Ray> Camera::pinhole(double x, double y) const {
             ray.dir = rotate_about(v, c.up, x0);
             break;
         }
+        case CameraKind::Mesh:
+            return std::nullopt;  // generate() asks the mesh camera
         case CameraKind::BlenderPanorama: {
             // Cycles' raster-to-camera for panoramas is the whole image onto [0, 1]^2 from
             // the lower left corner, which is (sx, sy) + 0.5.
@@ -247,6 +263,7 @@ void polygon_sample(int corners, double rotation, double u, double v, double* x,
 std::optional<Ray> Camera::generate(double x, double y, double lens_u, double lens_v) const {
     const scene::Camera& c = camera_;
     std::optional<Ray> ray;
+    if (c.kind == CameraKind::Mesh) return generate(x, y, 0);
     if (c.kind == CameraKind::BlenderPanorama) {
         ray = generate_panorama(x, y, lens_u, lens_v);
         if (ray && clips_) clip(ray->dir, &*ray);

@@ -3,8 +3,11 @@
 // raster positions; pixel (x, y), top row first, has its centre at (x, y).
 #pragma once
 
+#include <memory>
 #include <optional>
+#include <vector>
 
+#include "render/mesh_camera.h"
 #include "render/ray.h"
 #include "scene/camera.h"
 
@@ -12,7 +15,10 @@ namespace glint::render {
 
 class Camera {
 public:
-    Camera(const scene::Camera& camera, int width, int height);
+    // `meshes`: the scene's, for a mesh_camera (scene::CameraKind::Mesh; without them it
+    // traces no ray).
+    Camera(const scene::Camera& camera, int width, int height,
+           const std::vector<scene::Mesh>* meshes = nullptr);
 
     // Ray through raster position (x, y): integer values are pixel centres, x grows to the right
     // and y downwards (so supersamples at x +- 0.3 stay inside pixel x). Direction normalized.
@@ -25,6 +31,10 @@ public:
     // orthographic and Blender panoramic cameras; the others ignore the lens.
     std::optional<Ray> generate(double x, double y, double lens_u, double lens_v) const;
     bool has_lens() const { return camera_.lens.radius > 0; }
+    // A mesh_camera's rays per pixel (1 for every other camera) and ray `ray_number` of a
+    // raster position; the pixel is the mean of the rays it has.
+    int rays_per_pixel() const { return mesh_ ? mesh_->rays_per_pixel() : 1; }
+    std::optional<Ray> generate(double x, double y, int ray_number) const;
     // Whether every primary ray starts at the camera location (not orthographic, not the
     // cylinder projections that are orthographic along one axis).
     bool rays_start_at_location() const;
@@ -41,6 +51,7 @@ private:
     std::optional<Ray> generate_panorama(double x, double y, double lens_u, double lens_v) const;
 
     scene::Camera camera_;
+    std::shared_ptr<const MeshCameraRays> mesh_;
     double width_;
     double height_;
     double aspect_ = 1;

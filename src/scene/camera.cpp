@@ -16,6 +16,7 @@ const char* camera_kind_name(CameraKind kind) {
         case CameraKind::Cylinder4: return "cylinder 4";
         case CameraKind::Spherical: return "spherical";
         case CameraKind::BlenderPanorama: return "blender_panorama";
+        case CameraKind::Mesh: return "mesh_camera";
     }
     return "?";
 }

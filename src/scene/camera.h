@@ -30,6 +30,27 @@ enum class CameraKind {
     Spherical,  // `angle H [, V]`
     // Blender's panoramic camera as Cycles 3.4 renders it (Camera::panorama).
     BlenderPanorama,
+    // POV-Ray 3.7's mesh_camera: rays from the faces of meshes (Camera::mesh_camera).
+    Mesh,
+};
+
+// One mesh of a mesh_camera: a Scene::meshes index and the transform it was given there.
+struct MeshCameraMesh {
+    int mesh = -1;
+    Transform transform;
+};
+
+// POV-Ray's mesh_camera { rays distribution [max_distance] mesh {...}... [smooth] }: each
+// pixel's rays leave a face's centroid along its normal (distributions 0-2: the faces by pixel
+// index, 0 one mesh per ray, 1 the meshes summed, 2 the meshes side by side), or, for 3, the
+// point of the first mesh whose uv coordinates hold the pixel's. `location`.z moves the origin
+// along the normal, a negative `direction`.z reverses the rays (tracepixel.cpp).
+struct MeshCamera {
+    int rays_per_pixel = 1;
+    int distribution = 0;
+    double max_distance = 0;  // > 0: camera rays see nothing further
+    bool smooth = false;      // distribution 3: interpolated vertex normals
+    std::vector<MeshCameraMesh> meshes;
 };
 
 // Cycles' panorama projections (Blender camera type PANO, camera.cycles.panorama_type).
@@ -80,6 +101,7 @@ struct Camera {
     double v_angle = 180;
     Lens lens;
     Panorama panorama;       // kind BlenderPanorama only
+    MeshCamera mesh_camera;  // kind Mesh only
     // Blender's Clip Start / End: camera rays start clip_start in front of the camera (along
     // its axis for perspective and orthographic views, along the ray for panoramas) and see
     // nothing past clip_end, as Cycles clips them. POV-Ray cameras never clip.

@@ -74,9 +74,22 @@ private:
     }
 
     Color sample(double x, double y, int px, int py, uint32_t index) const {
-        std::optional<Ray> ray = camera_.generate(x, y);
-        if (!ray) return Color(0, 0, 0);
-        return radiance_(*ray, SampleId{px, py, index, current_block});
+        const int rays = camera_.rays_per_pixel();
+        if (rays == 1) {
+            std::optional<Ray> ray = camera_.generate(x, y);
+            if (!ray) return Color(0, 0, 0);
+            return radiance_(*ray, SampleId{px, py, index, current_block});
+        }
+        // A mesh_camera's rays: the mean of those that have a face (TracePixel::operator()).
+        Color sum;
+        int traced = 0;
+        for (int k = 0; k < rays; ++k) {
+            std::optional<Ray> ray = camera_.generate(x, y, k);
+            if (!ray) continue;
+            sum += radiance_(*ray, SampleId{px, py, index, current_block});
+            ++traced;
+        }
+        return traced > 0 ? sum * (1.0 / traced) : Color(0, 0, 0);
     }
     Color sample(int px, int py) const { return sample(px, py, px, py, 0); }
 
@@ -303,10 +316,15 @@ struct PixelAccumulators {
 }  // namespace
 
 std::optional<Ray> path_camera_ray(const Camera& camera, const PixelFilter& filter,
-                                   const Shutter* shutter, const PixelSampler& ps, int x, int y) {
+                                   const Shutter* shutter, const PixelSampler& ps, int x, int y,
+                                   uint32_t index) {
     const Sample2 j = ps.get2(0);
     const double fx = x + filter.offset(j.u), fy = y + filter.offset(j.v);
     std::optional<Ray> ray;
+    if (camera.rays_per_pixel() > 1) {
+        // A mesh_camera's rays in turn, sample by sample.
+        return camera.generate(fx, fy, static_cast<int>(index % camera.rays_per_pixel()));
+    }
     if (camera.has_lens()) {
         // A pair no bounce uses: the aperture's point.
         const Sample2 l = ps.get2(kLensPair);
@@ -401,7 +419,7 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
                             const uint32_t index = static_cast<uint32_t>(s);
                             const PixelSampler ps(x, y, index, options.seed);
                             const std::optional<Ray> ray =
-                                path_camera_ray(camera, filter, shutter, ps, x, y);
+                                path_camera_ray(camera, filter, shutter, ps, x, y, index);
                             float value[3] = {0, 0, 0};
                             FirstHit first;
                             if (ray) {

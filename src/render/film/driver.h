@@ -69,9 +69,11 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
                    const Shutter* shutter = nullptr);
 // The camera ray of the path tracer's sample `ps` at pixel (x, y): the pixel filter's offset
 // from pair 0, the lens point and the shutter time (with an active `shutter`) from pairs no
-// bounce uses. Empty where the camera sends no ray.
+// bounce uses. Empty where the camera sends no ray. A mesh_camera with several rays per
+// pixel gives sample `index` its ray index mod rays.
 std::optional<Ray> path_camera_ray(const Camera& camera, const PixelFilter& filter,
-                                   const Shutter* shutter, const PixelSampler& ps, int x, int y);
+                                   const Shutter* shutter, const PixelSampler& ps, int x, int y,
+                                   uint32_t index);
 // The same without AOVs or variance, for a plain radiance function.
 // Both check cancellation before every sample and throw Interrupted.
 int run_path_tiles(const Camera& camera, const RenderOptions& options, const RadianceFn& radiance,

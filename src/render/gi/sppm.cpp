@@ -312,7 +312,8 @@ SppmResult render_sppm(const PreparedScene& prepared, const PathIntegrator& path
                                                 (x - region.x0)];
                             const PixelSampler ps(x, y, static_cast<uint32_t>(pass), options.seed);
                             const std::optional<Ray> ray =
-                                path_camera_ray(camera, filter, shutter, ps, x, y);
+                                path_camera_ray(camera, filter, shutter, ps, x, y,
+                                                static_cast<uint32_t>(pass));
                             if (!ray) continue;
                             VisiblePoint vp;
                             const Color l = path.li(*ray, ps, nullptr, &vp);

@@ -31,7 +31,7 @@ std::unique_ptr<PreparedScene> prepare_with(const scene::Scene& scene,
     return std::unique_ptr<PreparedScene>(new PreparedScene{
         scene, std::move(features), std::move(textures), std::move(programs),
         std::move(materials), std::move(geometry),
-        Camera(scene.camera, options.width, options.height), Shutter(scene)});
+        Camera(scene.camera, options.width, options.height, &scene.meshes), Shutter(scene)});
 }
 
 }  // namespace
