@@ -52,8 +52,32 @@ bool Parser::is_object_keyword(const Token& t) const {
     return t.kind == TokKind::Word && !lookup(t.text) && object_body_parser(t.text) != nullptr;
 }
 
+void Parser::transform_face_materials(scene::MeshRef& ref, const Transform& t) {
+    if (ref.mesh < 0 || static_cast<size_t>(ref.mesh) >= scene.meshes.size()) return;
+    auto found = face_material_ids_.find(ref.mesh);
+    if (found == face_material_ids_.end()) {
+        std::vector<int> ids;
+        for (const scene::MeshFace& f : scene.meshes[static_cast<size_t>(ref.mesh)].faces)
+            if (f.material >= 0) ids.push_back(f.material);
+        std::sort(ids.begin(), ids.end());
+        ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+        found = face_material_ids_.emplace(ref.mesh, std::move(ids)).first;
+    }
+    if (found->second.empty()) return;
+    if (ref.face_materials.empty())
+        for (int id : found->second) ref.face_materials.emplace_back(id, id);
+    for (auto& [from, to] : ref.face_materials) {
+        scene::Material m = scene.materials[static_cast<size_t>(to)];
+        transform_texture(m.texture, t);
+        transform_interior(m.interior, t);
+        scene.materials.push_back(std::move(m));
+        to = static_cast<int>(scene.materials.size()) - 1;
+    }
+}
+
 void Parser::apply_transform(PovObject& o, const Transform& t) {
     o.obj.transform = o.obj.transform.then(t);
+    if (auto* ref = std::get_if<scene::MeshRef>(&o.obj.shape)) transform_face_materials(*ref, t);
     if (o.texture) transform_texture(*o.texture, t);
     if (o.interior) transform_interior(*o.interior, t);
     for (auto& c : o.children) transform_child_textures(c, t);

@@ -153,6 +153,10 @@ public:
     // ---- camera and scene settings (camera.cpp)
     void parse_camera_body(scene::Camera& cam);
     void parse_mesh_camera(scene::MeshCamera& m);
+    // A mesh's texture_list textures follow its transforms (scene::MeshRef::face_materials):
+    // transformed copies of the materials its faces name.
+    void transform_face_materials(scene::MeshRef& ref, const Transform& t);
+    std::unordered_map<int, std::vector<int>> face_material_ids_;  // per mesh, distinct
     void parse_global_settings();
     void parse_radiosity_settings();  // after `radiosity` in global_settings
     void parse_photon_settings();     // after `photons` in global_settings

@@ -69,7 +69,11 @@ std::optional<Ray> MeshCameraRays::from_face(const Part& part, const Face& f) co
 std::optional<Ray> MeshCameraRays::generate(double x, double y, int ray_number, double width,
                                             double height) const {
     if (parts_.empty()) return std::nullopt;
-    // POV-Ray clips the raster position to the image, then takes whole pixels.
+    // POV-Ray's raster position (it moves glint's pixel centres by +0.5 in x and -0.5 in y,
+    // as Camera::screen notes, so its first two rows share a face row), clipped to the image,
+    // then taken as whole pixels.
+    x += 0.5;
+    y -= 0.5;
     x = std::max(0.0, std::min(x, width - 1.0));
     y = std::max(0.0, std::min(y, height - 1.0));
     const auto ux = static_cast<unsigned>(x), uy = static_cast<unsigned>(y);

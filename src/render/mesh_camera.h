@@ -22,7 +22,9 @@ public:
                    double offset, bool reverse);
     int rays_per_pixel() const { return rays_; }
     // The ray for raster position (x, y) (integers: pixel centres) of a width x height image;
-    // none where no face belongs to it (POV-Ray leaves the pixel black).
+    // none where no face belongs to it (POV-Ray leaves the pixel black). POV-Ray's position is
+    // (x + 0.5, y - 0.5): pixel row y > 0 takes the faces of row y - 1, and row 0 those of
+    // row 0 too.
     std::optional<Ray> generate(double x, double y, int ray_number, double width,
                                 double height) const;
 

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <variant>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
@@ -62,7 +63,13 @@ struct SmoothTriangle {
 };
 // A triangle mesh stored in Scene::meshes.
 struct MeshRef {
+    MeshRef() = default;
+    MeshRef(int m) : mesh(m) {}  // NOLINT: MeshRef{id} names a mesh
     int mesh = -1;
+    // This object's materials for the faces' own (face material id -> material id): POV-Ray
+    // transforms a mesh's texture_list textures with the mesh, so each transformed copy of the
+    // mesh has its own transformed copies of them. Empty: the faces' as they are.
+    std::vector<std::pair<int, int>> face_materials;
 };
 
 // quadric (POV-Ray 3.7 manual 2.4.3.5): A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y +

@@ -46,26 +46,32 @@ TEST(MeshCamera, FacesByPixelFromCentroidsAlongNormals) {
     ASSERT_TRUE(r);
     EXPECT_NEAR(r->origin.x, 1.0 / 3, 1e-12);
     EXPECT_NEAR(r->origin.y, 2.0 / 3, 1e-12);
-    // Pixels past the faces trace nothing, and positions are clipped to the image.
+    // Pixels past the faces trace nothing, and positions are clipped to the image. POV-Ray
+    // takes row y - 1's faces for row y > 0 (its raster position is y - 0.5): row 1 repeats
+    // row 0.
     EXPECT_FALSE(cam.generate(2, 0));
-    EXPECT_FALSE(cam.generate(0, 1));
+    EXPECT_NEAR(cam.generate(1, 1)->origin.x, 1.0 / 3, 1e-12);
     EXPECT_TRUE(cam.generate(-3, -3));
+    const Camera tall(s.camera, 1, 3, &s.meshes);
+    EXPECT_TRUE(tall.generate(0, 2));  // row 2 -> face 1
+    EXPECT_NEAR(tall.generate(0, 2)->origin.y, 2.0 / 3, 1e-12);
 }
 
 TEST(MeshCamera, NegativeDirectionReversesAndUvFindsTheFace) {
     const scene::Scene s = scene_with(
         "camera { mesh_camera { 1 3 mesh { M } } direction <0, 0, -1> }\n");
     const Camera cam(s.camera, 10, 10, &s.meshes);
-    // Pixel (7, 8): u = 6.5 / 10, v = 1 - 8.5 / 10: below the diagonal, the first face.
+    // Pixel (7, 8): POV-Ray's position (7.5, 7.5), u = 7 / 10, v = 1 - 8 / 10: below the
+    // diagonal, the first face.
     std::optional<Ray> r = cam.generate(7, 8);
     ASSERT_TRUE(r);
-    EXPECT_NEAR(r->origin.x, 0.65, 1e-12);
-    EXPECT_NEAR(r->origin.y, 0.15, 1e-12);
+    EXPECT_NEAR(r->origin.x, 0.7, 1e-12);
+    EXPECT_NEAR(r->origin.y, 0.2, 1e-12);
     EXPECT_NEAR(r->dir.z, 1, 1e-12);  // reversed
-    r = cam.generate(2, 1);  // u = 0.15, v = 0.85: the other face
+    r = cam.generate(2, 1);  // u = 0.2, v = 0.9: the other face
     ASSERT_TRUE(r);
-    EXPECT_NEAR(r->origin.x, 0.15, 1e-12);
-    EXPECT_NEAR(r->origin.y, 0.85, 1e-12);
+    EXPECT_NEAR(r->origin.x, 0.2, 1e-12);
+    EXPECT_NEAR(r->origin.y, 0.9, 1e-12);
 }
 
 TEST(MeshCamera, SideBySideMeshesAndRaysPerPixel) {
@@ -73,7 +79,7 @@ TEST(MeshCamera, SideBySideMeshesAndRaysPerPixel) {
         "camera { mesh_camera { 1 2 mesh { M } mesh { M translate x * 10 } } }\n");
     const Camera cam(s.camera, 4, 1, &s.meshes);
     // The right half's mesh, with the whole image's x in its face index (as POV-Ray has it):
-    // pixel 2 -> face 2 of the second mesh, which does not exist.
+    // pixel 2 -> face 2 of the second mesh, which does not exist (its position is 2.5).
     ASSERT_TRUE(cam.generate(1, 0));
     EXPECT_NEAR(cam.generate(1, 0)->origin.x, 1.0 / 3, 1e-12);
     EXPECT_FALSE(cam.generate(2, 0));

@@ -186,6 +186,8 @@ std::unique_ptr<ObjectNode> ObjectNode::build(const scene::Object& obj,
     node->inverse_ = obj.inverse;
     node->material_ = obj.material;
     node->flags_ = object_flags(obj);
+    if (const auto* ref = std::get_if<scene::MeshRef>(&obj.shape))
+        node->face_materials_ = ref->face_materials;
     Transform frame;
     bool baked = false;
     if (const auto* csg = std::get_if<scene::Csg>(&obj.shape)) {
@@ -306,7 +308,15 @@ void ObjectNode::finish(LocalHit* h) const {
         h->ng = -h->ng;
         h->n = -h->n;
     }
-    if (h->material < 0) h->material = material_;
+    if (h->material < 0) {
+        h->material = material_;
+    } else {
+        for (const auto& [from, to] : face_materials_)
+            if (h->material == from) {
+                h->material = to;
+                break;
+            }
+    }
     h->flags |= flags_;
 }
 

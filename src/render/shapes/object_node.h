@@ -101,6 +101,8 @@ private:
     std::vector<int> unbounded_children_;
     bool inverse_ = false;
     int material_ = -1;
+    // A mesh's face materials as this object has them (scene::MeshRef::face_materials).
+    std::vector<std::pair<int, int>> face_materials_;
     uint32_t flags_ = 0;
     std::vector<std::unique_ptr<ObjectNode>> bounded_by_;
     std::vector<std::unique_ptr<ObjectNode>> clipped_by_;
