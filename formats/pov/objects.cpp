@@ -86,11 +86,11 @@ void Parser::apply_transform(PovObject& o, const Transform& t) {
     for (auto& c : o.obj.clipped_by) c.transform = c.transform.then(t);
 }
 
-static scene::Object plain_object(const PovObject& p) {
+scene::Object object_without_materials(const PovObject& p) {
     scene::Object o = p.obj;
     if (auto csg = std::get_if<scene::Csg>(&o.shape)) {
         csg->children.clear();
-        for (const auto& c : p.children) csg->children.push_back(plain_object(c));
+        for (const auto& c : p.children) csg->children.push_back(object_without_materials(c));
     }
     o.material = -1;
     return o;
@@ -341,7 +341,7 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
                         unget();
                         break;
                     }
-                    if (child.left_out.empty()) dst.push_back(plain_object(child));
+                    if (child.left_out.empty()) dst.push_back(object_without_materials(child));
                 }
             }
             expect_close(w.c_str(), lo);

@@ -48,6 +48,8 @@ void transform_pigment(scene::Pigment& p, const Transform& t);
 void transform_media(scene::Media& m, const Transform& t);
 void transform_interior(scene::Interior& in, const Transform& t);
 void transform_texture(scene::Texture& tex, const Transform& t);
+// An object as an IR object with no materials (clipped_by, bounded_by, object patterns).
+scene::Object object_without_materials(const PovObject& p);
 // POV-Ray's Link_Textures: `top` (with its own layers) is drawn over `base`.
 void layer_texture(scene::Texture& base, const scene::Texture& top, const FileLoc& at);
 
@@ -153,6 +155,9 @@ public:
     // ---- camera and scene settings (camera.cpp)
     void parse_camera_body(scene::Camera& cam);
     void parse_mesh_camera(scene::MeshCamera& m);
+    // The object pattern's closing brace, after its entries (parse_pattern_arguments opens).
+    void close_object_pattern();
+    std::vector<FileLoc> object_pattern_open_;
     // A mesh's texture_list textures follow its transforms (scene::MeshRef::face_materials):
     // transformed copies of the materials its faces name.
     void transform_face_materials(scene::MeshRef& ref, const Transform& t);

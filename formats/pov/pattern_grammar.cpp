@@ -118,6 +118,29 @@ void Parser::parse_pattern_arguments(PatternKind kind, scene::PatternParams& pp,
             pp.control0 = pp.control1 = 1;
             pp.frequency = 0;  // POV-Ray: quilted values are not reshaped by default
             break;
+        case PatternKind::Object: {
+            // object { OBJECT [transforms] ENTRY_A, ENTRY_B } (Parse_Bound_Clip): an object
+            // statement or identifier; the caller reads the entries, close_object_pattern()
+            // the brace.
+            expect_open("object");
+            object_pattern_open_.push_back(loc());
+            PovObject o;
+            const Token& t = next();
+            if (t.kind == TokKind::Word && lookup(t.text)) {
+                const Symbol& s = use_symbol(t);
+                auto obj = std::get_if<std::shared_ptr<const PovObject>>(&s.value);
+                if (!obj) fail("object or object identifier expected, got " +
+                               value_kind_name(s.value) + " '" + t.text + "'");
+                o = **obj;
+            } else if (!parse_object(t, o)) {
+                unget();
+                fail("object or object identifier expected, got " + got(peek()));
+            }
+            for (Transform d; parse_transform_item(d); d = Transform()) apply_transform(o, d);
+            scene.pattern_objects.push_back(object_without_materials(o));
+            pp.object = static_cast<int>(scene.pattern_objects.size()) - 1;
+            break;
+        }
         case PatternKind::Facets:
             if (!normal) fail_at(l, "'facets' can only be used in a normal");
             pp.facets_size = 0.1;
@@ -127,6 +150,13 @@ void Parser::parse_pattern_arguments(PatternKind kind, scene::PatternParams& pp,
         default: break;
     }
     if (block_count(kind) > 0) pp.frequency = 0;
+}
+
+void Parser::close_object_pattern() {
+    if (object_pattern_open_.empty()) return;
+    const FileLoc opened = object_pattern_open_.back();
+    object_pattern_open_.pop_back();
+    expect_close("object", opened);
 }
 
 bool Parser::parse_pattern_modifier(const std::string& w, PatternKind kind,

@@ -45,6 +45,7 @@ constexpr PatternWord kPatternWords[] = {
     {"cubic", PatternKind::Cubic},         {"checker", PatternKind::Checker},
     {"gradient", PatternKind::Gradient},   {"average", PatternKind::Average},
     {"function", PatternKind::Function},   {"density_file", PatternKind::DensityFile},
+    {"object", PatternKind::Object},
 };
 
 std::optional<PatternKind> pattern_keyword(const std::string& w) {
@@ -56,7 +57,7 @@ std::optional<PatternKind> pattern_keyword(const std::string& w) {
 // POV-Ray patterns glint does not evaluate: named so the message is precise.
 const std::unordered_set<std::string>& unsupported_patterns() {
     static const std::unordered_set<std::string> k = {
-        "aoi", "image_pattern", "object", "pavement",
+        "aoi", "image_pattern", "pavement",
         "pigment_pattern", "slope", "tiling", "magnet", "gradient_map", "material_map", "tiles"};
     return k;
 }
@@ -71,6 +72,7 @@ Color block_default_color(PatternKind k, int i) {
     switch (k) {
         case PatternKind::Brick: return kBrick[i];
         case PatternKind::Checker:
+        case PatternKind::Object:  // Check_Default_Map
         case PatternKind::Hexagon: return kHex[i];
         default: return kCubic[i];
     }
@@ -143,6 +145,7 @@ bool skip_unsupported_pattern(Parser& p, const std::string& w, PatternKind* kind
 int block_count(PatternKind k) {
     switch (k) {
         case PatternKind::Checker:
+        case PatternKind::Object:
         case PatternKind::Brick: return 2;
         case PatternKind::Hexagon: return 3;
         case PatternKind::Square: return 4;
@@ -193,6 +196,7 @@ void Parser::parse_pigment_body(scene::Pigment& p) {
                 } else {
                     p.entries.clear();
                 }
+                if (*kind == PatternKind::Object) close_object_pattern();
             } else if (w == "color_map" || w == "colour_map") {
                 if (takes_no_map(p.kind) || p.kind == PatternKind::Average)
                     fail("cannot use " + w + " with the '" + pattern_name(p.kind) + "' pattern");
@@ -330,6 +334,7 @@ void Parser::parse_normal_body(scene::Normal& n) {
                 n.slope_map.clear();
                 n.normal_map.clear();
             }
+            if (*kind == PatternKind::Object) close_object_pattern();
             skip_comma();
             n.amount = allow_float(n.amount);
         } else if (w == "bump_map") {
@@ -489,6 +494,7 @@ scene::Texture Parser::parse_texture_body() {
                 tex.entries = parse_texture_entries(n);
                 tex.texture_map.clear();
             }
+            if (*kind == PatternKind::Object) close_object_pattern();
         } else if (w == "texture_map") {
             if (takes_no_map(tex.kind))
                 fail("cannot use texture_map with the '" + std::string(pattern_name(tex.kind)) +

@@ -128,6 +128,8 @@ struct Scene {
     std::vector<Media> media;
     // User-defined functions (function patterns refer to them by index; calls between them too).
     std::vector<Function> functions;
+    // The objects of object patterns (PatternParams::object), in pattern space; materials -1.
+    std::vector<Object> pattern_objects;
     // Shader node graphs (Blender's materials, world and lights); Material::graph and
     // world_graph index them.
     std::vector<ShaderGraph> shader_graphs;

@@ -41,6 +41,7 @@ const char* pattern_name(PatternKind kind) {
         case PatternKind::Square: return "square";
         case PatternKind::Triangular: return "triangular";
         case PatternKind::Cubic: return "cubic";
+        case PatternKind::Object: return "object";
         case PatternKind::Average: return "average";
     }
     return "?";

@@ -29,6 +29,8 @@ enum class PatternKind {
     DensityFile,  // density_file df3 "file": a voxel grid over the unit cube
     // block patterns: entries (or map entries) chosen by the pattern value
     Brick, Hexagon, Square, Triangular, Cubic,
+    // object { OBJECT A, B }: entries[1] inside the object (PatternParams::object), else [0]
+    Object,
     // pigment { average pigment_map { [w P] ... } }, normal { average normal_map {...} }
     Average,
 };
@@ -157,6 +159,7 @@ struct PatternParams {
     int exterior_type = 1, interior_type = 0;
     double exterior_factor = 1, interior_factor = 1;
     int function = -1;  // PatternKind::Function: index into Scene::functions
+    int object = -1;    // PatternKind::Object: index into Scene::pattern_objects
 };
 
 struct ColorMapEntry {

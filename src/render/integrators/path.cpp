@@ -47,7 +47,8 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
       materials_(prepared.materials),
       graphs_(prepared.graphs.get()),
       pigments_(prepared.textures.get(),
-                PatternContext{scene_.global.noise_generator, 10, &scene_.functions}),
+                PatternContext{scene_.global.noise_generator, 10, &scene_.functions,
+                               prepared.pattern_objects.get()}),
       settings_(settings),
       rays_(64) {
     int world = 0;

@@ -84,7 +84,7 @@ Whitted::Whitted(const PreparedScene& prepared)
       materials_(prepared.materials),
       pigments_(prepared.textures.get(),
                 PatternContext{scene_.global.noise_generator, scene_.global.number_of_waves,
-                               &scene_.functions}),
+                               &scene_.functions, prepared.pattern_objects.get()}),
       atmosphere_(scene_),
       lights_(prepare_lights(whitted_lights(scene_.lights))),
       media_(scene_, whitted_lights(scene_.lights), &pigments_),

@@ -1,5 +1,7 @@
 #include "render/prepare/prepared_scene.h"
 
+#include "render/prepare/pattern_objects.h"
+
 #include <utility>
 
 namespace glint::render {
@@ -31,7 +33,8 @@ std::unique_ptr<PreparedScene> prepare_with(const scene::Scene& scene,
     return std::unique_ptr<PreparedScene>(new PreparedScene{
         scene, std::move(features), std::move(textures), std::move(programs),
         std::move(materials), std::move(geometry),
-        Camera(scene.camera, options.width, options.height, &scene.meshes), Shutter(scene)});
+        Camera(scene.camera, options.width, options.height, &scene.meshes), Shutter(scene),
+        build_pattern_objects(scene, diag ? *diag : quiet)});
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "render/prepare/material_table.h"
 #include "render/shader/shading.h"
 #include "render/textures/image_texture.h"
+#include "render/textures/pattern.h"
 #include "scene/features.h"
 #include "scene/scene.h"
 
@@ -33,6 +34,8 @@ struct PreparedScene {
     std::unique_ptr<Geometry> geometry;
     Camera camera;
     Shutter shutter;  // motion blur; inactive for scenes without motion
+    // Object patterns' objects (PatternContext::objects); null without any.
+    std::unique_ptr<PatternObjects> pattern_objects;
 };
 
 // Prepares `scene` for a render with `options` (its integrator and image size). Degenerate

@@ -529,6 +529,10 @@ double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
             return triangular(p);
         case PatternKind::Cubic:
             return cubic(p);
+        case PatternKind::Object:
+            return ctx.objects && params.object >= 0 && ctx.objects->inside(params.object, p)
+                       ? 1.0
+                       : 0.0;
         case PatternKind::Leopard:
             return leopard(p);
         case PatternKind::Mandel:
@@ -638,6 +642,7 @@ bool is_block_pattern(PatternKind kind) {
         case PatternKind::Square:
         case PatternKind::Triangular:
         case PatternKind::Cubic:
+        case PatternKind::Object:
             return true;
         default:
             return false;

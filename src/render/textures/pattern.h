@@ -12,12 +12,22 @@
 namespace glint::render {
 
 // Scene-wide settings a pattern depends on (global_settings).
+// Whether a point lies inside an object pattern's object (Scene::pattern_objects), for
+// PatternKind::Object; the renderer's geometry answers (prepare/pattern_objects.h).
+class PatternObjects {
+public:
+    virtual ~PatternObjects() = default;
+    virtual bool inside(int object, const Vec3& p) const = 0;
+};
+
 struct PatternContext {
     int noise_generator = 2;   // global_settings { noise_generator N }; POV-Ray 3.7 default 2
     int number_of_waves = 10;  // global_settings { number_of_waves N }: ripples and waves
     // Scene::functions, for PatternKind::Function (params.function indexes it); null: the
     // function pattern evaluates to 0.
     const std::vector<scene::Function>* functions = nullptr;
+    // Scene::pattern_objects' inside tests; null: an object pattern is outside everywhere.
+    const PatternObjects* objects = nullptr;
 };
 
 // POV-Ray's Warp_EPoint + Evaluate_TPat.
