@@ -423,10 +423,10 @@ void Parser::parse_photon_settings() {
             ph.adc_bailout = parse_float();
         } else if (take("max_trace_level")) {
             ph.max_trace_level = static_cast<int>(parse_float());
-        } else if (take("load_file") || take("save_file")) {
-            diag.warning(at, "photons load_file/save_file is ignored: glint shoots the photons "
-                             "every render");
-            parse_string();
+        } else if (take("load_file")) {
+            ph.load_file = parse_string();
+        } else if (take("save_file")) {
+            ph.save_file = parse_string();
         } else if (take("media")) {
             ph.media_steps = static_cast<int>(parse_float());
             if (ph.media_steps < 0) fail("photons media: max media steps must be non-negative");

@@ -54,6 +54,9 @@ struct Photons {
     double adc_bailout = -1;   // < 0: global_settings adc_bailout
     int media_steps = 0;       // media photons: max steps (0: off)
     double media_factor = 1;
+    // save_file / load_file: write the photons shot to a file, or take them from one instead
+    // of shooting (render/gi/photon_map.h, glint's own format); "" for neither.
+    std::string save_file, load_file;
     FileLoc loc;  // the photons block, for errors while shooting
 };
 

@@ -4,9 +4,15 @@
 // the same at any thread count.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
 
+#include "core/error.h"
 #include "core/log.h"
 #include "render/gi/photon_map.h"
 #include "render/render.h"
@@ -113,6 +119,56 @@ TEST(ClassicPhotons, LightThroughAClearSlabArrivesWithItsEnergy) {
     EXPECT_NEAR(mean(44, 56, 1) / open, 0.0625, 0.0625 * 0.05);
     EXPECT_NEAR(mean(44, 56, 2) / open, 0.00390625, 0.00390625 * 0.05);
     EXPECT_EQ(slab(1).image.rgba, img.rgba);
+}
+
+TEST(ClassicPhotons, SaveFileAndLoadFileGiveTheSameImage) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("glint_photon_file_" +
+                                                      std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string file = (dir / "slab.ph").string();
+    auto scene = [&](const std::string& photons) {
+        return "#version 3.7;\n"
+               "global_settings { photons { " + photons + " } }\n"
+               "camera { orthographic location <0, 10, 0> look_at 0 right 4*x up 3*z }\n"
+               "light_source { <0, 20, 0> rgb 1 photons { refraction on } }\n"
+               "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n"
+               "box { <-1, 1, -1>, <0, 1.1, 1> pigment { rgbf <1, 0.5, 0.25, 1> }\n"
+               "  finish { ambient 0 diffuse 0 } interior { ior 1 } "
+               "photons { target collect off } }\n";
+    };
+    RenderOptions o;
+    o.width = 40;
+    o.height = 30;
+    Diagnostics diag;
+    const Image saved =
+        render(pov::testing::parse(scene("spacing 0.01 jitter 0 autostop 0 save_file \"" +
+                                         file + "\"")),
+               o, diag)
+            .image;
+    ASSERT_TRUE(fs::exists(file));
+    EXPECT_FALSE(fs::exists(file + ".tmp"));
+    // Loaded, the photons are the saved ones, whatever the spacing says now.
+    const Image loaded =
+        render(pov::testing::parse(scene("spacing 0.5 load_file \"" + file + "\"")), o, diag)
+            .image;
+    EXPECT_EQ(loaded.rgba, saved.rgba);
+    const Image fewer =
+        render(pov::testing::parse(scene("spacing 0.5")), o, diag).image;
+    EXPECT_NE(fewer.rgba, saved.rgba);
+    // A file that is not one, or none at all: an error at the photons block.
+    std::ofstream(dir / "bad.ph") << "not photons";
+    for (const std::string& bad : {(dir / "bad.ph").string(), (dir / "none.ph").string()}) {
+        try {
+            render(pov::testing::parse(scene("load_file \"" + bad + "\"")), o, diag);
+            ADD_FAILURE() << bad;
+        } catch (const Error& e) {
+            EXPECT_EQ(e.kind(), ErrorKind::MissingFile) << e.what();
+            EXPECT_EQ(e.loc().line, 2) << e.what();
+            EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
+        }
+    }
+    fs::remove_all(dir);
 }
 
 }  // namespace

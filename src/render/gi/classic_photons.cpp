@@ -127,6 +127,13 @@ struct Whitted::PhotonPath {
 
 void Whitted::shoot_photons(int threads) {
     const scene::Photons& settings = *scene_.global.photons;
+    if (!settings.load_file.empty()) {
+        // The photons of an earlier render, instead of shooting (photons { load_file }).
+        std::vector<Photon> all, media;
+        read_photon_file(settings.load_file, &all, &media, settings.loc);
+        keep_photons(std::move(all), std::move(media));
+        return;
+    }
     // The targets and their bounding spheres (ShootingDirection::compute).
     struct Target {
         int object;
@@ -297,7 +304,13 @@ void Whitted::shoot_photons(int threads) {
     std::vector<Photon> all, media;
     for (auto& f : found) all.insert(all.end(), f.begin(), f.end());
     for (auto& f : found_media) media.insert(media.end(), f.begin(), f.end());
-    photons_ = std::make_unique<PhotonMap>(std::move(all), settings);
+    if (!settings.save_file.empty()) write_photon_file(settings.save_file, all, media, settings.loc);
+    keep_photons(std::move(all), std::move(media));
+}
+
+void Whitted::keep_photons(std::vector<Photon> surface, std::vector<Photon> media) {
+    const scene::Photons& settings = *scene_.global.photons;
+    photons_ = std::make_unique<PhotonMap>(std::move(surface), settings);
     if (!media.empty()) {
         media_photons_ = std::make_unique<PhotonMap>(std::move(media), settings, true);
         media_.set_photons(media_photons_.get());

@@ -2,10 +2,84 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
 #include <queue>
 #include <utility>
 
 namespace glint::render {
+
+namespace {
+
+constexpr char kPhotonMagic[8] = {'G', 'L', 'P', 'H', 'O', 'T', '0', '1'};
+
+void put(std::ofstream& out, double v) { out.write(reinterpret_cast<const char*>(&v), sizeof v); }
+bool get(std::ifstream& in, double* v) {
+    return static_cast<bool>(in.read(reinterpret_cast<char*>(v), sizeof *v));
+}
+
+}  // namespace
+
+void write_photon_file(const std::string& path, const std::vector<Photon>& surface,
+                       const std::vector<Photon>& media, const FileLoc& at) {
+    const std::string tmp = path + ".tmp";
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) throw Error(ErrorKind::Output, at, "cannot write the photon file " + path);
+        out.write(kPhotonMagic, sizeof kPhotonMagic);
+        put(out, static_cast<double>(surface.size()));
+        put(out, static_cast<double>(media.size()));
+        for (const std::vector<Photon>* list : {&surface, &media})
+            for (const Photon& ph : *list)
+                for (double v : {ph.p.x, ph.p.y, ph.p.z, ph.to_source.x, ph.to_source.y,
+                                 ph.to_source.z, ph.power.r, ph.power.g, ph.power.b})
+                    put(out, v);
+        if (!out.flush()) {
+            std::remove(tmp.c_str());
+            throw Error(ErrorKind::Output, at, "cannot write the photon file " + path);
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        std::remove(tmp.c_str());
+        throw Error(ErrorKind::Output, at, "cannot write the photon file " + path);
+    }
+}
+
+void read_photon_file(const std::string& path, std::vector<Photon>* surface,
+                      std::vector<Photon>* media, const FileLoc& at) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(ErrorKind::MissingFile, at, "cannot read the photon file " + path);
+    char magic[sizeof kPhotonMagic];
+    double counts[2];
+    if (!in.read(magic, sizeof magic) || std::memcmp(magic, kPhotonMagic, sizeof magic) != 0 ||
+        !get(in, &counts[0]) || !get(in, &counts[1]))
+        throw Error(ErrorKind::MissingFile, at,
+                    path + " is not a photon file glint wrote (photons { save_file })");
+    // Sizes the file itself can hold: a damaged count cannot ask for more memory than that.
+    in.seekg(0, std::ios::end);
+    const double room = static_cast<double>(in.tellg()) / (9 * sizeof(double));
+    in.seekg(sizeof magic + 2 * sizeof(double));
+    for (double c : counts)
+        if (!(c >= 0 && c <= room && c == std::floor(c)))
+            throw Error(ErrorKind::MissingFile, at, "the photon file " + path + " is damaged");
+    std::vector<Photon>* lists[2] = {surface, media};
+    for (int k = 0; k < 2; ++k) {
+        lists[k]->clear();
+        lists[k]->reserve(static_cast<size_t>(counts[k]));
+        for (size_t i = 0; i < static_cast<size_t>(counts[k]); ++i) {
+            double v[9];
+            for (double& x : v)
+                if (!get(in, &x))
+                    throw Error(ErrorKind::MissingFile, at,
+                                "the photon file " + path + " is cut short");
+            Photon ph{Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]), Color(v[6], v[7], v[8])};
+            bool finite = true;
+            for (double x : v) finite = finite && std::isfinite(x);
+            if (finite) lists[k]->push_back(ph);
+        }
+    }
+}
 namespace {
 
 // photons.cpp: PhotonMap's gatherNumSteps (the adaptive gather widens at most once).

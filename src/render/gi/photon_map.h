@@ -6,8 +6,10 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "core/math.h"
 #include "scene/color.h"
 #include "scene/scene.h"
@@ -27,6 +29,15 @@ struct PhotonGather {
     std::vector<const Photon*> photons;
     double radius = 0;
 };
+
+// Photons in a file (photons { save_file / load_file }): glint's own binary format (POV-Ray's
+// is its own too), the surface and media photons in the order they were shot, so a loaded
+// map is the map that was saved. Written to a temporary name and renamed. Errors name the
+// file and the photons block `at`.
+void write_photon_file(const std::string& path, const std::vector<Photon>& surface,
+                       const std::vector<Photon>& media, const FileLoc& at);
+void read_photon_file(const std::string& path, std::vector<Photon>* surface,
+                      std::vector<Photon>* media, const FileLoc& at);
 
 class PhotonMap {
 public:

@@ -41,11 +41,14 @@ public:
     Radiosity* radiosity() const { return radiosity_.get(); }
     // POV-Ray's photon pass (gi/classic_photons.cpp): shoots photons from every light at every
     // target object and builds the map the render gathers from. Run before the render when
-    // the scene has global_settings photons; the same photons whatever `threads` is.
+    // the scene has global_settings photons; the same photons whatever `threads` is. With
+    // `load_file` the photons come from that file instead; with `save_file` they go to it.
     void shoot_photons(int threads);
     const PhotonMap* photons() const { return photons_.get(); }
 
 private:
+    // The photon maps from the photons shot (or loaded), in shooting order.
+    void keep_photons(std::vector<Photon> surface, std::vector<Photon> media);
     // The objects a ray is inside, innermost last (POV-Ray's ray interior list); bounded so
     // rays stay allocation-free.
     struct Interiors {
