@@ -206,6 +206,30 @@ TEST(Sppm, RefusesWhatItCannotRender) {
     }
 }
 
+TEST(Sppm, SaysWhichEmittersLightNothing) {
+    // An emitting box is left to BSDF hits by light sampling: no photon leaves it.
+    const std::string text =
+        "#version 3.7;\n"
+        "camera { location <0, 1, -3> look_at 0 }\n"
+        "light_source { <0, 3, 0> rgb 1 }\n"
+        "plane { y, 0 pigment { rgb 1 } }\n"
+        "box { -0.2, 0.2 pigment { rgb 1 } finish { emission 2 } }\n";
+    std::vector<std::string> warnings;
+    Diagnostics diag([&](const Diagnostic& d) {
+        if (d.level == Diagnostic::Level::Warning)
+            warnings.push_back(std::to_string(d.loc.line) + ": " + d.message);
+    });
+    RenderOptions o;
+    o.width = 8;
+    o.height = 6;
+    o.integrator = IntegratorKind::Sppm;
+    o.spp = 1;
+    render(pov::testing::parse(text), o, diag);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0].rfind("5: this emitting object cannot be light-sampled", 0), 0u)
+        << warnings[0];
+}
+
 TEST(ClosureSetDelta, TheDeltaChanceIsHowOftenSamplingPicksADelta) {
     // A POV-Ray finish with diffuse and a partial mirror: some samples are the mirror's.
     PrincipledParams p;

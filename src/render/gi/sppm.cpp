@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <tbb/blocked_range.h>
@@ -152,6 +153,38 @@ SppmResult render_sppm(const PreparedScene& prepared, const PathIntegrator& path
         throw Error(ErrorKind::Render, {},
                     "--integrator sppm cannot shoot photons from " + why +
                         " yet; render this scene with --integrator path");
+
+    // Emitting objects light sampling leaves to BSDF hits (boxes, CSG parts, ...): no photon
+    // leaves them and no visible point samples them, so their light reaches only the camera.
+    {
+        const std::vector<Color> emission = prepared.materials.emission();
+        auto emits = [&](const scene::Object& o, const auto& self) -> bool {
+            if (o.material >= 0 && static_cast<size_t>(o.material) < emission.size() &&
+                !emission[static_cast<size_t>(o.material)].is_black())
+                return true;
+            if (const auto* csg = std::get_if<scene::Csg>(&o.shape))
+                for (const scene::Object& c : csg->children)
+                    if (self(c, self)) return true;
+            return false;
+        };
+        int dark = 0;
+        const scene::Object* first = nullptr;
+        for (size_t i = 0; i < prepared.scene.objects.size(); ++i) {
+            const scene::Object& o = prepared.scene.objects[i];
+            if (emits(o, emits) && !path.lights().emitter_object(static_cast<int>(i))) {
+                if (!first) first = &o;
+                ++dark;
+            }
+        }
+        if (first)
+            diag.warning(first->loc,
+                         (dark > 1 ? std::to_string(dark) + " emitting objects, this the first, "
+                                                            "cannot be light-sampled"
+                                   : std::string("this emitting object cannot be light-sampled")) +
+                             " (only emitting triangles, meshes, spheres and discs can): "
+                             "--integrator sppm shows the emission where the camera sees it but "
+                             "lights nothing with it; --integrator path renders that light");
+    }
 
     SppmResult result;
     const long photons = settings.photons > 0
