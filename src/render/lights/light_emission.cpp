@@ -25,7 +25,9 @@ size_t pick(const std::vector<double>& cdf, double u, double* rescaled) {
 // PathLights::pov_factor shapes its cone.
 double cone_cos(const scene::Light& l) {
     if (l.kind == scene::LightKind::Point) return -1;
-    if (l.radius > 0) return std::max(0.0, std::cos(l.falloff * kPi / 180));
+    // (pov_factor cuts at the falloff, or at the radius where a falloff inside it leaves the
+    // edge there: the wider of the two bounds both.)
+    if (l.radius > 0) return std::max(0.0, std::cos(std::max(l.falloff, l.radius) * kPi / 180));
     return 0;
 }
 
