@@ -201,7 +201,7 @@ SppmResult render_sppm(const PreparedScene& prepared, const PathIntegrator& path
     auto cancelled = [&options] {
         return options.cancel && options.cancel->load(std::memory_order_relaxed);
     };
-    // The image after `n` passes of `emitted` photons each.
+    // The image after `n` passes of `photons` photons each.
     auto resolve = [&](int n) {
         Image img;
         img.width = fw;
