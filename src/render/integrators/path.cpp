@@ -38,6 +38,17 @@ bool finite(const Color& c) {
 
 double average(const Color& c) { return (c.r + c.g + c.b) / 3; }
 
+// The chance that a ray passes straight through a surface whose closures are `cl`: the
+// transparency's share against the BSDFs' sample weights, as Cycles picks among closures
+// (0 when nothing is transparent).
+double transparent_share(const shader::ClosureList& cl) {
+    const double tw = average(cl.transparent);
+    if (!(tw > 0)) return 0;
+    double sw = 0;
+    for (int i = 0; i < cl.count; ++i) sw += cl.items[i].sample_weight;
+    return sw > 0 ? tw / (tw + sw) : 1.0;
+}
+
 }  // namespace
 
 
@@ -246,11 +257,7 @@ bool PathIntegrator::photon_surface(Hit& hit, const Vec3& dir, double coin,
         graph_closures(*row, hit, dir, state, &cl);
         // Transparency by its share against the BSDFs', as li() picks it.
         double shade = 1;
-        const double tw = average(cl.transparent);
-        if (tw > 0) {
-            double sw = 0;
-            for (int i = 0; i < cl.count; ++i) sw += cl.items[i].sample_weight;
-            const double q = sw > 0 ? tw / (tw + sw) : 1.0;
+        if (const double q = transparent_share(cl); q > 0) {
             if (coin < q) {
                 out->pass = true;
                 out->pass_weight = cl.transparent * (1 / q);
@@ -521,11 +528,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler, Fir
             // Transparency (transparent closures, Principled alpha): straight through with the
             // probability of its share against the BSDFs', as Cycles picks among closures.
             double shade = 1;
-            const double tw = average(cl.transparent);
-            if (tw > 0) {
-                double sw = 0;
-                for (int i = 0; i < cl.count; ++i) sw += cl.items[i].sample_weight;
-                const double q = sw > 0 ? tw / (tw + sw) : 1.0;
+            if (const double q = transparent_share(cl); q > 0) {
                 if (!cl.emission.is_black()) add(beta * cl.emission);
                 if (sampler.get2(alpha_base + alpha_tests++).u < q) {
                     if (++skips > max_skips) break;
