@@ -113,6 +113,44 @@ TEST(Pigment, FrequencyAndPhase) {
     EXPECT_NEAR(PigmentEvaluator(nullptr).pattern_value(p, Vec3(0.3, 0, 0)), 0.6, 1e-12);
 }
 
+// `#declare P = function { pigment { checker red, blue } }` and a pigment
+// `function { P(x, y, z).red }`: the pigment is evaluated where the function is called.
+TEST(Pigment, PigmentFunctionCalledFromAFunction) {
+    std::vector<scene::Function> fns(2);
+    fns[0].kind = scene::FunctionKind::Pigment;
+    Pigment checker;
+    checker.kind = scene::PatternKind::Checker;
+    checker.entries = {plain(Color(1, 0, 0)), plain(Color(0, 0, 1))};
+    fns[0].pigment = {checker};
+    scene::Function& f = fns[1];
+    f.params = {"x", "y", "z"};
+    f.slots = 3;
+    for (int k = 0; k < 3; ++k) {
+        scene::FnNode n;
+        n.op = scene::FnOp::Param;
+        n.index = k;
+        f.nodes.push_back(n);
+    }
+    scene::FnNode call;
+    call.op = scene::FnOp::Call;
+    call.index = 0;
+    call.member = 0;  // .red
+    call.first = 0;
+    call.count = 3;
+    f.nodes.push_back(call);
+    f.operands = {0, 1, 2};
+    f.root = 3;
+    Pigment p;
+    p.kind = scene::PatternKind::Function;
+    p.params.function = 1;
+    p.color_map = {{0.0, ColorFT(Color(0, 0, 0))}, {1.0, ColorFT(Color(1, 1, 1))}};
+    PatternContext ctx;
+    ctx.functions = &fns;
+    PigmentEvaluator e(nullptr, ctx);
+    EXPECT_EQ(eval(e, p, Vec3(0.5, 0.5, 0.5)).rgb, Color(1, 1, 1));  // red square: red 1
+    EXPECT_EQ(eval(e, p, Vec3(1.5, 0.5, 0.5)).rgb, Color(0, 0, 0));  // blue square: red 0
+}
+
 TEST(Pigment, NestedEntriesLiveInTheParentsPatternSpace) {
     // POV-Ray evaluates entries at the parent's warped pattern-space point, so an entry's
     // transform is relative: the outer checker is scaled by 10 and the inner one by 0.5 of

@@ -7,6 +7,7 @@
 #include "core/noise.h"
 #include "render/textures/density_file.h"
 #include "render/textures/fractal_patterns.h"
+#include "render/textures/pigment.h"
 #include "render/textures/pov_numbers.h"
 
 namespace glint::render {
@@ -465,8 +466,9 @@ double wrinkles(const Vec3& p, int gen) {
     return value / 2.0;
 }
 
-// `function { pattern { ... } }` called from a function (POV-Ray's f_pattern): the pattern's
-// own transform, then the pattern value.
+// `function { pattern { ... } }` or `function { pigment { ... } }` called from a function
+// (POV-Ray's f_pattern and f_pigment): the pattern's own transform, then the pattern value; a
+// pigment is evaluated at the point as given, like a surface point with no uv.
 void function_hook(const void* user, const scene::Function& f, const Vec3& p, double out[5]) {
     const PatternContext& ctx = *static_cast<const PatternContext*>(user);
     const scene::Pigment& pg = f.pigment.at(0);
@@ -474,9 +476,13 @@ void function_hook(const void* user, const scene::Function& f, const Vec3& p, do
         out[0] = evaluate_pattern(pg.kind, pg.params, pg.transform.inverse_point(p), ctx);
         return;
     }
-    // Pigment functions would need the pigment evaluator (a layer above); the importer warns
-    // that they evaluate to 0.
-    for (int k = 0; k < 5; ++k) out[k] = 0;
+    scene::ColorFT c;
+    PigmentEvaluator(ctx.textures, ctx).evaluate(pg, {p, {}, false}, &c);
+    out[0] = c.rgb.r;
+    out[1] = c.rgb.g;
+    out[2] = c.rgb.b;
+    out[3] = c.filter;
+    out[4] = c.transmit;
 }
 
 // POV-Ray's function_pattern: the function at the point, values above 1 wrapped by fmod.

@@ -11,6 +11,8 @@
 
 namespace glint::render {
 
+class TextureCache;
+
 // Scene-wide settings a pattern depends on (global_settings).
 // Whether a point lies inside an object pattern's object (Scene::pattern_objects), for
 // PatternKind::Object; the renderer's geometry answers (prepare/pattern_objects.h).
@@ -28,6 +30,9 @@ struct PatternContext {
     const std::vector<scene::Function>* functions = nullptr;
     // Scene::pattern_objects' inside tests; null: an object pattern is outside everywhere.
     const PatternObjects* objects = nullptr;
+    // Image maps for pigment functions called from functions (`function { pigment { image_map
+    // ... } }`); null: the scene has none.
+    const TextureCache* textures = nullptr;
 };
 
 // POV-Ray's Warp_EPoint + Evaluate_TPat.

@@ -22,7 +22,9 @@ class PigmentEvaluator {
 public:
     // `textures` may be null when the scene has no image maps.
     explicit PigmentEvaluator(const TextureCache* textures, PatternContext ctx = {})
-        : textures_(textures), ctx_(ctx) {}
+        : textures_(textures), ctx_(ctx) {
+        if (!ctx_.textures) ctx_.textures = textures;
+    }
 
     // Returns false where POV-Ray finds no color (outside an image_map used `once`); `out` is
     // then fully clear, like POV-Ray's <1,1,1,0,1>.
