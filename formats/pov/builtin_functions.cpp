@@ -2,6 +2,7 @@
 // called from ExprParser::word once a function name was read.
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <functional>
 
 #include "core/noise.h"
@@ -225,6 +226,20 @@ Value ExprParser::function(const std::string& f) {
             r += part;
         }
         return r;
+    }
+    if (f == "datetime") {
+        // datetime(days since 2000-01-01 UTC [, strftime format]), as POV-Ray 3.7 formats it.
+        if (a.empty() || a.size() > 2)
+            p_.fail_at(fn_loc, "datetime() takes 1 or 2 arguments, got " + std::to_string(a.size()));
+        const double secs = F(0) * 86400.0 + 946684800.0;
+        if (!(std::fabs(secs) < 1e15)) p_.fail_at(fn_loc, "datetime(): the time is out of range");
+        const std::time_t tt = static_cast<std::time_t>(std::floor(secs));
+        std::tm tm{};
+        gmtime_r(&tt, &tm);
+        const std::string fmt = a.size() == 2 ? S(1) : std::string("%Y-%m-%d %H:%M:%SZ");
+        char buf[512];
+        size_t n = fmt.empty() ? 0 : std::strftime(buf, sizeof buf, fmt.c_str(), &tm);
+        return std::string(buf, n);
     }
     if (f == "chr") { need(1); return std::string(1, static_cast<char>(to_int(F(0)))); }
     if (f == "substr") {

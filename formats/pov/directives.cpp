@@ -296,7 +296,7 @@ void TokenStream::call_macro(const Macro& m, const FileLoc& cloc) {
                       ": runaway recursion?",
                    "--max-recursion");
     expect("(", ("after the macro name '" + m.name + "'").c_str());
-    std::unordered_map<std::string, Symbol> args;
+    SymbolTable args;
     size_t saved = declare_frame_, saved_pending = pending_declare_frame_;
     declare_frame_ = size_t(-1);
     pending_declare_frame_ = size_t(-1);

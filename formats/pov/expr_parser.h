@@ -5,6 +5,7 @@
 // expressions.cpp.
 #pragma once
 
+#include <ctime>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -294,21 +295,27 @@ public:
         }
         if (constant_names().count(w)) return constant(w);
         if (function_names().count(w)) return function(w);
-        if ((w == "trace" || w == "min_extent" || w == "max_extent") && p_.options.object_query)
+        if ((w == "trace" || w == "inside" || w == "min_extent" || w == "max_extent") &&
+            p_.options.prepare_object)
             return object_function(w);
-        if (w == "inside" || w == "eval_pigment") {
-            // inside(Obj, P) and eval_pigment(Pig, P): read, warned about once, and 0.
+        if (w == "eval_pigment") return eval_pigment();
+        if (w == "inside") {
+            // inside(Obj, P) with no renderer to ask: read, warned about once, and 0.
             warn_unsupported(p_, w + "()", p_.loc(), "it gives 0");
             p_.expect("(", ("after '" + w + "'").c_str());
-            p_.next();  // the object or pigment identifier
+            p_.next();  // the object identifier
             p_.expect(",", ("after the first argument of " + w + "()").c_str());
             p_.parse_vector();
             p_.expect(")", ("to close " + w + "()").c_str());
-            return w == "inside" ? Value(Num::scalar(0)) : Value(Num::vec(Vec3(0, 0, 0)));
+            return Value(Num::scalar(0));
+        }
+        if (w == "now") {
+            // POV-Ray's now: days since 2000-01-01 00:00 UTC.
+            const double secs = static_cast<double>(std::time(nullptr));
+            return Value(Num::scalar((secs - 946684800.0) / 86400.0));
         }
         static const std::unordered_set<std::string> kUnsupportedFns = {
-            "eval_pigment", "trace", "inside", "min_extent",
-            "max_extent", "datetime", "now"};
+            "trace", "min_extent", "max_extent"};
         if (kUnsupportedFns.count(w)) p_.unsupported("the '" + w + "' function");
         p_.fail("unknown identifier '" + w + "'");
     }
@@ -355,10 +362,9 @@ public:
         }
     }
 
-    // trace(Obj, start, dir [, NormalVar]), min_extent(Obj), max_extent(Obj): answered by the
-    // application's geometry (ParseOptions::object_query) for a scene holding only Obj.
+    // trace(Obj, start, dir [, NormalVar]), inside(Obj, P), min_extent(Obj), max_extent(Obj):
+    // answered by the application's geometry for the object alone (Parser::prepared_object).
     Value object_function(const std::string& f) {
-        const FileLoc fn_loc = p_.loc();
         p_.expect("(", ("after '" + f + "'").c_str());
         const Token& t = p_.next();
         const Symbol* s = t.kind == TokKind::Word ? p_.lookup(t.text) : nullptr;
@@ -366,13 +372,16 @@ public:
         auto obj = s ? std::get_if<std::shared_ptr<const PovObject>>(&s->value) : nullptr;
         if (!obj) p_.fail("expected an object identifier in " + f + "(), got " + p_.got(t));
         auto keep = *obj;
-        // An object glint left out (its warning said so) is empty here: no bounds, no hits.
-        scene::Scene one;
-        if (keep->left_out.empty()) one = p_.one_object_scene(*keep);
+        const scene::PreparedObject& one = p_.prepared_object(keep);
+        if (f == "inside") {
+            p_.expect(",", "after the object in inside()");
+            Vec3 at = p_.parse_vector();
+            p_.expect(")", "to close inside()");
+            return Value(Num::scalar(one.inside(at) ? 1 : 0));
+        }
         if (f != "trace") {
             p_.expect(")", ("to close " + f + "()").c_str());
-            const scene::ObjectAnswer box =
-                p_.options.object_query(one, scene::ObjectQuery::Bounds, Vec3(), Vec3());
+            const scene::ObjectAnswer box = one.bounds();
             // POV-Ray's bounding boxes of unbounded objects are large, not infinite.
             auto clamp = [](double v) { return std::clamp(v, -1e10, 1e10); };
             Vec3 r = f == "min_extent" ? box.lo : box.hi;
@@ -393,10 +402,8 @@ public:
             nloc = p_.loc();
         }
         p_.expect(")", "to close trace()");
-        (void)fn_loc;
         scene::ObjectAnswer hit;
-        if (length(dir) > 0)
-            hit = p_.options.object_query(one, scene::ObjectQuery::Trace, from, dir);
+        if (length(dir) > 0) hit = one.trace(from, dir);
         if (!hit.found) hit.point = hit.normal = Vec3(0, 0, 0);
         if (!normal_var.empty())
             p_.assign_existing_or_declare(normal_var, Num::vec(hit.normal), nloc);
@@ -404,6 +411,29 @@ public:
     }
 
     Value function(const std::string& f);  // builtin_functions.cpp
+
+    // eval_pigment(Pig, P) (functions.inc's macro, also read without it): the pigment's color
+    // at P, through the application's pattern hook.
+    Value eval_pigment() {
+        const FileLoc at = p_.loc();
+        p_.expect("(", "after 'eval_pigment'");
+        const Token& t = p_.next();
+        const Symbol* s = t.kind == TokKind::Word ? p_.lookup(t.text) : nullptr;
+        if (s) s = &p_.use_symbol(t);
+        auto pig = s ? std::get_if<scene::Pigment>(&s->value) : nullptr;
+        if (!pig) p_.fail("expected a pigment identifier in eval_pigment(), got " + p_.got(t));
+        scene::Function f;
+        f.kind = scene::FunctionKind::Pigment;
+        f.pigment = {*pig};
+        p_.expect(",", "after the pigment in eval_pigment()");
+        Vec3 q = p_.parse_vector();
+        p_.expect(")", "to close eval_pigment()");
+        if (!p_.options.pattern_hook)
+            throw Unsupported(at, "eval_pigment() while parsing is not supported here");
+        Num n{{0, 0, 0, 0, 0}, 5};
+        p_.options.pattern_hook(p_.options.hook_user, f, q, n.v);
+        return Value(n);
+    }
 
     // POV-Ray's Parse_Colour: keywords and expressions in any combination; `ft_terms` is 5
     // where filter/transmit count (pigments), 3 where only RGB does (lights, finishes).

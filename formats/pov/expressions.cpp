@@ -56,7 +56,7 @@ const std::unordered_set<std::string>& function_names() {
         "vcross", "vrotate", "vaxis_rotate", "select", "strlen", "val", "asc", "strcmp",
         "defined", "str", "concat", "chr", "substr", "strupr", "strlwr", "bitwise_and",
         "bitwise_or", "bitwise_xor", "odd", "even", "sqr", "file_exists", "seed", "rand",
-        "dimensions", "dimension_size", "vturbulence", "vstr"};
+        "dimensions", "dimension_size", "vturbulence", "vstr", "datetime"};
     return k;
 }
 
@@ -199,6 +199,18 @@ scene::Scene Parser::one_object_scene(const PovObject& po) const {
     };
     if (!po.is_light) one.objects.push_back(conv(po, true));
     return one;
+}
+
+const scene::PreparedObject& Parser::prepared_object(const std::shared_ptr<const PovObject>& po) {
+    auto it = prepared_objects_.find(po.get());
+    if (it == prepared_objects_.end()) {
+        // An object glint left out (its warning said so) is empty here: no bounds, no hits.
+        scene::Scene one;
+        if (po->left_out.empty()) one = one_object_scene(*po);
+        it = prepared_objects_.emplace(po.get(), std::make_pair(po, options.prepare_object(one)))
+                 .first;
+    }
+    return *it->second.second;
 }
 
 

@@ -64,10 +64,10 @@ struct ParseOptions {
     void (*pattern_hook)(const void* user, const scene::Function& f, const Vec3& p,
                          double out[5]) = nullptr;
     const void* hook_user = nullptr;
-    // trace() and min_extent()/max_extent() at parse time (scene/object_query.h): the
-    // application answers with the renderer's geometry. Unset: those functions are not
-    // supported.
-    scene::ObjectQueryFn object_query;
+    // trace(), inside() and min_extent()/max_extent() at parse time (scene/object_query.h):
+    // the application prepares the object with the renderer's geometry. Unset: those
+    // functions are not supported.
+    scene::ObjectPrepareFn prepare_object;
 };
 
 // Throws glint::Error (ErrorKind::Scene or MissingFile) with the FileLoc of the problem.

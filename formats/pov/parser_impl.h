@@ -93,8 +93,10 @@ public:
         const Symbol* s = symbol_after_raw_brace();
         return s && (s->unusable || std::holds_alternative<scene::SkySphere>(s->value));
     }
-    // trace/min_extent/max_extent (expressions.cpp): the object alone in a scene.
+    // trace/inside/min_extent/max_extent (expressions.cpp): the object alone in a scene,
+    // prepared by options.prepare_object once per declared object.
     scene::Scene one_object_scene(const PovObject& po) const;
+    const scene::PreparedObject& prepared_object(const std::shared_ptr<const PovObject>& po);
 
     // ---- materials (materials.cpp)
     scene::Texture parse_texture_body();      // after texture {
@@ -215,6 +217,10 @@ private:
     void parse_array_init(ArrayValue& a, size_t dim, size_t& k);
     Value parse_array();
     std::set<int> warned_internals_;
+    // Objects asked about while parsing, with the object kept alive so its address stays its.
+    std::map<const PovObject*, std::pair<std::shared_ptr<const PovObject>,
+                                         std::shared_ptr<const scene::PreparedObject>>>
+        prepared_objects_;
     long long triangles_ = 0;  // mesh triangles so far, against options.max_triangles
 };
 

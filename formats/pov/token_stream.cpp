@@ -400,10 +400,9 @@ const Symbol* TokenStream::lookup(const std::string& name) const {
         auto it = element_syms_.find(name);
         return it == element_syms_.end() ? nullptr : &it->second;
     }
-    for (size_t i = scopes_.size(); i-- > 0;) {
-        auto it = scopes_[i].find(name);
-        if (it != scopes_[i].end()) return &it->second;
-    }
+    const SymbolKey key(name);
+    for (size_t i = scopes_.size(); i-- > 0;)
+        if (const Symbol* s = scopes_[i].lookup(key)) return s;
     return nullptr;
 }
 

@@ -17,6 +17,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -26,6 +27,47 @@
 #include "formats/pov/value.h"
 
 namespace glint::pov {
+
+// One scope's symbols. A lookup walks every scope from the innermost out, and scenes whose
+// macros recurse fifty deep make tens of millions of lookups (tracevines), so the name is
+// hashed once (SymbolKey) and each scope first answers from a 64-bit summary of the hashes it
+// holds, probing its buckets only when the name may be there.
+struct SymbolKey {
+    std::string_view name;
+    size_t hash;
+    explicit SymbolKey(std::string_view n) : name(n), hash(std::hash<std::string_view>{}(n)) {}
+};
+struct SymbolHash {
+    using is_transparent = void;
+    size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+    size_t operator()(const std::string& s) const { return (*this)(std::string_view(s)); }
+    size_t operator()(const SymbolKey& k) const { return k.hash; }
+};
+struct SymbolEq {
+    using is_transparent = void;
+    static std::string_view view(std::string_view s) { return s; }
+    static std::string_view view(const SymbolKey& k) { return k.name; }
+    template <class A, class B>
+    bool operator()(const A& a, const B& b) const { return view(a) == view(b); }
+};
+class SymbolTable : public std::unordered_map<std::string, Symbol, SymbolHash, SymbolEq> {
+public:
+    // The one way names enter a scope.
+    Symbol& operator[](const std::string& name) {
+        summary_ |= bit(SymbolHash{}(name));
+        return unordered_map::operator[](name);
+    }
+    const Symbol* lookup(const SymbolKey& key) const {
+        if (!(summary_ & bit(key.hash))) return nullptr;
+        auto it = find(key);
+        return it == end() ? nullptr : &it->second;
+    }
+
+private:
+    // The top six bits (the buckets use the low ones); erased names keep their bit.
+    static uint64_t bit(size_t hash) { return uint64_t{1} << (hash >> (sizeof(size_t) * 8 - 6)); }
+    uint64_t summary_ = 0;
+};
 
 // A float read where the language wants an integer, truncated toward zero like POV-Ray's
 // (int) cast. Casting a value outside int's range (or NaN) is undefined behaviour, so it is
@@ -240,7 +282,7 @@ private:
     std::vector<std::unique_ptr<SourceFile>> files_;
     std::unordered_map<std::string, int> file_cache_;
     std::vector<Frame> frames_;
-    std::vector<std::unordered_map<std::string, Symbol>> scopes_;
+    std::vector<SymbolTable> scopes_;
     const Token* cur_ = nullptr;
     int cur_file_ = 0;
     bool ungot_ = false;

@@ -167,7 +167,7 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose) {
     options.max_objects = limits.objects;
     options.max_parse_stack_mib = limits.parse_stack_mib;
     options.max_memory_mib = limits.memory_mib;
-    options.object_query = render::answer_object_query;  // trace(), min_extent(), max_extent()
+    options.prepare_object = render::prepare_object_query;  // trace(), inside(), extents
     options.pattern_hook = render::parse_time_pattern;   // pattern functions called while parsing
     options.cancel = &cancel_flag();                      // SIGINT/SIGTERM stop the parse too
     ParseDiagnosticPrinter printer(verbose);

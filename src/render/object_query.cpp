@@ -1,32 +1,57 @@
 #include "render/render.h"
 
 #include "render/prepare/geometry.h"
+#include "render/shapes/object_node.h"
 #include "render/textures/pigment.h"
 #include "scene/features.h"
 
 namespace glint::render {
 
-scene::ObjectAnswer answer_object_query(const scene::Scene& one, scene::ObjectQuery query,
-                                        const Vec3& origin, const Vec3& direction) {
-    scene::ObjectAnswer answer;
-    if (one.objects.empty()) return answer;
-    Diagnostics quiet;  // the scene's own parse reports problems with the object
-    std::unique_ptr<Geometry> g = build_geometry(one, scene::analyze(one), quiet);
-    if (query == scene::ObjectQuery::Bounds) {
-        Bounds3 box = g->bounds();
+namespace {
+
+class PreparedQueryObject final : public scene::PreparedObject {
+public:
+    explicit PreparedQueryObject(const scene::Scene& one) {
+        if (one.objects.empty()) return;
+        Diagnostics quiet;  // the scene's own parse reports problems with the object
+        geometry_ = build_geometry(one, scene::analyze(one), quiet);
+        node_ = ObjectNode::build(one.objects[0], one, quiet);
+    }
+
+    scene::ObjectAnswer bounds() const override {
+        scene::ObjectAnswer answer;
+        if (!geometry_) return answer;
+        Bounds3 box = geometry_->bounds();
         if (box.empty()) return answer;
         answer.found = true;
         answer.lo = box.lo;
         answer.hi = box.hi;
         return answer;
     }
-    Ray ray{origin, normalize(direction), kInfinity};
-    Hit hit;
-    if (!g->intersect(ray, &hit)) return answer;
-    answer.found = true;
-    answer.point = hit.p;
-    answer.normal = hit.n;
-    return answer;
+
+    scene::ObjectAnswer trace(const Vec3& origin, const Vec3& direction) const override {
+        scene::ObjectAnswer answer;
+        if (!geometry_) return answer;
+        Ray ray{origin, normalize(direction), kInfinity};
+        Hit hit;
+        if (!geometry_->intersect(ray, &hit)) return answer;
+        answer.found = true;
+        answer.point = hit.p;
+        answer.normal = hit.n;
+        return answer;
+    }
+
+    bool inside(const Vec3& p) const override { return node_ && node_->inside(p); }
+
+private:
+    std::unique_ptr<Geometry> geometry_;
+    std::unique_ptr<ObjectNode> node_;
+};
+
+}  // namespace
+
+std::shared_ptr<const scene::PreparedObject> prepare_object_query(const scene::Scene& one) {
+    return std::make_shared<PreparedQueryObject>(one);
 }
 
 void parse_time_pattern(const void*, const scene::Function& f, const Vec3& p, double out[5]) {

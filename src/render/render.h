@@ -29,12 +29,11 @@ struct RenderResult {
 
 RenderResult render(const scene::Scene& scene, const RenderOptions& options, Diagnostics& diag);
 
-// The scene language's questions about one object while parsing (POV-Ray's trace(),
+// The scene language's questions about one object while parsing (POV-Ray's trace(), inside(),
 // min_extent(), max_extent(); scene/object_query.h), answered with the renderer's geometry for
-// a scene holding only that object (object_query.cpp). The application passes it to the
-// importer as ParseOptions::object_query.
-scene::ObjectAnswer answer_object_query(const scene::Scene& one, scene::ObjectQuery query,
-                                        const Vec3& origin, const Vec3& direction);
+// a scene holding only that object (object_query.cpp), built once. The application passes it
+// to the importer as ParseOptions::prepare_object.
+std::shared_ptr<const scene::PreparedObject> prepare_object_query(const scene::Scene& one);
 
 // ParseOptions::pattern_hook: a pattern function's value (out[0]) or a pigment function's color
 // (out = rgbft) when the scene calls one while parsing (shapes.inc's HF macros do). `user` is

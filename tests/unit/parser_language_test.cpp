@@ -173,7 +173,7 @@ TEST(ParserFunction, Errors) {
 
 TEST(ParserObjectQueries, TraceAndExtents) {
     ParseOptions o;
-    o.object_query = render::answer_object_query;
+    o.prepare_object = render::prepare_object_query;
     auto s = parse(
         "#declare S = sphere { <1, 0, 0>, 2 }\n"
         "#declare B = box { <-1, -2, -3>, <1, 2, 3> translate x }\n"
@@ -441,12 +441,29 @@ TEST(PovLanguage, LocalTakesAMacroCallsValueIntoTheCallersScope) {
               3);
 }
 
-TEST(PovLanguage, InsideAndEvalPigmentWarnAndGiveZero) {
+TEST(PovLanguage, InsideAndEvalPigment) {
+    ParseOptions o;
+    o.prepare_object = render::prepare_object_query;
+    o.pattern_hook = render::parse_time_pattern;
+    auto s = parse(
+        "#declare S = difference { sphere { 0, 1 } sphere { 0, 0.5 } translate x }\n"
+        "#declare P = pigment { gradient x color_map { [0 rgb <0, 0, 1>] [1 rgb <1, 0, 0>] } }\n"
+        "#declare C = eval_pigment(P, <0.25, 7, 7>);\n"
+        "sphere { <inside(S, <0.2, 0, 0>), inside(S, <1, 0, 0>), inside(S, <1.7, 0, 0>)>, "
+        "1 + C.red + 10 * C.blue }\n",
+        o);
+    EXPECT_EQ(std::get<scene::Sphere>(s.objects[0].shape).center, Vec3(1, 0, 1));
+    EXPECT_DOUBLE_EQ(radius(s, 0), 1 + 0.25 + 7.5);
+    // With no renderer to ask, inside() warns and gives 0.
     EXPECT_EQ(warnings_of("#declare S = sphere { 0, 1 }\n#declare A = inside(S, <0, 0, 0>);\n"
-                          "#declare P = pigment { rgb 1 }\n#declare C = eval_pigment(P, 0);\n"
-                          "sphere { 0, A + C.red + 1 }"),
-              (std::vector<std::string>{"2:14: 'inside()' is not supported: it gives 0",
-                                        "4:14: 'eval_pigment()' is not supported: it gives 0"}));
+                          "sphere { 0, A + 1 }"),
+              (std::vector<std::string>{"2:14: 'inside()' is not supported: it gives 0"}));
+}
+
+TEST(PovLanguage, NowAndDatetime) {
+    auto s = parse("#declare D = datetime(0.5, \"%Y/%m/%d %H\");\n"
+                   "sphere { 0, strlen(D) + (now > 9000) + (strcmp(D, \"2000/01/01 12\") = 0) }");
+    EXPECT_DOUBLE_EQ(radius(s, 0), 13 + 1 + 1);
 }
 
 }  // namespace
