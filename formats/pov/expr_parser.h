@@ -431,7 +431,8 @@ public:
         if (!p_.options.pattern_hook)
             throw Unsupported(at, "eval_pigment() while parsing is not supported here");
         Num n{{0, 0, 0, 0, 0}, 5};
-        p_.options.pattern_hook(p_.options.hook_user, f, q, n.v);
+        const scene::FunctionEnv env = p_.function_env();
+        p_.options.pattern_hook(&env, f, q, n.v);
         return Value(n);
     }
 

@@ -541,9 +541,10 @@ Value Parser::call_function_now(int index, const std::string& name, const FileLo
         !options.pattern_hook)
         throw Unsupported(at, "calling the pattern or pigment function '" + name +
                                   "' while parsing is not supported yet");
-    scene::FunctionEnv env = function_env();
+    const scene::FunctionEnv outer = function_env();
+    scene::FunctionEnv env = outer;
     env.pattern = options.pattern_hook;
-    env.user = options.hook_user;
+    env.user = &outer;
     if (!f.is_vector())
         return Num::scalar(scene::evaluate_function(env, index, args.data(),
                                                     static_cast<int>(args.size())));

@@ -60,10 +60,10 @@ struct ParseOptions {
     const std::atomic<bool>* cancel = nullptr;
     // Hooks the application installs for what lives above the importer (formats/ must not
     // depend on render/); a null hook makes the feature that needs it "not supported".
-    // Pattern and pigment functions called at parse time (scene::FunctionEnv::pattern).
+    // Pattern and pigment functions called at parse time (scene::FunctionEnv::pattern); `user`
+    // is the parser's scene::FunctionEnv (the functions declared so far, noise_generator).
     void (*pattern_hook)(const void* user, const scene::Function& f, const Vec3& p,
                          double out[5]) = nullptr;
-    const void* hook_user = nullptr;
     // trace(), inside() and min_extent()/max_extent() at parse time (scene/object_query.h):
     // the application prepares the object with the renderer's geometry. Unset: those
     // functions are not supported.

@@ -93,6 +93,17 @@ void Parser::parse_pattern_arguments(PatternKind kind, scene::PatternParams& pp,
             pp.interior_factor = pp.exterior_factor = 1;
             pp.fractal_exponent = 2;
             break;
+        case PatternKind::PigmentPattern: {  // pigment_pattern { PIGMENT }
+            expect_open("pigment_pattern");
+            FileLoc po = loc();
+            auto pg = std::make_shared<scene::Pigment>();  // POV-Ray's Create_Pigment: black
+            pg->color = scene::ColorFT(Color(0, 0, 0));
+            pg->loc = po;
+            parse_pigment_body(*pg);
+            expect_close("pigment_pattern", po);
+            pp.pigment = std::move(pg);
+            break;
+        }
         case PatternKind::Function:  // function { expression } (functions.cpp)
             pp.function = parse_function_definition();
             break;

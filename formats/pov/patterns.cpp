@@ -45,7 +45,7 @@ constexpr PatternWord kPatternWords[] = {
     {"cubic", PatternKind::Cubic},         {"checker", PatternKind::Checker},
     {"gradient", PatternKind::Gradient},   {"average", PatternKind::Average},
     {"function", PatternKind::Function},   {"density_file", PatternKind::DensityFile},
-    {"object", PatternKind::Object},
+    {"object", PatternKind::Object},       {"pigment_pattern", PatternKind::PigmentPattern},
 };
 
 std::optional<PatternKind> pattern_keyword(const std::string& w) {
@@ -58,7 +58,7 @@ std::optional<PatternKind> pattern_keyword(const std::string& w) {
 const std::unordered_set<std::string>& unsupported_patterns() {
     static const std::unordered_set<std::string> k = {
         "aoi", "image_pattern", "pavement",
-        "pigment_pattern", "slope", "tiling", "magnet", "gradient_map", "material_map", "tiles"};
+        "slope", "tiling", "magnet", "gradient_map", "material_map", "tiles"};
     return k;
 }
 

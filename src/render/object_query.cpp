@@ -54,16 +54,22 @@ std::shared_ptr<const scene::PreparedObject> prepare_object_query(const scene::S
     return std::make_shared<PreparedQueryObject>(one);
 }
 
-void parse_time_pattern(const void*, const scene::Function& f, const Vec3& p, double out[5]) {
+void parse_time_pattern(const void* user, const scene::Function& f, const Vec3& p,
+                        double out[5]) {
     for (int k = 0; k < 5; ++k) out[k] = 0;
     if (f.pigment.empty()) return;
+    PatternContext ctx;
+    if (const auto* env = static_cast<const scene::FunctionEnv*>(user)) {
+        ctx.noise_generator = env->noise_generator;
+        ctx.functions = env->functions;
+    }
     const scene::Pigment& pg = f.pigment[0];
     if (f.kind == scene::FunctionKind::Pattern) {
-        out[0] = evaluate_pattern(pg.kind, pg.params, pg.transform.inverse_point(p), {});
+        out[0] = evaluate_pattern(pg.kind, pg.params, pg.transform.inverse_point(p), ctx);
         return;
     }
     scene::ColorFT c;
-    PigmentEvaluator(nullptr).evaluate(pg, {p, {}, false}, &c);
+    PigmentEvaluator(nullptr, ctx).evaluate(pg, {p, {}, false}, &c);
     out[0] = c.rgb.r;
     out[1] = c.rgb.g;
     out[2] = c.rgb.b;

@@ -37,7 +37,7 @@ std::shared_ptr<const scene::PreparedObject> prepare_object_query(const scene::S
 
 // ParseOptions::pattern_hook: a pattern function's value (out[0]) or a pigment function's color
 // (out = rgbft) when the scene calls one while parsing (shapes.inc's HF macros do). `user` is
-// unused; functions called from inside such a pattern are not available there.
+// the parser's scene::FunctionEnv: its noise_generator and the functions declared so far.
 void parse_time_pattern(const void* user, const scene::Function& f, const Vec3& p, double out[5]);
 
 }  // namespace glint::render

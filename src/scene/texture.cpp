@@ -42,6 +42,7 @@ const char* pattern_name(PatternKind kind) {
         case PatternKind::Triangular: return "triangular";
         case PatternKind::Cubic: return "cubic";
         case PatternKind::Object: return "object";
+        case PatternKind::PigmentPattern: return "pigment_pattern";
         case PatternKind::Average: return "average";
     }
     return "?";

@@ -31,6 +31,8 @@ enum class PatternKind {
     Brick, Hexagon, Square, Triangular, Cubic,
     // object { OBJECT A, B }: entries[1] inside the object (PatternParams::object), else [0]
     Object,
+    // pigment_pattern { PIGMENT }: the pigment's grey value (PatternParams::pigment)
+    PigmentPattern,
     // pigment { average pigment_map { [w P] ... } }, normal { average normal_map {...} }
     Average,
 };
@@ -123,6 +125,8 @@ struct ImageMap {
     FileLoc loc;
 };
 
+struct Pigment;
+
 struct PatternParams {
     Vec3 vector{0, 1, 0};  // gradient direction
     double frequency = 1;
@@ -160,6 +164,9 @@ struct PatternParams {
     double exterior_factor = 1, interior_factor = 1;
     int function = -1;  // PatternKind::Function: index into Scene::functions
     int object = -1;    // PatternKind::Object: index into Scene::pattern_objects
+    // PatternKind::PigmentPattern: the pigment, its transform relative to this pattern's space
+    // (shared by copies).
+    std::shared_ptr<const Pigment> pigment;
 };
 
 struct ColorMapEntry {

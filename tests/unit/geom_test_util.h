@@ -29,6 +29,13 @@ inline std::unique_ptr<render::Geometry> build(const scene::Scene& s) {
     return render::build_geometry(s, scene::analyze(s), diag);
 }
 
+// scene_of({o}) without the initializer_list (see build_one).
+inline scene::Scene scene_with(scene::Object o) {
+    std::vector<scene::Object> objects;
+    objects.push_back(std::move(o));
+    return scene_of(std::move(objects));
+}
+
 inline std::unique_ptr<render::Geometry> build_one(scene::Shape shape, Transform xf = {}) {
     // Not scene_of({...}): copying an Object out of an initializer_list trips GCC 12's
     // -Wmaybe-uninitialized false positive on the Shape variant at -O3.

@@ -151,6 +151,26 @@ TEST(Pigment, PigmentFunctionCalledFromAFunction) {
     EXPECT_EQ(eval(e, p, Vec3(1.5, 0.5, 0.5)).rgb, Color(0, 0, 0));  // blue square: red 0
 }
 
+// pigment { pigment_pattern { checker rgb 1, rgb <0, 0, 1> scale 2 } color_map { ... } }:
+// the inner pigment's grey (0.297 r + 0.589 g + 0.114 b), the inner transform relative to
+// the pattern's space.
+TEST(Pigment, PigmentPatternIsTheInnerPigmentsGrey) {
+    auto inner = std::make_shared<Pigment>();
+    inner->kind = scene::PatternKind::Checker;
+    inner->entries = {plain(Color(1, 1, 1)), plain(Color(0, 0, 1))};
+    inner->transform = Transform::scale(Vec3(2, 2, 2));
+    Pigment p;
+    p.kind = scene::PatternKind::PigmentPattern;
+    p.params.pigment = inner;
+    p.params.frequency = 0;  // the raw value, no fmod
+    p.color_map = {{0.0, ColorFT(Color(0, 0, 0))}, {1.0, ColorFT(Color(1, 0, 0))}};
+    p.transform = Transform::translate(Vec3(10, 0, 0));
+    PigmentEvaluator e(nullptr);
+    EXPECT_NEAR(eval(e, p, Vec3(11, 1, 1)).rgb.r, 1.0, 1e-12);    // white square
+    EXPECT_NEAR(eval(e, p, Vec3(13, 1, 1)).rgb.r, 0.114, 1e-12);  // blue square
+    EXPECT_EQ(eval(e, p, Vec3(13, 1, 1)).rgb.g, 0.0);
+}
+
 TEST(Pigment, NestedEntriesLiveInTheParentsPatternSpace) {
     // POV-Ray evaluates entries at the parent's warped pattern-space point, so an entry's
     // transform is relative: the outer checker is scaled by 10 and the inner one by 0.5 of

@@ -498,7 +498,7 @@ scene::Mesh unit_square() {
 }
 
 TEST(Mesh, UvAndPerFaceMaterial) {
-    scene::Scene s = test::scene_of({test::object(scene::MeshRef{0}, {}, 1)});
+    scene::Scene s = test::scene_with(test::object(scene::MeshRef{0}, {}, 1));
     s.meshes.push_back(unit_square());
     auto g = test::build(s);
     Hit h;
@@ -565,7 +565,7 @@ TEST(Mesh, SkippedFacesAreNamedByTheirObject) {
 }
 
 TEST(Mesh, EmptyMeshIsSkippedNotFatal) {
-    scene::Scene s = test::scene_of({test::object(scene::MeshRef{0})});
+    scene::Scene s = test::scene_with(test::object(scene::MeshRef{0}));
     s.meshes.emplace_back();
     Diagnostics diag;
     auto g = render::build_geometry(s, scene::analyze(s), diag);

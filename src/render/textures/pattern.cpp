@@ -539,6 +539,14 @@ double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
             return ctx.objects && params.object >= 0 && ctx.objects->inside(params.object, p)
                        ? 1.0
                        : 0.0;
+        case PatternKind::PigmentPattern: {
+            // POV-Ray's pigment_pattern: the pigment's grey where it has a color, else 0.
+            scene::ColorFT c;
+            if (!params.pigment ||
+                !PigmentEvaluator(ctx.textures, ctx).evaluate(*params.pigment, {p, {}, false}, &c))
+                return 0.0;
+            return 0.297 * c.rgb.r + 0.589 * c.rgb.g + 0.114 * c.rgb.b;
+        }
         case PatternKind::Leopard:
             return leopard(p);
         case PatternKind::Mandel:
