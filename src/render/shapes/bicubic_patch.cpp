@@ -2,10 +2,9 @@
 // along u and v until a piece is flat enough or u_steps / v_steps halvings are done; each
 // piece is the two triangles of its corners, bounded by a sphere about its control points,
 // and a hit takes the patch's own normals at the triangle's corners, interpolated.
-// POV-Ray measures flatness in world space (it moves the control points with every
-// transform), so the factory takes the object's transform and bakes it in. Its flatness test
-// adds the plane's offset where it should subtract it, so a piece counts as flat only where
-// its plane runs near the origin; that is kept, since it decides where POV-Ray's facets are.
+// POV-Ray measures flatness (the control points' largest distance from the plane of three
+// corners) in world space, as it moves the control points with every transform, so the
+// factory takes the object's transform and bakes it in.
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -78,7 +77,8 @@ void split_v(const Patch& p, Patch& lo, Patch& hi) {
     }
 }
 
-// POV-Ray's flatness measure; negative where the corners give no plane.
+// POV-Ray's flatness measure: the control points' largest distance from the plane through
+// corners (0,0), (0,3), (3,0) (others where those coincide); negative where there is none.
 double flatness_of(const Patch& p) {
     const Vec3 v0 = p[0][0];
     Vec3 v1 = p[0][3], v2;
@@ -100,7 +100,7 @@ double flatness_of(const Patch& p) {
     double dist = 0;
     for (const auto& row : p)
         for (const Vec3& q : row) {
-            const double e = nl < kEpsilon ? 0.0 : std::fabs((dot(q, n) + d) / nl);
+            const double e = nl < kEpsilon ? 0.0 : std::fabs((dot(q, n) - d) / nl);
             dist = std::max(dist, e);
         }
     return dist;
