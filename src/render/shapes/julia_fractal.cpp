@@ -18,6 +18,9 @@ using julia::OrbitStack;
 
 constexpr double kTolerance = 1e-7;  // fractal.cpp's Fractal_Tolerance
 constexpr double kEpsilon = 1e-10;   // POV-Ray's EPSILON
+// POV-Ray's MIN_ISECT_DEPTH, in world units there; here in the object's (the same unless
+// the fractal is scaled).
+constexpr double kMinDepth = 1e-4;
 
 class JuliaFractalPrim final : public Primitive {
 public:
@@ -116,11 +119,21 @@ private:
                 orbit_.stays(at, stack.data());
             }
             const double t = depth / len;
+            // POV-Ray's MIN_ISECT_DEPTH: a crossing this close is dropped by its caller, and
+            // outside CSG it is the only one the fractal reports, so the ray sees none.
+            if (depth < kMinDepth) {
+                if (first_only) return;
+                step = step_next;
+                current = after;
+                continue;
+            }
             if (t > 0 && t < tmax) {
                 LocalHit& h = hits->emplace_back();
                 h.t = t;
                 h.p = at;
-                h.p_error = rounding_error(at, 8) + Vec3(2 * kTolerance);
+                // Only rounding: rays leaving the surface start where POV-Ray's do (on the
+                // set's side), and the march's dropped near crossing keeps them off it.
+                h.p_error = rounding_error(at, 8);
                 Vec3 n = orbit_.normal(orbit_.iterations(), stack.data());
                 const double nl = length(n);
                 n = nl > 0 && std::isfinite(nl) ? n / nl : -dir;
