@@ -56,6 +56,17 @@ TEST(JuliaFractal, QuaternionSquareWithZeroCIsTheUnitBall) {
     }
 }
 
+TEST(JuliaFractal, RaysLeavingTheSurfaceDoNotHitItAgain) {
+    // POV-Ray drops crossings nearer than 1e-4, and outside CSG the fractal reports only its
+    // first: a ray from a hit point, outwards or along the surface, passes.
+    auto g = build_one(ball());
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0.3, 0.2, -5}, {0, 0, 1}), &h));
+    const Vec3 p = h.p;
+    EXPECT_FALSE(g->intersect(ray(p, normalize(p)), &h));
+    EXPECT_FALSE(g->intersect(ray(p, normalize(cross(p, Vec3(0, 1, 0)))), &h));
+}
+
 TEST(JuliaFractal, AllHitsOfTheBall) {
     auto node = node_of(ball());
     render::HitList hits;

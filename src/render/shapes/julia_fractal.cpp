@@ -3,7 +3,9 @@
 // lands on the other side of the set's boundary; bisection then narrows the crossing to
 // 1e-7, and the normal comes from the orbit of the point on the set's side. The march keeps
 // POV-Ray's depth bookkeeping, including that after a crossing the next depths are counted
-// from the crossing rather than from where the march resumes: CSG sees the same hits.
+// from the crossing rather than from where the march resumes: CSG sees the same hits. Hits
+// carry no offset for rays that leave them: as in POV-Ray, such a ray starts on the set's
+// side and the crossing it finds at once is dropped (MIN_ISECT_DEPTH).
 #include <algorithm>
 #include <cmath>
 
