@@ -20,13 +20,11 @@ using julia::OrbitStack;
 
 constexpr double kTolerance = 1e-7;  // fractal.cpp's Fractal_Tolerance
 constexpr double kEpsilon = 1e-10;   // POV-Ray's EPSILON
-// POV-Ray's MIN_ISECT_DEPTH, in world units there; here in the object's (the same unless
-// the fractal is scaled).
-constexpr double kMinDepth = 1e-4;
+constexpr double kMinDepth = 1e-4;   // POV-Ray's MIN_ISECT_DEPTH
 
 class JuliaFractalPrim final : public Primitive {
 public:
-    explicit JuliaFractalPrim(const scene::JuliaFractal& s) : orbit_(s) {}
+    JuliaFractalPrim(const scene::JuliaFractal& s, const Transform& xf) : orbit_(s), xf_(xf) {}
 
     Bounds3 bounds() const override {
         const double r = orbit_.radius();
@@ -71,6 +69,9 @@ private:
         const double len = length(ray.dir);
         if (!(len > 0) || !std::isfinite(len)) return;
         const Vec3 dir = ray.dir / len;
+        // Object units to the placing space's along this ray (MIN_ISECT_DEPTH is in world
+        // units; the transforms of enclosing CSG are not known here).
+        const double scale = length(xf_.vector(dir));
         double depth, depth_max;
         if (!bound(ray.origin, dir, &depth, &depth_max)) return;
         if (depth_max < kTolerance) return;
@@ -123,7 +124,7 @@ private:
             const double t = depth / len;
             // POV-Ray's MIN_ISECT_DEPTH: a crossing this close is dropped by its caller, and
             // outside CSG it is the only one the fractal reports, so the ray sees none.
-            if (depth < kMinDepth) {
+            if (depth * scale < kMinDepth) {
                 if (first_only) return;
                 step = step_next;
                 current = after;
@@ -149,18 +150,20 @@ private:
     }
 
     Orbit orbit_;
+    Transform xf_;
 };
 
 }  // namespace
 
-std::unique_ptr<Primitive> make_julia_fractal(const scene::JuliaFractal& s, const char** why) {
+std::unique_ptr<Primitive> make_julia_fractal(const scene::JuliaFractal& s, const Transform& xf,
+                                              const char** why) {
     bool finite = std::isfinite(s.slice_distance) && std::isfinite(s.precision);
     for (int i = 0; i < 4; ++i) finite = finite && std::isfinite(s.c[i]) && std::isfinite(s.slice[i]);
     if (!finite || s.slice[3] == 0 || s.max_iteration < 1 || !(s.precision >= 1)) {
         *why = "julia_fractal with a zero slice t, non-finite numbers or no iterations";
         return nullptr;
     }
-    return std::make_unique<JuliaFractalPrim>(s);
+    return std::make_unique<JuliaFractalPrim>(s, xf);
 }
 
 }  // namespace glint::render
