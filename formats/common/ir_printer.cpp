@@ -310,7 +310,33 @@ public:
                 else if constexpr (std::is_same_v<T, Text>)
                     return "text ttf \"" + v.file + "\" \"" + v.text + "\" " + num(v.thickness) + " " +
                            vec(v.offset);
-                else {
+                else if constexpr (std::is_same_v<T, JuliaFractal>) {
+                    static const char* kFns[] = {
+                        "exp",   "ln",   "sin",   "asin", "cos",   "acos",
+                        "tan",   "atan", "sinh",  "asinh", "cosh", "acosh",
+                        "tanh",  "atanh", "pwr",  "sqr",  "cube",  "reciprocal"};
+                    auto v4 = [&](const double* a) {
+                        return "<" + num(a[0]) + ", " + num(a[1]) + ", " + num(a[2]) + ", " +
+                               num(a[3]) + ">";
+                    };
+                    std::string r = "julia_fractal " + v4(v.c) +
+                                    (v.algebra == JuliaAlgebra::Quaternion ? " quaternion "
+                                                                           : " hypercomplex ") +
+                                    kFns[static_cast<int>(v.function)];
+                    if (v.function == JuliaFunction::Pwr)
+                        r += " (" + num(v.exponent.x) + ", " + num(v.exponent.y) + ")";
+                    return r + " max_iteration " + std::to_string(v.max_iteration) +
+                           " precision " + num(v.precision) + " slice " + v4(v.slice) + " " +
+                           num(v.slice_distance);
+                } else if constexpr (std::is_same_v<T, BicubicPatch>) {
+                    std::string r = "bicubic_patch type " + std::to_string(v.type) +
+                                    " flatness " + num(v.flatness) + " u_steps " +
+                                    std::to_string(v.u_steps) + " v_steps " +
+                                    std::to_string(v.v_steps);
+                    for (const auto& row : v.points)
+                        for (const Vec3& p : row) r += " " + vec(p);
+                    return r;
+                } else {
                     static const char* kOps[] = {"union", "merge", "intersection", "difference"};
                     return std::string(kOps[static_cast<int>(v.op)]) + " (" +
                            std::to_string(v.children.size()) + " children)";

@@ -1,10 +1,12 @@
-// POV-Ray's quadric, polygon, prism, lathe, sor, superellipsoid, blob, height_field and
-// poly/cubic/quartic/polynomial bodies, with POV-Ray's checks on point counts and order
-// (reference manual 3.4.1 "Finite Solid Primitives", 3.4.3 "Finite Patch Primitives",
+// POV-Ray's quadric, polygon, prism, lathe, sor, superellipsoid, blob, height_field,
+// poly/cubic/quartic/polynomial, julia_fractal and bicubic_patch bodies, with POV-Ray's checks
+// on point counts and order (reference manual 3.4.1 "Finite Solid Primitives", 3.4.3 "Finite Patch Primitives",
 // 3.4.4 "Infinite Solid Primitives").
 #include "formats/pov/solids.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <unordered_set>
 
 #include "formats/pov/unsupported.h"
@@ -220,6 +222,125 @@ scene::Superellipsoid parse_superellipsoid(Parser& p) {
     return {v.x, v.y};
 }
 
+// julia_fractal { <c> keywords } (parse.cpp Parse_Julia_Fractal): the keywords in any order,
+// the last of each kind winning.
+scene::JuliaFractal parse_julia_fractal(Parser& p) {
+    using F = scene::JuliaFunction;
+    static const std::pair<const char*, F> kFunctions[] = {
+        {"exp", F::Exp},     {"ln", F::Ln},       {"sin", F::Sin},     {"asin", F::Asin},
+        {"cos", F::Cos},     {"acos", F::Acos},   {"tan", F::Tan},     {"atan", F::Atan},
+        {"sinh", F::Sinh},   {"asinh", F::Asinh}, {"cosh", F::Cosh},   {"acosh", F::Acosh},
+        {"tanh", F::Tanh},   {"atanh", F::Atanh}, {"sqr", F::Sqr},     {"cube", F::Cube},
+        {"reciprocal", F::Reciprocal}};
+    scene::JuliaFractal s;
+    Num c = p.parse_num(4);
+    for (int i = 0; i < 4; ++i) s.c[i] = c.v[i];
+    FileLoc function_at;
+    for (;;) {
+        p.peek();
+        FileLoc at = p.loc();
+        if (p.accept("max_iteration")) {
+            double v = std::floor(p.parse_float());
+            if (!(v < 1e7)) p.fail_at(at, "max_iteration is too large (at most 10000000)");
+            s.max_iteration = v < 1 ? 1 : static_cast<int>(v);
+        } else if (p.accept("slice")) {
+            Num n = p.parse_num(4);
+            p.skip_comma();
+            s.slice_distance = p.parse_float();
+            double len2 = 0;
+            for (int i = 0; i < 4; ++i) len2 += n.v[i] * n.v[i];
+            if (std::fabs(len2) < kEps) p.fail_at(at, "julia_fractal slice vector is zero");
+            if (std::fabs(n.v[3]) < kEps) p.fail_at(at, "julia_fractal slice t component is zero");
+            for (int i = 0; i < 4; ++i) s.slice[i] = n.v[i] / std::sqrt(len2);
+        } else if (p.accept("precision")) {
+            s.precision = std::max(1.0, p.parse_float());
+        } else if (p.accept("quaternion")) {
+            s.algebra = scene::JuliaAlgebra::Quaternion;
+        } else if (p.accept("hypercomplex")) {
+            s.algebra = scene::JuliaAlgebra::Hypercomplex;
+        } else if (p.accept("pwr")) {
+            s.function = F::Pwr;
+            function_at = at;
+            p.expect("(", "after pwr");
+            s.exponent.x = p.parse_float();
+            p.skip_comma();
+            s.exponent.y = p.parse_float();
+            p.expect(")", "after pwr's exponent");
+        } else {
+            bool found = false;
+            for (const auto& [name, f] : kFunctions)
+                if (p.accept(name)) {
+                    s.function = f;
+                    function_at = at;
+                    found = true;
+                    break;
+                }
+            if (!found) break;
+        }
+    }
+    if (s.algebra == scene::JuliaAlgebra::Quaternion && s.function != F::Sqr &&
+        s.function != F::Cube)
+        p.fail_at(function_at, "julia_fractal: quaternion supports only sqr and cube");
+    return s;
+}
+
+// bicubic_patch { type T flatness F u_steps U v_steps V [uv_vectors 4 x <u,v>] 16 points }
+// (parse.cpp Parse_Bicubic_Patch); a leading number starts the old positional form. A number
+// right before the first point ends there (`u_steps 8 <0, 0, 2>` compares nothing).
+scene::BicubicPatch parse_bicubic_patch(Parser& p, const FileLoc& kw) {
+    scene::BicubicPatch s;
+    s.type = -1;
+    auto steps = [&](int* out) {
+        p.peek();
+        FileLoc at = p.loc();
+        double v = parse_float_before_points(p);
+        if (!(v > -1e6 && v < 1e6)) p.fail_at(at, "bicubic_patch steps out of range");
+        *out = static_cast<int>(v);
+    };
+    for (;;) {
+        const Token& t = p.peek();
+        if (t.kind == TokKind::Number || t.is("(") || t.is("-") || t.is("+")) {
+            p.diag.warning(p.loc(), "should use keywords for bicubic parameters");
+            s.type = static_cast<int>(parse_float_before_points(p));
+            s.flatness = s.type == 2 || s.type == 3 ? parse_float_before_points(p) : 0.1;
+            steps(&s.u_steps);
+            steps(&s.v_steps);
+            break;
+        }
+        if (p.accept("type")) {
+            s.type = static_cast<int>(parse_float_before_points(p));
+        } else if (p.accept("flatness")) {
+            s.flatness = parse_float_before_points(p);
+        } else if (p.accept("u_steps")) {
+            steps(&s.u_steps);
+        } else if (p.accept("v_steps")) {
+            steps(&s.v_steps);
+        } else if (p.accept("accuracy")) {
+            parse_float_before_points(p);  // type 0's old per-ray accuracy: no effect in 3.7
+        } else if (p.accept("uv_vectors")) {
+            for (int i = 0; i < 4; ++i) {
+                if (i > 0) p.skip_comma();
+                s.uv[i] = parse_uv(p);
+            }
+            break;
+        } else {
+            break;
+        }
+    }
+    if (s.type > 1) {
+        p.diag.warning(kw, "bicubic_patch type no longer supported: using type 1");
+        s.type = 1;
+    }
+    if (s.type < 0) p.fail_at(kw, "undefined bicubic_patch type");
+    p.skip_comma();
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            if (i + j > 0) p.skip_comma();
+            s.points[i][j] = p.parse_vector();
+        }
+    return s;
+}
+
 // Component modifiers: transforms (kept), textures (parsed, ignored with one warning).
 void parse_component_mods(Parser& p, scene::BlobComponent& c, bool* warned) {
     for (;;) {
@@ -412,7 +533,7 @@ scene::Poly parse_poly(Parser& p, const std::string& w) {
 bool is_solid_keyword(const std::string& w) {
     static const std::unordered_set<std::string> k = {
         "quadric", "polygon", "prism", "lathe", "sor", "superellipsoid", "blob", "height_field",
-        "poly", "cubic", "quartic", "polynomial"};
+        "poly", "cubic", "quartic", "polynomial", "julia_fractal", "bicubic_patch"};
     return k.count(w) > 0;
 }
 
@@ -426,6 +547,8 @@ void parse_solid_body(Parser& p, const std::string& w, const FileLoc& kw, scene:
     else if (w == "superellipsoid") *out = parse_superellipsoid(p);
     else if (w == "blob") *out = parse_blob(p, kw);
     else if (w == "height_field") *out = parse_height_field(p, left_out);
+    else if (w == "julia_fractal") *out = parse_julia_fractal(p);
+    else if (w == "bicubic_patch") *out = parse_bicubic_patch(p, kw);
     else *out = parse_poly(p, w);
 }
 

@@ -146,6 +146,40 @@ struct Poly {
     bool sturm = false;
 };
 
+// julia_fractal (POV-Ray 3.7 manual 2.4.1.5; fractal.cpp, quatern.cpp, hcmplx.cpp): the 3D
+// slice of a 4D Julia set of z -> f(z) + c, the points whose orbit stays inside the escape
+// radius for max_iteration steps. Quaternion algebra takes sqr and cube only.
+enum class JuliaAlgebra { Quaternion, Hypercomplex };
+// In POV-Ray's order (its STYPE list): the hypercomplex functions apply a complex one.
+enum class JuliaFunction {
+    Exp, Ln, Sin, Asin, Cos, Acos, Tan, Atan, Sinh, Asinh, Cosh, Acosh, Tanh, Atanh, Pwr,
+    Sqr, Cube, Reciprocal
+};
+struct JuliaFractal {
+    double c[4] = {1, 0, 0, 0};  // the Julia parameter <x, y, z, t>
+    JuliaAlgebra algebra = JuliaAlgebra::Quaternion;
+    JuliaFunction function = JuliaFunction::Sqr;
+    Vec2 exponent{0, 0};  // pwr's complex exponent
+    int max_iteration = 20;
+    double precision = 20;  // the march never steps less than 1 / precision
+    // The slice: the 4D points with dot(slice, p) = slice_distance, slice a unit vector whose
+    // t component is not zero (the importer normalizes it).
+    double slice[4] = {0, 0, 0, 1};
+    double slice_distance = 0;
+};
+
+// bicubic_patch (POV-Ray 3.7 manual 2.4.3.1; bezier.cpp): a Bezier patch of 4 x 4 control
+// points (row i runs along u, column j along v), cut into flat pieces up to u_steps / v_steps
+// halvings and rendered as their triangles with normals interpolated from the patch. Types
+// 0 and 1 give the same surface (POV-Ray cuts per ray or once).
+struct BicubicPatch {
+    int type = 1;
+    double flatness = 0;
+    int u_steps = 0, v_steps = 0;
+    Vec3 points[4][4];
+    Vec2 uv[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};  // uv_vectors: the corners' texture uv
+};
+
 // text (POV-Ray 3.7 manual 2.4.2.7): the string's TrueType glyphs extruded from z = 0 to
 // z = thickness, laid out along +x from the origin, `offset` added after each character.
 struct Text {
@@ -165,7 +199,8 @@ struct Csg {
 
 using Shape = std::variant<Sphere, Plane, Box, Cylinder, Cone, Disc, Torus, Triangle,
                            SmoothTriangle, MeshRef, Csg, Quadric, Polygon, Prism, Lathe, Sor,
-                           Superellipsoid, Blob, HeightField, Poly, Text>;
+                           Superellipsoid, Blob, HeightField, Poly, Text, JuliaFractal,
+                           BicubicPatch>;
 
 // Names for messages and `glint ir`, in variant order.
 const char* shape_name(const Shape& shape);

@@ -195,6 +195,25 @@ private:
         check_finite(s.thickness, loc, "text thickness");
         check_finite(s.offset, loc, "text offset");
     }
+    void shape(const JuliaFractal& s, const FileLoc& loc) {
+        for (int i = 0; i < 4; ++i) {
+            check_finite(s.c[i], loc, "julia_fractal parameter");
+            check_finite(s.slice[i], loc, "julia_fractal slice");
+        }
+        check_finite(s.slice_distance, loc, "julia_fractal slice distance");
+        if (s.slice[3] == 0) fail(loc, "julia_fractal slice t component is zero");
+        if (s.max_iteration < 1 || !(s.precision >= 1))
+            fail(loc, "julia_fractal needs max_iteration >= 1 and precision >= 1");
+        if (s.algebra == JuliaAlgebra::Quaternion && s.function != JuliaFunction::Sqr &&
+            s.function != JuliaFunction::Cube)
+            fail(loc, "julia_fractal: quaternion supports only sqr and cube");
+    }
+    void shape(const BicubicPatch& s, const FileLoc& loc) {
+        for (const auto& row : s.points)
+            for (const Vec3& p : row) check_finite(p, loc, "bicubic_patch control point");
+        check_finite(s.flatness, loc, "bicubic_patch flatness");
+        if (s.u_steps > 12 || s.v_steps > 12) fail(loc, "bicubic_patch steps must be at most 12");
+    }
     void shape(const Csg& s, const FileLoc&) {
         for (const Object& c : s.children) object(c, false);
     }

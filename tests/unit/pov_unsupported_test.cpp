@@ -38,17 +38,15 @@ TEST(PovUnsupported, ObjectsAreLeftOutWithOneWarningEach) {
         "parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }\n"
         "julia_fractal { <-0.083, 0.0, -0.83, -0.025> quaternion sqr max_iteration 8 }\n"
         "sphere_sweep { linear_spline 2, <0, 0, 0>, 0.5, <1, 0, 0>, 0.5 }\n"
-        "bicubic_patch { type 1 flatness 0.01 u_steps 4 v_steps 4 <0,0,0> }\n"
+        "bicubic_patch { type 1 u_steps 4 v_steps 4 <0,0,0>,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0 }\n"
         "ovus { 1, 0.5 }\n"
         "lemon { <0, 0, 0>, 1, <0, 1, 0>, 0.5, 1 }\n");
-    EXPECT_EQ(p.scene.objects.size(), 1u);  // the sphere
+    EXPECT_EQ(p.scene.objects.size(), 3u);  // the sphere, julia_fractal and bicubic_patch
     EXPECT_EQ(p.warnings,
               (std::vector<std::string>{
                   "2:1: 'isosurface' is not supported: the object is left out",
                   "6:1: 'parametric' is not supported: the object is left out",
-                  "7:1: 'julia_fractal' is not supported: the object is left out",
                   "8:1: 'sphere_sweep' is not supported: the object is left out",
-                  "9:1: 'bicubic_patch' is not supported: the object is left out",
                   "10:1: 'ovus' is not supported: the object is left out",
                   "11:1: 'lemon' is not supported: the object is left out"}));
 }

@@ -148,6 +148,11 @@ struct Builder {
                     p = make_height_field(s, obj.loc, obj.transform, &why);
                 } else if constexpr (std::is_same_v<T, scene::Poly>) {
                     p = make_poly(s, &why);
+                } else if constexpr (std::is_same_v<T, scene::JuliaFractal>) {
+                    p = make_julia_fractal(s, obj.transform, &why);
+                } else if constexpr (std::is_same_v<T, scene::BicubicPatch>) {
+                    baked = true;
+                    p = make_bicubic_patch(s, obj.transform, &why);
                 }
             },
             obj.shape);

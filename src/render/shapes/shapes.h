@@ -37,6 +37,14 @@ std::unique_ptr<Primitive> make_blob(const scene::Blob& s, const char** why);
 std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const FileLoc& loc,
                                              const Transform& shading, const char** why);
 std::unique_ptr<Primitive> make_poly(const scene::Poly& s, const char** why);
+// julia_fractal.cpp: nullptr with `*why` set for a zero slice t or non-finite numbers. `xf`:
+// the object's transform, which only scales POV-Ray's nearest-hit depth to its units.
+std::unique_ptr<Primitive> make_julia_fractal(const scene::JuliaFractal& s, const Transform& xf,
+                                              const char** why);
+// bicubic_patch.cpp: the patch with `xf` (its object transform) baked into the control points,
+// as POV-Ray subdivides it where it stands.
+std::unique_ptr<Primitive> make_bicubic_patch(const scene::BicubicPatch& s, const Transform& xf,
+                                              const char** why);
 
 }  // namespace glint::render
 
