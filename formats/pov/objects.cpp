@@ -13,7 +13,7 @@ namespace {
 
 const std::unordered_set<std::string>& unsupported_objects() {
     static const std::unordered_set<std::string> k = {
-        "isosurface", "julia_fractal", "parametric", "sphere_sweep", "bicubic_patch", "ovus",
+        "julia_fractal", "parametric", "sphere_sweep", "bicubic_patch", "ovus",
         "lemon", "light_group"};
     return k;
 }

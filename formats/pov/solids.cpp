@@ -412,7 +412,7 @@ scene::Poly parse_poly(Parser& p, const std::string& w) {
 bool is_solid_keyword(const std::string& w) {
     static const std::unordered_set<std::string> k = {
         "quadric", "polygon", "prism", "lathe", "sor", "superellipsoid", "blob", "height_field",
-        "poly", "cubic", "quartic", "polynomial"};
+        "poly", "cubic", "quartic", "polynomial", "isosurface"};
     return k.count(w) > 0;
 }
 
@@ -426,6 +426,7 @@ void parse_solid_body(Parser& p, const std::string& w, const FileLoc& kw, scene:
     else if (w == "superellipsoid") *out = parse_superellipsoid(p);
     else if (w == "blob") *out = parse_blob(p, kw);
     else if (w == "height_field") *out = parse_height_field(p, left_out);
+    else if (w == "isosurface") *out = parse_isosurface(p, kw);
     else *out = parse_poly(p, w);
 }
 

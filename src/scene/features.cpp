@@ -159,7 +159,8 @@ std::vector<std::string> Features::used() const {
     static const Shape kSamples[] = {Sphere{}, Plane{}, Box{}, Cylinder{}, Cone{}, Disc{},
                                      Torus{}, Triangle{}, SmoothTriangle{}, MeshRef{}, Csg{},
                                      Quadric{}, Polygon{}, Prism{}, Lathe{}, Sor{},
-                                     Superellipsoid{}, Blob{}, HeightField{}, Poly{}, Text{}};
+                                     Superellipsoid{}, Blob{}, HeightField{}, Poly{}, Text{},
+                                     Isosurface{}};
     static_assert(std::size(kSamples) == std::variant_size_v<Shape>);
     for (size_t i = 0; i < shapes.size(); ++i)
         if (shapes[i] && i != kSamples[10].index()) out.push_back(shape_name(kSamples[i]));

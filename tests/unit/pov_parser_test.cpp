@@ -329,7 +329,7 @@ TEST(PovMaterials, UnsupportedFeaturesSaySo) {
     EXPECT_EQ(irid, 1);
     EXPECT_DOUBLE_EQ(s.materials.back().texture.finish.phong, 1.0);
     // Objects glint lacks are left out with a warning (pov_unsupported_test.cpp).
-    EXPECT_EQ(error_of("isosurface { }"), "(no error)");
+    EXPECT_EQ(error_of("ovus { }"), "(no error)");
     EXPECT_EQ(warnings_of("sphere { 0, 1 texture { tiles { texture { } tile2 texture { } } } }"),
               std::vector<std::string>{"1:25: 'tiles' is not supported: the texture is its "
                                        "texture_map's first entry"});

@@ -148,6 +148,8 @@ struct Builder {
                     p = make_height_field(s, obj.loc, obj.transform, &why);
                 } else if constexpr (std::is_same_v<T, scene::Poly>) {
                     p = make_poly(s, &why);
+                } else if constexpr (std::is_same_v<T, scene::Isosurface>) {
+                    p = make_isosurface(s, scene, &why);
                 }
             },
             obj.shape);

@@ -10,6 +10,10 @@
 #include "scene/mesh.h"
 #include "scene/shape.h"
 
+namespace glint::scene {
+struct Scene;
+}
+
 namespace glint::render {
 
 std::unique_ptr<Primitive> make_sphere(const scene::Sphere& s);
@@ -37,6 +41,9 @@ std::unique_ptr<Primitive> make_blob(const scene::Blob& s, const char** why);
 std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const FileLoc& loc,
                                              const Transform& shading, const char** why);
 std::unique_ptr<Primitive> make_poly(const scene::Poly& s, const char** why);
+// isosurface.cpp: evaluates the scene's user functions (it keeps a copy of them).
+std::unique_ptr<Primitive> make_isosurface(const scene::Isosurface& s, const scene::Scene& scene,
+                                           const char** why);
 
 }  // namespace glint::render
 

@@ -634,6 +634,15 @@ Vec3 facets_normal(const PatternParams& params, const Vec3& p, const Vec3& norma
 
 }  // namespace
 
+scene::FunctionEnv user_function_env(const PatternContext& ctx) {
+    scene::FunctionEnv env;
+    env.functions = ctx.functions;
+    env.noise_generator = ctx.noise_generator;
+    env.pattern = &function_hook;
+    env.user = &ctx;
+    return env;
+}
+
 bool is_block_pattern(PatternKind kind) {
     switch (kind) {
         case PatternKind::Checker:

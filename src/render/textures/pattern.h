@@ -63,6 +63,10 @@ double evaluate_pattern(scene::PatternKind kind, const scene::PatternParams& par
                         const PatternContext& ctx);
 
 // Checker, Brick, Hexagon, Square, Triangular, Cubic.
+// What evaluating the scene's user functions needs (function patterns, isosurfaces): pattern
+// functions go through the pattern code with `ctx`, which must outlive the result.
+scene::FunctionEnv user_function_env(const PatternContext& ctx);
+
 bool is_block_pattern(scene::PatternKind kind);
 
 // Applies params.warps to a pattern-space point (POV-Ray's Warp_EPoint without the pattern's own
