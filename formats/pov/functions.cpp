@@ -346,9 +346,6 @@ private:
             n.index = callee.internal;
             return add_list(n, a);
         }
-        if (callee.kind == scene::FunctionKind::Pigment && p_.warned_pigment_call())
-            p_.diag.warning(at, "calling the pigment function '" + name +
-                                    "' from a function is not supported yet: it gives 0");
         n.op = FnOp::Call;
         n.index = index;
         if (callee.is_vector()) {

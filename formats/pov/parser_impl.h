@@ -87,7 +87,6 @@ public:
     Value call_spline_now(const scene::Spline& s, const std::string& name);
     scene::FunctionEnv function_env() const;
     void warn_unimplemented_internal(int id, const FileLoc& at);
-    bool warned_pigment_call() { return first_time(" pigment call"); }
     // `sky_sphere { SkyIdent ...}` (parser.cpp): true when the raw tokens ahead are '{' and an
     // identifier holding a declared sky_sphere.
     bool declared_sky_sphere_follows() const {

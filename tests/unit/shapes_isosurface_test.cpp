@@ -7,6 +7,7 @@
 
 #include "geom_test_util.h"
 #include "pov_test_util.h"
+#include "render/render.h"
 #include "render/shapes/object_node.h"
 
 namespace glint {
@@ -130,6 +131,34 @@ TEST(Isosurface, LowMaxGradientLeavesHoles) {
     EXPECT_TRUE(high->intersect(ray({0, 0.9, -5}, {0, 0, 1}), &h));
     EXPECT_NEAR(h.t, 5 - std::sqrt(1 - 0.81), 2 * kAcc);
     EXPECT_FALSE(low->intersect(ray({0, 0.9, -5}, {0, 0, 1}), &h));
+}
+
+TEST(Isosurface, PigmentFunction) {
+    // gradient x gives gray = x on [0, 1): the surface is the plane x = 0.5.
+    auto sc = parse(
+        "#declare P = function { pigment { gradient x color_map { [0 rgb 0] [1 rgb 1] } } }\n"
+        "isosurface { function { P(x, y, z).gray - 0.5 } contained_by { box { 0, 0.99 } } }");
+    auto g = test::build(sc);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({2, 0.5, 0.5}, {-1, 0, 0}), &h));
+    EXPECT_NEAR(h.p.x, 0.5, 2 * kAcc);
+    EXPECT_NEAR(h.ng.x, 1, 1e-3);
+}
+
+TEST(Isosurface, TraceWhileParsing) {
+    pov::ParseOptions opts;
+    opts.object_query = render::answer_object_query;
+    auto sc = pov::testing::parse(
+        "#declare I = isosurface { function { sqrt(x*x + y*y + z*z) - 1 } "
+        "contained_by { box { -2, 2 } } }\n"
+        "#declare N = <0, 0, 0>;\n"
+        "#declare P = trace(I, <0, 0, -5>, z, N);\n"
+        "sphere { P, 0.1 }\n"
+        "sphere { N, 0.1 }\n",
+        opts);
+    ASSERT_EQ(sc.objects.size(), 2u);
+    EXPECT_NEAR(std::get<scene::Sphere>(sc.objects[0].shape).center.z, -1, kAcc);
+    EXPECT_NEAR(std::get<scene::Sphere>(sc.objects[1].shape).center.z, -1, 1e-3);
 }
 
 TEST(IsosurfaceParser, IntoTheIrAndMessages) {

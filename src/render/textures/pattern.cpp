@@ -1,4 +1,5 @@
 #include "render/textures/pattern.h"
+#include "render/textures/pigment.h"
 
 #include <array>
 #include <cmath>
@@ -474,9 +475,14 @@ void function_hook(const void* user, const scene::Function& f, const Vec3& p, do
         out[0] = evaluate_pattern(pg.kind, pg.params, pg.transform.inverse_point(p), ctx);
         return;
     }
-    // Pigment functions would need the pigment evaluator (a layer above); the importer warns
-    // that they evaluate to 0.
-    for (int k = 0; k < 5; ++k) out[k] = 0;
+    // A pigment function: its color (no image maps: the render's image cache is not here).
+    scene::ColorFT c;
+    PigmentEvaluator(nullptr, ctx).evaluate(pg, {p, {}, false}, &c);
+    out[0] = c.rgb.r;
+    out[1] = c.rgb.g;
+    out[2] = c.rgb.b;
+    out[3] = c.filter;
+    out[4] = c.transmit;
 }
 
 // POV-Ray's function_pattern: the function at the point, values above 1 wrapped by fmod.
