@@ -9,6 +9,7 @@
 #include "pov_test_util.h"
 #include "render/render.h"
 #include "render/shapes/object_node.h"
+#include "render/shapes/shapes.h"
 
 namespace glint {
 namespace {
@@ -159,6 +160,31 @@ TEST(Isosurface, TraceWhileParsing) {
     ASSERT_EQ(sc.objects.size(), 2u);
     EXPECT_NEAR(std::get<scene::Sphere>(sc.objects[0].shape).center.z, -1, kAcc);
     EXPECT_NEAR(std::get<scene::Sphere>(sc.objects[1].shape).center.z, -1, 1e-3);
+}
+
+TEST(Isosurface, GradientReportAfterTheRender) {
+    // f = -5x needs max_gradient 5: with 1.1 POV-Ray warns of holes; f = -x with max_gradient 100
+    // gets the advice to lower it. Two copies of one isosurface give one warning.
+    auto sc = parse(
+        "#declare Steep = isosurface { function { -5 * x } }\n"
+        "object { Steep } object { Steep translate 3 * y }\n"
+        "isosurface { function { -x } max_gradient 100 translate 6 * y }\n");
+    auto g = test::build(sc);
+    Hit h;
+    for (double y : {0.0, 3.0, 6.0}) g->intersect(ray({-5, y + 0.5, 0.5}, {1, 0, 0}), &h);
+    std::vector<render::GradientNote> notes;
+    g->gradient_notes(&notes);
+    ASSERT_EQ(notes.size(), 3u);
+    Diagnostics diag;
+    render::report_gradients(notes, sc, diag);
+    ASSERT_EQ(diag.all().size(), 2u);
+    EXPECT_EQ(diag.all()[0].message,
+              "isosurface found a gradient of 5.000 where max_gradient is 1.100: it may have "
+              "holes; raise max_gradient");
+    EXPECT_EQ(diag.all()[0].loc.line, 2);
+    EXPECT_EQ(diag.all()[1].message,
+              "isosurface found a gradient of 1.000 where max_gradient is 100.000: a lower "
+              "max_gradient would render it faster");
 }
 
 TEST(IsosurfaceParser, IntoTheIrAndMessages) {

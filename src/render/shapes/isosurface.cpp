@@ -9,6 +9,9 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
 
 #include "render/shapes/shapes.h"
 #include "render/textures/pattern.h"
@@ -95,8 +98,10 @@ public:
         return !(value(p) > 0);
     }
 
-    // The largest gradient the root search met (POV-Ray's warning after the render).
-    double gradient_found() const { return gradient_.load(std::memory_order_relaxed); }
+    void gradient_notes(std::vector<GradientNote>* out) const override {
+        out->push_back({s_.function, gradient_.load(std::memory_order_relaxed), s_.max_gradient,
+                        s_.evaluate});
+    }
 
 private:
     // A hit: its t and, for one on the container, the face (1..6: -x, +x, -y, +y, -z, +z).
@@ -318,6 +323,36 @@ private:
 };
 
 }  // namespace
+
+void report_gradients(const std::vector<GradientNote>& notes, const scene::Scene& scene,
+                      Diagnostics& diag) {
+    // Copies of one isosurface are reported once, with the steepest gradient any of them met
+    // (POV-Ray's shared ISO_Max_Gradient). Under `evaluate` POV-Ray reports its adapted
+    // gradients, which glint does not keep from ray to ray: nothing is said.
+    std::map<int, GradientNote> by_function;
+    for (const GradientNote& n : notes) {
+        if (n.evaluate) continue;
+        auto [it, fresh] = by_function.try_emplace(n.function, n);
+        if (fresh) continue;
+        it->second.found = std::max(it->second.found, n.found);
+        it->second.given = std::max(it->second.given, n.given);
+    }
+    for (const auto& [fn, n] : by_function) {
+        if (!(n.found > kEpsilon) || !(n.given > kEpsilon)) continue;
+        // POV-Ray's thresholds (IsoSurface::DispatchShutdownMessages).
+        const double diff = n.given - n.found, prop = std::fabs(n.given / n.found);
+        char numbers[96];
+        std::snprintf(numbers, sizeof numbers, "found a gradient of %.3f where max_gradient is %.3f",
+                      n.found, n.given);
+        const FileLoc& at = scene.functions.at(static_cast<size_t>(fn)).loc;
+        if ((prop <= 0.9 && diff <= -0.5) || ((prop <= 0.95 || diff <= -0.1) && n.given < 10.0))
+            diag.warning(at, std::string("isosurface ") + numbers +
+                                 ": it may have holes; raise max_gradient");
+        else if (diff >= 10.0 || (prop >= 1.1 && diff >= 0.5))
+            diag.warning(at, std::string("isosurface ") + numbers +
+                                 ": a lower max_gradient would render it faster");
+    }
+}
 
 std::unique_ptr<Primitive> make_isosurface(const scene::Isosurface& s, const scene::Scene& scene,
                                            const char** why) {

@@ -462,6 +462,12 @@ void ObjectNode::intersect_all(const Ray& ray, double tmax, HitList* hits,
     hits->truncate(static_cast<size_t>(keep - hits->begin()));
 }
 
+void ObjectNode::gradient_notes(std::vector<GradientNote>* out) const {
+    if (still_) still_->gradient_notes(out);
+    if (prim_) prim_->gradient_notes(out);
+    for (const auto& c : children_) c->gradient_notes(out);
+}
+
 bool ObjectNode::inside(const Vec3& p) const {
     if (motion_) return still_->inside(xf_.inverse_point(p));
     if (!passes_clip(p)) return false;

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
+#include "core/log.h"
 #include "core/transform.h"
 #include "render/shapes/primitive.h"
 #include "scene/mesh.h"
@@ -44,6 +46,9 @@ std::unique_ptr<Primitive> make_poly(const scene::Poly& s, const char** why);
 // isosurface.cpp: evaluates the scene's user functions (it keeps a copy of them).
 std::unique_ptr<Primitive> make_isosurface(const scene::Isosurface& s, const scene::Scene& scene,
                                            const char** why);
+// POV-Ray's max_gradient advice after the render, one warning per isosurface that needs one.
+void report_gradients(const std::vector<GradientNote>& notes, const scene::Scene& scene,
+                      Diagnostics& diag);
 
 }  // namespace glint::render
 
