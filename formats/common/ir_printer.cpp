@@ -336,6 +336,19 @@ public:
                     for (const auto& row : v.points)
                         for (const Vec3& p : row) r += " " + vec(p);
                     return r;
+                } else if constexpr (std::is_same_v<T, Isosurface>) {
+                    std::string r = "isosurface function " + std::to_string(v.function) +
+                                     (v.sphere ? " contained_by sphere " + vec(v.center) + " " +
+                                                     num(v.radius)
+                                               : " contained_by box " + vec(v.corner1) + " " +
+                                                     vec(v.corner2));
+                    r += " threshold " + num(v.threshold) + " accuracy " + num(v.accuracy) +
+                         " max_gradient " + num(v.max_gradient) + " max_trace " +
+                         std::to_string(v.max_trace);
+                    if (v.evaluate)
+                        r += " evaluate " + num(v.eval[0]) + " " + num(v.eval[1]) + " " +
+                             num(v.eval[2]);
+                    return r + (v.open ? " open" : "");
                 } else {
                     static const char* kOps[] = {"union", "merge", "intersection", "difference"};
                     return std::string(kOps[static_cast<int>(v.op)]) + " (" +

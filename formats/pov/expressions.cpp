@@ -187,6 +187,8 @@ namespace glint::pov {
 scene::Scene Parser::one_object_scene(const PovObject& po) const {
     scene::Scene one;
     one.meshes = scene.meshes;
+    one.functions = scene.functions;  // an isosurface's function and those it calls
+    one.global.noise_generator = scene.global.noise_generator;
     one.materials.resize(1);
     std::function<scene::Object(const PovObject&, bool)> conv = [&](const PovObject& p, bool top) {
         scene::Object o = p.obj;

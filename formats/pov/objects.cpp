@@ -13,7 +13,7 @@ namespace {
 
 const std::unordered_set<std::string>& unsupported_objects() {
     static const std::unordered_set<std::string> k = {
-        "isosurface", "parametric", "sphere_sweep", "ovus",
+        "parametric", "sphere_sweep", "ovus",
         "lemon", "light_group"};
     return k;
 }

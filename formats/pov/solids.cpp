@@ -533,7 +533,8 @@ scene::Poly parse_poly(Parser& p, const std::string& w) {
 bool is_solid_keyword(const std::string& w) {
     static const std::unordered_set<std::string> k = {
         "quadric", "polygon", "prism", "lathe", "sor", "superellipsoid", "blob", "height_field",
-        "poly", "cubic", "quartic", "polynomial", "julia_fractal", "bicubic_patch"};
+        "poly", "cubic", "quartic", "polynomial", "julia_fractal", "bicubic_patch",
+        "isosurface"};
     return k.count(w) > 0;
 }
 
@@ -549,6 +550,7 @@ void parse_solid_body(Parser& p, const std::string& w, const FileLoc& kw, scene:
     else if (w == "height_field") *out = parse_height_field(p, left_out);
     else if (w == "julia_fractal") *out = parse_julia_fractal(p);
     else if (w == "bicubic_patch") *out = parse_bicubic_patch(p, kw);
+    else if (w == "isosurface") *out = parse_isosurface(p, kw);
     else *out = parse_poly(p, w);
 }
 

@@ -12,6 +12,9 @@ namespace glint::pov {
 
 bool is_solid_keyword(const std::string& word);
 
+// After `isosurface {` (isosurface_grammar.cpp).
+scene::Isosurface parse_isosurface(Parser& p, const FileLoc& kw);
+
 // A count written before a point list, `4 <1, 0>` as well as `4, <1, 0>`: POV-Ray compares only
 // inside parentheses, so a number followed by `<` is the count, not `4 < ...`.
 double parse_float_before_points(Parser& p);

@@ -5,12 +5,14 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "render/film/driver.h"
 #include "render/gi/sppm.h"
 #include "render/integrators/path.h"
 #include "render/integrators/whitted.h"
 #include "render/prepare/prepared_scene.h"
+#include "render/shapes/shapes.h"
 
 namespace glint::render {
 namespace {
@@ -155,6 +157,9 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
     };
     result.image = run_tiles(prepared->camera, options, settings, radiance);
     result.render_seconds = seconds_since(t1);
+    std::vector<GradientNote> notes;
+    prepared->geometry->gradient_notes(&notes);
+    report_gradients(notes, scene, diag);
     return result;
 }
 

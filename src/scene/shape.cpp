@@ -8,7 +8,8 @@ const char* shape_name(const Shape& shape) {
                                              "smooth_triangle", "mesh", "csg",
                                              "quadric",  "polygon", "prism", "lathe", "sor",
                                              "superellipsoid", "blob", "height_field", "poly",
-                                             "text", "julia_fractal", "bicubic_patch"};
+                                             "text", "julia_fractal", "bicubic_patch",
+                                             "isosurface"};
     static_assert(std::size(kNames) == std::variant_size_v<Shape>);
     if (const auto* csg = std::get_if<Csg>(&shape)) {
         switch (csg->op) {

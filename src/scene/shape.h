@@ -180,6 +180,24 @@ struct BicubicPatch {
     Vec2 uv[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};  // uv_vectors: the corners' texture uv
 };
 
+// isosurface (POV-Ray 3.7 manual 2.4.2.3): the surface where Scene::functions[function](x, y, z)
+// equals threshold, inside where it is lower, cut to its container (a box, or a sphere when
+// `sphere`); the root search steps by max_gradient and stops at accuracy (POV-Ray's isosurf.cpp).
+struct Isosurface {
+    int function = -1;  // index into Scene::functions
+    bool sphere = false;
+    Vec3 corner1{-1, -1, -1}, corner2{1, 1, 1};  // box container, corner1 <= corner2
+    Vec3 center{0, 0, 0};                        // sphere container
+    double radius = 1;
+    double threshold = 0;
+    double accuracy = 0.001;
+    double max_gradient = 1.1;
+    int max_trace = 1;        // all_intersections: 10
+    bool evaluate = false;    // evaluate P0, P1, P2: max_gradient adapted per ray
+    double eval[3] = {0, 0, 0};
+    bool open = false;        // no surface on the container
+};
+
 // text (POV-Ray 3.7 manual 2.4.2.7): the string's TrueType glyphs extruded from z = 0 to
 // z = thickness, laid out along +x from the origin, `offset` added after each character.
 struct Text {
@@ -200,7 +218,7 @@ struct Csg {
 using Shape = std::variant<Sphere, Plane, Box, Cylinder, Cone, Disc, Torus, Triangle,
                            SmoothTriangle, MeshRef, Csg, Quadric, Polygon, Prism, Lathe, Sor,
                            Superellipsoid, Blob, HeightField, Poly, Text, JuliaFractal,
-                           BicubicPatch>;
+                           BicubicPatch, Isosurface>;
 
 // Names for messages and `glint ir`, in variant order.
 const char* shape_name(const Shape& shape);

@@ -214,6 +214,18 @@ private:
         check_finite(s.flatness, loc, "bicubic_patch flatness");
         if (s.u_steps > 12 || s.v_steps > 12) fail(loc, "bicubic_patch steps must be at most 12");
     }
+    void shape(const Isosurface& s, const FileLoc& loc) {
+        if (s.function < 0 || s.function >= static_cast<int>(scene_.functions.size()))
+            fail(loc, "isosurface function out of range");
+        check_finite(s.corner1, loc, "isosurface container");
+        check_finite(s.corner2, loc, "isosurface container");
+        check_finite(s.center, loc, "isosurface container");
+        check_finite(s.radius, loc, "isosurface container radius");
+        check_finite(s.threshold, loc, "isosurface threshold");
+        if (!(s.accuracy > 0) || !(s.max_gradient > 0) || !std::isfinite(s.accuracy) ||
+            !std::isfinite(s.max_gradient) || s.max_trace < 1)
+            fail(loc, "isosurface accuracy, max_gradient and max_trace must be positive");
+    }
     void shape(const Csg& s, const FileLoc&) {
         for (const Object& c : s.children) object(c, false);
     }

@@ -309,9 +309,8 @@ TEST(PovMaterials, UnsupportedFeaturesSaySo) {
     EXPECT_EQ(warnings_of("sphere { 0, 1 normal { pavement 0.5 } }"),
               std::vector<std::string>{
                   "1:24: 'pavement' is not supported: the normal is not perturbed by it"});
-    EXPECT_EQ(warnings_of("sphere { 0, 1 pigment { pigment_pattern { bozo } color_map { [0 rgb 1]"
-                          " [1 rgb 0] } } }"),
-              std::vector<std::string>{"1:25: 'pigment_pattern' is not supported: the pattern is "
+    EXPECT_EQ(warnings_of("sphere { 0, 1 pigment { aoi color_map { [0 rgb 1] [1 rgb 0] } } }"),
+              std::vector<std::string>{"1:25: 'aoi' is not supported: the pattern is "
                                        "constant 0 (its map's first entry)"});
     auto sl = parse("sphere { 0, 1 pigment { slope <0, 1, 0>, 0, 1 color_map { [0 rgb <1, 0, 0>]"
                     " [1 rgb 0] } } }");
@@ -329,7 +328,7 @@ TEST(PovMaterials, UnsupportedFeaturesSaySo) {
     EXPECT_EQ(irid, 1);
     EXPECT_DOUBLE_EQ(s.materials.back().texture.finish.phong, 1.0);
     // Objects glint lacks are left out with a warning (pov_unsupported_test.cpp).
-    EXPECT_EQ(error_of("isosurface { }"), "(no error)");
+    EXPECT_EQ(error_of("ovus { }"), "(no error)");
     EXPECT_EQ(warnings_of("sphere { 0, 1 texture { tiles { texture { } tile2 texture { } } } }"),
               std::vector<std::string>{"1:25: 'tiles' is not supported: the texture is its "
                                        "texture_map's first entry"});

@@ -41,10 +41,9 @@ TEST(PovUnsupported, ObjectsAreLeftOutWithOneWarningEach) {
         "bicubic_patch { type 1 u_steps 4 v_steps 4 <0,0,0>,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0 }\n"
         "ovus { 1, 0.5 }\n"
         "lemon { <0, 0, 0>, 1, <0, 1, 0>, 0.5, 1 }\n");
-    EXPECT_EQ(p.scene.objects.size(), 3u);  // the sphere, julia_fractal and bicubic_patch
+    EXPECT_EQ(p.scene.objects.size(), 5u);  // the sphere, the isosurfaces, julia_fractal, bicubic_patch
     EXPECT_EQ(p.warnings,
               (std::vector<std::string>{
-                  "2:1: 'isosurface' is not supported: the object is left out",
                   "6:1: 'parametric' is not supported: the object is left out",
                   "8:1: 'sphere_sweep' is not supported: the object is left out",
                   "10:1: 'ovus' is not supported: the object is left out",
@@ -53,10 +52,10 @@ TEST(PovUnsupported, ObjectsAreLeftOutWithOneWarningEach) {
 
 TEST(PovUnsupported, CsgKeepsItsOtherChildrenAndDeclarationsWork) {
     Parsed p = parse_warn(
-        "#declare Iso = isosurface { function { x } }\n"
+        "#declare Iso = lemon { <0, 0, 0>, 1, <0, 1, 0>, 0.5, 1 }\n"
         "union { sphere { 0, 1 } object { Iso } box { 0, 1 } }\n"
         "object { Iso translate y }\n"
-        "difference { isosurface { function { y } } }\n"
+        "difference { lemon { <0, 0, 0>, 1, <0, 1, 0>, 0.5, 1 } }\n"
         "sphere { 0, 1 clipped_by { ovus { 1, 0.5 } } }\n");
     ASSERT_EQ(p.scene.objects.size(), 2u);  // the union (2 children) and the clipped sphere
     auto* csg = std::get_if<glint::scene::Csg>(&p.scene.objects[0].shape);
@@ -65,7 +64,7 @@ TEST(PovUnsupported, CsgKeepsItsOtherChildrenAndDeclarationsWork) {
     EXPECT_TRUE(p.scene.objects[1].clipped_by.empty());
     EXPECT_EQ(p.warnings,
               (std::vector<std::string>{
-                  "2:16: 'isosurface' is not supported: the object is left out",
+                  "2:16: 'lemon' is not supported: the object is left out",
                   "6:28: 'ovus' is not supported: the object is left out"}));
 }
 
@@ -123,11 +122,11 @@ TEST(PovUnsupported, CameraFeatures) {
 TEST(PovUnsupported, UnterminatedSkippedBlockIsAnError) {
     glint::Diagnostics diag;
     try {
-        glint::pov::parse_string("isosurface { function { x }\n", "test.pov", {}, diag);
+        glint::pov::parse_string("parametric { function { x }\n", "test.pov", {}, diag);
         ADD_FAILURE() << "no error";
     } catch (const glint::Error& e) {
         EXPECT_EQ(std::string(e.what()),
-                  "expected '}' to close the isosurface opened at 1:12, got the end of the file");
+                  "expected '}' to close the parametric opened at 1:12, got the end of the file");
     }
 }
 

@@ -148,6 +148,7 @@ void Whitted::shoot_photons(int threads) {
         one.objects.push_back(scene_.objects[i]);
         one.meshes = scene_.meshes;
         one.materials = scene_.materials;
+        one.functions = scene_.functions;  // an isosurface needs its function to be built
         const Bounds3 box = build_geometry(one, scene::analyze(one), quiet)->bounds();
         if (box.empty() || !std::isfinite(box.lo.x + box.lo.y + box.lo.z + box.hi.x + box.hi.y + box.hi.z))
             continue;

@@ -51,6 +51,10 @@ public:
         if (bvh_.nodes().size() > kWideFrom) wide_ = WideBvh(bvh_);
     }
 
+    void gradient_notes(std::vector<GradientNote>* out) const override {
+        for (const auto& n : nodes_) n->gradient_notes(out);
+    }
+
     bool intersect(const Ray& ray, Hit* hit) const override {
         // A non-finite ray (a bug upstream) hits nothing rather than spreading NaN.
         if (!valid(ray)) return false;

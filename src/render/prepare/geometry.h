@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "core/log.h"
 #include "render/ray.h"
@@ -13,6 +14,7 @@
 namespace glint::render {
 
 class MaterialTable;
+struct GradientNote;  // render/shapes/primitive.h
 
 class Geometry {
 public:
@@ -45,6 +47,8 @@ public:
         (void)ray, (void)object, (void)hit;
         return false;
     }
+    // After the render: the isosurfaces' gradient reports (Primitive::gradient_notes).
+    virtual void gradient_notes(std::vector<GradientNote>* out) const { (void)out; }
     virtual Bounds3 bounds() const = 0;  // may be infinite (planes)
     // The bounds of the objects whose bounds are finite (empty when there are none).
     virtual Bounds3 finite_bounds() const { return bounds().is_infinite() ? Bounds3{} : bounds(); }

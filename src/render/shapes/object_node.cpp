@@ -153,6 +153,8 @@ struct Builder {
                 } else if constexpr (std::is_same_v<T, scene::BicubicPatch>) {
                     baked = true;
                     p = make_bicubic_patch(s, obj.transform, &why);
+                } else if constexpr (std::is_same_v<T, scene::Isosurface>) {
+                    p = make_isosurface(s, scene, &why);
                 }
             },
             obj.shape);
@@ -463,6 +465,12 @@ void ObjectNode::intersect_all(const Ray& ray, double tmax, HitList* hits,
     auto keep = std::remove_if(hits->begin() + first, hits->end(),
                                [&](const LocalHit& h) { return !passes_clip(h.p); });
     hits->truncate(static_cast<size_t>(keep - hits->begin()));
+}
+
+void ObjectNode::gradient_notes(std::vector<GradientNote>* out) const {
+    if (still_) still_->gradient_notes(out);
+    if (prim_) prim_->gradient_notes(out);
+    for (const auto& c : children_) c->gradient_notes(out);
 }
 
 bool ObjectNode::inside(const Vec3& p) const {

@@ -56,6 +56,8 @@ public:
     // For a moving object: at the frame (shutter time 0.5); CSG and clipping, which ask this,
     // have no moving parts.
     bool inside(const Vec3& p) const;
+    // Primitive::gradient_notes of every primitive in the tree, after the render.
+    void gradient_notes(std::vector<GradientNote>* out) const;
     // Parent space; may be infinite. A moving object's holds it at every shutter time.
     const Bounds3& bounds() const { return bounds_; }
     uint32_t flags() const { return flags_; }

@@ -85,6 +85,14 @@ private:
     bool spilled_ = false;
 };
 
+// POV-Ray's advice after the render of an isosurface: the steepest gradient its root search met
+// against the max_gradient it was given. Copies of one isosurface share `function`.
+struct GradientNote {
+    int function = -1;
+    double found = 0, given = 0;
+    bool evaluate = false;
+};
+
 class Primitive {
 public:
     virtual ~Primitive() = default;
@@ -111,6 +119,8 @@ public:
     virtual Vec2 uv_at(const Vec3&) const { return {}; }
     // POV-Ray's inside test (CSG); shapes without an inside (triangles, discs) return false.
     virtual bool inside(const Vec3& p) const = 0;
+    // After the render: what POV-Ray would report (isosurfaces only).
+    virtual void gradient_notes(std::vector<GradientNote>*) const {}
 
 protected:
     // intersect() for shapes whose hits all come from one pass (root finding over a sweep,

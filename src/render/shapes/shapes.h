@@ -4,11 +4,17 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
+#include "core/log.h"
 #include "core/transform.h"
 #include "render/shapes/primitive.h"
 #include "scene/mesh.h"
 #include "scene/shape.h"
+
+namespace glint::scene {
+struct Scene;
+}
 
 namespace glint::render {
 
@@ -45,6 +51,12 @@ std::unique_ptr<Primitive> make_julia_fractal(const scene::JuliaFractal& s, cons
 // as POV-Ray subdivides it where it stands.
 std::unique_ptr<Primitive> make_bicubic_patch(const scene::BicubicPatch& s, const Transform& xf,
                                               const char** why);
+// isosurface.cpp: evaluates the scene's user functions (it keeps a copy of them).
+std::unique_ptr<Primitive> make_isosurface(const scene::Isosurface& s, const scene::Scene& scene,
+                                           const char** why);
+// POV-Ray's max_gradient advice after the render, one warning per isosurface that needs one.
+void report_gradients(const std::vector<GradientNote>& notes, const scene::Scene& scene,
+                      Diagnostics& diag);
 
 }  // namespace glint::render
 

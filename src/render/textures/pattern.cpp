@@ -488,11 +488,7 @@ void function_hook(const void* user, const scene::Function& f, const Vec3& p, do
 // POV-Ray's function_pattern: the function at the point, values above 1 wrapped by fmod.
 double function_pattern(const PatternParams& params, const Vec3& p, const PatternContext& ctx) {
     if (!ctx.functions || params.function < 0) return 0.0;
-    scene::FunctionEnv env;
-    env.functions = ctx.functions;
-    env.noise_generator = ctx.noise_generator;
-    env.pattern = &function_hook;
-    env.user = &ctx;
+    const scene::FunctionEnv env = user_function_env(ctx);
     const double args[3] = {p.x, p.y, p.z};
     double v = scene::evaluate_function(env, params.function, args, 3);
     return v > 1.0 ? std::fmod(v, 1.0) : v;
@@ -647,6 +643,15 @@ Vec3 facets_normal(const PatternParams& params, const Vec3& p, const Vec3& norma
 }
 
 }  // namespace
+
+scene::FunctionEnv user_function_env(const PatternContext& ctx) {
+    scene::FunctionEnv env;
+    env.functions = ctx.functions;
+    env.noise_generator = ctx.noise_generator;
+    env.pattern = &function_hook;
+    env.user = &ctx;
+    return env;
+}
 
 bool is_block_pattern(PatternKind kind) {
     switch (kind) {

@@ -67,7 +67,12 @@ struct PatternContext {
 double evaluate_pattern(scene::PatternKind kind, const scene::PatternParams& params, const Vec3& p,
                         const PatternContext& ctx);
 
+// What evaluating the scene's user functions needs (function patterns, isosurfaces): pattern
+// functions go through the pattern code with `ctx`, which must outlive the result.
+scene::FunctionEnv user_function_env(const PatternContext& ctx);
+
 // Checker, Brick, Hexagon, Square, Triangular, Cubic.
+
 bool is_block_pattern(scene::PatternKind kind);
 
 // Applies params.warps to a pattern-space point (POV-Ray's Warp_EPoint without the pattern's own
