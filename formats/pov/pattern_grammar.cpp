@@ -188,6 +188,9 @@ bool Parser::parse_pattern_modifier(const std::string& w, PatternKind kind,
     } else if (w == "lambda") {
         FileLoc l = loc();
         classic_turbulence(pp, l).lambda = parse_float();
+    } else if (w == "interpolate") {  // density_file's, also after its other modifiers
+        only(kind == PatternKind::DensityFile, "density_file");
+        pp.density_interpolate = to_int(parse_float());
     } else if (w == "frequency") {
         pp.frequency = parse_float();
     } else if (w == "phase") {

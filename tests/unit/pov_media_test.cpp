@@ -113,6 +113,13 @@ TEST(MediaParser, DensityFileReadsDf3Grids) {
     EXPECT_EQ(d.params.density_file->nx, 2);
     EXPECT_EQ(d.params.density_interpolate, 1);
     EXPECT_FLOAT_EQ(d.params.density_file->values[1], 1.0f);
+    // interpolate may also follow the pattern's other modifiers (densfile.pov's normal does);
+    // on any other pattern it is an error.
+    auto later = parse("media { density { density_file df3 \"" + path +
+                       "\" scale 2 interpolate 2 } }");
+    EXPECT_EQ(later.media[0].density[0].params.density_interpolate, 2);
+    EXPECT_EQ(error_of("media { density { bozo interpolate 1 } }"),
+              "1:24: 'interpolate' applies only to density_file patterns");
     // A file whose size does not fit its header is refused, with the place.
     const std::string bad = ::testing::TempDir() + "glint_bad.df3";
     {
