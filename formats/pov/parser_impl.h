@@ -118,6 +118,7 @@ public:
     void parse_pattern_arguments(scene::PatternKind kind, scene::PatternParams& pp, bool normal);
     // A pattern modifier (turbulence, frequency, warp, brick_size, ...) if `w` is one; `head`
     // is the pattern's own transform, which a warp block moves into the warp list.
+    void parse_slope(scene::SlopeParams& s);  // after slope (pattern_grammar.cpp)
     bool parse_pattern_modifier(const std::string& w, scene::PatternKind kind,
                                 scene::PatternParams& pp, Transform& head);
     scene::Warp parse_warp_body(const FileLoc& at);

@@ -93,6 +93,9 @@ void Parser::parse_pattern_arguments(PatternKind kind, scene::PatternParams& pp,
             pp.interior_factor = pp.exterior_factor = 1;
             pp.fractal_exponent = 2;
             break;
+        case PatternKind::Slope:
+            parse_slope(pp.slope);
+            break;
         case PatternKind::PigmentPattern: {  // pigment_pattern { PIGMENT }
             expect_open("pigment_pattern");
             FileLoc po = loc();
@@ -168,6 +171,67 @@ void Parser::close_object_pattern() {
     const FileLoc opened = object_pattern_open_.back();
     object_pattern_open_.pop_back();
     expect_close("object", opened);
+}
+
+// slope <v> or slope { [point_at] <v> [, lo [, hi]] [altitude <a> [, lo [, hi]]] }, as
+// POV-Ray 3.7's parser reads it and prepares it.
+void Parser::parse_slope(scene::SlopeParams& s) {
+    s = scene::SlopeParams();
+    s.vector = Vec3(0, 0, 0);
+    // An optional float after an optional comma (Parse_Comma + Allow_Float).
+    auto allow_float = [&]() {
+        skip_comma();
+        return next_is_expression_start() ? parse_float() : 0.0;
+    };
+    // lo, hi -> lo, hi - lo; an empty range is ignored with POV-Ray's warning.
+    auto range = [&](double* lo, double* span, const char* what) {
+        FileLoc at = loc();
+        *lo = allow_float();
+        double hi = allow_float();
+        if (hi != 0.0 && hi == *lo) {
+            *lo = 0;
+            *span = 0;
+            diag.warning(at, std::string("zero ") + what + " range, ignoring");
+        } else {
+            *span = hi - *lo;
+        }
+    };
+    if (peek().is_symbol('{')) {
+        expect_open("slope");
+        FileLoc opened = loc();
+        s.point_at = accept("point_at");
+        s.vector = parse_vector();
+        range(&s.lo, &s.span, "slope");
+        if (accept("altitude")) {
+            if (s.point_at)
+                fail("'altitude' cannot be used with 'point_at' in the slope pattern");
+            s.altitude = parse_vector();
+            range(&s.altitude_lo, &s.altitude_span, "gradient");
+        }
+        expect_close("slope", opened);
+    } else {
+        s.vector = parse_vector();
+    }
+    if (s.point_at) {
+        s.weight = 1;
+        s.altitude_weight = 0;
+        return;
+    }
+    double sl = length(s.vector), al = length(s.altitude);
+    if (sl != 0) s.vector = s.vector / sl;
+    if (al != 0) s.altitude = s.altitude / al;
+    if (sl + al == 0) fail("zero length for both slope and altitude in the slope pattern");
+    s.weight = sl / (sl + al);
+    s.altitude_weight = 1.0 - s.weight;
+    auto base = [](const Vec3& v) {
+        for (int i = 0; i < 3; ++i) {
+            if (v[i] == 1.0) return i + 1;
+            if (v[i] == -1.0) return -(i + 1);
+        }
+        return 0;
+    };
+    s.base = base(s.vector);
+    s.altitude_base = base(s.altitude);
 }
 
 bool Parser::parse_pattern_modifier(const std::string& w, PatternKind kind,

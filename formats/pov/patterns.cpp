@@ -46,6 +46,7 @@ constexpr PatternWord kPatternWords[] = {
     {"gradient", PatternKind::Gradient},   {"average", PatternKind::Average},
     {"function", PatternKind::Function},   {"density_file", PatternKind::DensityFile},
     {"object", PatternKind::Object},       {"pigment_pattern", PatternKind::PigmentPattern},
+    {"slope", PatternKind::Slope},
 };
 
 std::optional<PatternKind> pattern_keyword(const std::string& w) {
@@ -58,7 +59,7 @@ std::optional<PatternKind> pattern_keyword(const std::string& w) {
 const std::unordered_set<std::string>& unsupported_patterns() {
     static const std::unordered_set<std::string> k = {
         "aoi", "image_pattern", "pavement",
-        "slope", "tiling", "magnet", "gradient_map", "material_map", "tiles"};
+        "tiling", "magnet", "gradient_map", "material_map", "tiles"};
     return k;
 }
 
@@ -113,19 +114,6 @@ bool skip_unsupported_pattern(Parser& p, const std::string& w, PatternKind* kind
         skip_braced_block(p, w);
     } else if (w == "tiling") {
         p.parse_float();
-    } else if (w == "slope") {  // slope <v> [, lo, hi] [altitude <v> [, lo, hi]] or { ... }
-        if (p.peek().is_symbol('{')) {
-            skip_braced_block(p, w);
-        } else {
-            for (bool first = true; first || p.accept("altitude"); first = false) {
-                p.parse_vector();
-                if (p.accept(",")) {
-                    p.parse_float();
-                    p.skip_comma();
-                    p.parse_float();
-                }
-            }
-        }
     } else if (w == "aoi") {
         if (p.next_is_expression_start()) p.parse_vector();
     } else if (w == "pavement") {

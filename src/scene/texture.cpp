@@ -43,6 +43,7 @@ const char* pattern_name(PatternKind kind) {
         case PatternKind::Cubic: return "cubic";
         case PatternKind::Object: return "object";
         case PatternKind::PigmentPattern: return "pigment_pattern";
+        case PatternKind::Slope: return "slope";
         case PatternKind::Average: return "average";
     }
     return "?";

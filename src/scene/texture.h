@@ -33,6 +33,9 @@ enum class PatternKind {
     Object,
     // pigment_pattern { PIGMENT }: the pigment's grey value (PatternParams::pigment)
     PigmentPattern,
+    // slope { [point_at] <v> [, lo, hi] [altitude <a> [, lo, hi]] }: the surface normal's
+    // slope against v, mixed with the height along a (PatternParams::slope)
+    Slope,
     // pigment { average pigment_map { [w P] ... } }, normal { average normal_map {...} }
     Average,
 };
@@ -127,6 +130,19 @@ struct ImageMap {
 
 struct Pigment;
 
+// POV-Ray's slope pattern as its parser leaves it (parstxtr.cpp): unit vectors, the spans
+// already hi - lo (0: no range given), the two weights summing to 1, and the axis shortcuts
+// (1..3 = +x..+z, -1..-3 = -x..-z, 0 none) that change rounding, so they are kept.
+struct SlopeParams {
+    Vec3 vector{0, 1, 0};
+    double lo = 0, span = 0;
+    Vec3 altitude{0, 0, 0};
+    double altitude_lo = 0, altitude_span = 0;
+    double weight = 1, altitude_weight = 0;
+    bool point_at = false;  // vector is a point: the slope towards it
+    int base = 0, altitude_base = 0;
+};
+
 struct PatternParams {
     Vec3 vector{0, 1, 0};  // gradient direction
     double frequency = 1;
@@ -167,6 +183,7 @@ struct PatternParams {
     // PatternKind::PigmentPattern: the pigment, its transform relative to this pattern's space
     // (shared by copies).
     std::shared_ptr<const Pigment> pigment;
+    SlopeParams slope;  // PatternKind::Slope
 };
 
 struct ColorMapEntry {

@@ -171,6 +171,37 @@ TEST(Pigment, PigmentPatternIsTheInnerPigmentsGrey) {
     EXPECT_EQ(eval(e, p, Vec3(13, 1, 1)).rgb.g, 0.0);
 }
 
+// slope { y }: 0.5 + asin(dot(n, y)) / pi, so 1 (just below) facing up, 0.5 on a wall, 0
+// facing down; with altitude the height mixes in by the vectors' length ratio.
+TEST(Pigment, SlopeReadsTheSurfaceNormal) {
+    Pigment p;
+    p.kind = scene::PatternKind::Slope;
+    p.params.slope.vector = Vec3(0, 1, 0);
+    p.params.slope.base = 2;  // +y, as the parser marks it
+    p.params.frequency = 0;
+    p.color_map = {{0.0, ColorFT(Color(0, 0, 0))}, {1.0, ColorFT(Color(1, 1, 1))}};
+    PigmentEvaluator e(nullptr);
+    auto at = [&](Vec3 n, Vec3 q) {
+        ColorFT c;
+        EXPECT_TRUE(e.evaluate(p, {q, {}, false, &n}, &c));
+        return c.rgb.r;
+    };
+    EXPECT_NEAR(at(Vec3(0, 1, 0), Vec3(0, 0, 0)), 1.0, 1e-9);
+    EXPECT_NEAR(at(Vec3(1, 0, 0), Vec3(0, 0, 0)), 0.5, 1e-12);
+    EXPECT_NEAR(at(normalize(Vec3(1, 1, 0)), Vec3(0, 0, 0)), 0.75, 1e-12);
+    EXPECT_NEAR(at(Vec3(0, -1, 0), Vec3(0, 0, 0)), 0.0, 1e-12);
+    // No surface (media, functions): 0.
+    ColorFT none;
+    EXPECT_TRUE(e.evaluate(p, {Vec3(0, 0, 0), {}, false}, &none));
+    EXPECT_EQ(none.rgb.r, 0.0);
+    // altitude <0, 1, 0>, 0, 10 with equal weights: half the slope plus half of y / 10.
+    p.params.slope.altitude = Vec3(0, 1, 0);
+    p.params.slope.altitude_base = 2;
+    p.params.slope.altitude_span = 10;
+    p.params.slope.weight = p.params.slope.altitude_weight = 0.5;
+    EXPECT_NEAR(at(Vec3(1, 0, 0), Vec3(0, 4, 0)), 0.25 + 0.2, 1e-12);
+}
+
 TEST(Pigment, NestedEntriesLiveInTheParentsPatternSpace) {
     // POV-Ray evaluates entries at the parent's warped pattern-space point, so an entry's
     // transform is relative: the outer checker is scaled by 10 and the inner one by 0.5 of

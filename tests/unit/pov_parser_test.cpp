@@ -312,9 +312,20 @@ TEST(PovMaterials, UnsupportedFeaturesSaySo) {
     EXPECT_EQ(warnings_of("sphere { 0, 1 pigment { aoi color_map { [0 rgb 1] [1 rgb 0] } } }"),
               std::vector<std::string>{"1:25: 'aoi' is not supported: the pattern is "
                                        "constant 0 (its map's first entry)"});
-    auto sl = parse("sphere { 0, 1 pigment { slope <0, 1, 0>, 0, 1 color_map { [0 rgb <1, 0, 0>]"
-                    " [1 rgb 0] } } }");
-    EXPECT_DOUBLE_EQ(sl.materials.back().texture.pigment.params.vector.y, 0.0);
+    // slope as POV-Ray 3.7 prepares it: unit vectors, hi - lo, weights by length.
+    auto sl = parse("sphere { 0, 1 texture { slope { -y*3, 0, 0.5 altitude y, 0.005, 0.4 }"
+                    " texture_map { [0 pigment { rgb 0 }] [1 pigment { rgb 1 }] } } }");
+    const scene::SlopeParams& sp = sl.materials.back().texture.params.slope;
+    EXPECT_EQ(sl.materials.back().texture.kind, scene::PatternKind::Slope);
+    EXPECT_EQ(sp.vector, Vec3(0, -1, 0));
+    EXPECT_EQ(sp.base, -2);
+    EXPECT_DOUBLE_EQ(sp.span, 0.5);
+    EXPECT_EQ(sp.altitude_base, 2);
+    EXPECT_DOUBLE_EQ(sp.altitude_lo, 0.005);
+    EXPECT_DOUBLE_EQ(sp.altitude_span, 0.4 - 0.005);
+    EXPECT_DOUBLE_EQ(sp.weight, 0.75);
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { slope { point_at 0 altitude y } } }"),
+              "1:44: 'altitude' cannot be used with 'point_at' in the slope pattern");
     // A finish effect glint lacks is a warning at its keyword; the rest of the finish counts.
     Diagnostics diag;
     scene::Scene s = parse_string("sphere { 0, 1 finish { irid { 0.3 } phong 1 } }", "test.pov",

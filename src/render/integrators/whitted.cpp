@@ -44,7 +44,10 @@ Color rgb_transm(const ColorFT& c) {
                  c.rgb.b * c.filter + c.transmit);
 }
 
-PatternPoint pattern_point(const Hit& hit) { return {hit.p, hit.uv, hit.has_uv}; }
+// `raw_normal`: the surface normal facing the ray (the slope pattern's), kept alive by the caller.
+PatternPoint pattern_point(const Hit& hit, const Vec3& raw_normal) {
+    return {hit.p, hit.uv, hit.has_uv, &raw_normal};
+}
 
 }  // namespace
 
@@ -265,7 +268,7 @@ Color Whitted::shade(const Ray& ray, const Hit& hit, double weight, const RaySta
     Vec3 n = hit.n;
     if (dot(n, ray.dir) > 0.0) n = -n;
     TextureStack stack;
-    return texture_colour(ray, hit, mat.texture, pattern_point(hit), n, weight, state, stack);
+    return texture_colour(ray, hit, mat.texture, pattern_point(hit, n), n, weight, state, stack);
 }
 
 Color Whitted::texture_colour(const Ray& ray, const Hit& hit, const scene::Texture& tex,
@@ -286,7 +289,7 @@ Color Whitted::texture_colour(const Ray& ray, const Hit& hit, const scene::Textu
     const scene::PatternParams& pp = tex.params;
     const Vec3 local = tex.transform.is_identity() ? p : tex.transform.inverse_point(p);
     const Vec3 tp = pp.warps.empty() ? local : warp_point(tex.kind, pp, local);
-    const PatternPoint sub{tp, at.uv, at.has_uv};
+    const PatternPoint sub{tp, at.uv, at.has_uv, at.normal};
     if (tex.kind == scene::PatternKind::Average) {
         Color sum;
         double total = 0;
@@ -296,7 +299,9 @@ Color Whitted::texture_colour(const Ray& ray, const Hit& hit, const scene::Textu
         }
         return sum / total;
     }
-    const double value = evaluate_pattern(tex.kind, pp, local, pigments_.context());
+    PatternContext on_surface = pigments_.context();
+    on_surface.normal = at.normal;
+    const double value = evaluate_pattern(tex.kind, pp, local, on_surface);
     if (is_block_pattern(tex.kind)) {
         const scene::Texture& e = tex.entries[block_index(value, tex.entries.size())];
         return texture_colour(ray, hit, e, sub, n, weight, state, stack);
@@ -692,7 +697,8 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
             // ComputeShadowColour / ComputeShadowTexture.
             const scene::Material& mat = scene_.materials[hit.material];
             // POV-Ray stores interior { caustics C } as the exponent 45 C (Parse_Interior).
-            Color filter = shadow_texture(mat.texture, pattern_point(hit),
+            const Vec3 facing = dot(hit.n, r.dir) > 0.0 ? -hit.n : hit.n;
+            Color filter = shadow_texture(mat.texture, pattern_point(hit, facing),
                                           45.0 * mat.interior.caustics, hit.n, normalize(r.dir));
             const scene::Interior& interior = mat.interior;
             const double seg = hit.t * length(r.dir);
@@ -751,7 +757,7 @@ Color Whitted::shadow_texture(const scene::Texture& tex, const PatternPoint& at,
     const scene::PatternParams& pp = tex.params;
     const Vec3 local = tex.transform.is_identity() ? p : tex.transform.inverse_point(p);
     const PatternPoint sub{pp.warps.empty() ? local : warp_point(tex.kind, pp, local), at.uv,
-                           at.has_uv};
+                           at.has_uv, at.normal};
     if (tex.kind == scene::PatternKind::Average) {
         Color sum;
         double total = 0;
@@ -761,7 +767,9 @@ Color Whitted::shadow_texture(const scene::Texture& tex, const PatternPoint& at,
         }
         return sum / total;
     }
-    const double value = evaluate_pattern(tex.kind, pp, local, pigments_.context());
+    PatternContext on_surface = pigments_.context();
+    on_surface.normal = at.normal;
+    const double value = evaluate_pattern(tex.kind, pp, local, on_surface);
     if (is_block_pattern(tex.kind))
         return shadow_texture(tex.entries[block_index(value, tex.entries.size())], sub, caustics,
                               raw_normal, dir);

@@ -33,6 +33,10 @@ struct PatternContext {
     // Image maps for pigment functions called from functions (`function { pigment { image_map
     // ... } }`); null: the scene has none.
     const TextureCache* textures = nullptr;
+    // The surface's normal where the pattern is evaluated on one (world space, facing the ray,
+    // before any normal perturbation: POV-Ray's PNormal), for the slope pattern; null
+    // elsewhere (media, functions), where slope is 0.
+    const Vec3* normal = nullptr;
 };
 
 // POV-Ray's Warp_EPoint + Evaluate_TPat.

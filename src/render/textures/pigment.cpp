@@ -75,6 +75,11 @@ bool PigmentEvaluator::evaluate(const scene::Pigment& pigment, const PatternPoin
         }
         p = Vec3(at.uv.x, at.uv.y, 0);
     }
+    if (at.normal && at.normal != ctx_.normal) {  // the slope pattern reads it
+        PigmentEvaluator on_surface(*this);
+        on_surface.ctx_.normal = at.normal;
+        return on_surface.eval(pigment, p, out);
+    }
     return eval(pigment, p, out);
 }
 

@@ -16,6 +16,9 @@ struct PatternPoint {
     Vec3 p;
     Vec2 uv;
     bool has_uv = false;
+    // The surface normal facing the ray, before perturbation (PatternContext::normal), when
+    // the point is on a surface a ray hit.
+    const Vec3* normal = nullptr;
 };
 
 class PigmentEvaluator {
