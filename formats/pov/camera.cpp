@@ -263,11 +263,11 @@ void Parser::parse_global_settings() {
         } else if (w == "charset") {
             diag.warning(loc(), "global_settings 'charset' is ignored");
             next();
-        } else if (w == "max_intersections" || w == "irid_wavelength" ||
-                   w == "hf_gray_16") {
+        } else if (w == "irid_wavelength") {
+            scene.global.irid_wavelength = parse_rgb();
+        } else if (w == "max_intersections" || w == "hf_gray_16") {
             diag.warning(loc(), "global_settings '" + w + "' is ignored");
-            if (w == "irid_wavelength") parse_rgb();
-            else allow_float(0);
+            allow_float(0);
         } else {
             fail("expected a global_settings item (assumed_gamma, max_trace_level, ...), got " +
                  got(t));

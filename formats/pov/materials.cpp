@@ -300,9 +300,16 @@ void Parser::parse_finish_body(scene::Finish& f) {
                 }
             }
             expect_close("subsurface", o);
-        } else if (w == "irid") {
-            warn_unsupported(*this, w, loc(), "the finish's " + w + " block is ignored");
-            skip_braced_block(*this, w);
+        } else if (w == "irid") {  // irid { amount [thickness t] [turbulence u] }
+            expect_open("irid");
+            FileLoc o = loc();
+            f.irid = parse_float();
+            for (;;) {
+                if (accept("thickness")) f.irid_thickness = parse_float();
+                else if (accept("turbulence")) f.irid_turbulence = parse_float();
+                else break;
+            }
+            expect_close("irid", o);
         } else if (w == "ior" || w == "caustics" || w == "fade_distance" || w == "fade_power" ||
                    w == "refraction") {
             // POV-Ray 3.0's interior items inside finish.

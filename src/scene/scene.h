@@ -67,7 +67,9 @@ struct GlobalSettings {
     // assumed_gamma as given; unset means POV-Ray's default for the #version.
     std::optional<double> assumed_gamma;
     int noise_generator = 2;
-    int number_of_waves = 10;  // ripples and waves sum this many wave sources
+    int number_of_waves = 10;
+    // irid_wavelength: the "wavelengths" irid divides the film's phase by, per channel.
+    Color irid_wavelength{0.70, 0.52, 0.48};  // POV-Ray 3.7's default (scene.cpp)
     // Scene units in millimetres, for subsurface light transport.
     double mm_per_unit = 10;
     // `subsurface { samples diffuse, single }`: present turns subsurface light transport on

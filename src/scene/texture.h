@@ -268,6 +268,11 @@ struct Finish {
     // (its inverse the reduced scattering coefficient).
     bool subsurface = false;
     Color translucency{0, 0, 0};
+    // irid { amount [thickness t] [turbulence u] }: thin-film interference tinting each
+    // light's contribution and the reflection (POV-Ray's ComputeIridColour); 0 = none.
+    double irid = 0;
+    double irid_thickness = 0;
+    double irid_turbulence = 0;
     FileLoc loc;
 };
 

@@ -149,6 +149,26 @@ TEST(Whitted, DiffuseIsKdTimesLightTimesCosine) {
     EXPECT_NEAR(c.r, 0.56 * 0.5, 1e-6);
 }
 
+// irid { 0.5 thickness 0.1 }: each light's contribution times 1 + 0.5 cos(2 pi t (|n.l| +
+// |n.e|) / wavelength), POV-Ray's default wavelengths <0.70, 0.52, 0.48>.
+TEST(Whitted, IridTintsEachLightByTheFilmPhase) {
+    Fixture fx;
+    scene::Material m = matte(Color(0.8, 0.6, 0.4), 0.0, 0.7);
+    m.texture.finish.irid = 0.5;
+    m.texture.finish.irid_thickness = 0.1;
+    fx.scene.materials.push_back(m);
+    fx.geo.spheres.push_back({Vec3(0, 0, 0), 1, 0});
+    scene::Light l;
+    l.location = Vec3(0, 0, -10);
+    l.color = Color(1, 1, 0.5);
+    fx.scene.lights.push_back(l);
+    const double phase = 2 * kPi * 0.1 * 2;  // light and eye both along the normal
+    expect_color(fx.render_ray(Vec3(0, 0, -5), Vec3(0, 0, 1)),
+                 Color(0.56 * (1 + 0.5 * std::cos(phase / 0.70)),
+                       0.42 * (1 + 0.5 * std::cos(phase / 0.52)),
+                       0.14 * (1 + 0.5 * std::cos(phase / 0.48))));
+}
+
 TEST(Whitted, BrillianceRaisesTheCosine) {
     Fixture fx;
     scene::Material m = matte(Color(1, 1, 1), 0.0, 1.0);

@@ -484,7 +484,7 @@ void Whitted::photon_surface(const Ray& ray, const Hit& hit, Color light, double
                                     : Color();
         if (f.reflect_metallic != 0.0)
             reflec = metallic_tint(f.reflect_metallic, cos_incidence, pig.rgb * fil_col, reflec);
-        refl[used++] = {refl_weight, lay_n, reflec, f.reflect_exponent};
+        refl[used++] = {refl_weight, lay_n, reflec, f.reflect_exponent, &f};  // no irid on photons
         if (found) {
             fil_col *= Color(pig.rgb.r * pig.filter + pig.transmit,
                              pig.rgb.g * pig.filter + pig.transmit,

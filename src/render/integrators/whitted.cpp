@@ -375,7 +375,7 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
                            : Color();
         if (f.reflect_metallic != 0.0)
             reflec = metallic_tint(f.reflect_metallic, cos_incidence, pig.rgb, reflec);
-        if (used < kMaxLayers) refl[used++] = {refl_weight, lay_n, reflec, f.reflect_exponent};
+        if (used < kMaxLayers) refl[used++] = {refl_weight, lay_n, reflec, f.reflect_exponent, &f};
 
         // The layer's own brightness is reduced by its transparency; 3.6 scenes keep the old
         // (bogus, but compatible) formula.
@@ -434,13 +434,20 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
                           std::fabs(lc.b) > kPovEpsilon))
                         continue;
                 }
-                if (!sslt) tmp += diffuse_term(f, lay_n, ls.dir, pig.rgb, lc, att);
+                Color one;
+                if (!sslt) one += diffuse_term(f, lay_n, ls.dir, pig.rgb, lc, att);
                 // shadowless lights are POV-Ray's FILL_LIGHT_SOURCE: diffuse only; and
                 // radiosity's rays see no highlights.
-                if (!light.casts_shadows() || state.radiosity) continue;
-                if (f.phong > 0.0) tmp += phong_term(f, lay_n, ls.dir, ray.dir, pig.rgb, lc);
-                if (f.specular > 0.0)
-                    tmp += specular_term(f, lay_n, ls.dir, ray.dir, pig.rgb, lc);
+                if (light.casts_shadows() && !state.radiosity) {
+                    if (f.phong > 0.0) one += phong_term(f, lay_n, ls.dir, ray.dir, pig.rgb, lc);
+                    if (f.specular > 0.0)
+                        one += specular_term(f, lay_n, ls.dir, ray.dir, pig.rgb, lc);
+                }
+                if (f.irid > 0.0)
+                    one *= irid_factor(f, ls.dir, ray.dir, lay_n, hit.p,
+                                       scene_.global.irid_wavelength,
+                                       scene_.global.noise_generator);
+                tmp += one;
             }
         }
         if (collects)
@@ -484,6 +491,10 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
             continue;
         if (r.reflec.is_black()) continue;
         Color rfl = reflect(ray, hit, r.normal, n, r.weight, state);
+        if (r.finish->irid > 0.0)
+            rfl *= irid_factor(*r.finish, reflected_direction(ray.dir, r.normal, n), ray.dir,
+                               r.normal, hit.p, scene_.global.irid_wavelength,
+                               scene_.global.noise_generator);
         if (r.exponent != 1.0) {
             rfl = Color(std::pow(rfl.r, r.exponent), std::pow(rfl.g, r.exponent),
                         std::pow(rfl.b, r.exponent));

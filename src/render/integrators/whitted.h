@@ -97,6 +97,7 @@ private:
         Vec3 normal;
         Color reflec;
         double exponent;
+        const ClassicFinish* finish;  // irid
     };
     static constexpr int kMaxLayers = 16;
     // POV-Ray's InitRayContainerState: the objects the perspective camera sits inside.

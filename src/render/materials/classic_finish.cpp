@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/noise.h"
+
 namespace glint::render {
 
 ClassicFinish::ClassicFinish(const scene::Finish& f)
@@ -23,7 +25,31 @@ ClassicFinish::ClassicFinish(const scene::Finish& f)
       reflect_exponent(f.reflection.exponent != 0.0 ? 1.0 / f.reflection.exponent : 1.0),
       conserve_energy(f.conserve_energy),
       subsurface(f.subsurface),
-      translucency(f.translucency) {}
+      translucency(f.translucency),
+      irid(f.irid),
+      irid_thickness(f.irid_thickness),
+      irid_turbulence(f.irid_turbulence) {}
+
+Color irid_factor(const ClassicFinish& f, const Vec3& to_light, const Vec3& eye_dir,
+                  const Vec3& n, const Vec3& p, const Color& wavelength, int noise_generator) {
+    double thickness = f.irid_thickness;
+    if (f.irid_turbulence != 0.0) {
+        // POV-Ray's fixed turbulence for irid: 5 octaves, omega 0.5, lambda 2; 0..1 -> -1..1.
+        TurbulenceParams turb;
+        turb.octaves = 5;
+        turb.omega = 0.5;
+        turb.lambda = 2.0;
+        const double noise = 2.0 * turbulence(p, turb, noise_generator) - 1.0;
+        thickness *= 1.0 + noise * f.irid_turbulence;
+    }
+    // Both directions as unit vectors, as POV-Ray's rays carry them.
+    const double phase = 2.0 * kPi * thickness *
+                         (std::fabs(dot(n, normalize(to_light))) +
+                          std::fabs(dot(n, normalize(eye_dir))));
+    return Color(1.0 + f.irid * std::cos(phase / wavelength.r),
+                 1.0 + f.irid * std::cos(phase / wavelength.g),
+                 1.0 + f.irid * std::cos(phase / wavelength.b));
+}
 
 double metallic_fresnel(double cos_angle) {
     double x = std::fabs(std::acos(std::clamp(cos_angle, -1.0, 1.0))) / (kPi / 2);

@@ -30,10 +30,17 @@ struct ClassicFinish {
     // subsurface block): it stands in for the diffuse term.
     bool subsurface = false;
     Color translucency;
+    double irid = 0, irid_thickness = 0, irid_turbulence = 0;
 
     explicit ClassicFinish(const scene::Finish& f);
     bool reflects() const { return !reflection_min.is_black() || !reflection_max.is_black(); }
 };
+
+// POV-Ray's ComputeIridColour: the factor thin-film interference puts on one light's
+// contribution (or the reflection), 1 + irid * cos(2 pi t (|n.l| + |n.e|) / wavelength) per
+// channel, the film thickness t varied by turbulence at `p` when the finish has some.
+Color irid_factor(const ClassicFinish& f, const Vec3& to_light, const Vec3& eye_dir,
+                  const Vec3& n, const Vec3& p, const Color& wavelength, int noise_generator);
 
 // Diffuse term for one light: |n.l|^brilliance * diffuse * attenuation * pigment * light.
 Color diffuse_term(const ClassicFinish& f, const Vec3& n, const Vec3& to_light,
