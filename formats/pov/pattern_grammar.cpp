@@ -121,7 +121,7 @@ void Parser::parse_pattern_arguments(PatternKind kind, scene::PatternParams& pp,
             FileLoc tl = loc();
             int n = to_int(parse_float());
             if (n < 1 || n > 27) fail_at(tl, "tiling number must be 1 to 27");
-            if (n > 5) {  // render/textures/tiling_pattern.cpp has tilings 1 to 5
+            if (n > 7 && n != 10) {  // render/textures/tiling_pattern.cpp: 1 to 7 and 10
                 warn_unsupported(*this, "tiling " + std::to_string(n), tl,
                                  "drawn as tiling 1 (squares)");
             }

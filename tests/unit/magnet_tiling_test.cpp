@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <utility>
 
 #include "render/textures/pattern.h"
 #include "tests/unit/pov_test_util.h"
@@ -84,6 +85,19 @@ TEST(TilingPattern, MatchesPovRay) {
         PatternParams pp;
         pp.tiling_type = n;
         expect_values(PatternKind::Tiling, pp, want[n - 1], 1e-6,
+                      ("tiling " + std::to_string(n)).c_str());
+    }
+    const std::pair<int, std::array<double, 6>> more[] = {
+        {6, {0.89999997615814209, 0.5, 0.0, 0.20000000298023224, 0.94999998807907104,
+             0.40000000596046448}},
+        {7, {0.5, 0.99289321899414062, 0.65147185325622559, 0.5, 0.59289324283599854,
+             0.58783227205276489}},
+        {10, {0.8, 1.0, 0.4, 0.4, 0.9, 0.8}},
+    };
+    for (const auto& [n, values] : more) {
+        PatternParams pp;
+        pp.tiling_type = n;
+        expect_values(PatternKind::Tiling, pp, values, 1e-6,
                       ("tiling " + std::to_string(n)).c_str());
     }
 }

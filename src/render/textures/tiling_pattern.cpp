@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace glint::render {
 namespace {
@@ -126,6 +127,68 @@ double rhombi(const Vec3& p) {
     return std::clamp(v, 0.0, 1.0);
 }
 
+// tiling 6: 2x1 rectangles in a basket weave. The 4x4 cell is cut into unit squares; each
+// names the offset that brings its rectangle's half onto the unit square at the origin and
+// whether the rectangle lies along x (value band [0.5, 1]) or along z ([0, 0.5]).
+double rectangles(const Vec3& p) {
+    struct Half {
+        double dx, dz;
+        bool along_x;
+    };
+    static constexpr Half kHalves[16] = {
+        {0, 1, true},  {2, 0, false}, {2, 0, false}, {3, 0, true},
+        {0, 1, true},  {1, 2, true},  {3, 1, false}, {3, 1, false},
+        {0, 2, false}, {1, 2, true},  {2, 3, true},  {4, 2, false},
+        {1, 3, false}, {1, 3, false}, {2, 3, true},  {3, 4, true}};
+    double x = p.x - 4.0 * std::floor(p.x / 4.0);
+    double z = p.z - 4.0 * std::floor(p.z / 4.0);
+    const int cell = static_cast<int>(x) + static_cast<int>(z) * 4;
+    // x or z can round up to 4: such a point keeps its place, along x, as in POV-Ray
+    const Half h = cell >= 0 && cell < 16 ? kHalves[cell] : Half{0, 0, true};
+    x -= h.dx;
+    z -= h.dz;
+    double ex, ez;
+    if (h.along_x) {
+        ex = 2 * std::fabs(x - 0.5);
+        ez = 2 * (std::max(std::fabs(z), 0.5) - 0.5);
+    } else {
+        ex = 2 * (std::max(std::fabs(x), 0.5) - 0.5);
+        ez = 2 * std::fabs(z - 0.5);
+    }
+    return std::fabs(std::max(ex, ez) / 2.0 + (h.along_x ? 1.0 : 0.0) / 2);
+}
+
+// tiling 7: octagons with small squares between them; squares in [0, 0.5), octagons above.
+double octagons_squares(const Vec3& p) {
+    constexpr double kSqrt2 = 1.4142135623730950488016887242097;
+    constexpr double kHalfSqrt2 = 0.70710678118654752440084436210485;
+    constexpr double kPeriod = kSqrt2 + 1.0;
+    auto fold = [](double v) {
+        v -= kPeriod * std::floor(v / kPeriod);
+        return std::fabs(v - (kHalfSqrt2 + 0.5));
+    };
+    double z = fold(p.z);
+    double x = fold(p.x);
+    if (z > x) std::swap(x, z);
+    if (x + z < kHalfSqrt2) return (x + z) / kSqrt2;  // a square
+    const double straight = 1.0 - z;
+    const double diagonal = (kSqrt2 + kHalfSqrt2 - (x + z)) / kSqrt2;
+    // POV-Ray keeps octagons just above one half
+    return std::max(0.500000000001, std::max(straight, diagonal));
+}
+
+// tiling 10: unit squares, every other row shifted by half a square.
+double squares_offset(const Vec3& p) {
+    double z = p.z - 2.0 * std::floor(p.z / 2.0);
+    double x = p.x;
+    if (z > 1.0) {
+        x += 0.5;
+        z -= 1.0;
+    }
+    x -= std::floor(x);
+    return std::max(2 * std::fabs(x - 0.5), 2 * std::fabs(z - 0.5));
+}
+
 }  // namespace
 
 double tiling(int type, const Vec3& p) {
@@ -134,6 +197,9 @@ double tiling(int type, const Vec3& p) {
         case 3: return triangles(p);
         case 4: return lozenges(p);
         case 5: return rhombi(p);
+        case 6: return rectangles(p);
+        case 7: return octagons_squares(p);
+        case 10: return squares_offset(p);
         default: return squares(p);
     }
 }

@@ -7,8 +7,8 @@
 namespace glint::render {
 
 // The value at p of tiling `type`: with one kind of tile, 0 deep inside a tile rising to 1 at
-// its edge; with several kinds, each kind has its own band of [0, 1]. Tilings 1 to 5; the
-// others (6 to 27, which the parser warns about) are drawn as tiling 1.
+// its edge; with several kinds, each kind has its own band of [0, 1]. Tilings 1 to 7 and 10;
+// the others (which the parser warns about) are drawn as tiling 1.
 double tiling(int type, const Vec3& p);
 
 }  // namespace glint::render
