@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "formats/pov/parser_impl.h"
+#include "formats/pov/unsupported.h"
 
 namespace glint::pov {
 
@@ -96,6 +97,40 @@ void Parser::parse_pattern_arguments(PatternKind kind, scene::PatternParams& pp,
         case PatternKind::Slope:
             parse_slope(pp.slope);
             break;
+        case PatternKind::Magnet: {  // magnet 1|2 mandel I | magnet 1|2 julia <c>, I
+            FileLoc tl = loc();
+            int type = to_int(parse_float());
+            if (accept("julia")) {
+                pp.magnet_julia = true;
+            } else if (!accept("mandel")) {
+                fail("expected 'mandel' or 'julia' after the magnet type");
+            }
+            if (type != 1 && type != 2)
+                fail_at(tl, std::string("magnet ") + (pp.magnet_julia ? "julia" : "mandel") +
+                                " type must be 1 or 2");
+            pp.magnet_type = type;
+            if (pp.magnet_julia) {
+                Num c = parse_num(2);
+                pp.julia_param = Vec2(c.v[0], c.v[1]);
+                skip_comma();
+            }
+            pp.iterations = to_int(parse_float());
+            pp.interior_type = 0;
+            pp.exterior_type = 1;
+            pp.interior_factor = pp.exterior_factor = 1;
+            break;
+        }
+        case PatternKind::Tiling: {  // tiling N, N from 1 to 27 (truncated like POV-Ray's)
+            FileLoc tl = loc();
+            int n = to_int(parse_float());
+            if (n < 1 || n > 27) fail_at(tl, "tiling number must be 1 to 27");
+            if (n > 7 && n != 10) {  // render/textures/tiling_pattern.cpp: 1 to 7 and 10
+                warn_unsupported(*this, "tiling " + std::to_string(n), tl,
+                                 "drawn as tiling 1 (squares)");
+            }
+            pp.tiling_type = n;
+            break;
+        }
         case PatternKind::PigmentPattern: {  // pigment_pattern { PIGMENT }
             expect_open("pigment_pattern");
             FileLoc po = loc();
@@ -240,6 +275,7 @@ bool Parser::parse_pattern_modifier(const std::string& w, PatternKind kind,
         if (!ok) fail("'" + w + "' applies only to " + what + " patterns");
     };
     const bool fractal = kind == PatternKind::Mandel || kind == PatternKind::Julia;
+    const bool fractal_colouring = fractal || kind == PatternKind::Magnet;
     if (w == "turbulence") {
         FileLoc l = loc();
         classic_turbulence(pp, l).amount = parse_vector();
@@ -312,7 +348,7 @@ bool Parser::parse_pattern_modifier(const std::string& w, PatternKind kind,
         only(kind == PatternKind::Facets, "facets");
         pp.facets_size = parse_float();
     } else if (w == "exterior" || w == "interior") {
-        only(fractal, "mandel and julia");
+        only(fractal_colouring, "mandel, julia and magnet");
         FileLoc l = loc();
         int type = to_int(parse_float());
         bool ext = w == "exterior";

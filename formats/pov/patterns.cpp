@@ -47,6 +47,7 @@ constexpr PatternWord kPatternWords[] = {
     {"function", PatternKind::Function},   {"density_file", PatternKind::DensityFile},
     {"object", PatternKind::Object},       {"pigment_pattern", PatternKind::PigmentPattern},
     {"slope", PatternKind::Slope},
+    {"magnet", PatternKind::Magnet},       {"tiling", PatternKind::Tiling},
 };
 
 std::optional<PatternKind> pattern_keyword(const std::string& w) {
@@ -59,7 +60,7 @@ std::optional<PatternKind> pattern_keyword(const std::string& w) {
 const std::unordered_set<std::string>& unsupported_patterns() {
     static const std::unordered_set<std::string> k = {
         "aoi", "image_pattern", "pavement",
-        "tiling", "magnet", "gradient_map", "material_map", "tiles"};
+        "gradient_map", "material_map", "tiles"};
     return k;
 }
 
@@ -91,20 +92,6 @@ bool takes_no_map(PatternKind k) {
 // (tiles, material_map), which leave the texture as it was.
 bool skip_unsupported_pattern(Parser& p, const std::string& w, PatternKind* kind,
                               scene::PatternParams* params, const char* consequence) {
-    if (w == "magnet") {  // magnet N mandel I | magnet N julia <c>, I
-        warn_unsupported(p, w, p.loc(), "drawn as the mandel pattern with its iterations");
-        p.parse_float();
-        bool julia = p.accept("julia");
-        if (!julia) p.accept("mandel");
-        if (julia) {
-            p.parse_vector();
-            p.skip_comma();
-        }
-        // Its interior/exterior modifiers still parse: they are the fractal ones.
-        *kind = PatternKind::Mandel;
-        params->iterations = to_int(p.parse_float());
-        return true;
-    }
     // The object pattern's entries sit inside its own block: the pigment or texture stays as
     // it was without it.
     warn_unsupported(p, w, p.loc(),
@@ -112,8 +99,6 @@ bool skip_unsupported_pattern(Parser& p, const std::string& w, PatternKind* kind
     if (w == "object" || w == "pigment_pattern" || w == "image_pattern" || w == "tiles" ||
         w == "material_map" || w == "gradient_map") {
         skip_braced_block(p, w);
-    } else if (w == "tiling") {
-        p.parse_float();
     } else if (w == "aoi") {
         if (p.next_is_expression_start()) p.parse_vector();
     } else if (w == "pavement") {

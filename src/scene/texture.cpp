@@ -34,6 +34,8 @@ const char* pattern_name(PatternKind kind) {
         case PatternKind::Wrinkles: return "wrinkles";
         case PatternKind::Mandel: return "mandel";
         case PatternKind::Julia: return "julia";
+        case PatternKind::Magnet: return "magnet";
+        case PatternKind::Tiling: return "tiling";
         case PatternKind::Function: return "function";
         case PatternKind::DensityFile: return "density_file";
         case PatternKind::Brick: return "brick";

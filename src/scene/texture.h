@@ -27,6 +27,9 @@ enum class PatternKind {
     Marble, Onion, Planar, Quilted, Radial, Ripples, Spherical, Spiral1, Spiral2, Spotted,
     Waves, Wood, Wrinkles, Mandel, Julia, Function,
     DensityFile,  // density_file df3 "file": a voxel grid over the unit cube
+    // magnet 1|2 mandel I | magnet 1|2 julia <c>, I: PatternParams::magnet_*
+    Magnet,
+    Tiling,  // tiling N: PatternParams::tiling_type
     // block patterns: entries (or map entries) chosen by the pattern value
     Brick, Hexagon, Square, Triangular, Cubic,
     // object { OBJECT A, B }: entries[1] inside the object (PatternParams::object), else [0]
@@ -178,6 +181,10 @@ struct PatternParams {
     Vec2 julia_param{0, 0};
     int exterior_type = 1, interior_type = 0;
     double exterior_factor = 1, interior_factor = 1;
+    // magnet: formula 1 or 2, and julia (julia_param is the constant) or mandel
+    int magnet_type = 1;
+    bool magnet_julia = false;
+    int tiling_type = 1;  // tiling: 1..27
     int function = -1;  // PatternKind::Function: index into Scene::functions
     int object = -1;    // PatternKind::Object: index into Scene::pattern_objects
     // PatternKind::PigmentPattern: the pigment, its transform relative to this pattern's space

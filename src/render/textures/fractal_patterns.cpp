@@ -145,4 +145,51 @@ double fractalx(const PatternParams& params, const Vec3& p, bool julia, int expo
     return fractal_interior(params, a, b, mindist2);
 }
 
+// POV-Ray's magnet patterns (magnet1m/1j/2m/2j): z -> (N(z) / D(z))^2 where, with c1 = c - 1
+// and c2 = c - 2, formula 1 has N = z^2 + c1, D = 2z + c2 and formula 2 has
+// N = z^3 + 3 c1 z + c1 c2, D = 3 z^2 + 3 c2 z + c1 c2 + 1. The mandel form starts at z = 0
+// with c the point, the julia form at z = the point with c the constant. The orbit escapes
+// past |z|^2 = 10000 or when it settles within 0.01 of the fixed point 1.
+double magnet(const PatternParams& params, const Vec3& p) {
+    const bool julia = params.magnet_julia;
+    const double cr = julia ? params.julia_param.x : p.x;
+    const double ci = julia ? params.julia_param.y : p.y;
+    double a = julia ? p.x : 0.0, b = julia ? p.y : 0.0;
+    double a2 = a * a, b2 = b * b;
+    double mindist2 = julia ? a2 + b2 : 10000.0;
+    // formula 2's constant term c1 c2 (complex)
+    const double c1r = cr - 1.0, c2r = cr - 2.0;
+    const double k_re = c1r * c2r - ci * ci, k_im = (c1r + c2r) * ci;
+    const int it_max = params.iterations;
+    for (int col = 0; col < it_max; ++col) {
+        double nr, ni, dr, di;
+        if (params.magnet_type == 2) {
+            nr = a2 * a - 3 * a * b2 + 3 * (a * c1r - b * ci) + k_re;
+            ni = 3 * a2 * b - b2 * b + 3 * (a * ci + b * c1r) + k_im;
+            dr = 3 * (a2 - b2) + 3 * (a * c2r - b * ci) + k_re + 1;
+            di = 6 * a * b + 3 * (a * ci + b * c2r) + k_im;
+        } else {
+            nr = a2 - b2 + cr - 1;
+            ni = 2 * a * b + ci;
+            dr = 2 * a + cr - 2;
+            di = 2 * b + ci;
+        }
+        // q = n / d, then z = q^2
+        const double den = dr * dr + di * di;
+        const double qr = (nr * dr + ni * di) / den;
+        const double qi = (ni * dr - nr * di) / den;
+        const double qi2 = qi * qi;
+        b = 2 * qr * qi;
+        a = qr * qr - qi2;
+        a2 = a * a;
+        b2 = b * b;
+        const double dist2 = a2 + b2;
+        if (dist2 < mindist2) mindist2 = dist2;
+        const double from_one = a - 1;
+        if (dist2 > 10000.0 || from_one * from_one + b2 < 1 / 10000.0)
+            return fractal_exterior(params, col, a, b);
+    }
+    return fractal_interior(params, a, b, mindist2);
+}
+
 }  // namespace glint::render

@@ -9,6 +9,7 @@
 #include "render/textures/fractal_patterns.h"
 #include "render/textures/pigment.h"
 #include "render/textures/pov_numbers.h"
+#include "render/textures/tiling_pattern.h"
 
 namespace glint::render {
 namespace {
@@ -593,6 +594,10 @@ double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
             if (e > 4) return fractalx(params, p, julia, e);
             return fractal2(params, p, julia);
         }
+        case PatternKind::Magnet:
+            return magnet(params, p);
+        case PatternKind::Tiling:
+            return tiling(params.tiling_type, p);
         case PatternKind::Marble:
             return marble(params, p, noise_generator(params, ctx));
         case PatternKind::Onion:
