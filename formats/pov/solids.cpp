@@ -517,8 +517,6 @@ scene::HeightField parse_height_field(Parser& p, std::string* left_out) {
         h.file_loc = p.loc();
         h.file = p.parse_string();
         h.resolved_path = p.resolve_file(h.file, h.file_loc);
-        if (!h.pot && h.file.size() > 4 && h.file.compare(h.file.size() - 4, 4, ".pot") == 0)
-            h.pot = true;
     }
     for (;;) {
         if (p.accept("water_level")) h.water_level = p.parse_float();
