@@ -300,8 +300,12 @@ public:
                     }
                     return r;
                 } else if constexpr (std::is_same_v<T, HeightField>)
-                    return "height_field \"" + v.file + "\" water_level " + num(v.water_level) +
-                           (v.smooth ? " smooth" : "");
+                    return (v.heights.empty()
+                                ? std::string("height_field ") + (v.pot ? "pot " : "") + "\"" +
+                                      v.file + "\""
+                                : "height_field function " + std::to_string(v.grid_w) + " " +
+                                      std::to_string(v.grid_h)) +
+                           " water_level " + num(v.water_level) + (v.smooth ? " smooth" : "");
                 else if constexpr (std::is_same_v<T, Poly>) {
                     std::string r = "poly " + std::to_string(v.order);
                     for (double c : v.coefficients) r += " " + num(c);

@@ -426,38 +426,98 @@ scene::Blob parse_blob(Parser& p, const FileLoc& kw) {
     return b;
 }
 
-// Reads over the rest of an object's body, up to (not including) its closing '}'.
-void skip_to_body_end(Parser& p) {
-    int depth = 0;
-    for (;;) {
-        const Token& t = p.next();
-        if (t.kind == TokKind::End || (depth == 0 && t.is_symbol('}'))) {
-            p.unget();
-            return;
+// A float converted to a 16-bit integer without a range check, as POV-Ray stores function
+// values into its 16-bit images: on x86-64 the value is truncated to 32 bits (out of range and
+// NaN give 0x80000000) and the low 16 bits kept, so 1.5 wraps around to 32766.
+uint16_t unchecked_u16(float v) {
+    if (!(v > -2147483648.0f && v < 2147483648.0f)) return 0;
+    return static_cast<uint16_t>(static_cast<uint32_t>(static_cast<int32_t>(v)));
+}
+
+// POV-Ray's Make_Pattern_Image and image_height_at (parstxtr.cpp, imageutil.cpp): a scalar
+// function fills a 16-bit grey image, a pigment function a 16-bit RGBA one whose grey is the
+// height. Image row i is the function at y = i / (H - 1) and lands at z = (H - 1 - i) / (H - 1).
+void evaluate_height_grid(Parser& p, int fn, scene::HeightField* h) {
+    const scene::Function& f = p.scene.functions[static_cast<size_t>(fn)];
+    const scene::FunctionEnv outer = p.function_env();
+    scene::FunctionEnv env = outer;
+    env.pattern = p.options.pattern_hook;
+    env.user = &outer;
+    const bool pigment = f.kind == scene::FunctionKind::Pigment;
+    const int w = h->grid_w, rows = h->grid_h;
+    h->heights.assign(static_cast<size_t>(w) * rows, 0);
+    for (int i = 0; i < rows; ++i) {
+        const double y = static_cast<double>(i) / (static_cast<float>(rows) - 1.0f);
+        uint16_t* out = &h->heights[static_cast<size_t>(rows - 1 - i) * w];
+        for (int j = 0; j < w; ++j) {
+            const double args[3] = {static_cast<double>(j) / (static_cast<float>(w) - 1.0f), y, 0};
+            if (!pigment) {
+                float v = static_cast<float>(scene::evaluate_function(env, fn, args, 3));
+                float grey = static_cast<float>(unchecked_u16(v * 65535.0f)) / 65535.0f;
+                out[j] = static_cast<uint16_t>(grey * 65535.0f);
+                continue;
+            }
+            double c[5] = {0, 0, 0, 0, 0};
+            scene::evaluate_function_vector(env, fn, args, 3, c);
+            double stored[3];
+            for (int k = 0; k < 3; ++k)
+                stored[k] = static_cast<float>(
+                                unchecked_u16(static_cast<float>(c[k]) * 65535.0f)) /
+                            65535.0f;
+            double grey = 0.297 * stored[0] + 0.589 * stored[1] + 0.114 * stored[2];
+            out[j] = static_cast<uint16_t>(std::clamp(grey * 65535.0f, 0.0, 65535.0));
         }
-        if (t.is_symbol('{')) ++depth;
-        if (t.is_symbol('}')) --depth;
     }
+}
+
+// `function W, H { body }` after height_field's `function`. Empty result: left out.
+bool parse_height_function(Parser& p, scene::HeightField* h, std::string* left_out) {
+    p.peek();
+    FileLoc at = p.loc();
+    const double w = p.parse_float();
+    p.skip_comma();
+    const double rows = p.parse_float();
+    if (!p.peek().is_symbol('{')) p.fail("expected '{' after the height_field function's size");
+    const int fn = p.parse_function_definition();
+    if (!(w + 0.5 >= 2 && rows + 0.5 >= 2 && (w + 0.5) * (rows + 0.5) <= 1 << 26))
+        p.fail_at(at, "height_field function size must be at least 2 x 2 and at most 2^26 "
+                      "points");
+    h->grid_w = static_cast<int>(w + 0.5);
+    h->grid_h = static_cast<int>(rows + 0.5);
+    const scene::Function& f = p.scene.functions[static_cast<size_t>(fn)];
+    if (f.kind == scene::FunctionKind::Transform || f.kind == scene::FunctionKind::Spline)
+        p.fail_at(at, "unsupported function type in a height_field function (a pigment or a "
+                      "scalar function is needed)");
+    if ((f.kind == scene::FunctionKind::Pattern || f.kind == scene::FunctionKind::Pigment) &&
+        !p.options.pattern_hook) {
+        *left_out = "height_field from a pattern or pigment function here";
+        warn_unsupported(p, *left_out, at, "the object is left out");
+        return false;
+    }
+    evaluate_height_grid(p, fn, h);
+    return true;
 }
 
 scene::HeightField parse_height_field(Parser& p, std::string* left_out) {
     static const std::unordered_set<std::string> kTypes = {
-        "gif", "tga", "iff", "pgm", "ppm", "png", "jpeg", "tiff", "sys", "exr", "hdr"};
+        "gif", "tga", "iff", "pgm", "ppm", "png", "jpeg", "tiff", "sys", "exr", "hdr", "pot"};
     scene::HeightField h;
     const Token& t = p.peek();
-    if (t.is("function") || t.is("pot")) {
-        // Height fields from functions and Fractint .pot files: left out, the render goes on.
-        *left_out = t.is("pot") ? "height_field from a pot file" : "height_field from a function";
+    bool body = true;
+    if (t.is("function") && !p.lookup(t.text)) {
         p.next();
-        warn_unsupported(p, *left_out, p.loc(), "the object is left out");
-        skip_to_body_end(p);
-        return h;
+        body = parse_height_function(p, &h, left_out);
+        if (!body) h = scene::HeightField{};
+    } else {
+        if (t.kind == TokKind::Word && kTypes.count(t.text) && !p.lookup(t.text)) {
+            h.pot = t.is("pot");
+            p.next();
+        }
+        p.peek();
+        h.file_loc = p.loc();
+        h.file = p.parse_string();
+        h.resolved_path = p.resolve_file(h.file, h.file_loc);
     }
-    if (t.kind == TokKind::Word && kTypes.count(t.text) && !p.lookup(t.text)) p.next();
-    p.peek();
-    h.file_loc = p.loc();
-    h.file = p.parse_string();
-    h.resolved_path = p.resolve_file(h.file, h.file_loc);
     for (;;) {
         if (p.accept("water_level")) h.water_level = p.parse_float();
         else if (p.accept("smooth")) h.smooth = true;

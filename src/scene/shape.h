@@ -2,6 +2,7 @@
 // placed by the object's transform. CSG nodes hold child objects, so the tree is a value.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <variant>
@@ -134,6 +135,14 @@ struct Blob {
 struct HeightField {
     std::string file;           // as written in the scene
     std::string resolved_path;  // found by the importer
+    // `pot "file"`: a Fractint .pot file, a GIF whose left half holds the heights' high bytes
+    // and right half their low bytes (POV-Ray's gif.cpp), as palette indices.
+    bool pot = false;
+    // `function W, H { ... }`: the heights the importer evaluated, grid_w x grid_h values in
+    // POV-Ray's 1/65536 units, row z = 0 first. As for images, the function's row y = 0 lies
+    // at z = 1 (POV-Ray builds an image from the function); no file then.
+    int grid_w = 0, grid_h = 0;
+    std::vector<uint16_t> heights;
     bool smooth = false;
     double water_level = 0;     // heights below it are cut away
     FileLoc file_loc;

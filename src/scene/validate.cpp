@@ -184,6 +184,9 @@ private:
     }
     void shape(const HeightField& s, const FileLoc& loc) {
         check_finite(s.water_level, loc, "height_field water_level");
+        if (!s.heights.empty() && (s.grid_w < 2 || s.grid_h < 2 ||
+                                   s.heights.size() != static_cast<size_t>(s.grid_w) * s.grid_h))
+            fail(loc, "internal: height_field grid size does not match its heights");
     }
     void shape(const Poly& s, const FileLoc& loc) {
         int n = (s.order + 1) * (s.order + 2) * (s.order + 3) / 6;

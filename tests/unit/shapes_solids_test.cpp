@@ -330,10 +330,11 @@ TEST(SolidsParser, BodiesIntoTheIr) {
         "blob { threshold 0.4 sphere { <1,0,0>, 2, strength 3 scale 2 } "
         "cylinder { 0, y, 1, -1 } component 1, 2, <0,1,0> }\n"
         "polynomial { 2, xyz(2,0,0): 1, xyz(0,0,0): -1 }\n"
-        "height_field { function 8, 8 { x } translate y }\n"  // left out with a warning
+        "height_field { function 8, 8 { x } translate y }\n"
         "prism { -0.5, 0.5, 4 <-1, -0.3>, <1, 0>, <-1, 0.3>, <-1, -0.3> }");  // no comma
-    ASSERT_EQ(sc.objects.size(), 5u);
-    EXPECT_EQ(std::get<scene::Prism>(sc.objects[4].shape).points.size(), 4u);
+    ASSERT_EQ(sc.objects.size(), 6u);
+    EXPECT_EQ(std::get<scene::HeightField>(sc.objects[4].shape).grid_w, 8);
+    EXPECT_EQ(std::get<scene::Prism>(sc.objects[5].shape).points.size(), 4u);
     const auto& p = std::get<scene::Prism>(sc.objects[0].shape);
     EXPECT_TRUE(p.conic);
     EXPECT_TRUE(p.open);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "image/gif_indices.h"
 #include "image/palette.h"
 #include "image/png_reader.h"
 #include "image/image_limits.h"
@@ -239,12 +240,52 @@ private:
     double ylo_, yhi_, sx_, sz_;
 };
 
+// A .pot file: 16-bit heights from the indices of the GIF's two halves (POV-Ray's gif.cpp),
+// through POV-Ray's 16-bit grey image, whose value it scales back to 65535 in float.
+std::unique_ptr<Primitive> make_pot_height_field(const scene::HeightField& s,
+                                                 const std::string& path, const FileLoc& at,
+                                                 const Transform& shading, const char** why) {
+    GifIndices gif;
+    std::string err;
+    if (!read_gif_indices(path, &gif, &err))
+        throw Error(ErrorKind::MissingFile, at,
+                    "cannot read height_field pot file '" + s.file + "': " + err);
+    if (gif.width % 2 != 0)
+        throw Error(ErrorKind::Scene, at, "invalid width for the pot file '" + s.file +
+                                              "' (it must be even)");
+    const int w = gif.width / 2, h = gif.height;
+    if (w < 2 || h < 2) {
+        *why = "height_field image smaller than 2x2";
+        return nullptr;
+    }
+    check_image_size(w, h, 1, s.file, at);
+    std::vector<uint16_t> map(static_cast<size_t>(w) * h);
+    for (int z = 0; z < h; ++z) {
+        const uint8_t* row = &gif.index[static_cast<size_t>(h - 1 - z) * gif.width];
+        for (int x = 0; x < w; ++x) {
+            const unsigned v = unsigned{row[x]} << 8 | row[x + w];
+            const float grey = static_cast<float>(v) / 65535.0f;
+            map[static_cast<size_t>(z) * w + x] = static_cast<uint16_t>(grey * 65535.0f);
+        }
+    }
+    return std::make_unique<HeightFieldPrim>(w, h, std::move(map), s.smooth, s.water_level,
+                                             shading);
+}
+
 }  // namespace
 
 std::unique_ptr<Primitive> make_height_field(const scene::HeightField& s, const FileLoc& loc,
                                              const Transform& shading, const char** why) {
+    if (!s.heights.empty()) {  // a function's heights, evaluated by the importer
+        if (s.grid_w < 2 || s.grid_h < 2 ||
+            s.heights.size() != static_cast<size_t>(s.grid_w) * s.grid_h)
+            throw Error(ErrorKind::Scene, loc, "internal: height_field grid size mismatch");
+        return std::make_unique<HeightFieldPrim>(s.grid_w, s.grid_h, s.heights, s.smooth,
+                                                 s.water_level, shading);
+    }
     const std::string& path = s.resolved_path.empty() ? s.file : s.resolved_path;
     FileLoc at = s.file_loc.line > 0 ? s.file_loc : loc;
+    if (s.pot) return make_pot_height_field(s, path, at, shading, why);
     QuietStderr quiet;  // libpng's own lines: glint's error says what went wrong
     std::string err;
     std::unique_ptr<ImageReader> in = open_image(path, {}, &err);
