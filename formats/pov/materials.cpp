@@ -306,7 +306,7 @@ void Parser::parse_finish_body(scene::Finish& f) {
             f.irid = parse_float();
             for (;;) {
                 if (accept("thickness")) f.irid_thickness = parse_float();
-                else if (accept("turbulence")) f.irid_turbulence = parse_float();
+                else if (accept("turbulence")) f.irid_turbulence = parse_vector().x;
                 else break;
             }
             expect_close("irid", o);

@@ -326,18 +326,17 @@ TEST(PovMaterials, UnsupportedFeaturesSaySo) {
     EXPECT_DOUBLE_EQ(sp.weight, 0.75);
     EXPECT_EQ(error_of("sphere { 0, 1 pigment { slope { point_at 0 altitude y } } }"),
               "1:44: 'altitude' cannot be used with 'point_at' in the slope pattern");
-    // A finish effect glint lacks is a warning at its keyword; the rest of the finish counts.
+    // irid { amount thickness t turbulence <u> } (POV-Ray reads a vector, keeps its x).
     Diagnostics diag;
-    scene::Scene s = parse_string("sphere { 0, 1 finish { irid { 0.3 } phong 1 } }", "test.pov",
-                                  {}, diag);
-    int irid = 0;
-    for (const Diagnostic& d : diag.all())
-        if (d.message == "'irid' is not supported: the finish's irid block is ignored") {
-            ++irid;
-            EXPECT_EQ(d.loc.column, 24);
-        }
-    EXPECT_EQ(irid, 1);
-    EXPECT_DOUBLE_EQ(s.materials.back().texture.finish.phong, 1.0);
+    scene::Scene s = parse_string(
+        "sphere { 0, 1 finish { irid { 0.3 turbulence <0.4, 9, 9> thickness 0.2 } phong 1 } }",
+        "test.pov", {}, diag);
+    const scene::Finish& fi = s.materials.back().texture.finish;
+    for (const Diagnostic& d : diag.all()) EXPECT_EQ(d.message.find("irid"), std::string::npos);
+    EXPECT_DOUBLE_EQ(fi.irid, 0.3);
+    EXPECT_DOUBLE_EQ(fi.irid_turbulence, 0.4);
+    EXPECT_DOUBLE_EQ(fi.irid_thickness, 0.2);
+    EXPECT_DOUBLE_EQ(fi.phong, 1.0);
     // Objects glint lacks are left out with a warning (pov_unsupported_test.cpp).
     EXPECT_EQ(error_of("ovus { }"), "(no error)");
     EXPECT_EQ(warnings_of("sphere { 0, 1 texture { tiles { texture { } tile2 texture { } } } }"),

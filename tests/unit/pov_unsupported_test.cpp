@@ -145,7 +145,6 @@ TEST(PovUnsupported, FinishFeatures) {
               (std::vector<std::string>{
                   "2:32: 'albedo' is not supported: ignored",
                   "2:42: 'diffuse backside illumination' is not supported: ignored",
-                  "2:48: 'irid' is not supported: the finish's irid block is ignored",
                   "3:35: 'finish ior' is not supported: ignored (write it in interior)"}));
 }
 

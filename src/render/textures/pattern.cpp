@@ -8,6 +8,7 @@
 #include "render/textures/density_file.h"
 #include "render/textures/fractal_patterns.h"
 #include "render/textures/pigment.h"
+#include "render/textures/surface_patterns.h"
 #include "render/textures/pov_numbers.h"
 #include "render/textures/tiling_pattern.h"
 
@@ -495,42 +496,6 @@ double function_pattern(const PatternParams& params, const Vec3& p, const Patter
     return v > 1.0 ? std::fmod(v, 1.0) : v;
 }
 
-// POV-Ray's slope_pattern: the normal's angle against the slope vector (or towards a point)
-// mapped to 0..1, optionally mixed with the point's height along the altitude vector.
-double slope(const scene::SlopeParams& s, const Vec3& p, const PatternContext& ctx) {
-    if (!ctx.normal) return 0.0;
-    const Vec3& n = *ctx.normal;
-    double v1;
-    if (s.point_at) {
-        v1 = dot(n, normalize(s.vector - p));
-    } else if (s.base > 0) {
-        v1 = n[s.base - 1];
-    } else if (s.base < 0) {
-        v1 = -n[-s.base - 1];
-    } else {
-        v1 = dot(n, s.vector);
-    }
-    v1 = std::clamp(v1, -1.0, 1.0);
-    v1 = (std::asin(v1) / kPi * 2 + 1.0) * 0.5;
-    if (s.span != 0.0) v1 = (v1 - s.lo) / s.span;
-    if (s.altitude_weight == 0.0) {
-        if (v1 == 1.0) return v1 - kPovEpsilon;
-        return v1 < 0.0 ? 1.0 + std::fmod(v1, 1.0) : std::fmod(v1, 1.0);
-    }
-    double v2;
-    if (s.altitude_base > 0) {
-        v2 = p[s.altitude_base - 1];
-    } else if (s.altitude_base < 0) {
-        v2 = -p[-s.altitude_base - 1];
-    } else {
-        v2 = dot(p, s.altitude);
-    }
-    if (s.altitude_span != 0.0) v2 = (v2 - s.altitude_lo) / s.altitude_span;
-    double v = s.weight * v1 + s.altitude_weight * v2;
-    if (v - 1.0 < kPovEpsilon && v >= 1.0) return v - kPovEpsilon;
-    return v < 0.0 ? 1.0 + std::fmod(v, 1.0) : std::fmod(v, 1.0);
-}
-
 double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
                    const PatternContext& ctx) {
     switch (kind) {
@@ -573,15 +538,9 @@ double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
                        ? 1.0
                        : 0.0;
         case PatternKind::Slope:
-            return slope(params.slope, p, ctx);
-        case PatternKind::PigmentPattern: {
-            // POV-Ray's pigment_pattern: the pigment's grey where it has a color, else 0.
-            scene::ColorFT c;
-            if (!params.pigment ||
-                !PigmentEvaluator(ctx.textures, ctx).evaluate(*params.pigment, {p, {}, false}, &c))
-                return 0.0;
-            return 0.297 * c.rgb.r + 0.589 * c.rgb.g + 0.114 * c.rgb.b;
-        }
+            return slope_pattern(params.slope, p, ctx);
+        case PatternKind::PigmentPattern:
+            return pigment_pattern(params, p, ctx);
         case PatternKind::Leopard:
             return leopard(p);
         case PatternKind::Mandel:

@@ -1,0 +1,15 @@
+// Patterns that read more than the point: slope (the surface normal, PatternContext::normal)
+// and pigment_pattern (a whole pigment evaluated at the point). Called by evaluate_pattern.
+#pragma once
+
+#include "render/textures/pattern.h"
+
+namespace glint::render {
+
+// POV-Ray's slope_pattern; 0 where the context has no surface normal.
+double slope_pattern(const scene::SlopeParams& s, const Vec3& p, const PatternContext& ctx);
+// POV-Ray's pigment_pattern: params.pigment's grey at p, 0 where it has no color.
+double pigment_pattern(const scene::PatternParams& params, const Vec3& p,
+                       const PatternContext& ctx);
+
+}  // namespace glint::render
