@@ -312,11 +312,20 @@ void Parser::parse_radiosity_settings() {
         } else if (take("brightness")) {
             r.brightness = positive("brightness", parse_float());
         } else if (take("count")) {
+            // POV-Ray sets no upper bound; glint stops a count or direction pool that would
+            // take more memory and time than any scene means (each sample is a ray per
+            // cache point), before converting it to an int.
+            constexpr double kMaxDirections = 1e6;
             const double c = parse_float();
-            if (static_cast<int>(c) <= 0) fail("radiosity count must be a positive number");
+            if (!(c >= 1.0)) fail("radiosity count must be a positive number");
+            if (c > kMaxDirections) fail("radiosity count must be at most 1000000");
             r.count = static_cast<int>(c);
             skip_comma();
-            r.direction_pool = static_cast<int>(allow_float(std::max(1600, r.count)));
+            const double pool = allow_float(std::max(1600, r.count));
+            if (!(pool >= 0 && pool <= kMaxDirections))
+                fail("the radiosity direction pool (count's second value) must be from the "
+                     "count to 1000000");
+            r.direction_pool = static_cast<int>(pool);
             if (r.direction_pool < r.count)
                 fail("radiosity count can not be more than its direction pool (count's second "
                      "value)");
@@ -401,16 +410,16 @@ void Parser::parse_photon_settings() {
             if (!(ph.spacing > 0)) fail("photons spacing must be positive");
         } else if (take("count")) {
             ph.loc = at;
-            ph.count = static_cast<int>(parse_float());
+            ph.count = to_int(parse_float());
             if (ph.count <= 0) fail_at(at, "photons count must be positive");
         } else if (take("expand_thresholds")) {
             ph.expand_tolerance = std::max(0.0, parse_float());
             skip_comma();
-            ph.expand_min = std::max(0, static_cast<int>(parse_float()));
+            ph.expand_min = std::max(0, to_int(parse_float()));
         } else if (take("gather")) {
-            ph.gather_min = static_cast<int>(parse_float());
+            ph.gather_min = to_int(parse_float());
             skip_comma();
-            ph.gather_max = static_cast<int>(parse_float());
+            ph.gather_max = to_int(parse_float());
             if (ph.gather_min < 0 || ph.gather_max < 0)
                 fail_at(at, "photons gather counts cannot be negative");
             if (ph.gather_min > ph.gather_max)
@@ -422,13 +431,13 @@ void Parser::parse_photon_settings() {
         } else if (take("adc_bailout")) {
             ph.adc_bailout = parse_float();
         } else if (take("max_trace_level")) {
-            ph.max_trace_level = static_cast<int>(parse_float());
+            ph.max_trace_level = to_int(parse_float());
         } else if (take("load_file")) {
             ph.load_file = parse_string();
         } else if (take("save_file")) {
             ph.save_file = parse_string();
         } else if (take("media")) {
-            ph.media_steps = static_cast<int>(parse_float());
+            ph.media_steps = to_int(parse_float());
             if (ph.media_steps < 0) fail("photons media: max media steps must be non-negative");
             skip_comma();
             ph.media_factor = allow_float(1);

@@ -409,6 +409,10 @@ TEST(PovScene, GlobalRadiositySettings) {
     EXPECT_EQ(d.global.radiosity->minimum_reuse, 0.01);
     // POV-Ray's range checks.
     for (const char* bad : {"global_settings { radiosity { count 0 } }",
+                            // the fuzzer's: a count past int (and any pool past glint's limit)
+                            "global_settings { radiosity { count 20000002000000 } }",
+                            "global_settings { radiosity { count 10, 1e30 } }",
+                            "global_settings { radiosity { count 10, -1e30 } }",
                             "global_settings { radiosity { pretrace_start 0.01 pretrace_end 0.1 } }",
                             "global_settings { radiosity { nearest_count 21 } }",
                             "global_settings { radiosity { recursion_limit 0 } }",
