@@ -312,26 +312,21 @@ void Parser::parse_radiosity_settings() {
         } else if (take("brightness")) {
             r.brightness = positive("brightness", parse_float());
         } else if (take("count")) {
-            // POV-Ray sets no upper bound; glint stops a count or direction pool that would
-            // take more memory and time than any scene means (each sample is a ray per
-            // cache point), before converting it to an int.
-            constexpr double kMaxDirections = 1e6;
+            // Each gather shoots `count` rays: past a million, a render that never ends (POV-Ray
+            // sets no bound). Checked on the floats, before the int conversion.
+            const char* too_many =
+                "radiosity count and its direction pool must be at most 1000000";
             const double c = parse_float();
             if (!(c >= 1.0)) fail("radiosity count must be a positive number");
-            if (c > kMaxDirections) fail("radiosity count must be at most 1000000");
+            if (c > 1e6) fail_at(at, too_many);
             r.count = static_cast<int>(c);
             skip_comma();
             const double pool = allow_float(std::max(1600, r.count));
-            if (!(pool >= 0 && pool <= kMaxDirections))
-                fail("the radiosity direction pool (count's second value) must be from the "
-                     "count to 1000000");
-            r.direction_pool = static_cast<int>(pool);
-            if (r.direction_pool < r.count)
+            if (pool > 1e6) fail_at(at, too_many);
+            if (!(pool >= r.count))
                 fail("radiosity count can not be more than its direction pool (count's second "
                      "value)");
-            // Each gather shoots `count` rays: past a million, a render that never ends.
-            if (r.direction_pool > 1'000'000)
-                fail_at(at, "radiosity count and its direction pool must be at most 1000000");
+            r.direction_pool = static_cast<int>(pool);
         } else if (take("error_bound")) {
             r.error_bound = positive("error_bound", parse_float());
         } else if (take("gray_threshold")) {
