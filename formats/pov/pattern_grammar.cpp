@@ -59,6 +59,18 @@ int clamp_octaves(double v) {
 // caller, which knows what they are (colors, pigments, normals, textures).
 void Parser::parse_pattern_arguments(PatternKind kind, scene::PatternParams& pp, bool normal) {
     FileLoc l = loc();
+    // mandel, julia and magnet: [the julia constant,] the iterations, POV-Ray's colouring.
+    auto fractal_tail = [&](bool julia) {
+        if (julia) {
+            Num c = parse_num(2);
+            pp.julia_param = Vec2(c.v[0], c.v[1]);
+            skip_comma();
+        }
+        pp.iterations = to_int(parse_float());
+        pp.interior_type = 0;
+        pp.exterior_type = 1;
+        pp.interior_factor = pp.exterior_factor = 1;
+    };
     switch (kind) {
         case PatternKind::Agate:
             pp.agate_turb = 1.0;
@@ -83,15 +95,7 @@ void Parser::parse_pattern_arguments(PatternKind kind, scene::PatternParams& pp,
         }
         case PatternKind::Mandel:
         case PatternKind::Julia:
-            if (kind == PatternKind::Julia) {
-                Num c = parse_num(2);
-                pp.julia_param = Vec2(c.v[0], c.v[1]);
-                skip_comma();
-            }
-            pp.iterations = to_int(parse_float());
-            pp.interior_type = 0;
-            pp.exterior_type = 1;
-            pp.interior_factor = pp.exterior_factor = 1;
+            fractal_tail(kind == PatternKind::Julia);
             pp.fractal_exponent = 2;
             break;
         case PatternKind::Slope:
@@ -109,15 +113,7 @@ void Parser::parse_pattern_arguments(PatternKind kind, scene::PatternParams& pp,
                 fail_at(tl, std::string("magnet ") + (pp.magnet_julia ? "julia" : "mandel") +
                                 " type must be 1 or 2");
             pp.magnet_type = type;
-            if (pp.magnet_julia) {
-                Num c = parse_num(2);
-                pp.julia_param = Vec2(c.v[0], c.v[1]);
-                skip_comma();
-            }
-            pp.iterations = to_int(parse_float());
-            pp.interior_type = 0;
-            pp.exterior_type = 1;
-            pp.interior_factor = pp.exterior_factor = 1;
+            fractal_tail(pp.magnet_julia);
             break;
         }
         case PatternKind::Tiling: {  // tiling N, N from 1 to 27 (truncated like POV-Ray's)
