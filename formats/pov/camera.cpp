@@ -147,7 +147,14 @@ void Parser::parse_camera_body(scene::Camera& cam) {
             if (accept(",")) parse_float();
         } else if (w == "confidence" || w == "variance") {
             parse_float();
-        } else if (w == "normal" || w == "bokeh") {
+        } else if (w == "normal") {
+            // Parse_Tnormal: a camera without a normal starts from the default texture's.
+            if (n.normal.kind == scene::PatternKind::Plain) n.normal = default_texture_.normal;
+            expect_open("normal");
+            const FileLoc lo = loc();
+            parse_normal_body(n.normal);
+            expect_close("normal", lo);
+        } else if (w == "bokeh") {
             warn_unsupported(*this, "camera " + w, loc(), "ignored");
             skip_braced_block(*this, w);
         } else {

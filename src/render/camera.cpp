@@ -3,14 +3,15 @@
 #include <cmath>
 
 #include "render/panorama.h"
+#include "render/textures/normal.h"
 
 namespace glint::render {
 
 using scene::CameraKind;
 
 Camera::Camera(const scene::Camera& camera, int width, int height,
-               const std::vector<scene::Mesh>* meshes)
-    : camera_(camera), width_(width), height_(height) {
+               const std::vector<scene::Mesh>* meshes, const PatternContext& normal_context)
+    : camera_(camera), normal_ctx_(normal_context), width_(width), height_(height) {
     if (camera.kind == CameraKind::Mesh && meshes)
         mesh_ = std::make_shared<const MeshCameraRays>(camera.mesh_camera, *meshes,
                                                        camera.location.z,
@@ -75,7 +76,10 @@ Vec3 rotate_about(const Vec3& v, const Vec3& axis, double angle) {
 std::optional<Ray> Camera::generate(double x, double y, int ray_number) const {
     if (camera_.kind == CameraKind::Mesh) {
         if (!mesh_) return std::nullopt;
-        return mesh_->generate(x, y, ray_number, width_, height_);
+        std::optional<Ray> ray = mesh_->generate(x, y, ray_number, width_, height_);
+        // POV-Ray's mesh camera leaves (x0, y0) at 0 for a camera `normal`.
+        if (ray && camera_.normal.kind != scene::PatternKind::Plain) perturb(Vec3(0, 0, 0), &*ray);
+        return ray;
     }
     return generate(x, y);
 }
@@ -115,6 +119,9 @@ std::optional<Ray> Camera::pinhole(double x, double y) const {
     Ray ray;
     ray.origin = c.location;
     const double deg = kPi / 180.0;
+    // (x0, y0) as POV-Ray's projection leaves them: the point where a camera `normal` is
+    // evaluated (CreateCameraRay).
+    double x0n = sx, y0n = sy;
     switch (c.kind) {
         case CameraKind::Perspective:
             ray.dir = c.direction + c.right * sx + c.up * sy;
@@ -129,6 +136,8 @@ std::optional<Ray> Camera::pinhole(double x, double y) const {
             if (rad > 1.0) return std::nullopt;  // outside the image circle: no ray
             double phi = polar_angle(x0, y0, rad);
             double theta = rad * c.angle * kPi / 360.0;
+            x0n = phi;
+            y0n = theta;
             ray.dir = c.right * (std::cos(phi) * std::sin(theta)) +
                       c.up * (std::sin(phi) * std::sin(theta)) + c.direction * std::cos(theta);
             break;
@@ -150,6 +159,8 @@ std::optional<Ray> Camera::pinhole(double x, double y) const {
             double phi = polar_angle(x0, y0, rad);
             double theta = 1.411269 * rad - 0.09439 * rad * rad * rad +
                            0.25674 * rad * rad * rad * rad * rad;
+            x0n = phi;
+            y0n = theta;
             double cx = std::cos(phi), sxp = std::sin(phi);
             double cy = std::cos(theta), sy2 = std::sin(theta);
             // Nothing below 45 degrees under the projection axis.
@@ -165,39 +176,53 @@ std::optional<Ray> Camera::pinhole(double x, double y) const {
                 ty = y0 > 0 ? 1e10 : -1e10;  // BOUND_HUGE
             else
                 ty = std::tan(y0);
+            x0n = x0;
+            y0n = y0;
             ray.dir = c.right * std::cos(x0) + c.up * ty + c.direction * std::sin(x0);
             break;
         }
         case CameraKind::UltraWideAngle: {
             double x0 = sx * c.angle * deg, y0 = sy * c.angle * aspect_ * deg;
+            x0n = x0;
+            y0n = y0;
             ray.dir = c.right * std::sin(x0) + c.up * std::sin(y0) +
                       c.direction * (std::cos(x0) * std::cos(y0));
             break;
         }
         case CameraKind::Cylinder1: {
             double x0 = sx * c.angle * deg, y0 = sy * aspect_;
+            x0n = x0;
+            y0n = y0;
             ray.dir = c.right * std::sin(x0) + c.up * y0 + c.direction * std::cos(x0);
             break;
         }
         case CameraKind::Cylinder2: {
             double y0 = sy * c.angle * deg, x0 = sx * aspect_;
+            x0n = x0;
+            y0n = y0;
             ray.dir = c.right * x0 + c.up * std::sin(y0) + c.direction * std::cos(y0);
             break;
         }
         case CameraKind::Cylinder3: {
             double x0 = sx * c.angle * deg, y0 = sy * aspect_;
+            x0n = x0;
+            y0n = y0;
             ray.dir = c.right * std::sin(x0) + c.direction * std::cos(x0);
             ray.origin = c.location + c.up * y0;
             break;
         }
         case CameraKind::Cylinder4: {
             double y0 = sy * c.angle * deg, x0 = sx * aspect_;
+            x0n = x0;
+            y0n = y0;
             ray.dir = c.up * std::sin(y0) + c.direction * std::cos(y0);
             ray.origin = c.location + c.right * x0;
             break;
         }
         case CameraKind::Spherical: {
             double y0 = sy * c.v_angle * deg, x0 = sx * c.h_angle * deg;
+            x0n = x0;
+            y0n = y0;
             // Latitude about `right`, then longitude about `up`.
             Vec3 v = rotate_about(c.direction, c.right, -y0);
             ray.dir = rotate_about(v, c.up, x0);
@@ -217,7 +242,17 @@ std::optional<Ray> Camera::pinhole(double x, double y) const {
     if (!(length_squared(ray.dir) > 0) || !std::isfinite(length_squared(ray.dir)))
         return std::nullopt;
     ray.dir = normalize(ray.dir);
+    if (c.normal.kind != scene::PatternKind::Plain) perturb(Vec3(x0n, y0n, 0), &ray);
     return ray;
+}
+
+void Camera::perturb(const Vec3& at, Ray* ray) const {
+    // The unit direction is bent like a surface normal by the pattern evaluated at `at`
+    // (POV-Ray's Perturb_Normal on the ray direction).
+    PatternPoint point;
+    point.p = at;
+    ray->dir = normalize(perturb_normal(camera_.normal, point, ray->dir, normal_ctx_,
+                                             normal_ctx_.textures));
 }
 
 namespace {

@@ -9,6 +9,7 @@
 
 #include "render/mesh_camera.h"
 #include "render/ray.h"
+#include "render/textures/pattern.h"
 #include "scene/camera.h"
 
 namespace glint::render {
@@ -16,9 +17,11 @@ namespace glint::render {
 class Camera {
 public:
     // `meshes`: the scene's, for a mesh_camera (scene::CameraKind::Mesh; without them it
-    // traces no ray).
+    // traces no ray). `normal_context`: what a camera `normal` pattern sees (the scene's noise
+    // generator, functions, images); the pointers must outlive the camera.
     Camera(const scene::Camera& camera, int width, int height,
-           const std::vector<scene::Mesh>* meshes = nullptr);
+           const std::vector<scene::Mesh>* meshes = nullptr,
+           const PatternContext& normal_context = {});
 
     // Ray through raster position (x, y): integer values are pixel centres, x grows to the right
     // and y downwards (so supersamples at x +- 0.3 stay inside pixel x). Direction normalized.
@@ -49,8 +52,11 @@ private:
     // Moves a perspective or orthographic ray through the thin lens (scene::Lens).
     void with_lens(double lens_u, double lens_v, Ray* ray) const;
     std::optional<Ray> generate_panorama(double x, double y, double lens_u, double lens_v) const;
+    // Bends a POV-Ray ray's direction by the camera `normal` evaluated at `at`.
+    void perturb(const Vec3& at, Ray* ray) const;
 
     scene::Camera camera_;
+    PatternContext normal_ctx_;
     std::shared_ptr<const MeshCameraRays> mesh_;
     double width_;
     double height_;

@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/math.h"
 #include "core/transform.h"
+#include "scene/texture.h"
 
 namespace glint::scene {
 
@@ -102,6 +103,9 @@ struct Camera {
     Lens lens;
     Panorama panorama;       // kind BlenderPanorama only
     MeshCamera mesh_camera;  // kind Mesh only
+    // POV-Ray's camera `normal`: bends every primary ray's direction as a surface normal,
+    // evaluated at the projection's screen point (x0, y0, 0). Plain: rays are not bent.
+    Normal normal;
     // Blender's Clip Start / End: camera rays start clip_start in front of the camera (along
     // its axis for perspective and orthographic views, along the ray for panoramas) and see
     // nothing past clip_end, as Cycles clips them. POV-Ray cameras never clip.

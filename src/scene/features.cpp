@@ -21,6 +21,7 @@ public:
             for (const Pigment& p : scene_.sky_sphere->pigments) pigment(p);
         }
         for (const Media& m : scene_.media) media(m);
+        normal(scene_.camera.normal);
         f_.radiosity = scene_.global.radiosity.has_value();
         f_.photons = scene_.global.photons.has_value();
         std::vector<bool> used(scene_.materials.size(), false);

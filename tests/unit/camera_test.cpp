@@ -185,5 +185,26 @@ TEST(Camera, CylinderThreeIsOrthographicVertically) {
     EXPECT_FALSE(cam.rays_start_at_location());
 }
 
+TEST(Camera, NormalBendsRaysAlongThePatternsSlope) {
+    // POV-Ray's camera `normal`: a gradient x slope adds a vector along x to each unit
+    // direction, so the rays' y : z proportion stays while x changes; a normal of amount 0
+    // leaves the rays as they were.
+    scene::Camera c = basic_camera();
+    c.normal.kind = scene::PatternKind::Gradient;
+    c.normal.params.vector = Vec3(1, 0, 0);
+    c.normal.amount = 0.5;
+    Camera bent(c, 64, 48), plain(basic_camera(), 64, 48);
+    for (const auto& [x, y] : {std::pair{3.0, 5.0}, std::pair{40.0, 30.0}}) {
+        const Ray a = *bent.generate(x, y), b = *plain.generate(x, y);
+        EXPECT_NEAR(length(a.dir), 1.0, 1e-14);
+        EXPECT_NEAR(a.dir.y / a.dir.z, b.dir.y / b.dir.z, 1e-7);  // a numeric slope
+        EXPECT_GT(std::fabs(a.dir.x - b.dir.x), 1e-3);
+    }
+    c.normal.amount = 0;
+    Camera flat(c, 64, 48);
+    const Ray a = *flat.generate(10, 10), b = *plain.generate(10, 10);
+    EXPECT_NEAR(a.dir.x, b.dir.x, 1e-14);
+}
+
 }  // namespace
 }  // namespace glint::render

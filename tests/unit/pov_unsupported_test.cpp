@@ -109,14 +109,25 @@ TEST(PovUnsupported, MediaPhotonsRadiosityAndInteriorTexture) {
 TEST(PovUnsupported, CameraFeatures) {
     Parsed p = parse_warn(
         "camera { location <0, 0, -5> look_at 0 aperture 0.4 blur_samples 10 focal_point 0\n"
-        "  normal { bumps 0.1 } }\n"
+        "  bokeh { pigment { rgb 1 } } }\n"
         "camera { mesh_camera { 1 0 mesh { triangle { 0, x, y } } } location -z }\n");
     // (mesh_camera is rendered: render/mesh_camera.h.)
     EXPECT_EQ(p.warnings,
               (std::vector<std::string>{
                   "2:40: 'focal blur' is not supported: the image is rendered all in focus",
-                  "3:3: 'camera normal' is not supported: ignored"}));
+                  "3:3: 'camera bokeh' is not supported: ignored"}));
     EXPECT_EQ(p.scene.camera.kind, glint::scene::CameraKind::Mesh);
+}
+
+TEST(PovUnsupported, CameraNormalIsKeptNotWarned) {
+    Parsed p = parse_warn(
+        "#default { normal { dents 0.3 } }\n"
+        "camera { location -5*z look_at 0 normal { bumps 0.1 scale 2 } }\n");
+    EXPECT_TRUE(p.warnings.empty());
+    const glint::scene::Normal& n = p.scene.camera.normal;
+    EXPECT_EQ(n.kind, glint::scene::PatternKind::Bumps);
+    EXPECT_DOUBLE_EQ(n.amount, 0.1);
+    EXPECT_DOUBLE_EQ(n.transform.inverse_point(glint::Vec3(2, 0, 0)).x, 1.0);
 }
 
 TEST(PovUnsupported, UnterminatedSkippedBlockIsAnError) {

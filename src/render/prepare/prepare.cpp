@@ -30,11 +30,16 @@ std::unique_ptr<PreparedScene> prepare_with(const scene::Scene& scene,
     MaterialTable materials(scene, textures.get());
     if (!geometry) geometry = build_geometry(scene, features, materials, diag ? *diag : quiet);
     materials.prepare_for(scene, options.integrator, textures.get(), programs.get());
+    std::unique_ptr<PatternObjects> objects = build_pattern_objects(scene, diag ? *diag : quiet);
+    // A POV-Ray camera `normal` sees what the surfaces' patterns see.
+    const PatternContext camera_patterns{scene.global.noise_generator,
+                                         scene.global.number_of_waves, &scene.functions,
+                                         objects.get(), textures.get()};
+    Camera camera(scene.camera, options.width, options.height, &scene.meshes, camera_patterns);
     return std::unique_ptr<PreparedScene>(new PreparedScene{
         scene, std::move(features), std::move(textures), std::move(programs),
-        std::move(materials), std::move(geometry),
-        Camera(scene.camera, options.width, options.height, &scene.meshes), Shutter(scene),
-        build_pattern_objects(scene, diag ? *diag : quiet)});
+        std::move(materials), std::move(geometry), std::move(camera), Shutter(scene),
+        std::move(objects)});
 }
 
 }  // namespace

@@ -192,6 +192,7 @@ void TextureCache::preload(const scene::Scene& scene) {
     for (const scene::Material& m : scene.materials) collect(m.texture, &maps);
     if (scene.sky_sphere)
         for (const scene::Pigment& p : scene.sky_sphere->pigments) collect(p, &maps);
+    collect(scene.camera.normal, &maps);
     for (const scene::ImageMap* m : maps) add(*m);
 }
 
