@@ -177,7 +177,8 @@ void Parser::parse_image_map_body(scene::ImageMap& im, double* bump_size) {
         } else if (k.is("premultiplied")) {
             im.premultiplied = allow_float(1) != 0;
         } else if (k.is("use_color") || k.is("use_colour") || k.is("use_index")) {
-            // Only meaningful for paletted images; glint reads colors.
+            // Only a bump_map on a palette image tells them apart.
+            im.use_index = k.is("use_index");
         } else {
             fail("expected an image_map item (map_type, once, interpolate, ...), got " +
                  got(k));

@@ -128,6 +128,9 @@ struct ImageMap {
     // `gamma G` on the image; 0 = POV-Ray's default for the file type and #version.
     double gamma = 0;
     bool premultiplied = false;
+    // `use_index` (POV-Ray's USE_NONE): a bump_map on a palette image takes the texels'
+    // palette indices as heights instead of their colours' grey (`use_color`, the default).
+    bool use_index = false;
     FileLoc loc;
 };
 

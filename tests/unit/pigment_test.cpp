@@ -385,6 +385,50 @@ TEST_F(ImageMapTest, PaletteEntriesTakeFilterAndTransmitInOrder) {
     EXPECT_THROW(cache2.preload(s), Error);
 }
 
+// The palette index beside the colour, as a use_index bump_map reads it: the texel's entry
+// without interpolation, the corners' entries blended and truncated with it (Interp); -1 on
+// an image without a palette.
+TEST_F(ImageMapTest, SamplesReportPaletteIndices) {
+    write_palette_png(path_);
+    Pigment p = image_pigment();
+    scene::Scene s;
+    s.materials.resize(1);
+    s.materials[0].texture.pigment = p;
+    TextureCache cache(image_gamma(s));
+    cache.preload(s);
+    const render::ImageTexture* tex = cache.find(p.params.image);
+    ASSERT_TRUE(tex);
+    int index = 99;
+    render::image_map_sample(p.params.image, *tex, 0.5, 0.5, &index);
+    EXPECT_EQ(index, 2);
+    render::image_map_sample(p.params.image, *tex, 1.5, 0.5, &index);
+    EXPECT_EQ(index, 0);
+    scene::ImageMap bilinear = p.params.image;
+    bilinear.interpolate = 2;
+    // Half way between the texel centres: (2 + 0) / 2.
+    render::image_map_sample(bilinear, *tex, 1.0, 0.5, &index);
+    EXPECT_EQ(index, 1);
+    // A quarter of the way from entry 2 to entry 0: 1.5, truncated.
+    render::image_map_sample(bilinear, *tex, 0.75, 0.5, &index);
+    EXPECT_EQ(index, 1);
+    render::image_map_sample(bilinear, *tex, 0.6, 0.5, &index);
+    EXPECT_EQ(index, 1);  // 1.8
+    render::image_map_sample(bilinear, *tex, 0.51, 0.5, &index);
+    EXPECT_EQ(index, 1);  // 1.98
+}
+
+TEST_F(ImageMapTest, RgbSamplesHaveNoPaletteIndex) {
+    Pigment p = image_pigment();
+    scene::Scene s;
+    s.materials.resize(1);
+    s.materials[0].texture.pigment = p;
+    TextureCache cache(image_gamma(s));
+    cache.preload(s);
+    int index = 99;
+    render::image_map_sample(p.params.image, *cache.find(p.params.image), 0.5, 0.5, &index);
+    EXPECT_EQ(index, -1);
+}
+
 TEST_F(ImageMapTest, PaletteEditsNeedAPaletteImage) {
     Pigment p = image_pigment();  // the fixture's RGBA image
     p.params.image.palette_edits = {scene::ImageMap::PaletteEdit{0, false, 0.5, {}}};

@@ -72,20 +72,25 @@ Vec3 bump_map(const scene::Normal& nrm, const Vec3& tp, const Vec3& normal,
     auto grey = [](const scene::ColorFT& c) {
         return 0.297 * c.rgb.r + 0.589 * c.rgb.g + 0.114 * c.rgb.b;
     };
-    const double g1 = grey(image_map_sample(im, *tex, x, y));
+    // Heights: the grey of the colours, or (use_index on a palette image) the palette
+    // indices, as POV-Ray's bump_map takes them.
+    int i1 = -1, i2 = -1, i3 = -1;
+    const double g1 = grey(image_map_sample(im, *tex, x, y, &i1));
     x -= 1.0;
     y += 1.0;
     if (x < 0.0) x += w;
     else if (x >= w) x -= w;
     if (y < 0.0) y += h;
     else if (y >= h) y -= h;
-    const double g2 = grey(image_map_sample(im, *tex, x, y));
+    const double g2 = grey(image_map_sample(im, *tex, x, y, &i2));
     x += 2.0;
     if (x < 0.0) x += w;
     else if (x >= w) x -= w;
-    const double g3 = grey(image_map_sample(im, *tex, x, y));
+    const double g3 = grey(image_map_sample(im, *tex, x, y, &i3));
+    const bool by_index = im.use_index && i1 != -1 && i2 != -1 && i3 != -1;
+    const double h1 = by_index ? i1 : g1, h2 = by_index ? i2 : g2, h3 = by_index ? i3 : g3;
     const double a = nrm.amount;
-    const Vec3 p1(0, a * g1, 0), p2(-1, a * g2, 1), p3(1, a * g3, 1);
+    const Vec3 p1(0, a * h1, 0), p2(-1, a * h2, 1), p3(1, a * h3, 1);
     const Vec3 bump = safe_normalize(cross(p3 - p2, p1 - p2));
     Vec3 yp = normal;
     Vec3 xp = cross(yp, Vec3(0, 1, 0));

@@ -234,9 +234,11 @@ bool image_map_position(const scene::ImageMap& im, const ImageTexture& image, co
 
 
 ColorFT image_map_sample(const scene::ImageMap& im, const ImageTexture& image, double xc,
-                         double yc) {
+                         double yc, int* index_out) {
     const ImageTexture* tex = &image;
     const int iw = tex->width(), ih = tex->height();
+    // The palette index of the last texel fetched (palette images only).
+    int fetched_index = -1;
     auto fetch = [&](double x, double y) {
         int ix, iy;
         if (im.once) {
@@ -247,6 +249,7 @@ ColorFT image_map_sample(const scene::ImageMap& im, const ImageTexture& image, d
             iy = static_cast<int>(wrap(y, ih));
         }
         const float* t = tex->texel(ix, iy);
+        if (tex->indexed()) fetched_index = tex->index(ix, iy);
         if (im.palette_edits.empty() || !tex->indexed())
             return ColorFT(Color(t[0], t[1], t[2]), t[3] + im.filter_all, t[4] + im.transmit_all);
         // A palette image keeps filter and transmit per entry: the edits set them.
@@ -261,8 +264,13 @@ ColorFT image_map_sample(const scene::ImageMap& im, const ImageTexture& image, d
         case 4: {
             double x = xc + 0.5, y = yc + 0.5;
             int ix = static_cast<int>(x), iy = static_cast<int>(y);
-            ColorFT c[4] = {fetch(ix, iy), fetch(ix - 1.0, iy), fetch(ix, iy - 1.0),
-                            fetch(ix - 1.0, iy - 1.0)};
+            ColorFT c[4];
+            int corner_index[4];
+            const double corner[4][2] = {{0, 0}, {-1, 0}, {0, -1}, {-1, -1}};
+            for (int i = 0; i < 4; ++i) {
+                c[i] = fetch(ix + corner[i][0], iy + corner[i][1]);
+                corner_index[i] = fetched_index;
+            }
             double p = x - ix, r = y - iy;
             double f[4];
             if (im.interpolate == 2) {
@@ -282,7 +290,12 @@ ColorFT image_map_sample(const scene::ImageMap& im, const ImageTexture& image, d
                 }
             }
             ColorFT sum;
-            for (int i = 0; i < 4; ++i) sum = sum + c[i] * f[i];
+            double index_sum = 0;  // Interp: the indices blended and truncated
+            for (int i = 0; i < 4; ++i) {
+                sum = sum + c[i] * f[i];
+                index_sum += corner_index[i] * f[i];
+            }
+            if (index_out) *index_out = tex->indexed() ? static_cast<int>(index_sum) : -1;
             return sum;
         }
         case 3: {  // bicubic
@@ -299,13 +312,20 @@ ColorFT image_map_sample(const scene::ImageMap& im, const ImageTexture& image, d
             cubic(x, fx);
             cubic(y, fy);
             ColorFT sum;
+            double index_sum = 0;
             for (int i = 0; i < 4; ++i)
-                for (int j = 0; j < 4; ++j)
+                for (int j = 0; j < 4; ++j) {
                     sum = sum + fetch(ix + i - 2.0, iy + j - 2.0) * (fx[i] * fy[j]);
+                    index_sum += fetched_index * (fx[i] * fy[j]);
+                }
+            if (index_out) *index_out = tex->indexed() ? static_cast<int>(index_sum) : -1;
             return sum;
         }
-        default:
-            return fetch(xc, yc);
+        default: {
+            const ColorFT c = fetch(xc, yc);
+            if (index_out) *index_out = fetched_index;
+            return c;
+        }
     }
 }
 

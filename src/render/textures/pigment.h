@@ -55,9 +55,10 @@ private:
 bool image_map_position(const scene::ImageMap& im, const ImageTexture& image, const Vec3& q,
                         double* xc, double* yc);
 // image_colour_at: the image's color (with filter/transmit all) at image coordinates, with the
-// map's interpolation.
+// map's interpolation. `index`, when given, receives POV-Ray's palette index there (the
+// corners' indices blended by the same weights and truncated), -1 for other images.
 scene::ColorFT image_map_sample(const scene::ImageMap& im, const ImageTexture& image, double xc,
-                                double yc);
+                                double yc, int* index = nullptr);
 
 // POV-Ray's Search_Blend_Map over map values: the entries around `value` (the same one when
 // it is outside the map or exactly on an entry) and the fraction between them.
