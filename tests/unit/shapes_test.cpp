@@ -126,6 +126,21 @@ TEST(Box, DiagonalRayThroughEdge) {
     for (const auto& h : hits) EXPECT_TRUE(is_finite(h.p) && is_finite(h.ng));
 }
 
+// A flat box (both corners' z equal) is a sheet: a ray is first met on the face it comes
+// from, whichever way it goes, so a refracting sheet is entered and then left.
+TEST(Box, FlatBoxIsEnteredFromTheRaysSide) {
+    auto prim = render::make_box(scene::Box{{-1, -1, 0.25}, {1, 1, 0.25}});
+    for (double dz : {-1.0, 1.0}) {
+        render::HitList hits;
+        prim->intersect_all(ray({0, 0, 0.25 - 3 * dz}, normalize(Vec3(0, 0.2, dz))),
+                            kInfinity, &hits);
+        ASSERT_EQ(hits.size(), 2u);
+        EXPECT_EQ(hits[0].t, hits[1].t);
+        EXPECT_EQ(hits[0].ng.z, -dz);  // facing the ray: entering
+        EXPECT_EQ(hits[1].ng.z, dz);
+    }
+}
+
 TEST(Box, InsideAndUv) {
     auto prim = render::make_box(scene::Box{{1, 1, 1}, {-1, -1, -1}});
     EXPECT_TRUE(prim->inside({0, 0, 0}));

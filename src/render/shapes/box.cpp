@@ -65,7 +65,10 @@ private:
             }
             double ta = (lo_[i] - o) / d, tb = (hi_[i] - o) / d;
             int sa = 0, sb = 1;
-            if (ta > tb) {
+            // By the direction's sign, not by comparing ta and tb: on a flat box (lo == hi)
+            // they are equal and the ray still enters by the face it comes from, as POV-Ray's
+            // Intersect_Box has it (a refracting sheet is entered, not left).
+            if (d < 0) {
                 std::swap(ta, tb);
                 std::swap(sa, sb);
             }
