@@ -89,6 +89,32 @@ TEST(Csg, InverseFlipsNormalsAndInside) {
     EXPECT_NEAR(h.ng.z, -1, 1e-14);
 }
 
+// POV-Ray inverts a CSG by De Morgan (CSG::Invert and Morph): an inverted union is the
+// intersection of its inverted children, so the inner walls a union keeps are gone from its
+// complement. Two overlapping spheres cut from a box: from inside the overlap the first
+// surface is the far side of the pair, not sphere B's wall inside sphere A.
+TEST(Csg, InverseUnionIsTheIntersectionOfInvertedChildren) {
+    scene::Object pair = csg(scene::CsgOp::Union, {sphere({0, 0, 0}, 1), sphere({1, 0, 0}, 1)});
+    pair.inverse = true;
+    auto g = build(scene_of({csg(scene::CsgOp::Intersection,
+                                 {box({-3, -3, -3}, {3, 3, 3}), pair})}));
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0.5, 0, 0}, {-1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 1.5, 1e-14);
+    EXPECT_NEAR(h.ng.x, 1, 1e-14);  // facing into the hole, out of the solid
+    // An inverted difference is the merge of the inverted first child and the others: from
+    // inside sphere B (outside A - B), the first surface along +x is B's far side.
+    scene::Object cut =
+        csg(scene::CsgOp::Difference, {sphere({0, 0, 0}, 1), sphere({1, 0, 0}, 1)});
+    cut.inverse = true;
+    g = build(scene_of({csg(scene::CsgOp::Intersection, {box({-3, -3, -3}, {3, 3, 3}), cut})}));
+    ASSERT_TRUE(g->intersect(ray({-5, 0, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 2, 1e-14);  // the box's face: outside A is solid
+    ASSERT_TRUE(g->intersect(ray({-0.5, 0, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 0.5, 1e-14);  // A - B's boundary at x = 0, B's surface
+    EXPECT_NEAR(h.ng.x, -1, 1e-14);
+}
+
 TEST(Csg, MergeRemovesInternalSurfacesUnionKeepsThem) {
     std::vector<scene::Object> two = {sphere({0, 0, 0}, 1), sphere({1, 0, 0}, 1)};
     auto u = build(scene_of({csg(scene::CsgOp::Union, two)}));

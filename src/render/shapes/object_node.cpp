@@ -166,6 +166,33 @@ struct Builder {
     }
 };
 
+// `inverse` on a CSG as POV-Ray applies it (CSG::Invert, then Morph): every child inverted
+// and the operation swapped by De Morgan's laws, union and merge becoming an intersection, an
+// intersection a merge, so that the surfaces kept are those of the complement. (Inverting
+// only the inside test would keep a union's inner walls, which its complement hides.)
+scene::Object inverted_csg(const scene::Object& obj) {
+    scene::Object out = obj;
+    out.inverse = false;
+    scene::Csg& csg = std::get<scene::Csg>(out.shape);
+    switch (csg.op) {
+        case scene::CsgOp::Union:
+        case scene::CsgOp::Merge:
+            csg.op = scene::CsgOp::Intersection;
+            for (scene::Object& c : csg.children) c.inverse = !c.inverse;
+            break;
+        case scene::CsgOp::Intersection:
+            csg.op = scene::CsgOp::Merge;
+            for (scene::Object& c : csg.children) c.inverse = !c.inverse;
+            break;
+        case scene::CsgOp::Difference:
+            // a - b - c is a * inverse(b) * inverse(c); its inverse, inverse(a) + b + c.
+            csg.op = scene::CsgOp::Merge;
+            if (!csg.children.empty()) csg.children[0].inverse = !csg.children[0].inverse;
+            break;
+    }
+    return out;
+}
+
 }  // namespace
 
 std::unique_ptr<ObjectNode> ObjectNode::build(const scene::Object& obj,
@@ -189,6 +216,8 @@ std::unique_ptr<ObjectNode> ObjectNode::build(const scene::Object& obj,
         node->still_ = std::move(inner);
         return node;
     }
+    if (obj.inverse && std::holds_alternative<scene::Csg>(obj.shape))
+        return build(inverted_csg(obj), scene, diag, shared);
     std::unique_ptr<ObjectNode> node(new ObjectNode());
     node->inverse_ = obj.inverse;
     node->material_ = obj.material;
