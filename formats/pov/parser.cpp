@@ -17,30 +17,36 @@ namespace glint::pov {
 
 namespace fs = std::filesystem;
 
-int Parser::add_material(const scene::Texture& t, const scene::Interior& in, const FileLoc& l) {
+int Parser::add_material(const scene::Texture& t, const scene::Interior& in, const FileLoc& l,
+                         int interior_id) {
     scene::Material m;
     m.texture = t;
     m.interior = in;
+    m.interior_id = interior_id;
     m.loc = l;
     scene.materials.push_back(std::move(m));
     return static_cast<int>(scene.materials.size()) - 1;
 }
 
 // Children without a texture or interior of their own inherit (material -1); those with one
-// get a material completed from what they inherit.
+// get a material completed from what they inherit. An object that declares an interior (and
+// each top-level object) starts a new interior id; the others share their parent's.
 static scene::Object to_ir(Parser& p, const PovObject& po, const scene::Texture& inh_tex,
-                           const scene::Interior& inh_in, bool top) {
+                           const scene::Interior& inh_in, int inh_id, bool top,
+                           int* next_id) {
     scene::Object o = po.obj;
     const scene::Texture& tex = po.texture ? *po.texture : inh_tex;
     const scene::Interior& in = po.interior ? *po.interior : inh_in;
+    const int id = top || po.interior ? (*next_id)++ : inh_id;
     if (top || po.texture || po.interior)
-        o.material = p.add_material(tex, in, po.texture ? po.texture->loc : po.obj.loc);
+        o.material = p.add_material(tex, in, po.texture ? po.texture->loc : po.obj.loc, id);
     else
         o.material = -1;
     if (auto csg = std::get_if<scene::Csg>(&o.shape)) {
         csg->children.clear();
         csg->children.reserve(po.children.size());
-        for (const auto& c : po.children) csg->children.push_back(to_ir(p, c, tex, in, false));
+        for (const auto& c : po.children)
+            csg->children.push_back(to_ir(p, c, tex, in, id, false, next_id));
     }
     return o;
 }
@@ -68,7 +74,8 @@ void Parser::place_object(PovObject o) {
         fail_limit(o.obj.loc,
                    "the scene has more than " + std::to_string(options.max_objects) + " objects",
                    "--max-objects");
-    scene.objects.push_back(to_ir(*this, o, def, scene::Interior{}, true));
+    scene.objects.push_back(
+        to_ir(*this, o, def, scene::Interior{}, -1, true, &next_interior_id_));
     propagate_flags(scene.objects.back());
 }
 

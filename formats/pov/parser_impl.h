@@ -195,7 +195,9 @@ public:
 
     // ---- top level (parser.cpp)
     void place_object(PovObject o);
-    int add_material(const scene::Texture& t, const scene::Interior& in, const FileLoc& loc);
+    // `interior_id`: scene::Material::interior_id (-1 for mesh face textures).
+    int add_material(const scene::Texture& t, const scene::Interior& in, const FileLoc& loc,
+                     int interior_id = -1);
     // What a #declare right-hand side can be: object, texture, expression, ...
     Value parse_rvalue() override;
     void parse_default() override;
@@ -209,6 +211,7 @@ public:
     std::vector<uint32_t> rand_streams;  // seed()/rand() state, POV-Ray's LCG
     scene::Scene scene;
     scene::Texture default_texture_;
+    int next_interior_id_ = 0;  // scene::Material::interior_id of the next declaration
 
 private:
     // The token layer's questions (token_stream.h).

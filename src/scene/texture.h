@@ -406,6 +406,12 @@ struct Pbr {
 struct Material {
     Texture texture;
     Interior interior;
+    // Which interior declaration this is, for POV-Ray's interior bookkeeping: CSG children
+    // without an interior of their own share their parent's (Post_Process copies the pointer),
+    // so a ray that met the parent's interior meets the same one at such a child, but a
+    // different one at a child that declares its own. -1: one interior per object (other
+    // importers).
+    int interior_id = -1;
     Pbr pbr;
     // A shader node graph (Scene::shader_graphs) that the path tracer evaluates instead of
     // `pbr`; -1: none.

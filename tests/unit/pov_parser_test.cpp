@@ -258,6 +258,29 @@ TEST(PovMaterials, FinishInteriorAndMaps) {
     EXPECT_EQ(r.max, Color(0.1, 0.2, 0.3));
 }
 
+// POV-Ray's CSG children share their parent's interior unless they declare one
+// (Post_Process copies the pointer): a child with only a texture of its own keeps the
+// parent's interior id, a child with an interior gets a new one, and each top-level object
+// starts its own.
+TEST(PovMaterials, InteriorIdsFollowTheDeclarations) {
+    auto s = parse(
+        "difference {\n"
+        "  box { -1, 1 texture { pigment { rgbf 1 } } interior { ior 1.5 } }\n"
+        "  sphere { 0, 0.5 texture { pigment { rgbt 0.6 } } }\n"
+        "  sphere { 0, 0.2 texture { pigment { rgbt 0.5 } } interior { ior 1.5 } }\n"
+        "}\n"
+        "sphere { 0, 1 }\n");
+    const auto& cut = std::get<scene::Csg>(s.objects[0].shape);
+    auto id = [&](int material) { return s.materials[static_cast<size_t>(material)].interior_id; };
+    const int whole = id(s.objects[0].material);
+    EXPECT_NE(id(cut.children[0].material), whole);
+    EXPECT_EQ(id(cut.children[1].material), whole);  // the difference's (default) interior
+    EXPECT_EQ(s.materials[static_cast<size_t>(cut.children[1].material)].interior.ior, 1.0);
+    EXPECT_NE(id(cut.children[2].material), whole);
+    EXPECT_NE(id(cut.children[2].material), id(cut.children[0].material));
+    EXPECT_NE(id(s.objects[1].material), whole);
+}
+
 TEST(PovMaterials, SecondTextureIsALayerOverTheFirst) {
     auto s = parse("#declare S = sphere { 0, 1 texture { pigment { rgb x } } }\n"
                    "object { S texture { pigment { rgbt <0, 1, 0, 0.5> } } }");

@@ -275,7 +275,7 @@ void Whitted::shoot_photons(int threads) {
                                 for (const Containing& ci :
                                      objects_containing(geometry_, ray.origin, ray.dir))
                                     inside.append(
-                                        ci.object,
+                                        ci.object, interior_id(ci.material),
                                         scene_.materials[static_cast<size_t>(ci.material)]
                                             .interior.ior,
                                         ci.material);
@@ -410,7 +410,8 @@ void Whitted::photon_surface(const Ray& ray, const Hit& hit, Color light, double
     const scene::Object& obj = scene_.objects[static_cast<size_t>(hit.object)];
     const double len = length(ray.dir);
     photon_media(ray, hit.t * len, &light, level, in, path);
-    if (in.contains(hit.object) && std::fabs(mat.interior.fade_distance) > kPovEpsilon &&
+    if (in.contains(hit.object, interior_id(hit.material)) &&
+        std::fabs(mat.interior.fade_distance) > kPovEpsilon &&
         mat.interior.fade_power > 0)
         light *= fade(mat.interior, hit.t * len);
     path.depth += hit.t * len;
@@ -429,7 +430,9 @@ void Whitted::photon_surface(const Ray& ray, const Hit& hit, Color light, double
     if (path.pass_this) {
         // Straight through an object photons pass.
         Interiors next = in;
-        if (!next.remove(hit.object)) next.append(hit.object, mat.interior.ior, hit.material);
+        const int id = interior_id(hit.material);
+        if (!next.remove(hit.object, id))
+            next.append(hit.object, id, mat.interior.ior, hit.material);
         Ray r;
         r.dir = ray.dir;
         r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, ray.dir);
@@ -479,7 +482,7 @@ void Whitted::photon_surface(const Ray& ray, const Hit& hit, Color light, double
         RayState rs;
         rs.interiors = in;
         Color reflec = f.reflects() ? reflectivity(f, cos_incidence,
-                                                   relative_ior(rs, hit.object, mat.interior.ior),
+                                                   relative_ior(rs, hit.object, interior_id(hit.material), mat.interior.ior),
                                                    &refl_weight)
                                     : Color();
         if (f.reflect_metallic != 0.0)

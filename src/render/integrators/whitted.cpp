@@ -51,17 +51,18 @@ PatternPoint pattern_point(const Hit& hit, const Vec3& raw_normal) {
 
 }  // namespace
 
-bool Whitted::Interiors::contains(int obj) const {
+bool Whitted::Interiors::contains(int obj, int id) const {
     for (int i = 0; i < count; ++i)
-        if (object[i] == obj) return true;
+        if (object[i] == obj && interior[i] == id) return true;
     return false;
 }
 
-bool Whitted::Interiors::remove(int obj) {
+bool Whitted::Interiors::remove(int obj, int id) {
     for (int i = count - 1; i >= 0; --i) {
-        if (object[i] == obj) {
+        if (object[i] == obj && interior[i] == id) {
             for (int j = i; j + 1 < count; ++j) {
                 object[j] = object[j + 1];
+                interior[j] = interior[j + 1];
                 ior[j] = ior[j + 1];
                 material[j] = material[j + 1];
             }
@@ -72,9 +73,10 @@ bool Whitted::Interiors::remove(int obj) {
     return false;
 }
 
-void Whitted::Interiors::append(int obj, double value, int mat) {
+void Whitted::Interiors::append(int obj, int id, double value, int mat) {
     if (count == kMax) return;  // deeper nesting than any sane scene: ignore the innermost
     object[count] = obj;
+    interior[count] = id;
     ior[count] = value;
     material[count] = mat;
     ++count;
@@ -106,8 +108,8 @@ Whitted::~Whitted() = default;
 void Whitted::find_camera_interiors() {
     // Only refraction, interior fading and media care which objects contain the eye.
     for (const Containing& c : objects_containing_camera(scene_, geometry_))
-        camera_interiors_.append(c.object, scene_.materials[c.material].interior.ior,
-                                 c.material);
+        camera_interiors_.append(c.object, interior_id(c.material),
+                                 scene_.materials[c.material].interior.ior, c.material);
 }
 
 Color Whitted::li(const Ray& ray, RadiosityTicket* ticket) const {
@@ -249,11 +251,12 @@ Color Whitted::fade(const scene::Interior& interior, double depth) const {
     return interior.fade_color + (Color(1.0) - interior.fade_color) / att;
 }
 
-double Whitted::relative_ior(const RayState& state, int object, double ior) const {
+double Whitted::relative_ior(const RayState& state, int object, int interior,
+                             double ior) const {
     // ComputeRelativeIOR (used by fresnel reflection).
     const Interiors& in = state.interiors;
     if (in.count == 0) return ior;
-    if (in.contains(object)) {
+    if (in.contains(object, interior)) {
         if (in.count == 1) return 1.0 / ior;
         return in.ior[in.count - 1] / ior;
     }
@@ -370,7 +373,7 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
         const double cos_incidence = -dot(ray.dir, lay_n);
         Color reflec = f.reflects()
                            ? reflectivity(f, cos_incidence,
-                                          relative_ior(state, hit.object, mat.interior.ior),
+                                          relative_ior(state, hit.object, interior_id(hit.material), mat.interior.ior),
                                           &refl_weight)
                            : Color();
         if (f.reflect_metallic != 0.0)
@@ -473,7 +476,8 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
         tir = refract(ray, hit, top_normal, n, weight * w1, state, &rfr);
         Color att_col(1.0);
         const scene::Interior& interior = mat.interior;
-        if (state.interiors.contains(hit.object) && std::fabs(interior.fade_distance) > kPovEpsilon)
+        if (state.interiors.contains(hit.object, interior_id(hit.material)) &&
+            std::fabs(interior.fade_distance) > kPovEpsilon)
             att_col = fade(interior, hit.t);
         if (tir || !one_colour_found)
             result += att_col * rfr;
@@ -546,7 +550,7 @@ Color Whitted::subsurface(const ClassicFinish& f, const Color& pigment, const Ra
         });
     const double ior = scene_.materials[static_cast<size_t>(out.material)].interior.ior;
     return subsurface_light(view, s, f.translucency, pigment * f.diffuse,
-                            relative_ior(state, out.object, ior), ray, out, raw_n);
+                            relative_ior(state, out.object, interior_id(out.material), ior), ray, out, raw_n);
 }
 
 Vec3 reflected_direction(const Vec3& dir, const Vec3& n, const Vec3& raw_n) {
@@ -578,17 +582,18 @@ double Whitted::cross_interface(const Hit& hit, Interiors* in) const {
     // ComputeRefraction: relative ior from the interiors the ray traverses; nested objects
     // count as outside their container, overlaps belong to the last one entered.
     const double ior_obj = scene_.materials[hit.material].interior.ior;
+    const int id = interior_id(hit.material);
     if (in->count == 0) {
-        in->append(hit.object, ior_obj, hit.material);
+        in->append(hit.object, id, ior_obj, hit.material);
         return 1.0 / ior_obj;
     }
-    if (in->object[in->count - 1] == hit.object) {
-        in->remove(hit.object);
+    if (in->object[in->count - 1] == hit.object && in->interior[in->count - 1] == id) {
+        in->remove(hit.object, id);
         return in->count == 0 ? ior_obj : ior_obj / in->ior[in->count - 1];
     }
-    if (in->remove(hit.object)) return 1.0;
+    if (in->remove(hit.object, id)) return 1.0;
     const double ior = in->ior[in->count - 1] / ior_obj;
-    in->append(hit.object, ior_obj, hit.material);
+    in->append(hit.object, id, ior_obj, hit.material);
     return ior;
 }
 
@@ -708,12 +713,15 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
             // ComputeShadowColour / ComputeShadowTexture.
             const scene::Material& mat = scene_.materials[hit.material];
             // POV-Ray stores interior { caustics C } as the exponent 45 C (Parse_Interior).
+            // The normal faces back along the shadow ray before the layers perturb it
+            // (ComputeShadowColour), which matters for |n . d| once bumps are added.
             const Vec3 facing = dot(hit.n, r.dir) > 0.0 ? -hit.n : hit.n;
             Color filter = shadow_texture(mat.texture, pattern_point(hit, facing),
-                                          45.0 * mat.interior.caustics, hit.n, normalize(r.dir));
+                                          45.0 * mat.interior.caustics, facing, normalize(r.dir));
             const scene::Interior& interior = mat.interior;
             const double seg = hit.t * length(r.dir);
-            if (inside.contains(hit.object) && interior.fade_power > 0.0 &&
+            const int id = interior_id(hit.material);
+            if (inside.contains(hit.object, id) && interior.fade_power > 0.0 &&
                 std::fabs(interior.fade_distance) > kPovEpsilon) {
                 filter *= fade(interior, seg);
             }
@@ -729,8 +737,8 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
                 std::fabs(colour.b) < kPovEpsilon)
                 return Color();
             atmosphere(seg, r.dir / length(r.dir), hollow(inside));
-            if (inside.count == 0 || !inside.remove(hit.object))
-                inside.append(hit.object, interior.ior, hit.material);
+            if (inside.count == 0 || !inside.remove(hit.object, id))
+                inside.append(hit.object, id, interior.ior, hit.material);
         }
         r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
         r.dir = target - r.origin;

@@ -53,13 +53,16 @@ private:
     // rays stay allocation-free.
     struct Interiors {
         static constexpr int kMax = 16;
+        // An interior is the object's and its scene::Material::interior_id (POV-Ray tells a
+        // CSG child's own interior from the one it shares with its parent).
         int object[kMax];
+        int interior[kMax];
         double ior[kMax];
         int material[kMax];  // whose interior (its media) the ray is in
         int count = 0;
-        bool contains(int obj) const;
-        bool remove(int obj);
-        void append(int obj, double ior, int material);
+        bool contains(int obj, int id) const;
+        bool remove(int obj, int id);
+        void append(int obj, int id, double ior, int material);
     };
     // POV-Ray's Ray flags that decide no_image/no_reflection visibility.
     struct RayState {
@@ -161,7 +164,11 @@ private:
     bool hollow(const RayState& state) const { return hollow(state.interiors); }
     bool hollow(const Interiors& in) const;
     Color fade(const scene::Interior& interior, double depth) const;
-    double relative_ior(const RayState& state, int object, double ior) const;
+    double relative_ior(const RayState& state, int object, int interior, double ior) const;
+    // scene::Material::interior_id of a material (-1 for none).
+    int interior_id(int material) const {
+        return material >= 0 ? scene_.materials[static_cast<size_t>(material)].interior_id : -1;
+    }
     // Subsurface light transport (materials/sslt.h) of finish `f` with `pigment` at `out`,
     // seen along `ray`: it stands in for the diffuse term; `raw_n` faces the ray.
     Color subsurface(const ClassicFinish& f, const Color& pigment, const Ray& ray, const Hit& out,
