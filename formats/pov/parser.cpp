@@ -17,30 +17,36 @@ namespace glint::pov {
 
 namespace fs = std::filesystem;
 
-int Parser::add_material(const scene::Texture& t, const scene::Interior& in, const FileLoc& l) {
+int Parser::add_material(const scene::Texture& t, const scene::Interior& in, const FileLoc& l,
+                         const scene::Texture* inside) {
     scene::Material m;
     m.texture = t;
+    if (inside) m.interior_texture.push_back(*inside);
     m.interior = in;
     m.loc = l;
     scene.materials.push_back(std::move(m));
     return static_cast<int>(scene.materials.size()) - 1;
 }
 
-// Children without a texture or interior of their own inherit (material -1); those with one
-// get a material completed from what they inherit.
+// Children without a texture, interior_texture or interior of their own inherit (material
+// -1); those with one get a material completed from what they inherit. POV-Ray's
+// Post_Process hands each of the three down on its own.
 static scene::Object to_ir(Parser& p, const PovObject& po, const scene::Texture& inh_tex,
-                           const scene::Interior& inh_in, bool top) {
+                           const scene::Texture* inh_inside, const scene::Interior& inh_in,
+                           bool top) {
     scene::Object o = po.obj;
     const scene::Texture& tex = po.texture ? *po.texture : inh_tex;
+    const scene::Texture* inside = po.interior_texture ? &*po.interior_texture : inh_inside;
     const scene::Interior& in = po.interior ? *po.interior : inh_in;
-    if (top || po.texture || po.interior)
-        o.material = p.add_material(tex, in, po.texture ? po.texture->loc : po.obj.loc);
+    if (top || po.texture || po.interior || po.interior_texture)
+        o.material = p.add_material(tex, in, po.texture ? po.texture->loc : po.obj.loc, inside);
     else
         o.material = -1;
     if (auto csg = std::get_if<scene::Csg>(&o.shape)) {
         csg->children.clear();
         csg->children.reserve(po.children.size());
-        for (const auto& c : po.children) csg->children.push_back(to_ir(p, c, tex, in, false));
+        for (const auto& c : po.children)
+            csg->children.push_back(to_ir(p, c, tex, inside, in, false));
     }
     return o;
 }
@@ -68,7 +74,7 @@ void Parser::place_object(PovObject o) {
         fail_limit(o.obj.loc,
                    "the scene has more than " + std::to_string(options.max_objects) + " objects",
                    "--max-objects");
-    scene.objects.push_back(to_ir(*this, o, def, scene::Interior{}, true));
+    scene.objects.push_back(to_ir(*this, o, def, nullptr, scene::Interior{}, true));
     propagate_flags(scene.objects.back());
 }
 

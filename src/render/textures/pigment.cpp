@@ -1,5 +1,6 @@
 #include "render/textures/pigment.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -327,6 +328,30 @@ ColorFT image_map_sample(const scene::ImageMap& im, const ImageTexture& image, d
             return c;
         }
     }
+}
+
+const scene::Texture& material_map_entry(const scene::Texture& tex, const TextureCache* textures,
+                                         const Vec3& q) {
+    const scene::ImageMap& im = tex.params.image;
+    const ImageTexture* image = textures ? textures->find(im) : nullptr;
+    if (!image) throw Error(ErrorKind::Render, im.loc, "image '" + im.file + "' was not loaded");
+    const size_t count = tex.entries.size();
+    size_t number = 0;
+    double xc, yc;
+    if (image_map_position(im, *image, q, &xc, &yc)) {
+        if (image->indexed()) {
+            // The texel under the point (an interpolated image keeps the nearest one's index,
+            // where POV-Ray would blend the indices of the four around it).
+            const int ix = std::min(static_cast<int>(xc), image->width() - 1);
+            const int iy = std::min(static_cast<int>(yc), image->height() - 1);
+            number = static_cast<size_t>(image->index(std::max(ix, 0), std::max(iy, 0)));
+        } else {
+            const double red = image_map_sample(im, *image, xc, yc).rgb.r * 255.0;
+            number = red > 0 ? static_cast<size_t>(red) : 0;
+        }
+    }
+    if (number > count) number %= count;
+    return tex.entries[std::min(number, count - 1)];
 }
 
 }  // namespace glint::render
