@@ -183,5 +183,16 @@ TEST_F(MaterialMapTest, PaletteIndexPicksTheTextureAndWrapsPastTheCount) {
     EXPECT_EQ(trace(once, Vec3(0.375, 0.5, -1), Vec3(0, 0, 1)), Color(0, 1, 0));
 }
 
+TEST_F(MaterialMapTest, InterpolationBlendsTheIndicesAndTruncates) {
+    // x = 0.26 lies in pixel 1 (index 1), 0.54 of the way from pixel 0's centre to pixel 1's:
+    // bilinear gives index 0.54, truncated to 0 (POV-Ray's Interp).
+    auto nearest = parse(scene_text());
+    auto bilinear = parse(scene_text("interpolate 2"));
+    EXPECT_EQ(trace(nearest, Vec3(0.26, 0.5, -1), Vec3(0, 0, 1)), Color(0, 1, 0));
+    EXPECT_EQ(trace(bilinear, Vec3(0.26, 0.5, -1), Vec3(0, 0, 1)), Color(1, 0, 0));
+    // 0.58 of the way from index 1 to index 3: index 2.16, the third texture.
+    EXPECT_EQ(trace(bilinear, Vec3(0.52, 0.5, -1), Vec3(0, 0, 1)), Color(0, 0, 1));
+}
+
 }  // namespace
 }  // namespace glint

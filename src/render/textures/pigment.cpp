@@ -339,14 +339,14 @@ const scene::Texture& material_map_entry(const scene::Texture& tex, const Textur
     size_t number = 0;
     double xc, yc;
     if (image_map_position(im, *image, q, &xc, &yc)) {
-        if (image->indexed()) {
-            // The texel under the point (an interpolated image keeps the nearest one's index,
-            // where POV-Ray would blend the indices of the four around it).
-            const int ix = std::min(static_cast<int>(xc), image->width() - 1);
-            const int iy = std::min(static_cast<int>(yc), image->height() - 1);
-            number = static_cast<size_t>(image->index(std::max(ix, 0), std::max(iy, 0)));
+        // The palette index (blended like the colours under `interpolate`), or on other
+        // images the red value.
+        int index = -1;
+        const scene::ColorFT c = image_map_sample(im, *image, xc, yc, &index);
+        if (index != -1) {
+            number = index > 0 ? static_cast<size_t>(index) : 0;
         } else {
-            const double red = image_map_sample(im, *image, xc, yc).rgb.r * 255.0;
+            const double red = c.rgb.r * 255.0;
             number = red > 0 ? static_cast<size_t>(red) : 0;
         }
     }

@@ -61,9 +61,10 @@ scene::ColorFT image_map_sample(const scene::ImageMap& im, const ImageTexture& i
                                 double yc, int* index = nullptr);
 
 // POV-Ray's material_map(): the entry of a material_map texture (kind ImageMap) at the warped
-// pattern-space point `q`. A palette image's pixel gives its index, another image its red
-// value times 255; off an image used `once` it is 0; an index past the entry count wraps
-// around it, one equal to the count takes the last entry.
+// pattern-space point `q`. A palette image's pixel gives its index (with `interpolate`, the
+// neighbours' indices blended and truncated), another image its red value times 255; off an
+// image used `once` it is 0; an index past the entry count wraps around it, one equal to the
+// count takes the last entry.
 const scene::Texture& material_map_entry(const scene::Texture& tex, const TextureCache* textures,
                                          const Vec3& q);
 
