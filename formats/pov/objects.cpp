@@ -53,8 +53,8 @@ bool Parser::is_object_keyword(const Token& t) const {
     return t.kind == TokKind::Word && !lookup(t.text) && object_body_parser(t.text) != nullptr;
 }
 
-void Parser::transform_face_materials(scene::MeshRef& ref, const Transform& t) {
-    if (ref.mesh < 0 || static_cast<size_t>(ref.mesh) >= scene.meshes.size()) return;
+bool Parser::own_face_materials(scene::MeshRef& ref) {
+    if (ref.mesh < 0 || static_cast<size_t>(ref.mesh) >= scene.meshes.size()) return false;
     auto found = face_material_ids_.find(ref.mesh);
     if (found == face_material_ids_.end()) {
         std::vector<int> ids;
@@ -64,9 +64,24 @@ void Parser::transform_face_materials(scene::MeshRef& ref, const Transform& t) {
         ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
         found = face_material_ids_.emplace(ref.mesh, std::move(ids)).first;
     }
-    if (found->second.empty()) return;
+    if (found->second.empty()) return false;
     if (ref.face_materials.empty())
         for (int id : found->second) ref.face_materials.emplace_back(id, id);
+    return true;
+}
+
+void Parser::give_faces_interior_texture(scene::MeshRef& ref, const scene::Texture& inside) {
+    if (!own_face_materials(ref)) return;
+    for (auto& [from, to] : ref.face_materials) {
+        scene::Material m = scene.materials[static_cast<size_t>(to)];
+        m.interior_texture.assign(1, inside);
+        scene.materials.push_back(std::move(m));
+        to = static_cast<int>(scene.materials.size()) - 1;
+    }
+}
+
+void Parser::transform_face_materials(scene::MeshRef& ref, const Transform& t) {
+    if (!own_face_materials(ref)) return;
     for (auto& [from, to] : ref.face_materials) {
         scene::Material m = scene.materials[static_cast<size_t>(to)];
         transform_texture(m.texture, t);

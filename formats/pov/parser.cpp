@@ -42,6 +42,8 @@ static scene::Object to_ir(Parser& p, const PovObject& po, const scene::Texture&
         o.material = p.add_material(tex, in, po.texture ? po.texture->loc : po.obj.loc, inside);
     else
         o.material = -1;
+    if (auto* ref = std::get_if<scene::MeshRef>(&o.shape); ref && inside)
+        p.give_faces_interior_texture(*ref, *inside);
     if (auto csg = std::get_if<scene::Csg>(&o.shape)) {
         csg->children.clear();
         csg->children.reserve(po.children.size());

@@ -167,6 +167,11 @@ public:
     // A mesh's texture_list textures follow its transforms (scene::MeshRef::face_materials):
     // transformed copies of the materials its faces name.
     void transform_face_materials(scene::MeshRef& ref, const Transform& t);
+    // Mesh::Determine_Textures: a hit from inside shows the mesh's interior_texture whatever
+    // the face's own texture, so the faces' materials get copies that carry it.
+    void give_faces_interior_texture(scene::MeshRef& ref, const scene::Texture& inside);
+    // Fills ref.face_materials (identity) if empty; false if the mesh's faces name none.
+    bool own_face_materials(scene::MeshRef& ref);
     std::unordered_map<int, std::vector<int>> face_material_ids_;  // per mesh, distinct
     void parse_global_settings();
     void parse_radiosity_settings();  // after `radiosity` in global_settings

@@ -93,6 +93,19 @@ TEST(InteriorTexture, ShownWhereTheRayMeetsTheSurfaceFromInside) {
     EXPECT_EQ(trace(cut, Vec3(0, 0, -5), Vec3(0, 0, 1)), Color(0, 1, 0));
 }
 
+TEST(InteriorTexture, MeshFacesWithTexturesOfTheirOwnShowItFromInside) {
+    // Mesh::Determine_Textures: from inside the mesh's interior_texture wins over the face's.
+    auto s = parse("mesh { triangle { <-1, -1, 0>, <1, -1, 0>, <0, 1, 0> texture { " +
+                   lit("<0, 0, 1>") + " } } texture { " + lit("<1, 0, 0>") +
+                   " } interior_texture { " + lit("<0, 1, 0>") + " } }");
+    const Color front = trace(s, Vec3(0, 0, -5), Vec3(0, 0, 1));
+    const Color back = trace(s, Vec3(0, 0, 5), Vec3(0, 0, -1));
+    const Color own(0, 0, 1), inside(0, 1, 0);
+    EXPECT_TRUE((front == own && back == inside) || (front == inside && back == own))
+        << "front " << front.r << " " << front.g << " " << front.b << ", back " << back.r << " "
+        << back.g << " " << back.b;
+}
+
 TEST(InteriorTexture, FiltersShadowRaysLeavingTheObject) {
     // A sphere between a light and the floor, clear outside: the shadow ray enters through
     // the outside's texture and leaves through the inside's, which decides the shadow.
