@@ -107,6 +107,9 @@ public:
         if (t.kind != PatternKind::Plain) {
             std::string s = std::string("texture ") + pattern_name(t.kind);
             if (t.kind == PatternKind::Gradient) s += " " + vec(t.params.vector);
+            if (t.kind == PatternKind::ImageMap)  // material_map
+                s += " \"" + t.params.image.file + "\" map_type " +
+                     std::to_string(t.params.image.map_type) + (t.params.image.once ? " once" : "");
             if (t.uv_mapping) s += " uv_mapping";
             if (!t.transform.is_identity()) s += " transform " + matrix(t.transform);
             line(d, s);
@@ -222,6 +225,10 @@ public:
     void material(int i, const Material& m) {
         line(0, "material " + std::to_string(i) + where(m.loc));
         texture_body(1, m.texture);
+        for (const Texture& t : m.interior_texture) {
+            line(1, "interior_texture");
+            texture_body(2, t);
+        }
         const Interior& in = m.interior;
         Interior def;
         if (in.ior != def.ior || in.dispersion != def.dispersion || in.caustics != def.caustics ||

@@ -113,7 +113,7 @@ Transform Parser::parse_transform_body() {
 
 // ---------------------------------------------------------------- pigment
 
-void Parser::parse_image_map_body(scene::ImageMap& im, double* bump_size) {
+void Parser::parse_image_map_body(scene::ImageMap& im, double* bump_size, bool material_map) {
     static const std::unordered_set<std::string> kTypes = {
         "png", "jpeg", "tga", "gif", "tiff", "ppm", "pgm", "sys", "iff", "hdr", "exr", "bmp"};
     const Token& t = next();
@@ -134,7 +134,8 @@ void Parser::parse_image_map_body(scene::ImageMap& im, double* bump_size) {
     im.resolved_path = resolve_file(im.file, sloc);
     for (;;) {
         const Token& k = next();
-        if (is_close(k)) {
+        // A material_map's image items end where its textures begin.
+        if (is_close(k) || (material_map && k.is("texture"))) {
             unget();
             return;
         }
@@ -374,6 +375,11 @@ MaterialValue Parser::parse_material_body() {
             FileLoc o = loc();
             m.texture = parse_texture_body();
             expect_close("texture", o);
+        } else if (t.is("interior_texture")) {
+            expect_open("interior_texture");
+            FileLoc o = loc();
+            m.interior_texture = parse_texture_body();
+            expect_close("interior_texture", o);
         } else if (t.is("interior")) {
             expect_open("interior");
             FileLoc o = loc();
@@ -388,6 +394,7 @@ MaterialValue Parser::parse_material_body() {
                 fail("expected texture, interior or a transform in the material, got " +
                      got(next()));
             if (m.texture) transform_texture(*m.texture, tr);
+            if (m.interior_texture) transform_texture(*m.interior_texture, tr);
         }
     }
 }

@@ -39,6 +39,7 @@ void transform_light(scene::Light& l, const Transform& t) {
 // Textures of CSG children are in world space too: they follow every enclosing transform.
 void transform_child_textures(PovObject& o, const Transform& t) {
     if (o.texture) transform_texture(*o.texture, t);
+    if (o.interior_texture) transform_texture(*o.interior_texture, t);
     if (o.interior) transform_interior(*o.interior, t);
     for (auto& c : o.children) transform_child_textures(c, t);
 }
@@ -52,8 +53,8 @@ bool Parser::is_object_keyword(const Token& t) const {
     return t.kind == TokKind::Word && !lookup(t.text) && object_body_parser(t.text) != nullptr;
 }
 
-void Parser::transform_face_materials(scene::MeshRef& ref, const Transform& t) {
-    if (ref.mesh < 0 || static_cast<size_t>(ref.mesh) >= scene.meshes.size()) return;
+bool Parser::own_face_materials(scene::MeshRef& ref) {
+    if (ref.mesh < 0 || static_cast<size_t>(ref.mesh) >= scene.meshes.size()) return false;
     auto found = face_material_ids_.find(ref.mesh);
     if (found == face_material_ids_.end()) {
         std::vector<int> ids;
@@ -63,9 +64,24 @@ void Parser::transform_face_materials(scene::MeshRef& ref, const Transform& t) {
         ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
         found = face_material_ids_.emplace(ref.mesh, std::move(ids)).first;
     }
-    if (found->second.empty()) return;
+    if (found->second.empty()) return false;
     if (ref.face_materials.empty())
         for (int id : found->second) ref.face_materials.emplace_back(id, id);
+    return true;
+}
+
+void Parser::give_faces_interior_texture(scene::MeshRef& ref, const scene::Texture& inside) {
+    if (!own_face_materials(ref)) return;
+    for (auto& [from, to] : ref.face_materials) {
+        scene::Material m = scene.materials[static_cast<size_t>(to)];
+        m.interior_texture.assign(1, inside);
+        scene.materials.push_back(std::move(m));
+        to = static_cast<int>(scene.materials.size()) - 1;
+    }
+}
+
+void Parser::transform_face_materials(scene::MeshRef& ref, const Transform& t) {
+    if (!own_face_materials(ref)) return;
     for (auto& [from, to] : ref.face_materials) {
         scene::Material m = scene.materials[static_cast<size_t>(to)];
         transform_texture(m.texture, t);
@@ -79,6 +95,7 @@ void Parser::apply_transform(PovObject& o, const Transform& t) {
     o.obj.transform = o.obj.transform.then(t);
     if (auto* ref = std::get_if<scene::MeshRef>(&o.obj.shape)) transform_face_materials(*ref, t);
     if (o.texture) transform_texture(*o.texture, t);
+    if (o.interior_texture) transform_texture(*o.interior_texture, t);
     if (o.interior) transform_interior(*o.interior, t);
     for (auto& c : o.children) transform_child_textures(c, t);
     for (auto& l : o.lights) transform_light(l, t);
@@ -256,7 +273,12 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
     };
     for (;;) {
         const Token& t = next();
-        if (t.is_symbol('}')) return;
+        if (t.is_symbol('}')) {
+            // Parse_Object_Mods: the inside's texture needs one for the outside.
+            if (o.interior_texture && !o.texture)
+                fail("interior_texture requires an exterior texture");
+            return;
+        }
         if (t.kind == TokKind::End) expect_close(what, opened);
         const std::string w = t.kind == TokKind::Word && !lookup(t.text) ? t.text : std::string();
         if (w == "texture") {
@@ -298,6 +320,7 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
             MaterialValue m = parse_material_body();
             expect_close("material", lo);
             if (m.texture) o.texture = m.texture;
+            if (m.interior_texture) o.interior_texture = m.interior_texture;
             if (m.interior) o.interior = m.interior;
         } else if (w == "inverse") {
             o.obj.inverse = !o.obj.inverse;
@@ -348,8 +371,16 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
         } else if (w == "photons") {
             parse_object_photons(o.obj);
         } else if (w == "interior_texture") {
-            warn_unsupported(*this, w, loc(), "the object's " + w + " block is ignored");
-            skip_braced_block(*this, w);
+            FileLoc kw = loc();
+            expect_open("interior_texture");
+            FileLoc lo = loc();
+            scene::Texture tex = parse_texture_body();
+            expect_close("interior_texture", lo);
+            // Like `texture`, a second one is a layer over the first (Link_Textures).
+            if (o.interior_texture)
+                layer_texture(*o.interior_texture, tex, kw);
+            else
+                o.interior_texture = tex;
         } else if (w == "uv_mapping" || w == "cutaway_textures") {
             warn_unsupported(*this, w, loc(), "ignored; textures keep their usual mapping");
         } else if (w == "split_union") {

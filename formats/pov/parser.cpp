@@ -18,9 +18,10 @@ namespace glint::pov {
 namespace fs = std::filesystem;
 
 int Parser::add_material(const scene::Texture& t, const scene::Interior& in, const FileLoc& l,
-                         int interior_id) {
+                         int interior_id, const scene::Texture* inside) {
     scene::Material m;
     m.texture = t;
+    if (inside) m.interior_texture.push_back(*inside);
     m.interior = in;
     m.interior_id = interior_id;
     m.loc = l;
@@ -28,25 +29,30 @@ int Parser::add_material(const scene::Texture& t, const scene::Interior& in, con
     return static_cast<int>(scene.materials.size()) - 1;
 }
 
-// Children without a texture or interior of their own inherit (material -1); those with one
-// get a material completed from what they inherit. An object that declares an interior (and
-// each top-level object) starts a new interior id; the others share their parent's.
+// Children without a texture, interior_texture or interior of their own inherit (material
+// -1); those with one get a material completed from what they inherit. POV-Ray's
+// Post_Process hands each of the three down on its own. An object that declares an interior
+// (and each top-level object) starts a new interior id; the others share their parent's.
 static scene::Object to_ir(Parser& p, const PovObject& po, const scene::Texture& inh_tex,
-                           const scene::Interior& inh_in, int inh_id, bool top,
-                           int* next_id) {
+                           const scene::Texture* inh_inside, const scene::Interior& inh_in,
+                           int inh_id, bool top, int* next_id) {
     scene::Object o = po.obj;
     const scene::Texture& tex = po.texture ? *po.texture : inh_tex;
+    const scene::Texture* inside = po.interior_texture ? &*po.interior_texture : inh_inside;
     const scene::Interior& in = po.interior ? *po.interior : inh_in;
     const int id = top || po.interior ? (*next_id)++ : inh_id;
-    if (top || po.texture || po.interior)
-        o.material = p.add_material(tex, in, po.texture ? po.texture->loc : po.obj.loc, id);
+    if (top || po.texture || po.interior || po.interior_texture)
+        o.material =
+            p.add_material(tex, in, po.texture ? po.texture->loc : po.obj.loc, id, inside);
     else
         o.material = -1;
+    if (auto* ref = std::get_if<scene::MeshRef>(&o.shape); ref && inside)
+        p.give_faces_interior_texture(*ref, *inside);
     if (auto csg = std::get_if<scene::Csg>(&o.shape)) {
         csg->children.clear();
         csg->children.reserve(po.children.size());
         for (const auto& c : po.children)
-            csg->children.push_back(to_ir(p, c, tex, in, id, false, next_id));
+            csg->children.push_back(to_ir(p, c, tex, inside, in, id, false, next_id));
     }
     return o;
 }
@@ -75,7 +81,7 @@ void Parser::place_object(PovObject o) {
                    "the scene has more than " + std::to_string(options.max_objects) + " objects",
                    "--max-objects");
     scene.objects.push_back(
-        to_ir(*this, o, def, scene::Interior{}, -1, true, &next_interior_id_));
+        to_ir(*this, o, def, nullptr, scene::Interior{}, -1, true, &next_interior_id_));
     propagate_flags(scene.objects.back());
 }
 

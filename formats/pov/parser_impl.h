@@ -113,7 +113,9 @@ public:
                               T& out);
     std::vector<scene::ColorMapEntry> parse_color_map_body();
     // bump_size is read into *bump_size when given (bump_map).
-    void parse_image_map_body(scene::ImageMap& im, double* bump_size = nullptr);
+    // `material_map`: the body of a material_map, whose image items stop at its first texture.
+    void parse_image_map_body(scene::ImageMap& im, double* bump_size = nullptr,
+                              bool material_map = false);
     // ---- patterns and maps (patterns.cpp, pattern_grammar.cpp)
     void parse_pattern_arguments(scene::PatternKind kind, scene::PatternParams& pp, bool normal);
     // A pattern modifier (turbulence, frequency, warp, brick_size, ...) if `w` is one; `head`
@@ -133,6 +135,8 @@ public:
     std::vector<scene::Pigment> parse_pigment_entries(scene::PatternKind kind, int count);
     std::vector<scene::Normal> parse_normal_entries(int count);
     std::vector<scene::Texture> parse_texture_entries(int count);
+    // material_map { IMAGE ITEMS texture {..} ... } (after the keyword) into `tex`.
+    void parse_material_map(scene::Texture& tex);
     // `#declare M = color_map { ... }` (and the other maps) after the keyword `w`.
     Value parse_map_rvalue(const std::string& w);
     // A transform keyword (translate/rotate/scale/matrix/transform) if the next token is one.
@@ -163,6 +167,11 @@ public:
     // A mesh's texture_list textures follow its transforms (scene::MeshRef::face_materials):
     // transformed copies of the materials its faces name.
     void transform_face_materials(scene::MeshRef& ref, const Transform& t);
+    // Mesh::Determine_Textures: a hit from inside shows the mesh's interior_texture whatever
+    // the face's own texture, so the faces' materials get copies that carry it.
+    void give_faces_interior_texture(scene::MeshRef& ref, const scene::Texture& inside);
+    // Fills ref.face_materials (identity) if empty; false if the mesh's faces name none.
+    bool own_face_materials(scene::MeshRef& ref);
     std::unordered_map<int, std::vector<int>> face_material_ids_;  // per mesh, distinct
     void parse_global_settings();
     void parse_radiosity_settings();  // after `radiosity` in global_settings
@@ -195,9 +204,10 @@ public:
 
     // ---- top level (parser.cpp)
     void place_object(PovObject o);
-    // `interior_id`: scene::Material::interior_id (-1 for mesh face textures).
+    // `interior_id`: scene::Material::interior_id (-1 for mesh face textures); `inside`:
+    // the interior_texture, or null for none.
     int add_material(const scene::Texture& t, const scene::Interior& in, const FileLoc& loc,
-                     int interior_id = -1);
+                     int interior_id = -1, const scene::Texture* inside = nullptr);
     // What a #declare right-hand side can be: object, texture, expression, ...
     Value parse_rvalue() override;
     void parse_default() override;

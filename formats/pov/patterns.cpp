@@ -468,6 +468,10 @@ scene::Texture Parser::parse_texture_body() {
                 tex.texture_map.clear();
             }
             if (*kind == PatternKind::Object) close_object_pattern();
+        } else if (w == "material_map") {
+            if (modified && tex.kind == PatternKind::Plain)
+                fail("a texture with a pigment, normal or finish cannot also have a material_map");
+            parse_material_map(tex);
         } else if (w == "texture_map") {
             if (takes_no_map(tex.kind))
                 fail("cannot use texture_map with the '" + std::string(pattern_name(tex.kind)) +
@@ -509,7 +513,8 @@ scene::Texture Parser::parse_texture_body() {
             transform_texture(tex, tr);
         }
     }
-    if (tex.kind != PatternKind::Plain && block_count(tex.kind) == 0 && tex.texture_map.empty())
+    if (tex.kind != PatternKind::Plain && tex.kind != PatternKind::ImageMap &&
+        block_count(tex.kind) == 0 && tex.texture_map.empty())
         fail("a patterned texture needs a texture_map");
     if (uv_plain) {
         scene::Texture& top = top_layer(tex);
@@ -517,6 +522,27 @@ scene::Texture Parser::parse_texture_body() {
         top.normal.uv_mapping = true;
     }
     return tex;
+}
+
+void Parser::parse_material_map(scene::Texture& tex) {
+    // Parse_Material_Map: a new texture (what came before is dropped, transforms too) whose
+    // image's pixels choose among the textures that follow the image items.
+    expect_open("material_map");
+    FileLoc o = loc();
+    scene::Texture m;
+    m.loc = tex.loc;
+    m.kind = PatternKind::ImageMap;
+    m.params.image.loc = o;
+    parse_image_map_body(m.params.image, nullptr, true);
+    while (accept("texture")) {
+        expect_open("texture");
+        FileLoc to = loc();
+        m.entries.push_back(parse_texture_body());
+        expect_close("texture", to);
+    }
+    if (m.entries.empty()) fail("a material_map needs at least one texture");
+    expect_close("material_map", o);
+    tex = std::move(m);
 }
 
 std::vector<scene::Texture> Parser::parse_texture_entries(int count) {

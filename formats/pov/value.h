@@ -45,6 +45,7 @@ struct PovObject {
     scene::Object obj;
     std::vector<PovObject> children;
     std::optional<scene::Texture> texture;
+    std::optional<scene::Texture> interior_texture;  // the inside's texture, when given
     std::optional<scene::Interior> interior;
     std::vector<scene::Light> lights;
     bool is_light = false;  // a bare light_source: only lights[0] matters
@@ -55,6 +56,7 @@ struct PovObject {
 
 struct MaterialValue {
     std::optional<scene::Texture> texture;
+    std::optional<scene::Texture> interior_texture;
     std::optional<scene::Interior> interior;
 };
 

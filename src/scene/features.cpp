@@ -55,6 +55,7 @@ private:
         if (m.interior.fade_distance > 0) f_.interior_fading = true;
         for (const Media& md : m.interior.media) media(md);
         bool transparent = texture(m.texture);
+        for (const Texture& t : m.interior_texture) transparent |= texture(t);
         if (transparent) {
             f_.transparency = true;
             if (m.interior.ior != 1.0) f_.refraction = true;
@@ -65,6 +66,7 @@ private:
     bool texture(const Texture& t) {
         if (t.kind != PatternKind::Plain) {
             f_.texture_maps = true;
+            if (t.kind == PatternKind::ImageMap) f_.image_textures = true;  // material_map
             pattern_kind(t.kind);
             bool transparent = false;
             for (const TextureMapEntry& e : t.texture_map) transparent |= texture(e.texture[0]);

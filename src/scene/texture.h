@@ -21,7 +21,9 @@ enum class PatternKind {
     Plain,     // a single color (pigment) or no perturbation (normal)
     Checker,   // block pattern: entries[0], entries[1]
     Gradient,  // continuous: fractional part of dot(p, vector)
-    ImageMap,  // image_map (pigment), bump_map (normal), image_pattern: from an image file
+    // image_map (pigment), bump_map (normal), material_map (texture: the pixel's palette index
+    // picks an entry), image_pattern: from an image file
+    ImageMap,
     // continuous patterns
     Agate, Boxed, Bozo, Bumps, Cells, Crackle, Cylindrical, Dents, Facets, Granite, Leopard,
     Marble, Onion, Planar, Quilted, Radial, Ripples, Spherical, Spiral1, Spiral2, Spotted,
@@ -298,7 +300,8 @@ struct Texture {
     Finish finish;
     // A patterned texture (texture_map, or a block pattern of textures such as
     // `texture { checker texture{..} texture{..} }`) when kind != Plain; the plain members
-    // above are then unused.
+    // above are then unused. `material_map { png "f" texture{..} ... }` is kind ImageMap
+    // with params.image and one entry per texture, chosen by the image's pixel.
     PatternKind kind = PatternKind::Plain;
     PatternParams params;
     std::vector<TextureMapEntry> texture_map;
@@ -405,6 +408,10 @@ struct Pbr {
 
 struct Material {
     Texture texture;
+    // POV-Ray's interior_texture: shown where a ray meets the surface from inside (the
+    // outward normal facing away from the ray); empty = `texture` on both sides. Zero or
+    // one entry (a vector keeps materials without one small).
+    std::vector<Texture> interior_texture;
     Interior interior;
     // Which interior declaration this is, for POV-Ray's interior bookkeeping: CSG children
     // without an interior of their own share their parent's (Post_Process copies the pointer),

@@ -44,6 +44,11 @@ Color rgb_transm(const ColorFT& c) {
                  c.rgb.b * c.filter + c.transmit);
 }
 
+// The texture a ray sees where it meets a surface of `mat`, from inside or from outside.
+const scene::Texture& side_texture(const scene::Material& mat, bool from_inside) {
+    return from_inside && !mat.interior_texture.empty() ? mat.interior_texture[0] : mat.texture;
+}
+
 // `raw_normal`: the surface normal facing the ray (the slope pattern's), kept alive by the caller.
 PatternPoint pattern_point(const Hit& hit, const Vec3& raw_normal) {
     return {hit.p, hit.uv, hit.has_uv, &raw_normal};
@@ -267,69 +272,14 @@ Color Whitted::shade(const Ray& ray, const Hit& hit, double weight, const RaySta
     if (hit.material < 0 || hit.material >= static_cast<int>(scene_.materials.size()))
         return Color();
     const scene::Material& mat = scene_.materials[hit.material];
-    // ComputeTextureColour: the normal faces the incoming ray.
+    // ComputeTextureColour: the normal faces the incoming ray; a ray that meets the surface
+    // from inside (the outward normal faces away from it) sees the interior_texture.
     Vec3 n = hit.n;
-    if (dot(n, ray.dir) > 0.0) n = -n;
+    const bool from_inside = dot(n, ray.dir) > 0.0;
+    if (from_inside) n = -n;
     TextureStack stack;
-    return texture_colour(ray, hit, mat.texture, pattern_point(hit, n), n, weight, state, stack);
-}
-
-Color Whitted::texture_colour(const Ray& ray, const Hit& hit, const scene::Texture& tex,
-                              const PatternPoint& at, const Vec3& n, double weight,
-                              const RayState& state, TextureStack stack) const {
-    // ComputeOneTextureColour: a patterned texture picks (and blends) the textures of its map
-    // by its pattern value; each one is lit on its own, in the pattern's warped space.
-    if (tex.kind == scene::PatternKind::Plain)
-        return lighted_texture(ray, hit, tex, at, n, weight, state, stack);
-    if (stack.count < TextureStack::kMax) stack.texture[stack.count++] = &tex;
-    Vec3 p = at.p;
-    if (tex.uv_mapping) {
-        if (!at.has_uv)
-            throw Error(ErrorKind::Render, tex.loc,
-                        "uv_mapping on a surface that has no uv coordinates");
-        p = Vec3(at.uv.x, at.uv.y, 0);
-    }
-    const scene::PatternParams& pp = tex.params;
-    const Vec3 local = tex.transform.is_identity() ? p : tex.transform.inverse_point(p);
-    const Vec3 tp = pp.warps.empty() ? local : warp_point(tex.kind, pp, local);
-    const PatternPoint sub{tp, at.uv, at.has_uv, at.normal};
-    if (tex.kind == scene::PatternKind::Average) {
-        Color sum;
-        double total = 0;
-        for (const scene::TextureMapEntry& e : tex.texture_map) {
-            sum += texture_colour(ray, hit, e.texture[0], sub, n, weight, state, stack) * e.value;
-            total += e.value;
-        }
-        return sum / total;
-    }
-    PatternContext on_surface = pigments_.context();
-    on_surface.normal = at.normal;
-    const double value = evaluate_pattern(tex.kind, pp, local, on_surface);
-    if (is_block_pattern(tex.kind)) {
-        const scene::Texture& e = tex.entries[block_index(value, tex.entries.size())];
-        return texture_colour(ray, hit, e, sub, n, weight, state, stack);
-    }
-    const auto& map = tex.texture_map;
-    BlendPick b = search_blend_map(map, value);
-    Color c = texture_colour(ray, hit, map[b.cur].texture[0], sub, n, weight, state, stack);
-    if (b.prev != b.cur) {
-        Color c2 = texture_colour(ray, hit, map[b.prev].texture[0], sub, n, weight, state, stack);
-        c = c * b.fraction + c2 * (1.0 - b.fraction);
-    }
-    return c;
-}
-
-Vec3 Whitted::layer_normal(const scene::Normal& normal, const PatternPoint& at, const Vec3& n,
-                           const TextureStack& stack) const {
-    if (normal.kind == scene::PatternKind::Plain || !features_.normals) return n;
-    // The enclosing patterned textures' transforms carry the normal into their space.
-    Vec3 m = n;
-    for (int i = 0; i < stack.count; ++i)
-        m = warp_normal(stack.texture[i]->transform, stack.texture[i]->params, m);
-    m = perturb_normal(normal, at, m, pigments_.context(), pigments_.textures());
-    for (int i = stack.count - 1; i >= 0; --i)
-        m = unwarp_normal(stack.texture[i]->transform, stack.texture[i]->params, m);
-    return m;
+    return texture_colour(ray, hit, side_texture(mat, from_inside), pattern_point(hit, n), n,
+                          weight, state, stack);
 }
 
 Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Texture& tex,
@@ -715,9 +665,11 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
             // POV-Ray stores interior { caustics C } as the exponent 45 C (Parse_Interior).
             // The normal faces back along the shadow ray before the layers perturb it
             // (ComputeShadowColour), which matters for |n . d| once bumps are added.
-            const Vec3 facing = dot(hit.n, r.dir) > 0.0 ? -hit.n : hit.n;
-            Color filter = shadow_texture(mat.texture, pattern_point(hit, facing),
-                                          45.0 * mat.interior.caustics, facing, normalize(r.dir));
+            const bool from_inside = dot(hit.n, r.dir) > 0.0;
+            const Vec3 facing = from_inside ? -hit.n : hit.n;
+            Color filter =
+                shadow_texture(side_texture(mat, from_inside), pattern_point(hit, facing),
+                               45.0 * mat.interior.caustics, facing, normalize(r.dir));
             const scene::Interior& interior = mat.interior;
             const double seg = hit.t * length(r.dir);
             const int id = interior_id(hit.material);
@@ -746,59 +698,6 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
         if (dot(r.dir, light_dir) <= 0.0) return colour;
     }
     return colour;
-}
-
-Color Whitted::shadow_texture(const scene::Texture& tex, const PatternPoint& at,
-                              double caustics, const Vec3& raw_normal, const Vec3& dir) const {
-    if (tex.kind == scene::PatternKind::Plain) {
-        // Every layer filters the light (ComputeShadowTexture), and with an interior's
-        // `caustics` each layer brightens it by 1 + |n . d|^caustics (POV-Ray's fake
-        // caustics, n the layer's perturbed normal): light through a curved glass surface
-        // gathers where the surface faces the light.
-        Color filter(1.0);
-        ColorFT pig;
-        auto layer = [&](const scene::Texture& l) {
-            if (pigments_.evaluate(l.pigment, at, &pig)) filter *= rgb_transm(pig);
-            if (caustics != 0.0) {
-                Vec3 n = raw_normal;
-                if (l.normal.kind != scene::PatternKind::Plain && features_.normals)
-                    n = perturb_normal(l.normal, at, n, pigments_.context(),
-                                       pigments_.textures());
-                filter *= 1.0 + std::pow(std::fabs(dot(n, dir)), caustics);
-            }
-        };
-        layer(tex);
-        for (const scene::Texture& l : tex.layers) layer(l);
-        return filter;
-    }
-    Vec3 p = at.p;
-    if (tex.uv_mapping && at.has_uv) p = Vec3(at.uv.x, at.uv.y, 0);
-    const scene::PatternParams& pp = tex.params;
-    const Vec3 local = tex.transform.is_identity() ? p : tex.transform.inverse_point(p);
-    const PatternPoint sub{pp.warps.empty() ? local : warp_point(tex.kind, pp, local), at.uv,
-                           at.has_uv, at.normal};
-    if (tex.kind == scene::PatternKind::Average) {
-        Color sum;
-        double total = 0;
-        for (const scene::TextureMapEntry& e : tex.texture_map) {
-            sum += shadow_texture(e.texture[0], sub, caustics, raw_normal, dir) * e.value;
-            total += e.value;
-        }
-        return sum / total;
-    }
-    PatternContext on_surface = pigments_.context();
-    on_surface.normal = at.normal;
-    const double value = evaluate_pattern(tex.kind, pp, local, on_surface);
-    if (is_block_pattern(tex.kind))
-        return shadow_texture(tex.entries[block_index(value, tex.entries.size())], sub, caustics,
-                              raw_normal, dir);
-    BlendPick b = search_blend_map(tex.texture_map, value);
-    Color c = shadow_texture(tex.texture_map[b.cur].texture[0], sub, caustics, raw_normal, dir);
-    if (b.prev != b.cur)
-        c = c * b.fraction +
-            shadow_texture(tex.texture_map[b.prev].texture[0], sub, caustics, raw_normal, dir) *
-                (1.0 - b.fraction);
-    return c;
 }
 
 Color Whitted::sky(const Vec3& dir) const { return sky_radiance(scene_, pigments_, dir, legacy_); }

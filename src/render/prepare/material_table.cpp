@@ -82,8 +82,13 @@ bool needs_pbr_maps(const scene::Scene& scene) {
 
 MaterialTable::MaterialTable(const scene::Scene& scene, const TextureCache* textures) {
     opaque_.reserve(scene.materials.size());
-    for (const scene::Material& m : scene.materials)
-        opaque_.push_back(!texture_can_be_transparent(m.texture, textures));
+    for (const scene::Material& m : scene.materials) {
+        // POV-Ray's OPAQUE_FLAG (Post_Process): both sides' textures must be opaque.
+        bool clear = texture_can_be_transparent(m.texture, textures);
+        for (const scene::Texture& t : m.interior_texture)
+            clear = clear || texture_can_be_transparent(t, textures);
+        opaque_.push_back(!clear);
+    }
 }
 
 void MaterialTable::prepare_for(const scene::Scene& scene, IntegratorKind integrator,
@@ -111,6 +116,7 @@ void MaterialTable::prepare_for(const scene::Scene& scene, IntegratorKind integr
         base_finishes_.push_back(&m.texture.finish);
         std::vector<const scene::Finish*> all;
         collect_finishes(m.texture, &all);
+        for (const scene::Texture& t : m.interior_texture) collect_finishes(t, &all);
         for (const scene::Finish* f : all) layer_finishes_.emplace(f, ClassicFinish(*f));
     }
 }

@@ -31,8 +31,9 @@ void collect(const scene::Normal& n, std::vector<const scene::ImageMap*>* out) {
     for (const scene::NormalMapEntry& e : n.normal_map) collect(e.normal[0], out);
 }
 
-// ... and from a texture: its layers, texture_map and block entries.
+// ... and from a texture: its material_map image, layers, texture_map and block entries.
 void collect(const scene::Texture& t, std::vector<const scene::ImageMap*>* out) {
+    if (t.kind == scene::PatternKind::ImageMap) out->push_back(&t.params.image);
     collect(t.pigment, out);
     collect(t.normal, out);
     for (const scene::Texture& l : t.layers) collect(l, out);
@@ -189,7 +190,10 @@ void TextureCache::add(const scene::ImageMap& map) {
 
 void TextureCache::preload(const scene::Scene& scene) {
     std::vector<const scene::ImageMap*> maps;
-    for (const scene::Material& m : scene.materials) collect(m.texture, &maps);
+    for (const scene::Material& m : scene.materials) {
+        collect(m.texture, &maps);
+        for (const scene::Texture& t : m.interior_texture) collect(t, &maps);
+    }
     if (scene.sky_sphere)
         for (const scene::Pigment& p : scene.sky_sphere->pigments) collect(p, &maps);
     collect(scene.camera.normal, &maps);

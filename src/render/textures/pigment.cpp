@@ -1,5 +1,6 @@
 #include "render/textures/pigment.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -327,6 +328,30 @@ ColorFT image_map_sample(const scene::ImageMap& im, const ImageTexture& image, d
             return c;
         }
     }
+}
+
+const scene::Texture& material_map_entry(const scene::Texture& tex, const TextureCache* textures,
+                                         const Vec3& q) {
+    const scene::ImageMap& im = tex.params.image;
+    const ImageTexture* image = textures ? textures->find(im) : nullptr;
+    if (!image) throw Error(ErrorKind::Render, im.loc, "image '" + im.file + "' was not loaded");
+    const size_t count = tex.entries.size();
+    size_t number = 0;
+    double xc, yc;
+    if (image_map_position(im, *image, q, &xc, &yc)) {
+        // The palette index (blended like the colours under `interpolate`), or on other
+        // images the red value.
+        int index = -1;
+        const scene::ColorFT c = image_map_sample(im, *image, xc, yc, &index);
+        if (index != -1) {
+            number = index > 0 ? static_cast<size_t>(index) : 0;
+        } else {
+            const double red = c.rgb.r * 255.0;
+            number = red > 0 ? static_cast<size_t>(red) : 0;
+        }
+    }
+    if (number > count) number %= count;
+    return tex.entries[std::min(number, count - 1)];
 }
 
 }  // namespace glint::render

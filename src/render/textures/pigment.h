@@ -60,6 +60,14 @@ bool image_map_position(const scene::ImageMap& im, const ImageTexture& image, co
 scene::ColorFT image_map_sample(const scene::ImageMap& im, const ImageTexture& image, double xc,
                                 double yc, int* index = nullptr);
 
+// POV-Ray's material_map(): the entry of a material_map texture (kind ImageMap) at the warped
+// pattern-space point `q`. A palette image's pixel gives its index (with `interpolate`, the
+// neighbours' indices blended and truncated), another image its red value times 255; off an
+// image used `once` it is 0; an index past the entry count wraps around it, one equal to the
+// count takes the last entry.
+const scene::Texture& material_map_entry(const scene::Texture& tex, const TextureCache* textures,
+                                         const Vec3& q);
+
 // POV-Ray's Search_Blend_Map over map values: the entries around `value` (the same one when
 // it is outside the map or exactly on an entry) and the fraction between them.
 struct BlendPick {
