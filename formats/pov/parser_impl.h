@@ -157,6 +157,7 @@ public:
     // ---- camera and scene settings (camera.cpp)
     void parse_camera_body(scene::Camera& cam);
     void parse_mesh_camera(scene::MeshCamera& m);
+    void parse_focal_blur_item(const std::string& w, scene::FocalBlur& fb);
     // The object pattern's closing brace, after its entries (parse_pattern_arguments opens).
     void close_object_pattern();
     std::vector<FileLoc> object_pattern_open_;
