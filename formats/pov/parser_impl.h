@@ -133,6 +133,7 @@ public:
     std::vector<scene::Pigment> parse_pigment_entries(scene::PatternKind kind, int count);
     std::vector<scene::Normal> parse_normal_entries(int count);
     std::vector<scene::Texture> parse_texture_entries(int count);
+    void parse_tiles(scene::Texture& tex);  // after `tiles` in a texture
     // `#declare M = color_map { ... }` (and the other maps) after the keyword `w`.
     Value parse_map_rvalue(const std::string& w);
     // A transform keyword (translate/rotate/scale/matrix/transform) if the next token is one.
