@@ -11,15 +11,15 @@
 #include <optional>
 #include <vector>
 
+#include "core/math.h"
 #include "render/camera.h"
 #include "render/ray.h"
-#include "core/math.h"
 #include "scene/camera.h"
 
 namespace glint::render {
 
 class FocalBlur {
-public:
+  public:
     // `camera` must outlive this; its IR camera's focal_blur must be active.
     explicit FocalBlur(const Camera& camera);
 
@@ -38,15 +38,15 @@ public:
     // Entry i: the largest variance accepted after i + 1 rays.
     const std::vector<double>& thresholds() const { return thresholds_; }
 
-private:
+  private:
     const Camera& camera_;
     scene::Camera ir_;
     std::vector<Vec2> grid_;
     std::vector<double> thresholds_;
     const int* batches_ = nullptr;  // rays per batch, 0-terminated; null: batches of 4
     double max_jitter_ = 0;
-    Vec3 x_perp_, y_perp_;          // the aperture's axes
-    double focal_scale_ = 1;        // focal distance over the direction's length
+    Vec3 x_perp_, y_perp_;    // the aperture's axes
+    double focal_scale_ = 1;  // focal distance over the direction's length
 };
 
 }  // namespace glint::render

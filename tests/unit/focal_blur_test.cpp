@@ -1,5 +1,7 @@
 // POV-Ray focal blur: the camera keywords to IR (formats/pov/camera.cpp) and the classic
 // renderer's aperture sampling (render/focal_blur.h) through the tile driver.
+#include "render/focal_blur.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,7 +10,6 @@
 #include <utility>
 
 #include "render/film/driver.h"
-#include "render/focal_blur.h"
 #include "tests/unit/pov_test_util.h"
 
 namespace glint {
@@ -46,8 +47,7 @@ TEST(FocalBlurParse, DefaultsFollowParseCamera) {
     EXPECT_EQ(f.variance, 1.0 / 10000);
     auto plain = parse("camera { location -5*z aperture 1 }\n");
     EXPECT_FALSE(plain.camera.focal_blur.active());  // no blur_samples: in focus
-    EXPECT_EQ(error_of("camera { blur_samples 0 }"),
-              "1:10: illegal number of focal blur samples");
+    EXPECT_EQ(error_of("camera { blur_samples 0 }"), "1:10: illegal number of focal blur samples");
     EXPECT_EQ(error_of("camera { blur_samples 9, 4 }"),
               "1:10: focal blur samples minimum must not be larger than maximum");
 }
@@ -68,8 +68,8 @@ TEST(FocalBlur, ApertureGridIsPovRaysHexGridThenFreeCellsOfTheDisc) {
     render::FocalBlur blur(cam);
     const auto& g = blur.grid();
     ASSERT_EQ(g.size(), 120u);
-    EXPECT_EQ(g[0], Vec2(0, 0));                // HexGrid4's centre first
-    EXPECT_EQ(g[36], Vec2(0.0, -0.25));         // and its last point
+    EXPECT_EQ(g[0], Vec2(0, 0));         // HexGrid4's centre first
+    EXPECT_EQ(g[36], Vec2(0.0, -0.25));  // and its last point
     std::set<std::pair<int, int>> cells;
     for (size_t i = 37; i < g.size(); ++i) {
         EXPECT_LE(g[i].x * g[i].x + g[i].y * g[i].y, 0.25 + 1e-12);
@@ -107,11 +107,13 @@ TEST(FocalBlur, UniformRadianceStopsAfterTheFirstBatch) {
     render::Camera cam(blur_camera(37), 40, 30);
     render::FocalBlur blur(cam);
     int rays = 0;
-    const Color c = blur.pixel(5, 5, [](const Ray&) { return Color(0.25, 0.5, 1); }, &rays);
+    const Color c = blur.pixel(
+        5, 5, [](const Ray&) { return Color(0.25, 0.5, 1); }, &rays);
     EXPECT_EQ(rays, 7);  // HexGrid4's first batch; zero variance passes the test
     EXPECT_NEAR(c.g, 0.5, 1e-15);
     // A noisy scene takes every ray.
-    blur.pixel(5, 5, [](const Ray& r) { return Color(r.origin.x > 0 ? 1 : 0, 0, 0); }, &rays);
+    blur.pixel(
+        5, 5, [](const Ray& r) { return Color(r.origin.x > 0 ? 1 : 0, 0, 0); }, &rays);
     EXPECT_EQ(rays, 37);
 }
 
