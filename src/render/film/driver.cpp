@@ -56,7 +56,10 @@ public:
                  const DriverSettings& settings, const RadianceFn& radiance, Image* image)
         : camera_(camera), opt_(options), settings_(settings), radiance_(radiance),
           image_(image), region_(film_region(options)) {
-        if (camera.ir().focal_blur.active()) blur_ = std::make_shared<const FocalBlur>(camera);
+        // A mesh_camera's rays come from its faces: POV-Ray gives them no aperture jitter, and
+        // glint keeps them as they are.
+        if (camera.ir().focal_blur.active() && camera.ir().kind != scene::CameraKind::Mesh)
+            blur_ = std::make_shared<const FocalBlur>(camera);
     }
 
     // False when cancelled before the tile was finished (its pixels are then incomplete).
