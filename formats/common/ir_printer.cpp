@@ -516,6 +516,13 @@ std::string print_ir(const scene::Scene& s) {
                       num(q.longitude_max) + " k " + num(q.k[0]) + " " + num(q.k[1]) + " " +
                       num(q.k[2]) + " " + num(q.k[3]) + " " + num(q.k[4]));
     }
+    if (c.focal_blur.active()) {
+        const FocalBlur& f = c.focal_blur;
+        p.line(1, "focal_blur aperture " + num(f.aperture) + " focal_distance " +
+                      num(f.focal_distance) + " samples " + std::to_string(f.samples_min) +
+                      ", " + std::to_string(f.samples) + " confidence " + num(f.confidence) +
+                      " variance " + num(f.variance));
+    }
     for (const Matrix4& m : c.motion) p.line(1, "motion " + matrix(Transform(m, m)));
     p.line(0, "background " + rgbft(s.background));
     if (s.sky_sphere) {

@@ -72,6 +72,8 @@ void Parser::parse_camera_body(scene::Camera& cam) {
     scene::Camera n = cam;
     std::optional<Vec3> look_at, up, right;
     std::optional<double> angle;
+    std::optional<Vec3> focal_point;
+    double direction_length = 1;  // Parse_Camera's Direction_Length: the focal default
     Transform tr;
     for (;;) {
         const Token& t = next();
@@ -137,16 +139,10 @@ void Parser::parse_camera_body(scene::Camera& cam) {
         } else if (w == "sky") {
             n.sky = parse_vector();
         } else if (w == "focal_point") {
-            parse_vector();  // only used by focal blur
-        } else if (w == "aperture") {
-            FileLoc at = loc();
-            if (parse_float() != 0)
-                warn_unsupported(*this, "focal blur", at, "the image is rendered all in focus");
-        } else if (w == "blur_samples") {
-            parse_float();
-            if (accept(",")) parse_float();
-        } else if (w == "confidence" || w == "variance") {
-            parse_float();
+            focal_point = parse_vector();
+        } else if (w == "aperture" || w == "blur_samples" || w == "confidence" ||
+                   w == "variance") {
+            parse_focal_blur_item(w, n.focal_blur);
         } else if (w == "normal") {
             // Parse_Tnormal: a camera without a normal starts from the default texture's.
             if (n.normal.kind == scene::PatternKind::Plain) n.normal = default_texture_.normal;
@@ -180,12 +176,14 @@ void Parser::parse_camera_body(scene::Camera& cam) {
             // direction length so that `right` spans `angle` degrees (parse.cpp).
             double dl = length(n.right) / std::tan(*angle * kPi / 360.0) / 2.0;
             n.direction = normalize(n.direction) * dl;
+            direction_length = dl;
         }
         n.angle = *angle;
     }
     Vec3 target = look_at.value_or(Vec3(0, 0, 1));
     if (look_at) {
         double dl = length(n.direction), ul = length(n.up), rl = length(n.right);
+        direction_length = dl;
         double handedness = dot(cross(n.up, n.direction), n.right);
         Vec3 d = *look_at - n.location;
         if (length_squared(d) < kPovEpsilon)
@@ -212,12 +210,52 @@ void Parser::parse_camera_body(scene::Camera& cam) {
             n.up = n.up * (k1 / k2);
         }
     }
+    // The focal distance before the camera's transforms, as Parse_Camera measures it: from
+    // the location to focal_point, else the direction's length (0 counts as 1).
+    if (focal_point) n.focal_blur.focal_distance = length(*focal_point - n.location);
+    else n.focal_blur.focal_distance = direction_length;
+    if (n.focal_blur.focal_distance == 0) n.focal_blur.focal_distance = 1;
     n.location = tr.point(n.location);
     n.direction = tr.vector(n.direction);
     n.right = tr.vector(n.right);
     n.up = tr.vector(n.up);
     n.sky = tr.vector(n.sky);
     cam = n;
+}
+
+// aperture, blur_samples min[, max], confidence and variance with Parse_Camera's checks.
+void Parser::parse_focal_blur_item(const std::string& w, scene::FocalBlur& fb) {
+    const FileLoc at = loc();
+    if (w == "aperture") {
+        fb.aperture = parse_float();
+    } else if (w == "blur_samples") {
+        // Counts as POV-Ray keeps them (ints); a million bounds the per-pixel work.
+        auto count = [&](double v) {
+            if (!(v < 1e6 + 1)) fail_at(at, "at most 1000000 focal blur samples");
+            return v < 0 ? -1 : static_cast<int>(v);
+        };
+        const int first = count(parse_float());
+        if (first <= 0) fail_at(at, "illegal number of focal blur samples");
+        skip_comma();
+        const int second = count(allow_float(0.0));
+        if (second == 0) {  // one value: the maximum, no minimum
+            fb.samples = first;
+            fb.samples_min = 0;
+        } else {
+            if (first > second)
+                fail_at(at, "focal blur samples minimum must not be larger than maximum");
+            fb.samples_min = first;
+            fb.samples = second;
+        }
+    } else if (w == "confidence") {
+        const double v = parse_float();
+        if (v > 0 && v < 1) fb.confidence = v;
+        else diag.warning(at, "illegal confidence value; the default is used");
+    } else {
+        const double v = parse_float();
+        if (v >= 0 && v <= 1) fb.variance = v;
+        else diag.warning(at, "illegal variance value; the default is used");
+    }
 }
 
 void Parser::parse_global_settings() {

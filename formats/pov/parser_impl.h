@@ -137,6 +137,7 @@ public:
     std::vector<scene::Texture> parse_texture_entries(int count);
     // material_map { IMAGE ITEMS texture {..} ... } (after the keyword) into `tex`.
     void parse_material_map(scene::Texture& tex);
+    void parse_tiles(scene::Texture& tex);  // after `tiles` in a texture
     // `#declare M = color_map { ... }` (and the other maps) after the keyword `w`.
     Value parse_map_rvalue(const std::string& w);
     // A transform keyword (translate/rotate/scale/matrix/transform) if the next token is one.
@@ -161,6 +162,7 @@ public:
     // ---- camera and scene settings (camera.cpp)
     void parse_camera_body(scene::Camera& cam);
     void parse_mesh_camera(scene::MeshCamera& m);
+    void parse_focal_blur_item(const std::string& w, scene::FocalBlur& fb);
     // The object pattern's closing brace, after its entries (parse_pattern_arguments opens).
     void close_object_pattern();
     std::vector<FileLoc> object_pattern_open_;

@@ -60,7 +60,7 @@ std::optional<PatternKind> pattern_keyword(const std::string& w) {
 const std::unordered_set<std::string>& unsupported_patterns() {
     static const std::unordered_set<std::string> k = {
         "aoi", "image_pattern", "pavement",
-        "gradient_map", "material_map", "tiles"};
+        "gradient_map", "material_map"};
     return k;
 }
 
@@ -89,14 +89,14 @@ bool takes_no_map(PatternKind k) {
 // pattern's own arguments so the rest of the block parses, and makes the pattern a constant 0
 // (a gradient along the zero vector): a pigment or texture shows its map's first entry, a
 // normal stays smooth. Returns false for the keywords that carry a whole texture of their own
-// (tiles, material_map), which leave the texture as it was.
+// (material_map, object), which leave the texture as it was.
 bool skip_unsupported_pattern(Parser& p, const std::string& w, PatternKind* kind,
                               scene::PatternParams* params, const char* consequence) {
     // The object pattern's entries sit inside its own block: the pigment or texture stays as
     // it was without it.
     warn_unsupported(p, w, p.loc(),
                      w == "object" ? "the pigment or texture is left as it was" : consequence);
-    if (w == "object" || w == "pigment_pattern" || w == "image_pattern" || w == "tiles" ||
+    if (w == "object" || w == "pigment_pattern" || w == "image_pattern" ||
         w == "material_map" || w == "gradient_map") {
         skip_braced_block(p, w);
     } else if (w == "aoi") {
@@ -107,7 +107,7 @@ bool skip_unsupported_pattern(Parser& p, const std::string& w, PatternKind* kind
                p.accept("form"))
             p.parse_float();
     }
-    if (w == "tiles" || w == "material_map" || w == "object") return false;
+    if (w == "material_map" || w == "object") return false;
     *kind = PatternKind::Gradient;
     params->vector = Vec3(0, 0, 0);
     return true;
@@ -472,6 +472,10 @@ scene::Texture Parser::parse_texture_body() {
             if (modified && tex.kind == PatternKind::Plain)
                 fail("a texture with a pigment, normal or finish cannot also have a material_map");
             parse_material_map(tex);
+        } else if (w == "tiles") {
+            if (modified && tex.kind == PatternKind::Plain)
+                fail("a texture with a pigment, normal or finish cannot also have tiles");
+            parse_tiles(tex);
         } else if (w == "texture_map") {
             if (takes_no_map(tex.kind))
                 fail("cannot use texture_map with the '" + std::string(pattern_name(tex.kind)) +
@@ -543,6 +547,45 @@ void Parser::parse_material_map(scene::Texture& tex) {
     if (m.entries.empty()) fail("a material_map needs at least one texture");
     expect_close("material_map", o);
     tex = std::move(m);
+}
+
+// tiles { texture {..}... tile2 texture {..}... } (Parse_Tiles): POV-Ray's older spelling of a
+// checker of two textures. Its first texture fills the checker's second cell and tile2's the
+// first, so it is stored as `checker texture {tile2's} texture {first}`. Several textures in
+// one slot are layered; a slot left empty takes the default texture.
+void Parser::parse_tiles(scene::Texture& tex) {
+    expect_open("tiles");
+    const FileLoc opened = loc();
+    auto layered_slot = [&](bool* given) {
+        scene::Texture slot = default_texture_;
+        *given = false;
+        for (;;) {
+            const FileLoc at = loc();
+            if (!accept("texture")) break;
+            expect_open("texture");
+            const FileLoc o = loc();
+            scene::Texture t = parse_texture_body();
+            expect_close("texture", o);
+            if (*given) layer_texture(slot, t, at);
+            else slot = std::move(t);
+            *given = true;
+        }
+        return slot;
+    };
+    bool given = false;
+    scene::Texture first = layered_slot(&given);
+    if (!given) fail_at(opened, "first texture missing from tiles");
+    if (!accept("tile2")) fail("expected tile2 in tiles, got " + got(peek()));
+    scene::Texture second = layered_slot(&given);
+    expect_close("tiles", opened);
+    tex.kind = PatternKind::Checker;
+    tex.pigment = scene::Pigment{};
+    tex.normal = scene::Normal{};
+    tex.layers.clear();
+    tex.params = scene::PatternParams{};
+    tex.params.frequency = 0;  // a block pattern, as parse_pattern_arguments leaves it
+    tex.texture_map.clear();
+    tex.entries = {std::move(second), std::move(first)};
 }
 
 std::vector<scene::Texture> Parser::parse_texture_entries(int count) {

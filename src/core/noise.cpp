@@ -305,6 +305,8 @@ int hash3d(int a, int b, int c) {
     return h[h[h[a & 0xfff] ^ (b & 0xfff)] ^ (c & 0xfff)];
 }
 
+int noise_hash(int i) { return tables().hash[i & 0xfff]; }
+
 double pattern_random(unsigned seed) {
     // boost::uniform_real<double>(0, 1) over mt19937 divides each 32-bit draw by 2^32;
     // std::mt19937's default seed is the same 5489. Only the first 4098 values can be reached

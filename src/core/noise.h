@@ -37,6 +37,9 @@ Vec3 dturbulence(const Vec3& p, const TurbulenceParams& turb);
 // for the low 12 bits of each lattice coordinate. Used by the cell patterns (cells, crackle,
 // facets) and the black_hole warp.
 int hash3d(int a, int b, int c);
+// One entry of that table: POV-Ray's hashTable[i & 0xfff], which its jitter (Jitter2d) and
+// focal blur (PseudoRandom) index directly.
+int noise_hash(int i);
 
 // POV-Ray's PatternRands(seed) / WarpRands(seed): a fixed sequence of 32768 uniform numbers in
 // [0, 1) (boost's mt19937 with its default seed through uniform_real), indexed modulo 32768.

@@ -34,6 +34,8 @@ public:
     // orthographic and Blender panoramic cameras; the others ignore the lens.
     std::optional<Ray> generate(double x, double y, double lens_u, double lens_v) const;
     bool has_lens() const { return camera_.lens.radius > 0; }
+    // The IR camera the rays come from (focal blur reads its settings and axes).
+    const scene::Camera& ir() const { return camera_; }
     // A mesh_camera's rays per pixel (1 for every other camera) and ray `ray_number` of a
     // raster position; the pixel is the mean of the rays it has.
     int rays_per_pixel() const { return mesh_ ? mesh_->rays_per_pixel() : 1; }

@@ -87,6 +87,20 @@ struct Lens {
     double ratio = 1;           // anamorphic: aperture width / height
 };
 
+// POV-Ray's focal blur (camera aperture, focal_point, blur_samples, confidence, variance):
+// each pixel averages up to `samples` rays from points of the aperture that meet on the focal
+// plane, stopping early once their variance is small enough (render/focal_blur.h). Off while
+// aperture or samples is 0. Defaults are POV-Ray 3.7's Camera::Init.
+struct FocalBlur {
+    double aperture = 0;
+    double focal_distance = 1;  // from the location, resolved by the importer
+    int samples = 0;            // blur_samples' maximum
+    int samples_min = 0;        // blur_samples' minimum (0: one value was given)
+    double confidence = 0.9;
+    double variance = 1.0 / 10000.0;
+    bool active() const { return aperture != 0 && samples > 0; }
+};
+
 // The keyword of a camera kind ("cylinder 1" for Cylinder1).
 const char* camera_kind_name(CameraKind kind);
 
@@ -101,6 +115,7 @@ struct Camera {
     double h_angle = 360;    // spherical camera: horizontal and vertical field of view
     double v_angle = 180;
     Lens lens;
+    FocalBlur focal_blur;    // POV-Ray cameras only
     Panorama panorama;       // kind BlenderPanorama only
     MeshCamera mesh_camera;  // kind Mesh only
     // POV-Ray's camera `normal`: bends every primary ray's direction as a surface normal,

@@ -183,6 +183,30 @@ TEST(PovPatterns, PatternedAndLayeredTextures) {
     EXPECT_EQ(layered.layers[1].pigment.color.filter, 0.3);
 }
 
+TEST(PovPatterns, TilesIsACheckerOfTwoTexturesWithTheFirstInTheSecondCell) {
+    auto s = parse(
+        "sphere { 0, 1 texture { tiles { texture { pigment { rgb x } } tile2\n"
+        "  texture { pigment { rgb y } } texture { pigment { rgbt <0, 0, 1, 0.5> } } }\n"
+        "  scale 2 } }\n"
+        "sphere { 0, 1 texture { tiles { texture { pigment { rgb z } } tile2 } } }\n");
+    const auto& t = texture_of(s, 0);
+    EXPECT_EQ(t.kind, PatternKind::Checker);
+    EXPECT_EQ(t.transform.point(Vec3(1, 1, 1)), Vec3(2, 2, 2));
+    ASSERT_EQ(t.entries.size(), 2u);
+    // Parse_Tiles: the first texture is the checker's entry 1, tile2's entry 0.
+    EXPECT_EQ(t.entries[1].pigment.color.rgb, Color(1, 0, 0));
+    EXPECT_EQ(t.entries[0].pigment.color.rgb, Color(0, 1, 0));
+    ASSERT_EQ(t.entries[0].layers.size(), 1u);  // tile2's two textures are layered
+    EXPECT_EQ(t.entries[0].layers[0].pigment.color.transmit, 0.5);
+    const auto& empty_tile2 = texture_of(s, 1);
+    ASSERT_EQ(empty_tile2.entries.size(), 2u);
+    EXPECT_EQ(empty_tile2.entries[1].pigment.color.rgb, Color(0, 0, 1));
+    EXPECT_EQ(error_of("sphere { 0, 1 texture { tiles { tile2 texture { } } } }"),
+              "1:31: first texture missing from tiles");
+    EXPECT_EQ(error_of("sphere { 0, 1 texture { tiles { texture { } } } }"),
+              "1:45: expected tile2 in tiles, got '}'");
+}
+
 TEST(PovPatterns, MisuseIsAnErrorAtItsPlace) {
     EXPECT_EQ(error_of("sphere { 0, 1 pigment { checker color_map { [0 rgb 0] } } }"),
               "1:33: cannot use color_map with the 'checker' pattern");

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "render/focal_blur.h"
 #include "render/sampling/sampler.h"
 
 namespace glint::render {
@@ -54,7 +55,12 @@ public:
     TileRenderer(const Camera& camera, const RenderOptions& options,
                  const DriverSettings& settings, const RadianceFn& radiance, Image* image)
         : camera_(camera), opt_(options), settings_(settings), radiance_(radiance),
-          image_(image), region_(film_region(options)) {}
+          image_(image), region_(film_region(options)) {
+        // A mesh_camera's rays come from its faces: POV-Ray gives them no aperture jitter, and
+        // glint keeps them as they are.
+        if (camera.ir().focal_blur.active() && camera.ir().kind != scene::CameraKind::Mesh)
+            blur_ = std::make_shared<const FocalBlur>(camera);
+    }
 
     // False when cancelled before the tile was finished (its pixels are then incomplete).
     bool render(const Tile& t) const {
@@ -74,6 +80,11 @@ private:
     }
 
     Color sample(double x, double y, int px, int py, uint32_t index) const {
+        if (blur_) {
+            return blur_->pixel(x, y, [&](const Ray& ray) {
+                return radiance_(ray, SampleId{px, py, index, current_block});
+            });
+        }
         const int rays = camera_.rays_per_pixel();
         if (rays == 1) {
             std::optional<Ray> ray = camera_.generate(x, y);
@@ -203,6 +214,7 @@ private:
     const RadianceFn& radiance_;
     Image* image_;
     Region region_;
+    std::shared_ptr<const FocalBlur> blur_;  // POV-Ray focal blur, when the camera has it
 };
 
 // The blocks of the whole width x height image that meet the region, in image order.
