@@ -362,9 +362,6 @@ TEST(PovMaterials, UnsupportedFeaturesSaySo) {
     EXPECT_DOUBLE_EQ(fi.phong, 1.0);
     // Objects glint lacks are left out with a warning (pov_unsupported_test.cpp).
     EXPECT_EQ(error_of("ovus { }"), "(no error)");
-    EXPECT_EQ(warnings_of("sphere { 0, 1 texture { material_map { png \"m.png\" texture { } } } }"),
-              std::vector<std::string>{"1:25: 'material_map' is not supported: the texture is "
-                                       "its texture_map's first entry"});
     // tiles is a checker texture (pov_patterns_test.cpp): no warning.
     EXPECT_EQ(warnings_of("sphere { 0, 1 texture { tiles { texture { } tile2 texture { } } } }"),
               std::vector<std::string>{});
