@@ -47,6 +47,7 @@ constexpr PatternWord kPatternWords[] = {
     {"function", PatternKind::Function},   {"density_file", PatternKind::DensityFile},
     {"object", PatternKind::Object},       {"pigment_pattern", PatternKind::PigmentPattern},
     {"slope", PatternKind::Slope},
+    {"aoi", PatternKind::Aoi},
     {"magnet", PatternKind::Magnet},       {"tiling", PatternKind::Tiling},
 };
 
@@ -59,7 +60,7 @@ std::optional<PatternKind> pattern_keyword(const std::string& w) {
 // POV-Ray patterns glint does not evaluate: named so the message is precise.
 const std::unordered_set<std::string>& unsupported_patterns() {
     static const std::unordered_set<std::string> k = {
-        "aoi", "image_pattern", "pavement",
+        "image_pattern", "pavement",
         "gradient_map", "material_map"};
     return k;
 }
@@ -99,8 +100,6 @@ bool skip_unsupported_pattern(Parser& p, const std::string& w, PatternKind* kind
     if (w == "object" || w == "pigment_pattern" || w == "image_pattern" ||
         w == "material_map" || w == "gradient_map") {
         skip_braced_block(p, w);
-    } else if (w == "aoi") {
-        if (p.next_is_expression_start()) p.parse_vector();
     } else if (w == "pavement") {
         while (p.accept("number_of_sides") || p.accept("number_of_tiles") ||
                p.accept("pattern") || p.accept("exterior") || p.accept("interior") ||

@@ -46,6 +46,7 @@ const char* pattern_name(PatternKind kind) {
         case PatternKind::Object: return "object";
         case PatternKind::PigmentPattern: return "pigment_pattern";
         case PatternKind::Slope: return "slope";
+        case PatternKind::Aoi: return "aoi";
         case PatternKind::Average: return "average";
     }
     return "?";

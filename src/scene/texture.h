@@ -41,6 +41,8 @@ enum class PatternKind {
     // slope { [point_at] <v> [, lo, hi] [altitude <a> [, lo, hi]] }: the surface normal's
     // slope against v, mixed with the height along a (PatternParams::slope)
     Slope,
+    // aoi: the angle between the surface normal facing the ray and the ray, / pi
+    Aoi,
     // pigment { average pigment_map { [w P] ... } }, normal { average normal_map {...} }
     Average,
 };

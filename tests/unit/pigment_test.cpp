@@ -171,6 +171,28 @@ TEST(Pigment, PigmentPatternIsTheInnerPigmentsGrey) {
     EXPECT_EQ(eval(e, p, Vec3(13, 1, 1)).rgb.g, 0.0);
 }
 
+// aoi: acos(n . d) / pi with n the normal facing the ray: 1 head on, 0.75 at 45 degrees,
+// 0.5 at grazing incidence; 0 without a surface or a ray.
+TEST(Pigment, AoiReadsTheAngleOfIncidence) {
+    Pigment p;
+    p.kind = scene::PatternKind::Aoi;
+    p.params.frequency = 0;
+    p.color_map = {{0.0, ColorFT(Color(0, 0, 0))}, {1.0, ColorFT(Color(1, 1, 1))}};
+    PigmentEvaluator e(nullptr);
+    const Vec3 n(0, 1, 0);
+    auto at = [&](Vec3 d) {
+        ColorFT c;
+        EXPECT_TRUE(e.evaluate(p, {Vec3(0, 0, 0), {}, false, &n, &d}, &c));
+        return c.rgb.r;
+    };
+    EXPECT_NEAR(at(Vec3(0, -2, 0)), 1.0, 1e-12);
+    EXPECT_NEAR(at(Vec3(1, -1, 0)), 0.75, 1e-12);
+    EXPECT_NEAR(at(Vec3(1, 0, 0)), 0.5, 1e-12);
+    ColorFT none;
+    EXPECT_TRUE(e.evaluate(p, {Vec3(0, 0, 0), {}, false, &n}, &none));
+    EXPECT_EQ(none.rgb.r, 0.0);
+}
+
 // slope { y }: 0.5 + asin(dot(n, y)) / pi, so 1 (just below) facing up, 0.5 on a wall, 0
 // facing down; with altitude the height mixes in by the vectors' length ratio.
 TEST(Pigment, SlopeReadsTheSurfaceNormal) {

@@ -136,7 +136,7 @@ void PathIntegrator::add_pov_subsurface(const SurfacePbr& s, const Hit& hit, con
     set->add(b);
 }
 
-SurfacePbr PathIntegrator::surface(Hit& hit) const {
+SurfacePbr PathIntegrator::surface(Hit& hit, const Vec3& dir) const {
     const PathMaterial* row = materials_.path(hit.material);
     if (!row) {
         SurfacePbr s;
@@ -147,7 +147,7 @@ SurfacePbr PathIntegrator::surface(Hit& hit) const {
     const scene::Material& m = scene_.materials[hit.material];
     // The slope pattern reads the surface's own (outward) normal here: the path tracer shades
     // without the ray's side, which only differs from POV-Ray's facing normal seen from inside.
-    const PatternPoint at{hit.p, hit.uv, hit.has_uv, &hit.n};
+    const PatternPoint at{hit.p, hit.uv, hit.has_uv, &hit.n, &dir};
     if (!m.pbr.derived) {
         // Only materials with maps get here. A surface without uvs reads its maps at uv
         // (0, 0), as Cycles reads an Image Texture on a mesh without a UV map (a missing
@@ -229,7 +229,7 @@ Color PathIntegrator::transmittance(const Vec3& origin, const Vec3& dir, double 
             // What passes: the uncovered fraction, and through an index-matched (IOR 1)
             // transmissive surface the transmitted part, tinted; refraction at any other IOR
             // bends the light, which only BSDF sampling can follow.
-            const SurfacePbr s = surface(h);
+            const SurfacePbr s = surface(h, dir);
             Color pass(1 - s.alpha);
             if (s.bsdf.ior == 1.0 && s.bsdf.transmission > 0)
                 pass += s.bsdf.base * (s.alpha * s.bsdf.transmission * (1 - s.bsdf.metallic));
@@ -278,7 +278,7 @@ bool PathIntegrator::photon_surface(Hit& hit, const Vec3& dir, double coin,
         }
         return out->set.count() > 0;
     }
-    const SurfacePbr s = surface(hit);
+    const SurfacePbr s = surface(hit, dir);
     if (s.alpha < 1 && coin >= s.alpha) {
         out->pass = true;
         out->pass_weight = Color(1, 1, 1);
@@ -591,7 +591,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler, Fir
                 albedo += c.weight * c.color;
             }
         } else {
-            const SurfacePbr s = surface(hit);
+            const SurfacePbr s = surface(hit, r.dir);
             if (s.alpha < 1 && sampler.get2(alpha_base + alpha_tests++).u >= s.alpha) {
                 if (++skips > max_skips) break;
                 if (has_media_) stack.cross(hit, r.dir, *this);

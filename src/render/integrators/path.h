@@ -106,7 +106,8 @@ private:
     // The media of materials, objects and the world (path_media.cpp), from the constructor.
     void setup_media();
     // The surface at a hit. Bump and normal maps (OBJ/MTL map_Bump) bend hit.n in place.
-    SurfacePbr surface(Hit& hit) const;
+    // `dir`: the direction of the ray that met `hit` (POV-Ray's aoi pattern reads it).
+    SurfacePbr surface(Hit& hit, const Vec3& dir) const;
     // A POV-Ray subsurface finish's BSSRDF (SurfacePbr::subsurface_radius) into `set`.
     void add_pov_subsurface(const SurfacePbr& s, const Hit& hit, const Vec3& dir,
                             bool diffuse_ancestor, ClosureSet* set) const;

@@ -49,9 +49,10 @@ const scene::Texture& side_texture(const scene::Material& mat, bool from_inside)
     return from_inside && !mat.interior_texture.empty() ? mat.interior_texture[0] : mat.texture;
 }
 
-// `raw_normal`: the surface normal facing the ray (the slope pattern's), kept alive by the caller.
-PatternPoint pattern_point(const Hit& hit, const Vec3& raw_normal) {
-    return {hit.p, hit.uv, hit.has_uv, &raw_normal};
+// `raw_normal`: the surface normal facing the ray (the slope pattern's), `dir` the ray's
+// direction (the aoi pattern's), both kept alive by the caller.
+PatternPoint pattern_point(const Hit& hit, const Vec3& raw_normal, const Vec3& dir) {
+    return {hit.p, hit.uv, hit.has_uv, &raw_normal, &dir};
 }
 
 }  // namespace
@@ -278,7 +279,7 @@ Color Whitted::shade(const Ray& ray, const Hit& hit, double weight, const RaySta
     const bool from_inside = dot(n, ray.dir) > 0.0;
     if (from_inside) n = -n;
     TextureStack stack;
-    return texture_colour(ray, hit, side_texture(mat, from_inside), pattern_point(hit, n), n,
+    return texture_colour(ray, hit, side_texture(mat, from_inside), pattern_point(hit, n, ray.dir), n,
                           weight, state, stack);
 }
 
@@ -668,7 +669,7 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
             const bool from_inside = dot(hit.n, r.dir) > 0.0;
             const Vec3 facing = from_inside ? -hit.n : hit.n;
             Color filter =
-                shadow_texture(side_texture(mat, from_inside), pattern_point(hit, facing),
+                shadow_texture(side_texture(mat, from_inside), pattern_point(hit, facing, r.dir),
                                45.0 * mat.interior.caustics, facing, normalize(r.dir));
             const scene::Interior& interior = mat.interior;
             const double seg = hit.t * length(r.dir);

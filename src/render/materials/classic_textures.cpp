@@ -51,6 +51,7 @@ Color Whitted::texture_colour(const Ray& ray, const Hit& hit, const scene::Textu
     }
     PatternContext on_surface = pigments_.context();
     on_surface.normal = at.normal;
+    on_surface.ray_dir = at.ray_dir;
     const double value = evaluate_pattern(tex.kind, pp, local, on_surface);
     if (is_block_pattern(tex.kind)) {
         const scene::Texture& e = tex.entries[block_index(value, tex.entries.size())];
@@ -123,6 +124,7 @@ Color Whitted::shadow_texture(const scene::Texture& tex, const PatternPoint& at,
     }
     PatternContext on_surface = pigments_.context();
     on_surface.normal = at.normal;
+    on_surface.ray_dir = at.ray_dir;
     const double value = evaluate_pattern(tex.kind, pp, local, on_surface);
     if (is_block_pattern(tex.kind))
         return shadow_texture(tex.entries[block_index(value, tex.entries.size())], sub, caustics,

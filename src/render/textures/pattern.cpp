@@ -539,6 +539,8 @@ double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
                        : 0.0;
         case PatternKind::Slope:
             return slope_pattern(params.slope, p, ctx);
+        case PatternKind::Aoi:
+            return aoi_pattern(ctx);
         case PatternKind::PigmentPattern:
             return pigment_pattern(params, p, ctx);
         case PatternKind::Leopard:

@@ -37,6 +37,8 @@ struct PatternContext {
     // before any normal perturbation: POV-Ray's PNormal), for the slope pattern; null
     // elsewhere (media, functions), where slope is 0.
     const Vec3* normal = nullptr;
+    // The direction of the ray that met the surface, for the aoi pattern; null elsewhere.
+    const Vec3* ray_dir = nullptr;
 };
 
 // POV-Ray's Warp_EPoint + Evaluate_TPat.

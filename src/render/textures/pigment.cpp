@@ -76,9 +76,11 @@ bool PigmentEvaluator::evaluate(const scene::Pigment& pigment, const PatternPoin
         }
         p = Vec3(at.uv.x, at.uv.y, 0);
     }
-    if (at.normal && at.normal != ctx_.normal) {  // the slope pattern reads it
+    if ((at.normal && at.normal != ctx_.normal) ||
+        (at.ray_dir && at.ray_dir != ctx_.ray_dir)) {  // the slope and aoi patterns read them
         PigmentEvaluator on_surface(*this);
         on_surface.ctx_.normal = at.normal;
+        on_surface.ctx_.ray_dir = at.ray_dir;
         return on_surface.eval(pigment, p, out);
     }
     return eval(pigment, p, out);

@@ -19,6 +19,8 @@ struct PatternPoint {
     // The surface normal facing the ray, before perturbation (PatternContext::normal), when
     // the point is on a surface a ray hit.
     const Vec3* normal = nullptr;
+    // The direction of the ray that met the surface (PatternContext::ray_dir).
+    const Vec3* ray_dir = nullptr;
 };
 
 class PigmentEvaluator {

@@ -7,6 +7,13 @@
 
 namespace glint::render {
 
+double aoi_pattern(const PatternContext& ctx) {
+    if (!ctx.normal || !ctx.ray_dir) return 0.0;
+    const double la = length(*ctx.normal), lb = length(*ctx.ray_dir);
+    if (!(la > 0) || !(lb > 0)) return 0.0;
+    return std::acos(std::clamp(dot(*ctx.normal, *ctx.ray_dir) / (la * lb), -1.0, 1.0)) / kPi;
+}
+
 // POV-Ray's slope_pattern: the normal's angle against the slope vector (or towards a point)
 // mapped to 0..1, optionally mixed with the point's height along the altitude vector.
 double slope_pattern(const scene::SlopeParams& s, const Vec3& p, const PatternContext& ctx) {

@@ -8,6 +8,10 @@ namespace glint::render {
 
 // POV-Ray's slope_pattern; 0 where the context has no surface normal.
 double slope_pattern(const scene::SlopeParams& s, const Vec3& p, const PatternContext& ctx);
+// POV-Ray's aoi_pattern: the angle between the surface normal facing the ray and the ray's
+// direction, over pi (0.5 to 1 on a surface seen from its front); 0 where the context has
+// no normal or ray.
+double aoi_pattern(const PatternContext& ctx);
 // POV-Ray's pigment_pattern: params.pigment's grey at p, 0 where it has no color.
 double pigment_pattern(const scene::PatternParams& params, const Vec3& p,
                        const PatternContext& ctx);
