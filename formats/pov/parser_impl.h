@@ -224,8 +224,11 @@ public:
     scene::Scene scene;
     scene::Texture default_texture_;
     int next_interior_id_ = 0;  // scene::Material::interior_id of the next declaration
+    // A fresh scene::Light::group id (light_group.cpp).
+    int new_light_group() { return next_light_group_++; }
 
 private:
+    int next_light_group_ = 0;
     // The token layer's questions (token_stream.h).
     void file_read(const std::string& path) override;
     void declared(const std::string& name, const Value& v) override;

@@ -64,6 +64,10 @@ struct Light {
     bool photon_area_light = false;
     std::optional<AreaLight> area;
     std::optional<BlenderLight> blender;  // blender_light: only location and color used too
+    // POV-Ray `light_group`: -1, a global light that lights every object (but those with
+    // Object::no_global_lights); otherwise it lights only the objects whose light_group is
+    // this. Every object casts shadows from it all the same.
+    int group = -1;
     FileLoc loc;
 };
 
