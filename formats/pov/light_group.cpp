@@ -8,7 +8,12 @@
 //   the group stays a global light;
 // - the objects inside nested CSG get the group: a nested light_group's objects keep their own
 //   group's lights (the outer group's do not reach them), but the outermost group's
-//   global_lights setting decides for all of them.
+//   global_lights setting decides for all of them;
+// - but a nested group that is a copy of a declared one (`object { G }`) lets the lights of
+//   the group just around it in too (POV-Ray clears a copy's light list, so the outer group's
+//   promotion walks into it): Light::also_groups.
+// The group's own union carries its id too (harmless: its shapes all have one), which marks
+// where the groups are in a declared object that is copied.
 #include <algorithm>
 #include <utility>
 #include <variant>
@@ -32,6 +37,33 @@ void mark_objects(PovObject& o, int group, bool no_global) {
     o.obj.no_global_lights = no_global;
 }
 
+bool is_group(const PovObject& o) { return is_csg(o) && o.obj.light_group >= 0; }
+
+// The outermost groups inside `o` (o itself included).
+void outermost_groups(const PovObject& o, std::vector<int>* ids) {
+    if (is_group(o)) {
+        ids->push_back(o.obj.light_group);
+        return;
+    }
+    for (const PovObject& c : o.children) outermost_groups(c, ids);
+}
+
+void let_in(std::vector<scene::Light>& lights, int group, const std::vector<int>& nested) {
+    for (scene::Light& l : lights)
+        if (l.group == group)
+            l.also_groups.insert(l.also_groups.end(), nested.begin(), nested.end());
+}
+
+// In a copy: each group's lights light the copied groups just inside it.
+void link_copied(const PovObject& o, std::vector<scene::Light>& lights) {
+    if (is_group(o)) {
+        std::vector<int> nested;
+        for (const PovObject& c : o.children) outermost_groups(c, &nested);
+        let_in(lights, o.obj.light_group, nested);
+    }
+    for (const PovObject& c : o.children) link_copied(c, lights);
+}
+
 void collect_groups(const PovObject& o, std::vector<int>* ids) {
     if (o.obj.light_group >= 0) ids->push_back(o.obj.light_group);
     for (const scene::Light& l : o.lights)
@@ -48,8 +80,10 @@ void renumber(PovObject& o, const std::vector<std::pair<int, int>>& map) {
             }
     };
     if (o.obj.light_group >= 0) remap(o.obj.light_group);
-    for (scene::Light& l : o.lights)
+    for (scene::Light& l : o.lights) {
         if (l.group >= 0) remap(l.group);
+        for (int& g : l.also_groups) remap(g);
+    }
     for (PovObject& c : o.children) renumber(c, map);
 }
 
@@ -58,7 +92,7 @@ void renumber(PovObject& o, const std::vector<std::pair<int, int>>& map) {
 // light_group { light_source {..}... objects... [translate|rotate|scale|matrix|transform]...
 // [global_lights [B]] }: the modifiers are read here (POV-Ray allows no others).
 BodyEnd light_group_body(Parser& p, const ObjectStart& start, PovObject& po) {
-    const int group = p.new_light_group();
+    const int group = p.new_light_group(false);
     po.obj.shape = scene::Csg{};  // a union
     for (;;) {
         const Token& t = p.next();
@@ -96,6 +130,12 @@ BodyEnd light_group_body(Parser& p, const ObjectStart& start, PovObject& po) {
     }
     p.expect_close("light_group", start.opened);
     for (PovObject& c : po.children) mark_objects(c, group, !global_lights);
+    std::vector<int> nested, copied;
+    for (const PovObject& c : po.children) outermost_groups(c, &nested);
+    for (int id : nested)
+        if (p.is_copied_light_group(id)) copied.push_back(id);
+    let_in(po.lights, group, copied);
+    po.obj.light_group = group;
     p.apply_transform(po, tr);
     return BodyEnd::Done;
 }
@@ -107,8 +147,9 @@ void give_light_groups_new_ids(Parser& p, PovObject& o) {
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     std::vector<std::pair<int, int>> map;
-    for (int id : ids) map.emplace_back(id, p.new_light_group());
+    for (int id : ids) map.emplace_back(id, p.new_light_group(true));
     renumber(o, map);
+    link_copied(o, o.lights);
 }
 
 }  // namespace glint::pov

@@ -75,7 +75,7 @@ TEST(LightGroup, NestedGroupsKeepTheirOwnLightsButTheOuterGlobalSetting) {
         }
     )");
     ASSERT_EQ(s.lights.size(), 2u);
-    const int inner = s.lights[0].group, outer = s.lights[1].group;
+    const int outer = s.lights[0].group, inner = s.lights[1].group;
     EXPECT_NE(inner, outer);
     const scene::Object& o = s.objects.at(0);
     EXPECT_EQ(csg_child(csg_child(o, 0), 0).light_group, inner);
@@ -103,6 +103,26 @@ TEST(LightGroup, EachCopyOfADeclaredGroupHasItsOwnLights) {
     EXPECT_EQ(csg_child(s.objects[0], 0).light_group, s.lights[0].group);
     EXPECT_EQ(csg_child(s.objects[1], 0).light_group, s.lights[1].group);
     EXPECT_NEAR(s.lights[1].location.x, 10, 1e-12);
+}
+
+// POV-Ray's copies clear their light lists, so the group around a copied group lights the
+// copy's objects too; a group written out in place keeps only its own lights.
+TEST(LightGroup, ACopiedNestedGroupIsLitByTheGroupAroundIt) {
+    scene::Scene s = parse(R"(
+        #declare Inner = light_group { light_source { 2 rgb 1 } sphere { 0, 1 } }
+        light_group {
+            light_source { 1 rgb 1 }
+            object { Inner }
+            light_group { light_source { 3 rgb 1 } sphere { 5, 1 } }
+        }
+    )");
+    ASSERT_EQ(s.lights.size(), 3u);
+    const scene::Light& outer = s.lights[0];
+    const int copied = s.lights[1].group, in_place = s.lights[2].group;
+    ASSERT_EQ(outer.also_groups.size(), 1u);
+    EXPECT_EQ(outer.also_groups[0], copied);
+    EXPECT_NE(copied, in_place);
+    EXPECT_TRUE(s.lights[1].also_groups.empty());
 }
 
 TEST(LightGroup, NoWarningAnyMore) {

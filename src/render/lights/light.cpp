@@ -70,7 +70,11 @@ void PreparedLight::white_ray(const Vec3& p, const Vec3& offset, Vec3* out_dir,
 // the lights of the object's own group.
 bool PreparedLight::lights_object(uint32_t object_flags) const {
     if (light_.group < 0) return (object_flags & kNoGlobalLights) == 0;
-    return light_.group == light_group_of(object_flags);
+    const int group = light_group_of(object_flags);
+    if (group == light_.group) return true;
+    for (int g : light_.also_groups)
+        if (g == group) return true;
+    return false;
 }
 
 bool PreparedLight::sample(const Vec3& p, LightSample* out) const {
