@@ -245,6 +245,7 @@ BodyParser object_body_parser(const std::string& word) {
         {"text", text_body},
         {"obj_file", obj_file_body},
         {"light_source", light_source_body},
+        {"light_group", light_group_body},
         {"object", object_body},
     };
     auto it = table.find(word);

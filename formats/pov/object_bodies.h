@@ -31,4 +31,9 @@ BodyParser object_body_parser(const std::string& word);
 // mesh { triangle { ... } ... } and mesh2 { vertex_vectors { ... } ... } (meshes.cpp).
 BodyEnd parse_mesh_body(Parser& p, const ObjectStart& start, PovObject& out);
 
+// light_group.cpp: the light_group object; and, for a copy of a declared object, new ids for
+// the light groups inside it, so that each copy's lights light only that copy's objects.
+BodyEnd light_group_body(Parser& p, const ObjectStart& start, PovObject& out);
+void give_light_groups_new_ids(Parser& p, PovObject& o);
+
 }  // namespace glint::pov

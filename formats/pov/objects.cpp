@@ -13,8 +13,7 @@ namespace {
 
 const std::unordered_set<std::string>& unsupported_objects() {
     static const std::unordered_set<std::string> k = {
-        "parametric", "sphere_sweep", "ovus",
-        "lemon", "light_group"};
+        "parametric", "sphere_sweep", "ovus", "lemon"};
     return k;
 }
 
@@ -140,6 +139,7 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
         const Symbol& s = use_symbol(next());
         if (auto obj = std::get_if<std::shared_ptr<const PovObject>>(&s.value)) {
             po = **obj;
+            give_light_groups_new_ids(*this, po);
             if (po.obj.name.empty()) po.obj.name = first.text;
             if (!po.left_out.empty())  // said where declared; say it where the scene uses it
                 warn_unsupported(*this, po.left_out, kloc, "the object is left out");

@@ -179,7 +179,7 @@ Value Parser::parse_rvalue() {
         if (w == "spline")
             return braced([&] { return std::make_shared<const scene::Spline>(parse_spline_body()); });
         static const std::unordered_set<std::string> kUnsupported = {
-            "fog", "rainbow", "material_map", "background", "light_group"};
+            "fog", "rainbow", "material_map", "background"};
         if (w == "media")
             return braced([&] {
                 scene::Media m = new_media();

@@ -224,8 +224,18 @@ public:
     scene::Scene scene;
     scene::Texture default_texture_;
     int next_interior_id_ = 0;  // scene::Material::interior_id of the next declaration
+    // A fresh scene::Light::group id (light_group.cpp), of a group that is a copy or not.
+    int new_light_group(bool copy) {
+        copied_light_groups_.push_back(copy);
+        return next_light_group_++;
+    }
+    bool is_copied_light_group(int id) const {
+        return id >= 0 && id < next_light_group_ && copied_light_groups_[static_cast<size_t>(id)];
+    }
 
 private:
+    int next_light_group_ = 0;
+    std::vector<bool> copied_light_groups_;
     // The token layer's questions (token_stream.h).
     void file_read(const std::string& path) override;
     void declared(const std::string& name, const Value& v) override;

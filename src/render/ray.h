@@ -47,7 +47,23 @@ enum ObjectFlags : uint32_t {
     kNoReflection = 1u << 2,
     kDoubleIlluminate = 1u << 3,
     kNoRadiosity = 1u << 4,
+    kNoGlobalLights = 1u << 5,  // scene::Object::no_global_lights
+    // The high bits hold scene::Object::light_group + 1 (0: none): the innermost object that
+    // has one sets it, where the other flags gather from every level.
+    kLightGroupMask = 0xffffff00u,
 };
+constexpr int kLightGroupShift = 8;
+
+inline uint32_t light_group_flags(int light_group) {
+    return light_group >= 0 ? static_cast<uint32_t>(light_group + 1) << kLightGroupShift : 0u;
+}
+inline int light_group_of(uint32_t flags) {
+    return static_cast<int>(flags >> kLightGroupShift) - 1;
+}
+// An enclosing object's flags added to a hit's: the light group only where none is set yet.
+inline void add_object_flags(uint32_t* flags, uint32_t outer) {
+    *flags |= (*flags & kLightGroupMask) ? outer & ~kLightGroupMask : outer;
+}
 
 struct Hit {
     double t = kInfinity;

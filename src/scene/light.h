@@ -2,6 +2,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "core/error.h"
 #include "core/math.h"
@@ -64,6 +65,13 @@ struct Light {
     bool photon_area_light = false;
     std::optional<AreaLight> area;
     std::optional<BlenderLight> blender;  // blender_light: only location and color used too
+    // POV-Ray `light_group`: -1, a global light that lights every object (but those with
+    // Object::no_global_lights); otherwise it lights only the objects whose light_group is
+    // this. Every object casts shadows from it all the same.
+    int group = -1;
+    // A group light also lights the objects of these groups (POV-Ray lets a group's lights
+    // into a group nested in it that is a copy of a declared one).
+    std::vector<int> also_groups;
     FileLoc loc;
 };
 

@@ -249,6 +249,12 @@ struct Object {
     bool no_reflection = false;
     bool double_illuminate = false;
     bool no_radiosity = false;  // invisible to radiosity's sample rays
+    // POV-Ray `light_group`: the lights whose Light::group is `light_group` light this object
+    // besides the global ones, and none of the global ones when `no_global_lights`. On a CSG
+    // object they hold for its children too: the innermost light_group >= 0 counts, and
+    // no_global_lights anywhere on the way down.
+    int light_group = -1;
+    bool no_global_lights = false;
     // `radiosity { importance }`: the share of a sample's rays that may hit this object
     // (0, 1]; negative: the #default importance.
     double radiosity_importance = -1;

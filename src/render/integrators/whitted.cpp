@@ -364,6 +364,7 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
         if (lit && features_.lights && (f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0)) {
             for (size_t light_index = 0; light_index < lights_.size(); ++light_index) {
                 const PreparedLight& light = lights_[light_index];
+                if (!light.lights_object(hit.flags)) continue;
                 LightSample ls;
                 if (!light.sample(hit.p, &ls)) continue;
                 // Blender lights: Cycles' falloff, from the centre (blender_lights.h).

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "render/ray.h"
+
 namespace glint::render {
 namespace {
 
@@ -62,6 +64,17 @@ void PreparedLight::white_ray(const Vec3& p, const Vec3& offset, Vec3* out_dir,
     }
     *out_dir = dir;
     *out_depth = depth;
+}
+
+// POV-Ray's ComputeDiffuseLight: the global lights unless the object turned them off, then
+// the lights of the object's own group.
+bool PreparedLight::lights_object(uint32_t object_flags) const {
+    if (light_.group < 0) return (object_flags & kNoGlobalLights) == 0;
+    const int group = light_group_of(object_flags);
+    if (group == light_.group) return true;
+    for (int g : light_.also_groups)
+        if (g == group) return true;
+    return false;
 }
 
 bool PreparedLight::sample(const Vec3& p, LightSample* out) const {

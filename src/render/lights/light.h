@@ -3,6 +3,7 @@
 // attenuation (POV-Ray 3.7: Trace::ComputeOneWhiteLightRay, lighting/point.cpp Attenuate_Light).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "scene/light.h"
@@ -30,6 +31,9 @@ public:
     // or cylinder beam's falloff (POV-Ray's PhotonShootingTask::computeAttenuation).
     double beam(const Vec3& origin, const Vec3& dir) const;
     const scene::Light& light() const { return light_; }
+    // Whether it lights a surface whose hit carries `object_flags` (render/ray.h
+    // ObjectFlags): light_group's rules (scene::Light::group).
+    bool lights_object(uint32_t object_flags) const;
 
 private:
     scene::Light light_;

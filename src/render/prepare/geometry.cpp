@@ -259,6 +259,8 @@ void flatten(const scene::Object& o, std::vector<scene::Object>* out) {
         part.no_reflection = part.no_reflection || o.no_reflection;
         part.no_radiosity = part.no_radiosity || o.no_radiosity;
         part.double_illuminate = part.double_illuminate || o.double_illuminate;
+        part.no_global_lights = part.no_global_lights || o.no_global_lights;
+        if (part.light_group < 0) part.light_group = o.light_group;
         flatten(part, out);
     }
 }
@@ -298,7 +300,8 @@ bool same_frame(const scene::Object& a, const scene::Object& b) {
            a.transform.inverse_matrix() == b.transform.inverse_matrix() &&
            a.no_shadow == b.no_shadow && a.no_image == b.no_image &&
            a.no_reflection == b.no_reflection && a.double_illuminate == b.double_illuminate &&
-           a.no_radiosity == b.no_radiosity;
+           a.no_radiosity == b.no_radiosity && a.no_global_lights == b.no_global_lights &&
+           a.light_group == b.light_group;
 }
 
 // One mesh primitive for parts[first, end) (all mergeable_mesh, one frame), as a node with

@@ -48,7 +48,8 @@ uint32_t object_flags(const scene::Object& o) {
     if (o.no_reflection) f |= kNoReflection;
     if (o.double_illuminate) f |= kDoubleIlluminate;
     if (o.no_radiosity) f |= kNoRadiosity;
-    return f;
+    if (o.no_global_lights) f |= kNoGlobalLights;
+    return f | light_group_flags(o.light_group);
 }
 
 Bounds3 overlap(const Bounds3& a, const Bounds3& b) { return {max(a.lo, b.lo), min(a.hi, b.hi)}; }
@@ -335,7 +336,7 @@ bool ObjectNode::union_intersect(const Ray& ray, double tmax, bool shadow, Local
 
 void ObjectNode::finish_point(LocalHit* h) const {
     if (!identity_) h->p = xf_.point(h->p);
-    h->flags |= flags_;
+    add_object_flags(&h->flags, flags_);
 }
 
 void ObjectNode::finish(LocalHit* h) const {
@@ -353,7 +354,7 @@ void ObjectNode::finish(LocalHit* h) const {
                 break;
             }
     }
-    h->flags |= flags_;
+    add_object_flags(&h->flags, flags_);
 }
 
 namespace {
