@@ -11,6 +11,7 @@
 #include "render/lights/sky.h"
 #include "render/materials/sslt_scene.h"
 #include "render/prepare/containing.h"
+#include "render/shapes/primitive.h"
 #include "render/textures/normal.h"
 
 namespace glint::render {
@@ -278,6 +279,20 @@ Color Whitted::shade(const Ray& ray, const Hit& hit, double weight, const RaySta
     const bool from_inside = dot(n, ray.dir) > 0.0;
     if (from_inside) n = -n;
     TextureStack stack;
+    std::vector<TextureWeight> blend;
+    if (hit.blend_source && hit.blend_source->texture_blend(hit.blend_point, &blend)) {
+        // A blob with component textures: each one is lit on its own and the colours mixed
+        // by weight, skipping those below adc_bailout (interior_texture does not apply).
+        Color sum;
+        for (const TextureWeight& w : blend) {
+            if (w.weight < state.adc) continue;
+            const scene::Texture& tex =
+                w.material >= 0 ? scene_.materials[w.material].texture : mat.texture;
+            sum += texture_colour(ray, hit, tex, pattern_point(hit, n), n, weight, state, stack) *
+                   w.weight;
+        }
+        return sum;
+    }
     return texture_colour(ray, hit, side_texture(mat, from_inside), pattern_point(hit, n), n,
                           weight, state, stack);
 }
@@ -634,6 +649,7 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
     Interiors inside = eye;
     Color colour = light_colour;
     std::vector<const scene::Media*> segment_media;
+    std::vector<TextureWeight> blend;
     auto no_light = [](size_t, const Vec3&, Color*, Vec3*) { return false; };
     // ComputeShadowMedia: the atmosphere's media over one segment, then the fog where the
     // ray is in open space, when the light asks. (POV-Ray applies the atmosphere's media
@@ -654,7 +670,17 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
             return colour;
         }
         if (!(hit.flags & kNoShadow)) {
-            if (materials_.opaque(hit.material)) return Color();
+            blend.clear();
+            const bool blended = hit.blend_source &&
+                                 hit.blend_source->texture_blend(hit.blend_point, &blend);
+            bool opaque = materials_.opaque(hit.material);
+            if (blended) {  // blob component textures: every one must be opaque
+                opaque = true;
+                for (const TextureWeight& w : blend)
+                    opaque = opaque &&
+                             materials_.opaque(w.material >= 0 ? w.material : hit.material);
+            }
+            if (opaque) return Color();
             // Light refracted by a photon target reaches a collecting surface as photons
             // only: the target's shadow is full (ComputeShadowColour).
             if (collects && photons_->size() > 0 &&
@@ -667,9 +693,22 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
             // (ComputeShadowColour), which matters for |n . d| once bumps are added.
             const bool from_inside = dot(hit.n, r.dir) > 0.0;
             const Vec3 facing = from_inside ? -hit.n : hit.n;
-            Color filter =
-                shadow_texture(side_texture(mat, from_inside), pattern_point(hit, facing),
-                               45.0 * mat.interior.caustics, facing, normalize(r.dir));
+            Color filter;
+            if (blended) {
+                // The component textures' filters, mixed by weight (ComputeShadowColour).
+                for (const TextureWeight& w : blend) {
+                    if (w.weight < adc_bailout_) continue;
+                    const scene::Texture& tex =
+                        w.material >= 0 ? scene_.materials[w.material].texture : mat.texture;
+                    filter += shadow_texture(tex, pattern_point(hit, facing),
+                                             45.0 * mat.interior.caustics, facing,
+                                             normalize(r.dir)) *
+                              w.weight;
+                }
+            } else {
+                filter = shadow_texture(side_texture(mat, from_inside), pattern_point(hit, facing),
+                                        45.0 * mat.interior.caustics, facing, normalize(r.dir));
+            }
             const scene::Interior& interior = mat.interior;
             const double seg = hit.t * length(r.dir);
             const int id = interior_id(hit.material);
