@@ -55,6 +55,22 @@ PatternPoint pattern_point(const Hit& hit, const Vec3& raw_normal) {
     return {hit.p, hit.uv, hit.has_uv, &raw_normal};
 }
 
+// A blend's textures below adc_bailout are skipped (ComputeTextureColour); entries of the same
+// texture (a blob's untextured components share the blob's) light alike, so each is lit once
+// with their summed weight.
+void merge_blend(std::vector<TextureWeight>* blend, double adc) {
+    size_t n = 0;
+    for (size_t i = 0; i < blend->size(); ++i) {
+        const TextureWeight w = (*blend)[i];
+        if (w.weight < adc) continue;
+        size_t j = 0;
+        while (j < n && (*blend)[j].material != w.material) ++j;
+        if (j < n) (*blend)[j].weight += w.weight;
+        else (*blend)[n++] = w;
+    }
+    blend->resize(n);
+}
+
 }  // namespace
 
 bool Whitted::Interiors::contains(int obj, int id) const {
@@ -282,14 +298,14 @@ Color Whitted::shade(const Ray& ray, const Hit& hit, double weight, const RaySta
     std::vector<TextureWeight> blend;
     if (hit.blend_source && hit.blend_source->texture_blend(hit.blend_point, &blend)) {
         // A blob with component textures: each one is lit on its own and the colours mixed
-        // by weight, skipping those below adc_bailout (interior_texture does not apply).
+        // by weight (interior_texture does not apply).
+        merge_blend(&blend, state.adc);
+        const PatternPoint at = pattern_point(hit, n);
         Color sum;
         for (const TextureWeight& w : blend) {
-            if (w.weight < state.adc) continue;
             const scene::Texture& tex =
                 w.material >= 0 ? scene_.materials[w.material].texture : mat.texture;
-            sum += texture_colour(ray, hit, tex, pattern_point(hit, n), n, weight, state, stack) *
-                   w.weight;
+            sum += texture_colour(ray, hit, tex, at, n, weight, state, stack) * w.weight;
         }
         return sum;
     }
@@ -675,6 +691,7 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
                                  hit.blend_source->texture_blend(hit.blend_point, &blend);
             bool opaque = materials_.opaque(hit.material);
             if (blended) {  // blob component textures: every one must be opaque
+                merge_blend(&blend, adc_bailout_);
                 opaque = true;
                 for (const TextureWeight& w : blend)
                     opaque = opaque &&
@@ -697,7 +714,6 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
             if (blended) {
                 // The component textures' filters, mixed by weight (ComputeShadowColour).
                 for (const TextureWeight& w : blend) {
-                    if (w.weight < adc_bailout_) continue;
                     const scene::Texture& tex =
                         w.material >= 0 ? scene_.materials[w.material].texture : mat.texture;
                     filter += shadow_texture(tex, pattern_point(hit, facing),
