@@ -303,6 +303,7 @@ public:
                                         : " (sphere " + vec(c.center);
                         r += " " + num(c.radius) + " strength " + num(c.strength);
                         if (!c.transform.is_identity()) r += " transform " + matrix(c.transform);
+                        if (c.material >= 0) r += " material " + std::to_string(c.material);
                         r += ")";
                     }
                     return r;

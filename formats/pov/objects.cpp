@@ -43,6 +43,21 @@ void transform_child_textures(PovObject& o, const Transform& t) {
     for (auto& c : o.children) transform_child_textures(c, t);
 }
 
+// Blob::Transform moves the components' textures with the blob. A declared blob's copies
+// share their component materials, so a transformed copy gets transformed copies of them.
+void transform_component_materials(scene::Scene& scene, PovObject& o, const Transform& t) {
+    if (auto* blob = std::get_if<scene::Blob>(&o.obj.shape)) {
+        for (scene::BlobComponent& c : blob->components) {
+            if (c.material < 0) continue;
+            scene::Material m = scene.materials[static_cast<size_t>(c.material)];
+            transform_texture(m.texture, t);
+            scene.materials.push_back(std::move(m));
+            c.material = static_cast<int>(scene.materials.size()) - 1;
+        }
+    }
+    for (auto& c : o.children) transform_component_materials(scene, c, t);
+}
+
 }  // namespace
 
 // extensions.cpp: after the keyword `blender_light` (at kloc).
@@ -93,6 +108,7 @@ void Parser::transform_face_materials(scene::MeshRef& ref, const Transform& t) {
 void Parser::apply_transform(PovObject& o, const Transform& t) {
     o.obj.transform = o.obj.transform.then(t);
     if (auto* ref = std::get_if<scene::MeshRef>(&o.obj.shape)) transform_face_materials(*ref, t);
+    transform_component_materials(scene, o, t);
     if (o.texture) transform_texture(*o.texture, t);
     if (o.interior_texture) transform_texture(*o.interior_texture, t);
     if (o.interior) transform_interior(*o.interior, t);

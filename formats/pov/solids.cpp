@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <unordered_set>
 
@@ -341,12 +342,16 @@ scene::BicubicPatch parse_bicubic_patch(Parser& p, const FileLoc& kw) {
     return s;
 }
 
-// Component modifiers: transforms (kept), textures (parsed, ignored with one warning).
-void parse_component_mods(Parser& p, scene::BlobComponent& c, bool* warned) {
+// Component modifiers (Parse_Blob_Element_Mods): transforms, and the component's own texture,
+// which moves with the transforms after it. The texture becomes a material of its own; only
+// its texture is used (the blob's material keeps the interior).
+void parse_component_mods(Parser& p, scene::BlobComponent& c) {
+    std::optional<scene::Texture> tex;
     for (;;) {
         Transform t;
         if (p.parse_transform_item(t)) {
             c.transform = c.transform.then(t);
+            if (tex) transform_texture(*tex, t);
             continue;
         }
         const Token& tok = p.peek();
@@ -356,25 +361,35 @@ void parse_component_mods(Parser& p, scene::BlobComponent& c, bool* warned) {
             FileLoc at = p.loc();
             p.expect_open(what.c_str());
             FileLoc lo = p.loc();
-            scene::Texture tex;
-            if (what == "texture") tex = p.parse_texture_body();
-            else if (what == "pigment") p.parse_pigment_body(tex.pigment);
-            else if (what == "normal") p.parse_normal_body(tex.normal);
-            else p.parse_finish_body(tex.finish);
+            if (what == "texture") {
+                scene::Texture body = p.parse_texture_body();
+                if (tex) layer_texture(*tex, body, at);  // Link_Textures: a layer on top
+                else tex = body;
+            } else {
+                // A pigment, normal or finish edits the texture, starting from the default
+                // one (over a patterned texture: a new default layer on top).
+                if (!tex) {
+                    tex = p.default_texture_;
+                    tex->loc = at;
+                } else if (tex->kind != scene::PatternKind::Plain) {
+                    scene::Texture top = p.default_texture_;
+                    top.loc = at;
+                    layer_texture(*tex, top, at);
+                }
+                if (what == "pigment") p.parse_pigment_body(tex->pigment);
+                else if (what == "normal") p.parse_normal_body(tex->normal);
+                else p.parse_finish_body(tex->finish);
+            }
             p.expect_close(what.c_str(), lo);
-            if (!*warned)
-                p.diag.warning(at, "blob component textures are not supported: the blob's own "
-                                   "texture is used");
-            *warned = true;
             continue;
         }
         break;
     }
+    if (tex) c.material = p.add_material(*tex, scene::Interior{}, tex->loc);
 }
 
 scene::Blob parse_blob(Parser& p, const FileLoc& kw) {
     scene::Blob b;
-    bool warned = false;
     for (;;) {
         if (p.accept("threshold")) {
             b.threshold = p.parse_float();
@@ -396,7 +411,7 @@ scene::Blob parse_blob(Parser& p, const FileLoc& kw) {
             p.skip_comma();
             p.accept("strength");
             c.strength = p.parse_float();
-            parse_component_mods(p, c, &warned);
+            parse_component_mods(p, c);
             p.expect_close("sphere", lo);
             b.components.push_back(c);
         } else if (p.accept("cylinder")) {
@@ -415,7 +430,7 @@ scene::Blob parse_blob(Parser& p, const FileLoc& kw) {
             c.strength = p.parse_float();
             if (length(c.apex - c.center) < kEps)
                 p.fail_at(at, "degenerate cylindrical component in blob (its ends coincide)");
-            parse_component_mods(p, c, &warned);
+            parse_component_mods(p, c);
             p.expect_close("cylinder", lo);
             b.components.push_back(c);
         } else {

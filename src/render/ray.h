@@ -84,6 +84,10 @@ struct Hit {
     uint32_t flags = 0;  // ObjectFlags
     AttributePoint attributes;  // meshes with named attributes
     int object = -1;     // index of the top-level scene object that was hit
+    // The primitive hit and the point in its space, for Primitive::texture_blend (blob
+    // component textures); null where the shape has none.
+    const class Primitive* blend_source = nullptr;
+    Vec3 blend_point;
 };
 
 }  // namespace glint::render

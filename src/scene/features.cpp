@@ -43,6 +43,10 @@ private:
             for (const MeshFace& face : scene_.meshes[m->mesh].faces)
                 if (face.material >= 0) (*used)[face.material] = true;
         }
+        if (const auto* b = std::get_if<Blob>(&o.shape)) {
+            for (const BlobComponent& c : b->components)
+                if (c.material >= 0) (*used)[c.material] = true;
+        }
         for (const Object& c : o.clipped_by) object(c, used);
     }
 

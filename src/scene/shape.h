@@ -124,6 +124,11 @@ struct BlobComponent {
     double radius = 1;
     double strength = 1;
     Transform transform;
+    // The component's own texture, as the texture of this Scene::materials id (its interior
+    // is unused); -1: the blob's. Where components have textures, a hit blends the textures
+    // of the components whose field reaches it, weighted by |field| (blob.cpp's
+    // Determine_Textures).
+    int material = -1;
 };
 // blob: the surface where the summed field equals threshold; inside where it is larger.
 struct Blob {

@@ -180,6 +180,8 @@ private:
             check_finite(c.apex, loc, "blob component");
             check_finite(c.radius, loc, "blob component radius");
             check_finite(c.strength, loc, "blob component strength");
+            if (c.material >= static_cast<int>(scene_.materials.size()))
+                fail(loc, "blob component material id out of range");
         }
     }
     void shape(const HeightField& s, const FileLoc& loc) {

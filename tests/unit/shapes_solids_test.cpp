@@ -246,6 +246,86 @@ TEST(Blob, SphereAndCylinderComponents) {
     EXPECT_EQ(all_hits(two, ray({-5, 0, 0}, {1, 0, 0})).size(), 2u);
 }
 
+TEST(Blob, ComponentTexturesBlendByField) {
+    // Two spheres at x = -1 (material 1) and x = 1 (material 2), influence radius 1.5.
+    scene::Blob b;
+    b.threshold = 0.3;
+    scene::BlobComponent c;
+    c.radius = 1.5;
+    c.center = {-1, 0, 0};
+    c.material = 1;
+    b.components.push_back(c);
+    c.center = {1, 0, 0};
+    c.material = 2;
+    b.components.push_back(c);
+    auto g = build_one(b);
+    Hit h;
+    std::vector<render::TextureWeight> w;
+    // At x = -1.5 only the first component's field reaches: its texture alone.
+    ASSERT_TRUE(g->intersect(ray({-1.5, 0, -5}, {0, 0, 1}), &h));
+    ASSERT_NE(h.blend_source, nullptr);
+    ASSERT_TRUE(h.blend_source->texture_blend(h.blend_point, &w));
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_EQ(w[0].material, 1);
+    EXPECT_DOUBLE_EQ(w[0].weight, 1.0);
+    // Halfway between them: both, half each.
+    ASSERT_TRUE(g->intersect(ray({0, 0, -5}, {0, 0, 1}), &h));
+    ASSERT_TRUE(h.blend_source->texture_blend(h.blend_point, &w));
+    ASSERT_EQ(w.size(), 2u);
+    EXPECT_NEAR(w[0].weight, 0.5, 1e-9);
+    EXPECT_NEAR(w[1].weight, 0.5, 1e-9);
+    EXPECT_NE(w[0].material, w[1].material);
+    // Nearer the second one (x = 0.4): its weight is the larger, by the ratio of the fields.
+    ASSERT_TRUE(g->intersect(ray({0.4, 0, -5}, {0, 0, 1}), &h));
+    ASSERT_TRUE(h.blend_source->texture_blend(h.blend_point, &w));
+    ASSERT_EQ(w.size(), 2u);
+    const double w2 = w[0].material == 2 ? w[0].weight : w[1].weight;
+    const Vec3 p = h.blend_point;
+    auto field = [&](double cx) {
+        double r2 = (p.x - cx) * (p.x - cx) + p.y * p.y + p.z * p.z;
+        return (1 - r2 / 2.25) * (1 - r2 / 2.25);
+    };
+    EXPECT_NEAR(w2, field(1) / (field(1) + field(-1)), 1e-9);
+    EXPECT_GT(w2, 0.5);
+    // Without component textures the blob names no blend.
+    b.components[0].material = b.components[1].material = -1;
+    g = build_one(b);
+    ASSERT_TRUE(g->intersect(ray({0, 0, -5}, {0, 0, 1}), &h));
+    EXPECT_EQ(h.blend_source, nullptr);
+}
+
+TEST(SolidsParser, BlobComponentTextures) {
+    auto sc = pov::testing::parse(
+        "#declare B = blob { threshold 0.5\n"
+        "  sphere { <1,0,0>, 2, 1 pigment { rgb <1,0,0> } translate x }\n"
+        "  sphere { <-1,0,0>, 2, 1 }\n"
+        "  cylinder { 0, y, 1, 1 texture { pigment { rgb <0,0,1> } } texture { finish { "
+        "ambient 0.5 } } }\n"
+        "  pigment { rgb 1 } }\n"
+        "object { B }\n"
+        "object { B translate <0,3,0> }");
+    ASSERT_EQ(sc.objects.size(), 2u);
+    const auto& b0 = std::get<scene::Blob>(sc.objects[0].shape);
+    const auto& b1 = std::get<scene::Blob>(sc.objects[1].shape);
+    ASSERT_EQ(b0.components.size(), 3u);
+    EXPECT_EQ(b0.components[1].material, -1);
+    ASSERT_GE(b0.components[0].material, 0);
+    ASSERT_GE(b0.components[2].material, 0);
+    const scene::Texture& red = sc.materials[b0.components[0].material].texture;
+    EXPECT_EQ(red.pigment.color.rgb.r, 1);
+    EXPECT_EQ(red.pigment.color.rgb.b, 0);
+    // The component's translate after its pigment moves the texture along.
+    EXPECT_NEAR(red.pigment.transform.point(Vec3(0, 0, 0)).x, 1, 1e-12);
+    // A second texture is a layer over the first.
+    const scene::Texture& blue = sc.materials[b0.components[2].material].texture;
+    EXPECT_EQ(blue.layers.size(), 1u);
+    // The moved copy has moved copies of the component textures; the first keeps its own.
+    ASSERT_NE(b1.components[0].material, b0.components[0].material);
+    const scene::Texture& moved = sc.materials[b1.components[0].material].texture;
+    EXPECT_NEAR(moved.pigment.transform.point(Vec3(0, 0, 0)).y, 3, 1e-12);
+    EXPECT_NEAR(red.pigment.transform.point(Vec3(0, 0, 0)).y, 0, 1e-12);
+}
+
 // ---- height_field ------------------------------------------------------------------------
 
 TEST(HeightField, GreyImageHeights) {

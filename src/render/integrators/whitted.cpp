@@ -11,6 +11,7 @@
 #include "render/lights/sky.h"
 #include "render/materials/sslt_scene.h"
 #include "render/prepare/containing.h"
+#include "render/shapes/primitive.h"
 #include "render/textures/normal.h"
 
 namespace glint::render {
@@ -53,6 +54,22 @@ const scene::Texture& side_texture(const scene::Material& mat, bool from_inside)
 // direction (the aoi pattern's), both kept alive by the caller.
 PatternPoint pattern_point(const Hit& hit, const Vec3& raw_normal, const Vec3& dir) {
     return {hit.p, hit.uv, hit.has_uv, &raw_normal, &dir};
+}
+
+// A blend's textures below adc_bailout are skipped (ComputeTextureColour); entries of the same
+// texture (a blob's untextured components share the blob's) light alike, so each is lit once
+// with their summed weight.
+void merge_blend(std::vector<TextureWeight>* blend, double adc) {
+    size_t n = 0;
+    for (size_t i = 0; i < blend->size(); ++i) {
+        const TextureWeight w = (*blend)[i];
+        if (w.weight < adc) continue;
+        size_t j = 0;
+        while (j < n && (*blend)[j].material != w.material) ++j;
+        if (j < n) (*blend)[j].weight += w.weight;
+        else (*blend)[n++] = w;
+    }
+    blend->resize(n);
 }
 
 }  // namespace
@@ -279,8 +296,22 @@ Color Whitted::shade(const Ray& ray, const Hit& hit, double weight, const RaySta
     const bool from_inside = dot(n, ray.dir) > 0.0;
     if (from_inside) n = -n;
     TextureStack stack;
-    return texture_colour(ray, hit, side_texture(mat, from_inside), pattern_point(hit, n, ray.dir), n,
-                          weight, state, stack);
+    std::vector<TextureWeight> blend;
+    if (hit.blend_source && hit.blend_source->texture_blend(hit.blend_point, &blend)) {
+        // A blob with component textures: each one is lit on its own and the colours mixed
+        // by weight (interior_texture does not apply).
+        merge_blend(&blend, state.adc);
+        const PatternPoint at = pattern_point(hit, n, ray.dir);
+        Color sum;
+        for (const TextureWeight& w : blend) {
+            const scene::Texture& tex =
+                w.material >= 0 ? scene_.materials[w.material].texture : mat.texture;
+            sum += texture_colour(ray, hit, tex, at, n, weight, state, stack) * w.weight;
+        }
+        return sum;
+    }
+    return texture_colour(ray, hit, side_texture(mat, from_inside), pattern_point(hit, n, ray.dir),
+                          n, weight, state, stack);
 }
 
 Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Texture& tex,
@@ -636,6 +667,7 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
     Interiors inside = eye;
     Color colour = light_colour;
     std::vector<const scene::Media*> segment_media;
+    std::vector<TextureWeight> blend;
     auto no_light = [](size_t, const Vec3&, Color*, Vec3*) { return false; };
     // ComputeShadowMedia: the atmosphere's media over one segment, then the fog where the
     // ray is in open space, when the light asks. (POV-Ray applies the atmosphere's media
@@ -656,7 +688,18 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
             return colour;
         }
         if (!(hit.flags & kNoShadow)) {
-            if (materials_.opaque(hit.material)) return Color();
+            blend.clear();
+            const bool blended = hit.blend_source &&
+                                 hit.blend_source->texture_blend(hit.blend_point, &blend);
+            bool opaque = materials_.opaque(hit.material);
+            if (blended) {  // blob component textures: every one must be opaque
+                merge_blend(&blend, adc_bailout_);
+                opaque = true;
+                for (const TextureWeight& w : blend)
+                    opaque = opaque &&
+                             materials_.opaque(w.material >= 0 ? w.material : hit.material);
+            }
+            if (opaque) return Color();
             // Light refracted by a photon target reaches a collecting surface as photons
             // only: the target's shadow is full (ComputeShadowColour).
             if (collects && photons_->size() > 0 &&
@@ -669,9 +712,22 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
             // (ComputeShadowColour), which matters for |n . d| once bumps are added.
             const bool from_inside = dot(hit.n, r.dir) > 0.0;
             const Vec3 facing = from_inside ? -hit.n : hit.n;
-            Color filter =
-                shadow_texture(side_texture(mat, from_inside), pattern_point(hit, facing, r.dir),
-                               45.0 * mat.interior.caustics, facing, normalize(r.dir));
+            Color filter;
+            if (blended) {
+                // The component textures' filters, mixed by weight (ComputeShadowColour).
+                for (const TextureWeight& w : blend) {
+                    const scene::Texture& tex =
+                        w.material >= 0 ? scene_.materials[w.material].texture : mat.texture;
+                    filter +=
+                        shadow_texture(tex, pattern_point(hit, facing, r.dir),
+                                       45.0 * mat.interior.caustics, facing, normalize(r.dir)) *
+                        w.weight;
+                }
+            } else {
+                filter = shadow_texture(side_texture(mat, from_inside),
+                                        pattern_point(hit, facing, r.dir),
+                                        45.0 * mat.interior.caustics, facing, normalize(r.dir));
+            }
             const scene::Interior& interior = mat.interior;
             const double seg = hit.t * length(r.dir);
             const int id = interior_id(hit.material);

@@ -193,6 +193,8 @@ private:
         hit->flags = h.flags;
         hit->attributes = h.attributes;
         hit->object = id;
+        hit->blend_source = h.uv_source;
+        hit->blend_point = h.uv_point;
     }
 
     std::vector<std::unique_ptr<ObjectNode>> nodes_;
@@ -276,8 +278,8 @@ bool mergeable_mesh(const scene::Object& o, const scene::Scene& scene) {
 }
 
 // Whether every surface of `o` has an opaque material: its own or the one it inherits, its CSG
-// children's, its mesh faces'. A surface without a material counts as opaque, as in the
-// shadow walk. (clipped_by and bounded_by shapes show no surface.)
+// children's, its mesh faces', its blob components'. A surface without a material counts as
+// opaque, as in the shadow walk. (clipped_by and bounded_by shapes show no surface.)
 bool all_opaque(const scene::Object& o, int inherited, const scene::Scene& scene,
                 const MaterialTable& materials) {
     const int m = o.material >= 0 ? o.material : inherited;
@@ -292,6 +294,9 @@ bool all_opaque(const scene::Object& o, int inherited, const scene::Scene& scene
             for (const scene::MeshFace& f : scene.meshes[ref->mesh].faces)
                 if (!ok(f.material >= 0 ? f.material : m)) return false;
     }
+    if (const auto* blob = std::get_if<scene::Blob>(&o.shape))
+        for (const scene::BlobComponent& c : blob->components)
+            if (c.material >= 0 && !ok(c.material)) return false;
     return ok(m);
 }
 

@@ -26,13 +26,20 @@ struct LocalHit {
     Vec2 uv;
     bool has_uv = false;
     // uv that needs trigonometry is computed once, for the final hit only: the primitive and
-    // the object-space point it needs (uv_source->uv_at(uv_point)).
+    // the object-space point it needs (uv_source->uv_at(uv_point)). A blob with component
+    // textures names itself here too, for its texture_blend().
     const class Primitive* uv_source = nullptr;
     Vec3 uv_point;
     Vec3 dpdu, dpdv;     // uv tangents where known (meshes with uvs), else zero
     int material = -1;   // -1: inherit from the enclosing object
     uint32_t flags = 0;  // ObjectFlags accumulated on the way up
     AttributePoint attributes;  // meshes with named attributes
+};
+
+// One texture of a blend: a Scene::materials id (-1: the object's own) and its weight.
+struct TextureWeight {
+    int material = -1;
+    double weight = 0;
 };
 
 // Hits along one ray, kept on the stack for the usual handful (CSG asks for every hit of every
@@ -117,6 +124,12 @@ public:
     virtual bool writes_whole_hit() const { return false; }
     // Deferred uv (see LocalHit::uv_source).
     virtual Vec2 uv_at(const Vec3&) const { return {}; }
+    // Shapes whose parts have textures of their own (blob components): the textures that
+    // blend at the final hit's uv_point (see LocalHit::uv_source), as Scene::materials ids
+    // (-1: the object's own) with weights summing to 1. False: the object's material alone.
+    virtual bool texture_blend(const Vec3& /*p*/, std::vector<TextureWeight>* /*out*/) const {
+        return false;
+    }
     // POV-Ray's inside test (CSG); shapes without an inside (triangles, discs) return false.
     virtual bool inside(const Vec3& p) const = 0;
     // After the render: what POV-Ray would report (isosurfaces only).

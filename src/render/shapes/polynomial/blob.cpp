@@ -4,7 +4,8 @@
 // component is three elements, as in POV-Ray: the field of the distance to the axis between
 // the end planes, and a hemisphere at each end. Along a ray every element's field is a quartic
 // in t inside the element's chord, so between consecutive chord ends the sum is one quartic,
-// solved on that stretch. The normal is minus the field's gradient.
+// solved on that stretch. The normal is minus the field's gradient. Components with textures of
+// their own blend them at a hit by the size of each element's field there (Determine_Textures).
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -25,6 +26,7 @@ struct Element {
     double len = 0;     // cylinder length along element z
     double rad2 = 1;
     double c0 = 0, c1 = 0, c2 = 0;
+    int material = -1;  // the component's texture (Scene::materials id), -1: the blob's
 
     Vec3 to_local(const Vec3& p) const { return identity ? p : xf.inverse_point(p); }
     Vec3 dir_local(const Vec3& d) const { return identity ? d : xf.inverse_vector(d); }
@@ -53,7 +55,9 @@ struct Event {
 class BlobPrim final : public Primitive {
 public:
     BlobPrim(std::vector<Element> els, double threshold, Bounds3 b, double scale)
-        : els_(std::move(els)), threshold_(threshold), bounds_(b), scale_(scale) {}
+        : els_(std::move(els)), threshold_(threshold), bounds_(b), scale_(scale) {
+        for (const Element& e : els_) textured_ = textured_ || e.material >= 0;
+    }
 
     Bounds3 bounds() const override { return bounds_; }
 
@@ -105,6 +109,10 @@ public:
                 h.p_error = rounding_error(h.p, 8) + Vec3(1e-8 * scale_);
                 h.ng = normal(h.p);
                 h.n = h.ng;
+                if (textured_) {
+                    h.uv_source = this;
+                    h.uv_point = h.p;
+                }
             }
         }
     }
@@ -120,6 +128,27 @@ public:
             sum += r2 * (r2 * e.c0 + e.c1) + e.c2;
         }
         return sum;
+    }
+
+    // Every element whose field reaches p, weighted by |field| (negative components count
+    // too), the weights normalised to sum to 1 (Determine_Textures).
+    bool texture_blend(const Vec3& p, std::vector<TextureWeight>* out) const override {
+        out->clear();
+        if (!textured_) return false;
+        double sum = 0;
+        for (const Element& e : els_) {
+            Vec3 v;
+            if (!e.radial(e.to_local(p), &v)) continue;
+            double r2 = length_squared(v);
+            double d = std::fabs(r2 * (r2 * e.c0 + e.c1) + e.c2);
+            if (!(d > 0)) continue;
+            out->push_back({e.material, d});
+            sum += d;
+        }
+        // No element reaching the surface (a threshold <= 0) leaves no texture: POV-Ray
+        // shades such a point black.
+        for (TextureWeight& w : *out) w.weight /= sum;
+        return true;
     }
 
 private:
@@ -229,6 +258,7 @@ private:
     double threshold_;
     Bounds3 bounds_;
     double scale_;
+    bool textured_ = false;  // some component has a texture of its own
 };
 
 }  // namespace
@@ -244,6 +274,7 @@ std::unique_ptr<Primitive> make_blob(const scene::Blob& s, const char** why) {
         e.c0 = c.strength / (rad2 * rad2);
         e.c1 = -2 * c.strength / rad2;
         e.c2 = c.strength;
+        e.material = c.material;
         Bounds3 local;
         if (!c.cylinder) {
             e.kind = Kind::Sphere;
