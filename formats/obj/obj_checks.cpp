@@ -163,6 +163,57 @@ void drop_skin_weights(std::string& text, const std::shared_ptr<const std::strin
                          std::to_string(dropped) + " in the file)");
 }
 
+void drop_undefined_normals(std::string& text, const std::shared_ptr<const std::string>& file,
+                            Diagnostics& diag) {
+    auto is_blank = [](char c) { return c == ' ' || c == '\t'; };
+    // Each line as tinyobjloader splits them (at \n, \r or \r\n): [start, end).
+    auto for_each_line = [&](auto visit) {
+        int line_no = 1;
+        for (size_t i = 0; i < text.size(); ++line_no) {
+            size_t end = i;
+            while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+            size_t a = i;
+            while (a < end && is_blank(text[a])) ++a;
+            if (!visit(a, end, line_no)) return;
+            i = end;
+            if (i < text.size() && text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n')
+                ++i;
+            if (i < text.size()) ++i;
+        }
+    };
+    bool has_normals = false;
+    for_each_line([&](size_t a, size_t end, int) {
+        has_normals = a + 2 < end && text[a] == 'v' && text[a + 1] == 'n' && is_blank(text[a + 2]);
+        return !has_normals;
+    });
+    if (has_normals) return;
+    int faces = 0, first_line = 0;
+    for_each_line([&](size_t a, size_t end, int line_no) {
+        if (!(a + 1 < end && text[a] == 'f' && is_blank(text[a + 1]))) return true;
+        bool dropped = false;
+        for (size_t c = a + 2; c < end;) {  // each corner v[/vt[/vn]]
+            while (c < end && is_blank(text[c])) ++c;
+            size_t e = c;
+            while (e < end && !is_blank(text[e])) ++e;
+            const size_t s1 = text.find('/', c);
+            const size_t s2 = s1 < e ? text.find('/', s1 + 1) : std::string::npos;
+            if (s2 < e) {
+                // v//vn loses both slashes, v/vt/vn its second: blanks keep the columns.
+                for (size_t k = s2 == s1 + 1 ? s1 : s2; k < e; ++k) text[k] = ' ';
+                dropped = true;
+            }
+            c = e;
+        }
+        if (dropped && faces++ == 0) first_line = line_no;
+        return true;
+    });
+    if (faces > 0)
+        diag.warning(file_loc(file, first_line),
+                     "faces name normals (f v/vt/vn) but the file defines no 'vn': the faces "
+                     "are shaded flat from their geometry (" + std::to_string(faces) +
+                         " such faces)");
+}
+
 std::vector<ShapeStatement> shape_statements(const std::string& text) {
     std::vector<ShapeStatement> found;
     int line_no = 1;

@@ -37,6 +37,13 @@ int statement_line(const std::string& path, const char* cmd, size_t k);
 void drop_skin_weights(std::string& text, const std::shared_ptr<const std::string>& file,
                        Diagnostics& diag);
 
+// Faces that name normals (`f 1/1/1 ...`) in a file that defines no `vn` at all: the normal
+// fields are blanked out (columns kept) and one warning says so, and the faces are shaded
+// from their geometry, as other readers (Blender's) do. Some exporters write such files; a
+// normal index past the normals a file does define stays an error.
+void drop_undefined_normals(std::string& text, const std::shared_ptr<const std::string>& file,
+                            Diagnostics& diag);
+
 // The `o` and `g` statements of the file, in order: each one's name (the rest of its line,
 // trimmed, as tinyobjloader names the shape it starts) and line, so that what is said about
 // a mesh points at the statement that named it.

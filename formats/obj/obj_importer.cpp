@@ -172,6 +172,7 @@ ObjImport import_obj(const std::string& path, scene::Scene& scene, const Transfo
         if (!in) throw Error(ErrorKind::MissingFile, FileLoc{}, "cannot open OBJ file '" + path + "'");
         std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
         drop_skin_weights(text, file, diag);
+        drop_undefined_normals(text, file, diag);
         shape_lines = shape_statements(text);
         std::istringstream obj_text(std::move(text));
         ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &obj_text, &mtl_reader,

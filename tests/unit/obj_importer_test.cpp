@@ -136,6 +136,31 @@ TEST_F(ObjImporter, OutOfRangeIndexNamesItsLineAndColumn) {
     }
 }
 
+TEST_F(ObjImporter, NormalsNamedButNeverDefinedWarnAndShadeFlat) {
+    // Some exporters write `f v/vt/vn` with no `vn` statement at all: a warning, not an error.
+    std::string obj = write("nvn.obj",
+                            "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+                            "f 1/1/1 2/2/1 3/3/1\nf 2//4 4//4 3//4\n");
+    scene::Scene s;
+    std::vector<Diagnostic> warnings;
+    Diagnostics diag([&](const Diagnostic& d) { warnings.push_back(d); });
+    import_obj(obj, s, Transform{}, -1, diag);
+    ASSERT_EQ(s.meshes.size(), 1u);
+    const scene::Mesh& m = s.meshes[0];
+    ASSERT_EQ(m.faces.size(), 2u);
+    EXPECT_TRUE(m.normals.empty());
+    for (const scene::MeshFace& f : m.faces) EXPECT_EQ(f.n[0], -1);
+    EXPECT_GE(m.faces[0].uv[0], 0);  // the uvs stay
+    EXPECT_EQ(m.faces[1].uv[0], -1);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0].loc.line, 8);
+    EXPECT_NE(warnings[0].message.find("defines no 'vn'"), std::string::npos);
+    // A file that defines normals still may not name one past them.
+    std::string bad = write("bad_vn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n");
+    scene::Scene s2;
+    EXPECT_THROW(import_obj(bad, s2, Transform{}, -1, diag), Error);
+}
+
 TEST_F(ObjImporter, ZeroIndexIsAnErrorAtItsLine) {
     std::string obj = write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n");
     scene::Scene s;
