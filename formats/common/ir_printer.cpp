@@ -233,10 +233,11 @@ public:
         Interior def;
         if (in.ior != def.ior || in.dispersion != def.dispersion || in.caustics != def.caustics ||
             in.fade_distance != def.fade_distance || in.fade_power != def.fade_power ||
-            !(in.fade_color == def.fade_color))
+            !(in.fade_color == def.fade_color) || in.old_refraction != def.old_refraction)
             line(1, "interior ior " + num(in.ior) + " dispersion " + num(in.dispersion) +
                         " caustics " + num(in.caustics) + " fade_distance " + num(in.fade_distance) +
-                        " fade_power " + num(in.fade_power) + " fade_color " + rgb(in.fade_color));
+                        " fade_power " + num(in.fade_power) + " fade_color " + rgb(in.fade_color) +
+                        (in.old_refraction != 1 ? " refraction " + num(in.old_refraction) : ""));
         for (const Media& md : in.media) media(1, md);
         if (!m.pbr.derived) {
             const Pbr& p = m.pbr;

@@ -495,6 +495,14 @@ void Parser::parse_background() {
     expect_open("background");
     FileLoc o = loc();
     scene.background = parse_color();
+    // glint writes POV-Ray scenes without alpha (POV-Ray's default, -UA), where POV-Ray
+    // settles the background's transmit as it reads it: a 3.7 scene's background is composed
+    // over black, an older scene's keeps its colour (the transmit is dropped).
+    const double version = version_set() ? this->version() : 3.62;
+    scene::ColorFT& bg = scene.background;
+    if (version >= 3.7) bg.rgb *= 1.0 - bg.transmit;
+    bg.filter = 0;
+    bg.transmit = 0;
     expect_close("background", o);
 }
 

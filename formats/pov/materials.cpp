@@ -213,10 +213,10 @@ template bool Parser::take_body_identifier(const Token&, bool, const char*, cons
 template bool Parser::take_body_identifier(const Token&, bool, const char*, const char*,
                                            scene::Media&);
 
-void Parser::parse_finish_body(scene::Finish& f) {
+void Parser::parse_finish_body(scene::Finish& f, bool one_item) {
     bool first = true;
     if (!f.loc.valid()) f.loc = loc();
-    for (;; first = false) {
+    for (int items = 0; !one_item || items < 1; first = false, ++items) {
         const Token& t = next();
         if (is_close(t)) {
             unget();
@@ -312,9 +312,17 @@ void Parser::parse_finish_body(scene::Finish& f) {
                 else break;
             }
             expect_close("irid", o);
-        } else if (w == "ior" || w == "caustics" || w == "fade_distance" || w == "fade_power" ||
-                   w == "refraction") {
-            // POV-Ray 3.0's interior items inside finish.
+        } else if (w == "ior" || w == "caustics" || w == "refraction") {
+            // POV-Ray 3.0's interior items inside finish: the object's interior takes them
+            // (Parser::add_material), as POV-Ray 3.7 still does, with its warning.
+            const FileLoc at = loc();
+            const double v = parse_float();
+            if (w == "ior") f.old_ior = v;
+            else if (w == "caustics") f.old_caustics = v;
+            else f.old_refraction = v;
+            diag.warning(at, "finish " + w + " is POV-Ray 3.0 syntax: write it in interior { }" +
+                                 (w == "refraction" ? " (as fade_distance and fade_power)" : ""));
+        } else if (w == "fade_distance" || w == "fade_power") {
             warn_unsupported(*this, "finish " + w, loc(), "ignored (write it in interior)");
             parse_float();
         } else {

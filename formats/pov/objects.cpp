@@ -129,7 +129,19 @@ scene::Object object_without_materials(const PovObject& p) {
 }
 
 bool Parser::parse_object(const Token& kw, PovObject& out) {
-    if (kw.kind != TokKind::Word || lookup(kw.text)) return false;
+    if (kw.kind != TokKind::Word) return false;
+    if (const Symbol* sym = lookup(kw.text)) {
+        // A declared object's name alone is a copy of it, without modifiers (POV-Ray's
+        // Parse_Object takes an object identifier as it takes a shape keyword).
+        if (!std::holds_alternative<std::shared_ptr<const PovObject>>(sym->value)) return false;
+        const FileLoc at = loc();
+        PovObject po = *std::get<std::shared_ptr<const PovObject>>(use_symbol(kw).value);
+        give_light_groups_new_ids(*this, po);
+        if (po.obj.name.empty()) po.obj.name = kw.text;
+        if (!po.left_out.empty()) warn_unsupported(*this, po.left_out, at, "the object is left out");
+        out = std::move(po);
+        return true;
+    }
     const std::string w = kw.text;
     if (unsupported_objects().count(w)) {
         FileLoc at = loc();

@@ -23,6 +23,13 @@ int Parser::add_material(const scene::Texture& t, const scene::Interior& in, con
     m.texture = t;
     if (inside) m.interior_texture.push_back(*inside);
     m.interior = in;
+    if (t.kind == scene::PatternKind::Plain) {
+        // POV-Ray 3.0's `finish { ior caustics refraction }` (Post_Process promotes them).
+        const scene::Finish& f = t.finish;
+        if (f.old_ior >= 0) m.interior.ior = f.old_ior;
+        if (f.old_caustics >= 0) m.interior.caustics = f.old_caustics;
+        m.interior.old_refraction = f.old_refraction;
+    }
     m.interior_id = interior_id;
     m.loc = l;
     scene.materials.push_back(std::move(m));
@@ -350,15 +357,15 @@ static void parse_statements(Parser& p) {
                 p.scene.media.push_back(std::move(m));
                 continue;
             }
-            PovObject o;
-            if (p.parse_object(t, o)) {
-                p.place_object(std::move(o));
-                continue;
-            }
+        }
+        PovObject o;
+        if (p.parse_object(t, o)) {  // a shape keyword, or a declared object's name alone
+            p.place_object(std::move(o));
+            continue;
         }
         if (t.kind == TokKind::Word && p.lookup(t.text))
-            p.fail("an identifier cannot stand alone here: write object { " + t.text +
-                   " } (or camera { ... }) , got '" + t.text + "'");
+            p.fail("expected an object, light_source, camera or directive, got " +
+                   value_kind_name(p.lookup(t.text)->value) + " '" + t.text + "'");
         if (t.kind == TokKind::Word)
             p.fail("unknown keyword or identifier '" + t.text + "'");
         p.fail("expected an object, light_source, camera or directive, got " + p.got(t));

@@ -100,9 +100,14 @@ public:
 
     // ---- materials (materials.cpp)
     scene::Texture parse_texture_body();      // after texture {
-    void parse_pigment_body(scene::Pigment& p);  // after pigment {
-    void parse_finish_body(scene::Finish& f);    // after finish {
-    void parse_normal_body(scene::Normal& n);    // after normal {
+    // After pigment {, finish {, normal {; `one_item`: read a single item only (POV-Ray 1.0's
+    // items written straight in a texture, parse_old_texture_item).
+    void parse_pigment_body(scene::Pigment& p, bool one_item = false);
+    void parse_finish_body(scene::Finish& f, bool one_item = false);
+    void parse_normal_body(scene::Normal& n, bool one_item = false);
+    // Under `#version` below 3.0: a pigment, normal or finish item written straight in a
+    // texture (POV-Ray's Parse_Vers1_Texture), read into `top`; false if `t` is none.
+    bool parse_old_texture_item(const Token& t, scene::Texture& top);
     void parse_interior_body(scene::Interior& in);
     MaterialValue parse_material_body();
     // `finish { F_Shiny ... }`: when `t` names a symbol, copies it into `out` and returns
@@ -243,6 +248,7 @@ private:
     void parse_array_init(ArrayValue& a, size_t dim, size_t& k);
     Value parse_array();
     std::set<int> warned_internals_;
+    bool warned_old_texture_ = false;  // POV-Ray 1.0 texture syntax, said once
     // Objects asked about while parsing, with the object kept alive so its address stays its.
     std::map<const PovObject*, std::pair<std::shared_ptr<const PovObject>,
                                          std::shared_ptr<const scene::PreparedObject>>>

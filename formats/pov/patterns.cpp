@@ -129,10 +129,10 @@ int block_count(PatternKind k) {
 
 // ---------------------------------------------------------------- pigment
 
-void Parser::parse_pigment_body(scene::Pigment& p) {
+void Parser::parse_pigment_body(scene::Pigment& p, bool one_item) {
     bool first = true;
     if (!p.loc.valid()) p.loc = loc();
-    for (;; first = false) {
+    for (int items = 0; !one_item || items < 1; first = false, ++items) {
         const Token& t = next();
         if (is_body_end(t)) {
             unget();
@@ -271,10 +271,10 @@ std::vector<scene::Pigment> Parser::parse_pigment_entries(PatternKind kind, int 
 
 // ---------------------------------------------------------------- normal
 
-void Parser::parse_normal_body(scene::Normal& n) {
+void Parser::parse_normal_body(scene::Normal& n, bool one_item) {
     bool first = true;
     if (!n.loc.valid()) n.loc = loc();
-    for (;; first = false) {
+    for (int items = 0; !one_item || items < 1; first = false, ++items) {
         const Token& t = next();
         if (is_body_end(t)) {
             unget();
@@ -401,7 +401,46 @@ void layer_texture(scene::Texture& base, const scene::Texture& top, const FileLo
     for (auto& l : above) base.layers.push_back(std::move(l));
 }
 
+// The items POV-Ray 1.0 wrote straight in a texture, each read as in its own block
+// (Parse_Vers1_Texture's lists; newer keywords were never added there).
+bool Parser::parse_old_texture_item(const Token& t, scene::Texture& top) {
+    static const std::unordered_set<std::string> kPigment = {
+        "agate",       "bozo",         "granite",   "leopard",    "marble",    "mandel",
+        "onion",       "spotted",      "wood",      "gradient",   "checker",   "hexagon",
+        "square",      "triangular",   "image_map", "turbulence", "color_map", "colour_map",
+        "quick_color", "quick_colour", "octaves",   "omega",      "lambda",    "color",
+        "colour",      "rgb",          "rgbf",      "rgbt",       "rgbft",     "red",
+        "green",       "blue"};
+    static const std::unordered_set<std::string> kNormal = {
+        "bumps", "dents", "ripples", "waves", "wrinkles", "bump_map", "frequency", "phase"};
+    static const std::unordered_set<std::string> kFinish = {
+        "ambient",  "brilliance", "diffuse",  "reflection", "phong", "phong_size",
+        "specular", "roughness",  "metallic", "crand",      "ior",   "refraction"};
+    if (t.kind != TokKind::Word) return false;
+    const Symbol* s = lookup(t.text);
+    const bool colour_id = s && std::holds_alternative<Num>(s->value);  // a colour identifier
+    if (s && !colour_id) return false;
+    const bool pigment = colour_id || kPigment.count(t.text);
+    if (!pigment && !kNormal.count(t.text) && !kFinish.count(t.text)) return false;
+    if (!warned_old_texture_) {
+        diag.warning(loc(), "'" + t.text + "' straight in a texture is POV-Ray 1.0 syntax (the " +
+                                "scene's #version is below 3.0): read as POV-Ray reads it; newer " +
+                                "scenes put it in pigment { }, normal { } or finish { }");
+        warned_old_texture_ = true;
+    }
+    unget();
+    if (pigment)
+        parse_pigment_body(top.pigment, true);
+    else if (kNormal.count(t.text))
+        parse_normal_body(top.normal, true);
+    else
+        parse_finish_body(top.finish, true);
+    return true;
+}
+
 scene::Texture Parser::parse_texture_body() {
+    // `#version` below 3.0: POV-Ray reads textures in its 1.0 syntax (Parse_Vers1_Texture).
+    const bool old_syntax = version_set() && version() < 3.0;
     scene::Texture tex = default_texture_;
     tex.loc = loc();
     bool first = true;
@@ -416,6 +455,11 @@ scene::Texture Parser::parse_texture_body() {
         if (is_body_end(t)) {
             unget();
             break;
+        }
+        if (old_syntax && tex.kind == PatternKind::Plain &&
+            parse_old_texture_item(t, top_layer(tex))) {
+            modified = true;
+            continue;
         }
         if (t.kind == TokKind::Word && lookup(t.text)) {
             const Symbol& s = use_symbol(t);

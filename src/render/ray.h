@@ -48,6 +48,9 @@ enum ObjectFlags : uint32_t {
     kDoubleIlluminate = 1u << 3,
     kNoRadiosity = 1u << 4,
     kNoGlobalLights = 1u << 5,  // scene::Object::no_global_lights
+    // scene::Object::hollow of the shape or of a CSG around it: POV-Ray keeps `hollow` with the
+    // interior of the shape the ray entered, so a hollow sphere inside a union is hollow.
+    kHollow = 1u << 6,
     // The high bits hold scene::Object::light_group + 1 (0: none): the innermost object that
     // has one sets it, where the other flags gather from every level.
     kLightGroupMask = 0xffffff00u,

@@ -287,6 +287,12 @@ struct Finish {
     double irid = 0;
     double irid_thickness = 0;
     double irid_turbulence = 0;
+    // POV-Ray 3.0's interior items written in a finish (`ior`, `caustics`, `refraction`):
+    // an object whose plain texture has them takes them into its interior (POV-Ray 3.7's
+    // Post_Process still does). -1: not given; refraction scales the refracted light.
+    double old_ior = -1;
+    double old_caustics = -1;
+    double old_refraction = 1;
     FileLoc loc;
 };
 
@@ -361,6 +367,7 @@ struct Interior {
     double fade_distance = 0;  // 0 = no attenuation
     double fade_power = 0;
     Color fade_color{0, 0, 0};
+    double old_refraction = 1;  // from a finish's `refraction` (Finish::old_refraction)
 };
 
 // Physically based half of the material (Blender Principled BSDF / MTL PBR extension).

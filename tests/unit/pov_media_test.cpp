@@ -189,6 +189,28 @@ TEST(PovMediaRender, SlabTransmittanceIsExponential) {
     EXPECT_NEAR(trace(solid, Vec3(0, 0, -5), Vec3(0, 0, 1)).r, 0.8, 1e-12);
 }
 
+TEST(PovMediaRender, HollowBelongsToTheShapeInsideACsg) {
+    // POV-Ray keeps `hollow` with the interior of the shape a ray is in: a hollow sphere
+    // inside a union that is not hollow holds its media, for the eye inside it and for a ray
+    // entering it (abyss.pov's water).
+    auto scene = [](const std::string& sphere_flag, const std::string& union_flag) {
+        return "#version 3.7; background { rgb <0.8, 0.6, 0.4> }\n"
+               "camera { location 0 look_at z }\n"
+               "union { sphere { 0, 2 pigment { rgbt 1 } " + sphere_flag +
+               " interior { media { absorption 0.7 } } }\n"
+               "        sphere { <50, 0, 0>, 1 } " + union_flag + " }";
+    };
+    const double from_eye = 0.8 * std::exp(-0.7 * 2);                // radius 2
+    const double through = 0.8 * std::exp(-0.7 * 2 * std::sqrt(3.75));  // chord at y = 0.5
+    for (const auto& [s, u] : {std::pair{"hollow", ""}, std::pair{"", "hollow"}}) {
+        const std::string pov = scene(s, u);
+        EXPECT_NEAR(trace(pov, Vec3(0, 0, 0), Vec3(0, 0, 1)).r, from_eye, 1e-9) << pov;
+        EXPECT_NEAR(trace(pov, Vec3(0, 0.5, -5), Vec3(0, 0, 1)).r, through, 1e-9) << pov;
+    }
+    // Neither hollow: no media inside the solid.
+    EXPECT_NEAR(trace(scene("", ""), Vec3(0, 0, 0), Vec3(0, 0, 1)).r, 0.8, 1e-12);
+}
+
 TEST(PovMediaRender, EmissionWithAbsorptionConvergesToTheIntegral) {
     // L = bg e^{-sigma d} + E / sigma (1 - e^{-sigma d}). POV-Ray's sampler sums the emission
     // of sub-intervals, so the error falls as the intervals grow.

@@ -171,6 +171,47 @@ TEST(PovObjects, CsgMaterialsAndLights) {
     EXPECT_EQ(pig.transform.point(Vec3(0, 0, 0)), Vec3(10, 0, 0));
 }
 
+TEST(PovObjects, DeclaredObjectNameAloneIsACopy) {
+    // POV-Ray's Parse_Object takes an object identifier as a shape keyword: a statement of
+    // its own, and a CSG child, both without modifiers. (First in a CSG it is Parse_CSG's
+    // `union { B mods }`, a copy of B: hence the sphere first.)
+    auto s = parse(
+        "#declare B = sphere { 0, 1 pigment { rgb x } translate y }\n"
+        "B\n"
+        "union { sphere { 0, 0.5 } B object { B translate x } }\n");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_TRUE(std::holds_alternative<scene::Sphere>(s.objects[0].shape));
+    EXPECT_EQ(s.objects[0].transform.point(Vec3(0, 0, 0)), Vec3(0, 1, 0));
+    const auto& csg = std::get<scene::Csg>(s.objects[1].shape);
+    ASSERT_EQ(csg.children.size(), 3u);
+    EXPECT_EQ(csg.children[1].transform.point(Vec3(0, 0, 0)), Vec3(0, 1, 0));
+    EXPECT_EQ(csg.children[2].transform.point(Vec3(0, 0, 0)), Vec3(1, 1, 0));
+}
+
+TEST(PovObjects, Version1TextureItemsStraightInATexture) {
+    // Under #version below 3.0 POV-Ray reads a texture in its 1.0 syntax: pigment, normal and
+    // finish items written straight in it (Parse_Vers1_Texture), with one warning.
+    const std::string body =
+        "sphere { 0, 1 texture { gradient x colour_map { [0 rgb 0][1 rgb 1] } turbulence 0.2\n"
+        "  bumps 0.4 phong 0.5 ior 1.5 reflection 0.25 } }\n";
+    std::vector<std::string> warnings;
+    Diagnostics diag([&](const Diagnostic& d) { warnings.push_back(d.message); });
+    const scene::Scene sc = pov::parse_string("#version 2.0;\n" + body, "test.pov", {}, diag);
+    ASSERT_EQ(sc.objects.size(), 1u);
+    const scene::Material& m = sc.materials[sc.objects[0].material];
+    EXPECT_EQ(m.texture.pigment.kind, scene::PatternKind::Gradient);
+    EXPECT_EQ(m.texture.pigment.color_map.size(), 2u);
+    EXPECT_EQ(m.texture.normal.kind, scene::PatternKind::Bumps);
+    EXPECT_DOUBLE_EQ(m.texture.normal.amount, 0.4);
+    EXPECT_DOUBLE_EQ(m.texture.finish.phong, 0.5);
+    EXPECT_DOUBLE_EQ(m.interior.ior, 1.5);
+    ASSERT_GE(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("POV-Ray 1.0 syntax"), std::string::npos) << warnings[0];
+    // A 3.x scene still may not.
+    EXPECT_EQ(error_of("#version 3.7;\n" + body),
+              "2:36: 'colour_map' cannot be used directly in a texture");
+}
+
 TEST(PovObjects, TransformsBeforeTextureDoNotMoveIt) {
     auto s = parse("sphere { 0, 1 translate x pigment { checker scale 2 } translate y }");
     const auto& pig = s.materials[s.objects[0].material].texture.pigment;
@@ -370,6 +411,18 @@ TEST(PovMaterials, UnsupportedFeaturesSaySo) {
               std::vector<std::string>{});
 }
 
+TEST(PovScene, BackgroundTransmitAsPovRayWritesItWithoutAlpha) {
+    // POV-Ray 3.7 composes a 3.7 scene's background over black; an older scene's keeps its
+    // colour (measured: rgb <0,0,1> transmit 0.5 writes 0.5 and 1 in the blue channel).
+    for (const auto& [version, blue] : {std::pair{"3.7", 0.5}, std::pair{"3.6", 1.0}}) {
+        auto s = parse(std::string("#version ") + version +
+                       ";\nbackground { rgb <0, 0, 1> transmit 0.5 }\n");
+        EXPECT_DOUBLE_EQ(s.background.rgb.b, blue) << version;
+        EXPECT_EQ(s.background.transmit, 0.0);
+        EXPECT_EQ(s.background.filter, 0.0);
+    }
+}
+
 TEST(PovScene, GlobalSettingsBackgroundSky) {
     Diagnostics diag;
     auto s = parse_string(
@@ -484,8 +537,8 @@ TEST(PovErrors, PlacesAndWording) {
     EXPECT_EQ(error_of("spere { 0, 1 }"), "1:1: unknown keyword or identifier 'spere'");
     EXPECT_EQ(error_of("sphere { <1, 2, 1 pigment { rgb 1 } }"),
               "1:19: expected ',' or '>' in the vector, got 'pigment'");
-    EXPECT_EQ(error_of("#declare S = sphere { 0, 1 }\nS"),
-              "2:1: an identifier cannot stand alone here: write object { S } (or camera { ... }) , got 'S'");
+    EXPECT_EQ(error_of("#declare P = pigment { rgb 1 }\nP"),
+              "2:1: expected an object, light_source, camera or directive, got a pigment 'P'");
     EXPECT_EQ(error_of("sphere { 0, 1 texture { T } }"),
               "1:25: expected a texture item (pigment, normal, finish, pattern, transform), "
               "got the unknown identifier 'T'");

@@ -151,7 +151,9 @@ TEST(PovUnsupported, FinishFeatures) {
               (std::vector<std::string>{
                   "2:32: 'albedo' is not supported: ignored",
                   "2:42: 'diffuse backside illumination' is not supported: ignored",
-                  "3:35: 'finish ior' is not supported: ignored (write it in interior)"}));
+                  "3:35: finish ior is POV-Ray 3.0 syntax: write it in interior { }"}));
+    // ... and the object's interior takes it, as POV-Ray 3.7's Post_Process does.
+    EXPECT_DOUBLE_EQ(p.scene.materials[p.scene.objects[0].material].interior.ior, 1.5);
 }
 
 TEST(PovUnsupported, TextWithBuiltInFontIsLeftOut) {

@@ -278,7 +278,7 @@ void Whitted::shoot_photons(int threads) {
                                         ci.object, interior_id(ci.material),
                                         scene_.materials[static_cast<size_t>(ci.material)]
                                             .interior.ior,
-                                        ci.material);
+                                        ci.material, ci.hollow);
                                 inside_at = ray.origin;
                                 have_inside = true;
                             }
@@ -410,6 +410,7 @@ void Whitted::photon_surface(const Ray& ray, const Hit& hit, Color light, double
     const scene::Object& obj = scene_.objects[static_cast<size_t>(hit.object)];
     const double len = length(ray.dir);
     photon_media(ray, hit.t * len, &light, level, in, path);
+    light *= mat.interior.old_refraction;
     if (in.contains(hit.object, interior_id(hit.material)) &&
         std::fabs(mat.interior.fade_distance) > kPovEpsilon &&
         mat.interior.fade_power > 0)
@@ -432,7 +433,8 @@ void Whitted::photon_surface(const Ray& ray, const Hit& hit, Color light, double
         Interiors next = in;
         const int id = interior_id(hit.material);
         if (!next.remove(hit.object, id))
-            next.append(hit.object, id, mat.interior.ior, hit.material);
+            next.append(hit.object, id, mat.interior.ior, hit.material,
+                        (hit.flags & kHollow) != 0);
         Ray r;
         r.dir = ray.dir;
         r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, ray.dir);

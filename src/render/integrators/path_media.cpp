@@ -49,7 +49,7 @@ void PathIntegrator::MediumStack::cross(const Hit& hit, const Vec3& dir,
             pi.graphs_->grids(hit.object))
             medium[count] = pi.material_grid_medium_[static_cast<size_t>(hit.material)];
         // Blender's objects (node-graph materials) hold their volumes whatever encloses them.
-        hollow[count] = pi.scene_.objects[static_cast<size_t>(hit.object)].hollow ||
+        hollow[count] = (hit.flags & kHollow) != 0 ||
                         (hit.material >= 0 &&
                          pi.scene_.materials[static_cast<size_t>(hit.material)].graph >= 0);
         step[count] = medium[count] >= 0 &&
@@ -525,6 +525,7 @@ void PathIntegrator::setup_media() {
             Hit h;
             h.object = c.object;
             h.material = c.material;
+            h.flags = c.hollow ? kHollow : 0u;
             h.ng = Vec3(0, 0, 1);
             camera_stack_.cross(h, Vec3(0, 0, -1), *this);  // entering it
         }

@@ -88,6 +88,7 @@ bool Whitted::Interiors::remove(int obj, int id) {
                 interior[j] = interior[j + 1];
                 ior[j] = ior[j + 1];
                 material[j] = material[j + 1];
+                hollow[j] = hollow[j + 1];
             }
             --count;
             return true;
@@ -96,12 +97,13 @@ bool Whitted::Interiors::remove(int obj, int id) {
     return false;
 }
 
-void Whitted::Interiors::append(int obj, int id, double value, int mat) {
+void Whitted::Interiors::append(int obj, int id, double value, int mat, bool is_hollow) {
     if (count == kMax) return;  // deeper nesting than any sane scene: ignore the innermost
     object[count] = obj;
     interior[count] = id;
     ior[count] = value;
     material[count] = mat;
+    hollow[count] = is_hollow;
     ++count;
 }
 
@@ -132,7 +134,7 @@ void Whitted::find_camera_interiors() {
     // Only refraction, interior fading and media care which objects contain the eye.
     for (const Containing& c : objects_containing_camera(scene_, geometry_))
         camera_interiors_.append(c.object, interior_id(c.material),
-                                 scene_.materials[c.material].interior.ior, c.material);
+                                 scene_.materials[c.material].interior.ior, c.material, c.hollow);
 }
 
 Color Whitted::li(const Ray& ray, RadiosityTicket* ticket) const {
@@ -254,11 +256,8 @@ bool Whitted::media_light(size_t light_index, const Vec3& p, const Interiors& ey
 }
 
 bool Whitted::hollow(const Interiors& in) const {
-    for (int i = 0; i < in.count; ++i) {
-        int obj = in.object[i];
-        if (obj >= 0 && obj < static_cast<int>(scene_.objects.size()) && !scene_.objects[obj].hollow)
-            return false;
-    }
+    for (int i = 0; i < in.count; ++i)
+        if (!in.hollow[i]) return false;
     return true;
 }
 
@@ -457,11 +456,11 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
                                                             std::fabs(fil_col.b)));
         Color rfr;
         tir = refract(ray, hit, top_normal, n, weight * w1, state, &rfr);
-        Color att_col(1.0);
         const scene::Interior& interior = mat.interior;
+        Color att_col(interior.old_refraction);
         if (state.interiors.contains(hit.object, interior_id(hit.material)) &&
             std::fabs(interior.fade_distance) > kPovEpsilon)
-            att_col = fade(interior, hit.t);
+            att_col *= fade(interior, hit.t);
         if (tir || !one_colour_found)
             result += att_col * rfr;
         else
@@ -567,7 +566,7 @@ double Whitted::cross_interface(const Hit& hit, Interiors* in) const {
     const double ior_obj = scene_.materials[hit.material].interior.ior;
     const int id = interior_id(hit.material);
     if (in->count == 0) {
-        in->append(hit.object, id, ior_obj, hit.material);
+        in->append(hit.object, id, ior_obj, hit.material, (hit.flags & kHollow) != 0);
         return 1.0 / ior_obj;
     }
     if (in->object[in->count - 1] == hit.object && in->interior[in->count - 1] == id) {
@@ -576,7 +575,7 @@ double Whitted::cross_interface(const Hit& hit, Interiors* in) const {
     }
     if (in->remove(hit.object, id)) return 1.0;
     const double ior = in->ior[in->count - 1] / ior_obj;
-    in->append(hit.object, id, ior_obj, hit.material);
+    in->append(hit.object, id, ior_obj, hit.material, (hit.flags & kHollow) != 0);
     return ior;
 }
 
@@ -748,7 +747,8 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
                 return Color();
             atmosphere(seg, r.dir / length(r.dir), hollow(inside));
             if (inside.count == 0 || !inside.remove(hit.object, id))
-                inside.append(hit.object, id, interior.ior, hit.material);
+                inside.append(hit.object, id, interior.ior, hit.material,
+                              (hit.flags & kHollow) != 0);
         }
         r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
         r.dir = target - r.origin;

@@ -59,10 +59,11 @@ private:
         int interior[kMax];
         double ior[kMax];
         int material[kMax];  // whose interior (its media) the ray is in
+        bool hollow[kMax];   // the entered shape is hollow (render/ray.h kHollow)
         int count = 0;
         bool contains(int obj, int id) const;
         bool remove(int obj, int id);
-        void append(int obj, int id, double ior, int material);
+        void append(int obj, int id, double ior, int material, bool hollow);
     };
     // POV-Ray's Ray flags that decide no_image/no_reflection visibility.
     struct RayState {

@@ -30,7 +30,7 @@ std::vector<Containing> objects_containing(const Geometry& geometry, const Vec3&
         if (std::find(seen.begin(), seen.end(), hit.object) == seen.end()) {
             seen.push_back(hit.object);
             if (dot(hit.ng, r.dir) > 0.0 && hit.material >= 0)
-                inside.push_back({hit.object, hit.material});
+                inside.push_back({hit.object, hit.material, (hit.flags & kHollow) != 0});
         }
         r.origin = offset_ray_origin(hit.p, hit.p_error, hit.ng, r.dir);
     }

@@ -12,6 +12,7 @@ namespace glint::render {
 struct Containing {
     int object;    // top-level scene object
     int material;  // the material of the surface that closes it around the eye
+    bool hollow;   // that surface's shape is hollow (render/ray.h kHollow)
 };
 
 // In scene order; empty for projections whose rays do not all start at the camera location.

@@ -262,6 +262,7 @@ void flatten(const scene::Object& o, std::vector<scene::Object>* out) {
         part.no_radiosity = part.no_radiosity || o.no_radiosity;
         part.double_illuminate = part.double_illuminate || o.double_illuminate;
         part.no_global_lights = part.no_global_lights || o.no_global_lights;
+        part.hollow = part.hollow || o.hollow;
         if (part.light_group < 0) part.light_group = o.light_group;
         flatten(part, out);
     }
@@ -306,7 +307,7 @@ bool same_frame(const scene::Object& a, const scene::Object& b) {
            a.no_shadow == b.no_shadow && a.no_image == b.no_image &&
            a.no_reflection == b.no_reflection && a.double_illuminate == b.double_illuminate &&
            a.no_radiosity == b.no_radiosity && a.no_global_lights == b.no_global_lights &&
-           a.light_group == b.light_group;
+           a.light_group == b.light_group && a.hollow == b.hollow;
 }
 
 // One mesh primitive for parts[first, end) (all mergeable_mesh, one frame), as a node with

@@ -49,6 +49,7 @@ uint32_t object_flags(const scene::Object& o) {
     if (o.double_illuminate) f |= kDoubleIlluminate;
     if (o.no_radiosity) f |= kNoRadiosity;
     if (o.no_global_lights) f |= kNoGlobalLights;
+    if (o.hollow) f |= kHollow;
     return f | light_group_flags(o.light_group);
 }
 
