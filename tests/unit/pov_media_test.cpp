@@ -211,6 +211,17 @@ TEST(PovMediaRender, HollowBelongsToTheShapeInsideACsg) {
     EXPECT_NEAR(trace(scene("", ""), Vec3(0, 0, 0), Vec3(0, 0, 1)).r, 0.8, 1e-12);
 }
 
+TEST(PovMediaRender, EyeInsideAUnionChildWhateverTheViewMeetsFirst) {
+    // POV-Ray links a union's children as objects of their own, so the eye is inside the
+    // media sphere even when the first surface in the view is another child (entered).
+    const std::string pov =
+        "#version 3.7; background { rgb <0.8, 0.6, 0.4> }\n"
+        "camera { location 0 look_at z }\n"
+        "union { sphere { <0, 0, 1>, 0.3 pigment { rgb 1 } }\n"
+        "        sphere { 0, 2 pigment { rgbt 1 } hollow interior { media { absorption 0.7 } } } }";
+    EXPECT_NEAR(trace(pov, Vec3(0, 0, 0), Vec3(0, 0, -1)).r, 0.8 * std::exp(-0.7 * 2), 1e-9);
+}
+
 TEST(PovMediaRender, EmissionWithAbsorptionConvergesToTheIntegral) {
     // L = bg e^{-sigma d} + E / sigma (1 - e^{-sigma d}). POV-Ray's sampler sums the emission
     // of sub-intervals, so the error falls as the intervals grow.

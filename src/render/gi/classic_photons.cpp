@@ -273,7 +273,7 @@ void Whitted::shoot_photons(int threads) {
                             if (!have_inside || !(ray.origin == inside_at)) {
                                 inside = Interiors();
                                 for (const Containing& ci :
-                                     objects_containing(geometry_, ray.origin, ray.dir))
+                                     objects_containing(scene_, geometry_, ray.origin, ray.dir))
                                     inside.append(
                                         ci.object, interior_id(ci.material),
                                         scene_.materials[static_cast<size_t>(ci.material)]

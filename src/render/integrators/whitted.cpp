@@ -132,9 +132,12 @@ Whitted::~Whitted() = default;
 
 void Whitted::find_camera_interiors() {
     // Only refraction, interior fading and media care which objects contain the eye.
-    for (const Containing& c : objects_containing_camera(scene_, geometry_))
-        camera_interiors_.append(c.object, interior_id(c.material),
-                                 scene_.materials[c.material].interior.ior, c.material, c.hollow);
+    for (const Containing& c : objects_containing_camera(scene_, geometry_)) {
+        const int id = interior_id(c.material);
+        if (!camera_interiors_.contains(c.object, id))
+            camera_interiors_.append(c.object, id, scene_.materials[c.material].interior.ior,
+                                     c.material, c.hollow);
+    }
 }
 
 Color Whitted::li(const Ray& ray, RadiosityTicket* ticket) const {

@@ -18,8 +18,11 @@ struct Containing {
 // In scene order; empty for projections whose rays do not all start at the camera location.
 std::vector<Containing> objects_containing_camera(const scene::Scene& scene,
                                                   const Geometry& geometry);
-// The objects around point `p`, found along a walk in direction `dir`; in scene order.
-std::vector<Containing> objects_containing(const Geometry& geometry, const Vec3& p,
-                                           const Vec3& dir);
+// The objects around point `p`, found along a walk in direction `dir`; in scene order. A
+// top-level union counts each of its materials apart: POV-Ray links a union's children to the
+// scene as objects of their own (Link_To_Frame), so a hollow media sphere in a union with a
+// submarine holds the eye whatever the walk meets first.
+std::vector<Containing> objects_containing(const scene::Scene& scene, const Geometry& geometry,
+                                           const Vec3& p, const Vec3& dir);
 
 }  // namespace glint::render
