@@ -38,14 +38,52 @@ struct Num {
     }
 };
 
+// An optional value kept on the heap. A PovObject's textures are mostly absent (CSG nodes,
+// children that inherit) yet std::optional would hold 3.4 KB each inline, and a scene's copies
+// of declared objects multiply every node (issue 33: nested copies peaked at 2.4 GB).
+template <class T>
+class HeapOptional {
+public:
+    HeapOptional() = default;
+    HeapOptional(const HeapOptional& o) : p_(o.p_ ? std::make_unique<T>(*o.p_) : nullptr) {}
+    HeapOptional(HeapOptional&&) noexcept = default;
+    HeapOptional& operator=(const HeapOptional& o) {
+        if (this != &o) p_ = o.p_ ? std::make_unique<T>(*o.p_) : nullptr;
+        return *this;
+    }
+    HeapOptional& operator=(HeapOptional&&) noexcept = default;
+    HeapOptional& operator=(const T& v) {
+        p_ = std::make_unique<T>(v);
+        return *this;
+    }
+    HeapOptional& operator=(T&& v) {
+        p_ = std::make_unique<T>(std::move(v));
+        return *this;
+    }
+    HeapOptional& operator=(const std::optional<T>& v) {
+        p_ = v ? std::make_unique<T>(*v) : nullptr;
+        return *this;
+    }
+    explicit operator bool() const { return p_ != nullptr; }
+    bool has_value() const { return p_ != nullptr; }
+    T& operator*() { return *p_; }
+    const T& operator*() const { return *p_; }
+    T* operator->() { return p_.get(); }
+    const T* operator->() const { return p_.get(); }
+    void reset() { p_.reset(); }
+
+private:
+    std::unique_ptr<T> p_;
+};
+
 // An object as the importer holds it: the IR object (shape, transform, flags; for CSG the
 // children live in `children` until placement) plus its optional texture and interior and the
 // lights it contains (light_source inside a union moves with the union).
 struct PovObject {
     scene::Object obj;
     std::vector<PovObject> children;
-    std::optional<scene::Texture> texture;
-    std::optional<scene::Texture> interior_texture;  // the inside's texture, when given
+    HeapOptional<scene::Texture> texture;
+    HeapOptional<scene::Texture> interior_texture;  // the inside's texture, when given
     std::optional<scene::Interior> interior;
     std::vector<scene::Light> lights;
     bool is_light = false;  // a bare light_source: only lights[0] matters
