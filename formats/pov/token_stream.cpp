@@ -428,17 +428,31 @@ void TokenStream::warn_deprecated(const std::string& name, const Symbol& s, cons
 
 void TokenStream::declare(const std::string& name, Value v, const FileLoc& l, bool local,
                      size_t local_scope) {
-    if (!local) {
-        auto it = scopes_.back().find(name);
-        if (it != scopes_.back().end() && !it->second.ref_name.empty()) {
-            const std::string ref = it->second.ref_name;
+    if (local_scope >= scopes_.size()) local_scope = scopes_.size() - 1;
+    {
+        // A macro parameter passed by reference: #declare, and #local in the macro's own
+        // scope, write through to the caller's variable (POV-Ray assigns through the
+        // parameter; tracevines.pov's Grow moves its caller's root with `#local Start`).
+        SymbolTable& own = local ? scopes_[local_scope] : scopes_.back();
+        auto it = own.find(name);
+        if (it != own.end() && !it->second.ref_name.empty()) {
+            std::string ref = it->second.ref_name;
             size_t k = it->second.ref_scope;
             it->second.value = v;  // the parameter sees the new value too
             if (k < scopes_.size()) {
-                Symbol& target = scopes_[k][ref];
-                target.value = std::move(v);
-                target.loc = l;
-                target.unusable = false;
+                // Through a chain of parameters (a macro passing its parameter on), each
+                // link keeps the value, down to the variable itself.
+                for (int hops = 0; hops < 4096; ++hops) {
+                    Symbol& target = scopes_[k][ref];
+                    target.value = v;
+                    target.loc = l;
+                    target.unusable = false;
+                    if (target.ref_name.empty() || target.ref_scope >= scopes_.size() ||
+                        target.ref_scope >= k)
+                        break;
+                    ref = target.ref_name;
+                    k = target.ref_scope;
+                }
                 return;
             }
         }
@@ -456,7 +470,6 @@ void TokenStream::declare(const std::string& name, Value v, const FileLoc& l, bo
             return;
         }
     }
-    if (local_scope >= scopes_.size()) local_scope = scopes_.size() - 1;
     auto& scope = local ? scopes_[local_scope] : scopes_.front();
     Symbol& s = scope[name];
     s.value = std::move(v);

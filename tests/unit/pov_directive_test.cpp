@@ -86,6 +86,23 @@ TEST(PovDirective, MacroIdentifierArgumentsAreByReference) {
     EXPECT_EQ(radius(s, 1), 3);
 }
 
+TEST(PovDirective, LocalOnAByReferenceParameterWritesThrough) {
+    // POV-Ray assigns through a parameter passed by reference with #local too, down a chain
+    // of macros passing it on (measured with POV-Ray 3.7; tracevines.pov's Grow relies on it
+    // to move its caller's root, and its vines never stopped growing without it).
+    auto s = parse(
+        "#macro Set(P) #local P = 7; #end\n"
+        "#macro Pass(Q) Set(Q) #end\n"
+        "#macro Outer() #local Root = 1; Pass(Root) sphere { 0, Root } #end\n"
+        "Outer()\n"
+        "#macro Own(P) #local Fresh = P + 1; sphere { 0, Fresh } #end\n"
+        "#declare G = 2;\nOwn(G)\nsphere { 0, G }\n");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_EQ(radius(s, 0), 7);
+    EXPECT_EQ(radius(s, 1), 3);
+    EXPECT_EQ(radius(s, 2), 2);  // a new local name leaves the argument alone
+}
+
 TEST(PovDirective, StringDeclareNeedsNoSemicolon) {
     auto s = parse("#macro Len(S) sphere { 0, strlen(S) } #end\n"
                    "#declare Name = \"abcd\"\nLen(Name)\n");
