@@ -54,19 +54,28 @@ class SymbolTable : public std::unordered_map<std::string, Symbol, SymbolHash, S
 public:
     // The one way names enter a scope.
     Symbol& operator[](const std::string& name) {
-        summary_ |= bit(SymbolHash{}(name));
+        const size_t h = SymbolHash{}(name);
+        for (int k = 0; k < 2; ++k) summary_[word(h, k)] |= bit(h, k);
         return unordered_map::operator[](name);
     }
     const Symbol* lookup(const SymbolKey& key) const {
-        if (!(summary_ & bit(key.hash))) return nullptr;
+        for (int k = 0; k < 2; ++k)
+            if (!(summary_[word(key.hash, k)] & bit(key.hash, k))) return nullptr;
         auto it = find(key);
         return it == end() ? nullptr : &it->second;
     }
 
 private:
-    // The top six bits (the buckets use the low ones); erased names keep their bit.
-    static uint64_t bit(size_t hash) { return uint64_t{1} << (hash >> (sizeof(size_t) * 8 - 6)); }
-    uint64_t summary_ = 0;
+    // A 256-bit Bloom filter of the names, two bits each from the hash's top 16 bits (the
+    // buckets use the low ones); erased names keep their bits. A recursive macro stacks a
+    // scope per call, and a global's lookup passes every one of them (tracevines.pov): with a
+    // 64-bit, one-bit summary a scope of 20 locals answered "maybe" a quarter of the time.
+    static int byte(size_t hash, int k) {
+        return static_cast<int>((hash >> (sizeof(size_t) * 8 - 8 * (k + 1))) & 0xff);
+    }
+    static int word(size_t hash, int k) { return byte(hash, k) >> 6; }
+    static uint64_t bit(size_t hash, int k) { return uint64_t{1} << (byte(hash, k) & 63); }
+    uint64_t summary_[4] = {0, 0, 0, 0};
 };
 
 // A float read where the language wants an integer, truncated toward zero like POV-Ray's
