@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "render/film/driver.h"
@@ -21,6 +22,38 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+bool has_blob_component_textures(const scene::Object& o) {
+    if (const auto* blob = std::get_if<scene::Blob>(&o.shape))
+        for (const scene::BlobComponent& c : blob->components)
+            if (c.material >= 0) return true;
+    if (const auto* csg = std::get_if<scene::Csg>(&o.shape))
+        for (const scene::Object& c : csg->children)
+            if (has_blob_component_textures(c)) return true;
+    return false;
+}
+
+// What the classic renderer draws and the path tracer (and the photon integrator, which
+// shades with it) does not: said once each, never dropped silently.
+void warn_classic_only(const scene::Scene& scene, Diagnostics& diag) {
+    std::string what;
+    auto add = [&](bool found, const char* name) {
+        if (found) what += std::string(what.empty() ? "" : "; ") + name;
+    };
+    bool groups = false;
+    for (const scene::Light& l : scene.lights) groups = groups || l.group >= 0;
+    bool blob_textures = false;
+    for (const scene::Object& o : scene.objects)
+        blob_textures = blob_textures || has_blob_component_textures(o);
+    bool inside_textures = false;
+    for (const scene::Material& m : scene.materials)
+        inside_textures = inside_textures || !m.interior_texture.empty();
+    add(groups, "light_group (every light lights every object)");
+    add(blob_textures, "blob component textures (the blob's own texture everywhere)");
+    add(inside_textures, "interior_texture (the outside texture on both sides)");
+    if (!what.empty())
+        diag.warning({}, "only --integrator whitted renders " + what);
+}
+
 }  // namespace
 
 RenderResult render(const scene::Scene& scene, const RenderOptions& options, Diagnostics& diag) {
@@ -32,6 +65,7 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
     if (options.integrator == IntegratorKind::Sppm) prepare_options.integrator = IntegratorKind::Path;
     std::unique_ptr<PreparedScene> prepared = prepare(scene, prepare_options, diag);
     result.features = prepared->features;
+    if (options.integrator != IntegratorKind::Whitted) warn_classic_only(scene, diag);
     if (options.integrator == IntegratorKind::Sppm) {
         // Cycles' render settings a Blender scene brings that the photons do not follow.
         std::string ignored;

@@ -230,6 +230,36 @@ TEST(Sppm, SaysWhichEmittersLightNothing) {
         << warnings[0];
 }
 
+TEST(PathTracer, SaysWhatOnlyTheClassicRendererDraws) {
+    // light_group, blob component textures and interior_texture are the classic renderer's:
+    // the path tracer says so instead of silently rendering something else.
+    const std::string text =
+        "#version 3.7;\n"
+        "camera { location <0, 1, -3> look_at 0 }\n"
+        "light_group { light_source { <0, 3, 0> rgb 1 } sphere { 0, 0.5 pigment { rgb 1 } } }\n"
+        "blob { threshold 0.5 sphere { x, 1, 1 pigment { rgb x } } sphere { -x, 1, 1 } }\n"
+        "sphere { y, 0.3 pigment { rgb 1 } interior_texture { pigment { rgb x } } }\n";
+    for (IntegratorKind kind : {IntegratorKind::Path, IntegratorKind::Whitted}) {
+        std::vector<std::string> warnings;
+        Diagnostics diag([&](const Diagnostic& d) {
+            if (d.level == Diagnostic::Level::Warning) warnings.push_back(d.message);
+        });
+        RenderOptions o;
+        o.width = 8;
+        o.height = 6;
+        o.integrator = kind;
+        o.spp = 1;
+        render(pov::testing::parse(text), o, diag);
+        if (kind == IntegratorKind::Whitted) {
+            EXPECT_TRUE(warnings.empty());
+            continue;
+        }
+        ASSERT_EQ(warnings.size(), 1u);
+        for (const char* what : {"light_group", "blob component textures", "interior_texture"})
+            EXPECT_NE(warnings[0].find(what), std::string::npos) << warnings[0];
+    }
+}
+
 TEST(ClosureSetDelta, TheDeltaChanceIsHowOftenSamplingPicksADelta) {
     // A POV-Ray finish with diffuse and a partial mirror: some samples are the mirror's.
     PrincipledParams p;
