@@ -17,13 +17,17 @@ fraction of pixels within 2/255, SSIM, mean absolute error) and a verdict:
 
     tests/pov_examples/compat.py [--glint build/glint] [--cache build/pov-examples]
                                  [--jobs 2] [--timeout 30] [--only SUBSTRING]... [--out FILE]
+                                 [--time-pov]
 
 With --only the results are printed and REPORT.md is left alone unless --out is given.
+With --time-pov POV-Ray renders each scene again right after glint, one scene at a time, and
+the report compares their CPU times (user + system, each process's own) in the same run.
 """
 import argparse
 import concurrent.futures
 import datetime
 import json
+import math
 import os
 import re
 import resource
@@ -69,6 +73,31 @@ def parse_compare(line):
         return None
 
 
+def cpu_since(before):
+    """CPU seconds (user + system) of the children reaped since `before` (one job at a time)."""
+    now = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return (now.ru_utime - before.ru_utime) + (now.ru_stime - before.ru_stime)
+
+
+def time_povray(scene, args):
+    """POV-Ray's CPU seconds on the scene with the references' settings, or None."""
+    src = os.path.join(EXAMPLES, scene)
+    work = tempfile.mkdtemp(prefix="glint-povtime.")
+    cmd = ["povray", "+I" + src, "+O" + os.path.join(work, "out.png"), f"+W{args.width}",
+           f"+H{args.height}", "-A", "+WT1", "-D", "-V", "+FN", "+L" + os.path.dirname(src),
+           "+L" + INCLUDE]
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    try:
+        proc = subprocess.run(cmd, cwd=work, stdout=subprocess.DEVNULL,
+                              stderr=subprocess.DEVNULL, timeout=args.timeout * 6)
+        ok = proc.returncode == 0
+    except subprocess.TimeoutExpired:
+        ok = False
+    seconds = cpu_since(before)
+    shutil.rmtree(work, ignore_errors=True)
+    return round(seconds, 3) if ok else None
+
+
 def run_scene(scene, args):
     src = os.path.join(EXAMPLES, scene)
     ref_png = os.path.join(args.cache, "ref", scene[:-4] + ".png")
@@ -86,6 +115,7 @@ def run_scene(scene, args):
            "-H", str(args.height), "--threads", str(args.threads), "--progress=none",
            "-I", os.path.dirname(src), "-I", INCLUDE]
     start = time.monotonic()
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
 
     def limit_cpu():
         # The limit is on CPU time, so a busy machine does not turn slow scenes into
@@ -104,6 +134,8 @@ def run_scene(scene, args):
         stderr = (e.stderr or b"").decode("utf-8", "replace")
     result["seconds"] = round(time.monotonic() - start, 2)
     result["rc"] = rc
+    if args.time_pov:
+        result["glint_cpu"] = round(cpu_since(before), 3)
 
     features = []
     error = ""
@@ -141,6 +173,10 @@ def run_scene(scene, args):
         shutil.copyfile(out, dest)
     shutil.rmtree(work, ignore_errors=True)
     result["verdict"] = verdict(result)
+    if args.time_pov and result["verdict"] in ("exact", "close"):
+        pov = time_povray(scene, args)
+        if pov is not None:
+            result["pov_cpu"] = pov
     return result
 
 
@@ -197,15 +233,30 @@ def write_report(results, args, path, elapsed):
     lines.append("- SSIM: Wang et al. 2004 on Rec. 601 luma, 11x11 Gaussian window (sigma 1.5), "
                  "mean over the windows inside the image. MAE: mean absolute difference over "
                  "all RGB values, in 1/255 steps.")
+    timed = [r for r in results if "pov_cpu" in r and r.get("glint_cpu", 0) > 0]
+    if timed:
+        g = sum(r["glint_cpu"] for r in timed)
+        p = sum(r["pov_cpu"] for r in timed)
+        logs = [math.log(r["glint_cpu"] / max(r["pov_cpu"], 1e-3)) for r in timed]
+        gmean = math.exp(sum(logs) / len(logs))
+        slower = sum(1 for r in timed if r["glint_cpu"] > r["pov_cpu"])
+        lines.append(f"- Time, the {len(timed)} scenes that agree, each rendered by glint then "
+                     f"POV-Ray in the same run, one thread each, CPU seconds (user + system, "
+                     f"start-up included): glint {g:.1f} s, POV-Ray {p:.1f} s, ratio "
+                     f"{g / p:.2f}; geometric mean of the per-scene ratios {gmean:.2f}; glint "
+                     f"slower on {slower}.")
     if features:
         top = sorted(features.items(), key=lambda kv: (-kv[1], kv[0]))
         lines.append("- Unsupported features met (scenes): " +
                      ", ".join(f"{md_escape(k)} ({v})" for k, v in top[:40]) +
                      (" ..." if len(top) > 40 else ""))
     lines.append("")
+    pov_col = bool(timed)
     lines.append("| scene | parses | unsupported features | within 2/255 | SSIM | MAE (1/255) "
-                 "| verdict | glint s | note |")
-    lines.append("|---|---|---|---:|---:|---:|---|---:|---|")
+                 "| verdict | glint s |" + (" glint CPU s | POV-Ray CPU s |" if pov_col else "") +
+                 " note |")
+    lines.append("|---|---|---|---:|---:|---:|---|---:|" + ("---:|---:|" if pov_col else "") +
+                 "---|")
     for r in sorted(results, key=lambda r: r["scene"]):
         within = f"{r['within']:.4f}" if "within" in r else ""
         ssim = f"{r['ssim']:.4f}" if "ssim" in r else ""
@@ -215,7 +266,9 @@ def write_report(results, args, path, elapsed):
             note = note[:137] + "..."
         lines.append(f"| {r['scene']} | {r['parses']} | "
                      f"{md_escape(', '.join(r['unsupported']))} | {within} | {ssim} | {mae} | "
-                     f"{r['verdict']} | {r['seconds']:.1f} | {md_escape(note)} |")
+                     f"{r['verdict']} | {r['seconds']:.1f} |" +
+                     (f" {r.get('glint_cpu', '')} | {r.get('pov_cpu', '')} |" if pov_col else "") +
+                     f" {md_escape(note)} |")
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
 
@@ -236,6 +289,9 @@ def main():
                                   "not written with --only unless given)")
     ap.add_argument("--json", help="also write the per-scene results as JSON")
     ap.add_argument("--keep", help="keep glint's images under this folder")
+    ap.add_argument("--time-pov", action="store_true",
+                    help="also time POV-Ray on each scene that agrees, right after glint "
+                         "(runs one scene at a time)")
     args = ap.parse_args()
     args.width, args.height = (int(v) for v in args.size.split("x"))
     args.glint = os.path.abspath(args.glint)
@@ -243,6 +299,8 @@ def main():
         sys.exit(f"no glint binary at {args.glint} (--glint)")
     if not os.path.isdir(os.path.join(args.cache, "ref")):
         sys.exit(f"no references under {args.cache}/ref: run pov_refs.py --cache {args.cache}")
+    if args.time_pov:
+        args.jobs = 1  # per-process CPU times come from the children reaped, one at a time
     scenes = [s for s in list_scenes() if not args.only or any(f in s for f in args.only)]
     start = time.monotonic()
     results = []
