@@ -368,13 +368,18 @@ TEST(Blob, HierarchyMatchesEveryElement) {
         fast->intersect_all_points(r, kInfinity, &pf);
         ASSERT_EQ(pf.size(), hs.size());
         for (size_t i = 0; i < pf.size(); ++i) EXPECT_TRUE(same_t(pf[i].t, hs[i].t));
-        // A shorter ray ends where it ends.
-        if (!hs.empty()) {
+        // Shorter rays (shadow rays) end where they end.
+        for (double tmax : {uni(0, 1), uni(0, 40)}) {
             render::HitList cf, cs;
-            double tmax = hs[0].t + 0.5 * length(d);
             fast->intersect_all(r, tmax, &cf);
             slow->intersect_all(r, tmax, &cs);
             ASSERT_EQ(cf.size(), cs.size());
+            bool hit = fast->intersect(r, tmax, &nf);
+            ASSERT_EQ(hit, !cs.empty());
+            if (hit) {
+                EXPECT_TRUE(same_t(nf.t, cs[0].t));
+                expect_vec(nf.ng, cs[0].ng, 1e-12);
+            }
         }
     }
     EXPECT_GT(total_hits, 500u);
