@@ -368,6 +368,22 @@ TEST(Blob, HierarchyMatchesEveryElement) {
         fast->intersect_all_points(r, kInfinity, &pf);
         ASSERT_EQ(pf.size(), hs.size());
         for (size_t i = 0; i < pf.size(); ++i) EXPECT_TRUE(same_t(pf[i].t, hs[i].t));
+        // Rays leaving the surface (shadow and reflected rays) start on a root they must skip.
+        if (!hs.empty()) {
+            render::Ray out = ray(hs[0].p, in_box(1));
+            render::HitList of, os;
+            fast->intersect_all(out, kInfinity, &of);
+            slow->intersect_all(out, kInfinity, &os);
+            ASSERT_EQ(of.size(), os.size());
+            for (size_t i = 0; i < of.size(); ++i) EXPECT_TRUE(same_t(of[i].t, os[i].t));
+            double tmax = uni(0, 20);
+            render::LocalHit a, b;
+            bool hit = fast->intersect(out, tmax, &a);
+            ASSERT_EQ(hit, slow->intersect(out, tmax, &b));
+            if (hit) {
+                EXPECT_TRUE(same_t(a.t, b.t));
+            }
+        }
         // Shorter rays (shadow rays) end where they end.
         for (double tmax : {uni(0, 1), uni(0, 40)}) {
             render::HitList cf, cs;
