@@ -5,10 +5,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 #include "geom_test_util.h"
 #include "pov_test_util.h"
 #include "render/shapes/object_node.h"
+#include "render/shapes/polynomial/blob.h"
+#include "render/shapes/shapes.h"
 
 namespace glint {
 namespace {
@@ -293,6 +296,119 @@ TEST(Blob, ComponentTexturesBlendByField) {
     g = build_one(b);
     ASSERT_TRUE(g->intersect(ray({0, 0, -5}, {0, 0, 1}), &h));
     EXPECT_EQ(h.blend_source, nullptr);
+}
+
+TEST(Blob, HierarchyMatchesEveryElement) {
+    // A few hundred components: spheres and cylinders, some negative, some with transforms of
+    // their own, some textured. The bounding hierarchy must find what a loop over all elements
+    // finds: the same hits, normals, inside answers and texture blends.
+    std::mt19937_64 rng(7);
+    auto uni = [&](double lo, double hi) {
+        return std::uniform_real_distribution<double>(lo, hi)(rng);
+    };
+    auto in_box = [&](double h) { return Vec3(uni(-h, h), uni(-h, h), uni(-h, h)); };
+    scene::Blob b;
+    b.threshold = 0.6;
+    for (int i = 0; i < 300; ++i) {
+        scene::BlobComponent c;
+        c.center = in_box(6);
+        c.cylinder = uni(0, 1) < 0.3;
+        if (c.cylinder) c.apex = c.center + in_box(1.5);
+        c.radius = uni(0.6, 1.6);
+        c.strength = uni(0, 1) < 0.2 ? uni(-1.5, -0.3) : uni(0.5, 2);
+        if (uni(0, 1) < 0.25) {
+            c.transform = Transform::scale({uni(0.5, 1.5), uni(0.5, 1.5), uni(0.5, 1.5)})
+                              .then(Transform::rotate_xyz_degrees(in_box(180)))
+                              .then(Transform::translate(in_box(0.5)));
+        }
+        if (uni(0, 1) < 0.3) c.material = 1 + i % 3;
+        b.components.push_back(c);
+    }
+    const char* why = nullptr;
+    auto fast = render::make_blob(b, &why);
+    auto slow = render::make_blob_exhaustive(b, &why);
+    ASSERT_TRUE(fast && slow);
+    EXPECT_EQ(fast->bounds().lo, slow->bounds().lo);
+    EXPECT_EQ(fast->bounds().hi, slow->bounds().hi);
+    auto same_t = [](double a, double c) {
+        return std::fabs(a - c) <= 1e-12 * std::max(1.0, std::fabs(c));
+    };
+    size_t total_hits = 0, blended = 0;
+    std::vector<render::TextureWeight> wf, ws;
+    for (int k = 0; k < 600; ++k) {
+        // Rays from outside towards the components, and rays starting among them.
+        Vec3 o = k % 2 ? in_box(7) : normalize(in_box(1)) * 20;
+        Vec3 d = k % 2 ? in_box(1) : in_box(6) - o;
+        render::Ray r = ray(o, d);
+        render::HitList hf, hs;
+        fast->intersect_all(r, kInfinity, &hf);
+        slow->intersect_all(r, kInfinity, &hs);
+        ASSERT_EQ(hf.size(), hs.size()) << "ray " << k;
+        total_hits += hf.size();
+        for (size_t i = 0; i < hf.size(); ++i) {
+            EXPECT_TRUE(same_t(hf[i].t, hs[i].t)) << hf[i].t << " vs " << hs[i].t;
+            expect_vec(hf[i].ng, hs[i].ng, 1e-12);
+            // The surface point's blend comes from the same elements with the same weights.
+            ASSERT_EQ(fast->texture_blend(hf[i].p, &wf), slow->texture_blend(hs[i].p, &ws));
+            ASSERT_EQ(wf.size(), ws.size());
+            blended += wf.size() > 1;
+            for (size_t j = 0; j < wf.size(); ++j) {
+                EXPECT_EQ(wf[j].material, ws[j].material);
+                EXPECT_NEAR(wf[j].weight, ws[j].weight, 1e-12);
+            }
+        }
+        // The nearest hit and the shadow rays' hits agree with the full list.
+        render::LocalHit nf;
+        bool any = fast->intersect(r, kInfinity, &nf);
+        ASSERT_EQ(any, !hs.empty());
+        if (any) {
+            EXPECT_TRUE(same_t(nf.t, hs[0].t));
+        }
+        render::HitList pf;
+        fast->intersect_all_points(r, kInfinity, &pf);
+        ASSERT_EQ(pf.size(), hs.size());
+        for (size_t i = 0; i < pf.size(); ++i) EXPECT_TRUE(same_t(pf[i].t, hs[i].t));
+        // Rays leaving the surface (shadow and reflected rays) start on a root they must skip.
+        if (!hs.empty()) {
+            render::Ray out = ray(hs[0].p, in_box(1));
+            render::HitList of, os;
+            fast->intersect_all(out, kInfinity, &of);
+            slow->intersect_all(out, kInfinity, &os);
+            ASSERT_EQ(of.size(), os.size());
+            for (size_t i = 0; i < of.size(); ++i) EXPECT_TRUE(same_t(of[i].t, os[i].t));
+            double tmax = uni(0, 20);
+            render::LocalHit a, b;
+            bool hit = fast->intersect(out, tmax, &a);
+            ASSERT_EQ(hit, slow->intersect(out, tmax, &b));
+            if (hit) {
+                EXPECT_TRUE(same_t(a.t, b.t));
+            }
+        }
+        // Shorter rays (shadow rays) end where they end.
+        for (double tmax : {uni(0, 1), uni(0, 40)}) {
+            render::HitList cf, cs;
+            fast->intersect_all(r, tmax, &cf);
+            slow->intersect_all(r, tmax, &cs);
+            ASSERT_EQ(cf.size(), cs.size());
+            bool hit = fast->intersect(r, tmax, &nf);
+            ASSERT_EQ(hit, !cs.empty());
+            if (hit) {
+                EXPECT_TRUE(same_t(nf.t, cs[0].t));
+                expect_vec(nf.ng, cs[0].ng, 1e-12);
+            }
+        }
+    }
+    EXPECT_GT(total_hits, 500u);
+    EXPECT_GT(blended, 20u);
+    size_t in = 0;
+    for (int k = 0; k < 20000; ++k) {
+        Vec3 p = in_box(7.5);
+        bool f = fast->inside(p);
+        ASSERT_EQ(f, slow->inside(p)) << p.x << " " << p.y << " " << p.z;
+        in += f;
+    }
+    EXPECT_GT(in, 1000u);
+    EXPECT_LT(in, 19000u);
 }
 
 TEST(SolidsParser, BlobComponentTextures) {
