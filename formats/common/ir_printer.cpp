@@ -362,6 +362,13 @@ public:
                         r += " evaluate " + num(v.eval[0]) + " " + num(v.eval[1]) + " " +
                              num(v.eval[2]);
                     return r + (v.open ? " open" : "");
+                } else if constexpr (std::is_same_v<T, SphereSweep>) {
+                    static const char* kSplines[] = {"linear_spline", "b_spline", "cubic_spline"};
+                    std::string r = std::string("sphere_sweep ") +
+                                    kSplines[static_cast<int>(v.spline)] + " " +
+                                    std::to_string(v.spheres.size());
+                    for (const Sphere& c : v.spheres) r += " " + vec(c.center) + " " + num(c.radius);
+                    return r + " tolerance " + num(v.tolerance);
                 } else {
                     static const char* kOps[] = {"union", "merge", "intersection", "difference"};
                     return std::string(kOps[static_cast<int>(v.op)]) + " (" +

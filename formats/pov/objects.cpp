@@ -13,7 +13,7 @@ namespace {
 
 const std::unordered_set<std::string>& unsupported_objects() {
     static const std::unordered_set<std::string> k = {
-        "parametric", "sphere_sweep", "ovus", "lemon"};
+        "parametric", "ovus", "lemon"};
     return k;
 }
 

@@ -1,7 +1,7 @@
 // POV-Ray's quadric, polygon, prism, lathe, sor, superellipsoid, blob, height_field,
-// poly/cubic/quartic/polynomial, julia_fractal and bicubic_patch bodies, with POV-Ray's checks
-// on point counts and order (reference manual 3.4.1 "Finite Solid Primitives", 3.4.3 "Finite Patch Primitives",
-// 3.4.4 "Infinite Solid Primitives").
+// poly/cubic/quartic/polynomial, julia_fractal, bicubic_patch and sphere_sweep bodies, with
+// POV-Ray's checks on point counts and order (reference manual 3.4.1 "Finite Solid Primitives",
+// 3.4.3 "Finite Patch Primitives", 3.4.4 "Infinite Solid Primitives").
 #include "formats/pov/solids.h"
 
 #include <algorithm>
@@ -212,6 +212,46 @@ scene::Sor parse_sor(Parser& p) {
         s.points.push_back(v);
     }
     if (p.accept("open")) s.open = true;
+    return s;
+}
+
+// sphere_sweep { SPLINE N, <centre>, radius, ... [tolerance T] } (parse.cpp
+// Parse_Sphere_Sweep). A radius is read without comparisons, so that `0.5 <1, 0, 0>` is a radius
+// followed by the next centre, as for a point count.
+scene::SphereSweep parse_sphere_sweep(Parser& p) {
+    using scene::SweepSpline;
+    scene::SphereSweep s;
+    p.peek();
+    FileLoc at = p.loc();
+    const char* spline = nullptr;
+    if (p.accept("linear_spline")) s.spline = SweepSpline::Linear, spline = "linear_spline";
+    else if (p.accept("b_spline")) s.spline = SweepSpline::BSpline, spline = "b_spline";
+    else if (p.accept("cubic_spline")) s.spline = SweepSpline::Cubic, spline = "cubic_spline";
+    else p.fail_at(at, "sphere_sweep needs linear_spline, b_spline or cubic_spline first");
+    p.skip_comma();
+    // Each cubic piece reads four consecutive spheres; a line needs two.
+    const int least = s.spline == SweepSpline::Linear ? 2 : 4;
+    int n = parse_count(p, least, std::string("sphere_sweep with ") + spline + " needs at least " +
+                                      std::to_string(least) + " spheres");
+    for (int i = 0; i < n; ++i) {
+        scene::Sphere c;
+        p.skip_comma();
+        c.center = p.parse_vector();
+        p.skip_comma();
+        p.peek();
+        FileLoc rl = p.loc();
+        c.radius = p.parse_float_no_compare();
+        if (c.radius < 0)
+            p.fail_at(rl, "sphere_sweep sphere " + std::to_string(i + 1) +
+                              " has a negative radius");
+        s.spheres.push_back(c);
+    }
+    if (p.accept("tolerance")) {
+        p.peek();
+        FileLoc tl = p.loc();
+        s.tolerance = p.parse_float();
+        if (!(s.tolerance >= 0)) p.fail_at(tl, "sphere_sweep tolerance must not be negative");
+    }
     return s;
 }
 
@@ -609,7 +649,7 @@ bool is_solid_keyword(const std::string& w) {
     static const std::unordered_set<std::string> k = {
         "quadric", "polygon", "prism", "lathe", "sor", "superellipsoid", "blob", "height_field",
         "poly", "cubic", "quartic", "polynomial", "julia_fractal", "bicubic_patch",
-        "isosurface"};
+        "isosurface", "sphere_sweep"};
     return k.count(w) > 0;
 }
 
@@ -626,6 +666,7 @@ void parse_solid_body(Parser& p, const std::string& w, const FileLoc& kw, scene:
     else if (w == "julia_fractal") *out = parse_julia_fractal(p);
     else if (w == "bicubic_patch") *out = parse_bicubic_patch(p, kw);
     else if (w == "isosurface") *out = parse_isosurface(p, kw);
+    else if (w == "sphere_sweep") *out = parse_sphere_sweep(p);
     else *out = parse_poly(p, w);
 }
 

@@ -167,7 +167,8 @@ std::vector<std::string> Features::used() const {
                                      Torus{}, Triangle{}, SmoothTriangle{}, MeshRef{}, Csg{},
                                      Quadric{}, Polygon{}, Prism{}, Lathe{}, Sor{},
                                      Superellipsoid{}, Blob{}, HeightField{}, Poly{}, Text{},
-                                     JuliaFractal{}, BicubicPatch{}, Isosurface{}};
+                                     JuliaFractal{}, BicubicPatch{}, Isosurface{},
+                                     SphereSweep{}};
     static_assert(std::size(kSamples) == std::variant_size_v<Shape>);
     for (size_t i = 0; i < shapes.size(); ++i)
         if (shapes[i] && i != kSamples[10].index()) out.push_back(shape_name(kSamples[i]));

@@ -222,6 +222,19 @@ struct Text {
     Vec3 offset{0, 0, 0};
 };
 
+// sphere_sweep (reference manual 3.4.5.1.13; sphsweep.cpp): a sphere moved along a spline through
+// the spheres' centres, its radius following the same spline through theirs; the solid is the
+// union of all the spheres it passes through. Linear: one cone-like piece per pair of spheres.
+// BSpline (uniform B-spline, passing near the spheres) and Cubic (POV-Ray's Catmull-Rom, passing
+// through the inner ones): one piece per four consecutive spheres, the first and last spheres
+// only steering the ends. `tolerance`: POV-Ray's depth tolerance, the nearest hit distance kept.
+enum class SweepSpline { Linear, BSpline, Cubic };
+struct SphereSweep {
+    SweepSpline spline = SweepSpline::Linear;
+    std::vector<Sphere> spheres;  // at least 2 (Linear) or 4
+    double tolerance = 1e-6;
+};
+
 enum class CsgOp { Union, Merge, Intersection, Difference };
 
 struct Csg {
@@ -232,7 +245,7 @@ struct Csg {
 using Shape = std::variant<Sphere, Plane, Box, Cylinder, Cone, Disc, Torus, Triangle,
                            SmoothTriangle, MeshRef, Csg, Quadric, Polygon, Prism, Lathe, Sor,
                            Superellipsoid, Blob, HeightField, Poly, Text, JuliaFractal,
-                           BicubicPatch, Isosurface>;
+                           BicubicPatch, Isosurface, SphereSweep>;
 
 // Names for messages and `glint ir`, in variant order.
 const char* shape_name(const Shape& shape);

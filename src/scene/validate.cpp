@@ -231,6 +231,17 @@ private:
             !std::isfinite(s.max_gradient) || s.max_trace < 1)
             fail(loc, "isosurface accuracy, max_gradient and max_trace must be positive");
     }
+    void shape(const SphereSweep& s, const FileLoc& loc) {
+        size_t least = s.spline == SweepSpline::Linear ? 2 : 4;
+        if (s.spheres.size() < least)
+            fail(loc, "sphere_sweep needs at least " + std::to_string(least) + " spheres");
+        for (const Sphere& c : s.spheres) {
+            check_finite(c.center, loc, "sphere_sweep centre");
+            check_finite(c.radius, loc, "sphere_sweep radius");
+            if (c.radius < 0) fail(loc, "sphere_sweep radius is negative");
+        }
+        check_finite(s.tolerance, loc, "sphere_sweep tolerance");
+    }
     void shape(const Csg& s, const FileLoc&) {
         for (const Object& c : s.children) object(c, false);
     }

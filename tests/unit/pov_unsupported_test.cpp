@@ -41,11 +41,11 @@ TEST(PovUnsupported, ObjectsAreLeftOutWithOneWarningEach) {
         "bicubic_patch { type 1 u_steps 4 v_steps 4 <0,0,0>,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0 }\n"
         "ovus { 1, 0.5 }\n"
         "lemon { <0, 0, 0>, 1, <0, 1, 0>, 0.5, 1 }\n");
-    EXPECT_EQ(p.scene.objects.size(), 5u);  // the sphere, the isosurfaces, julia_fractal, bicubic_patch
+    // the sphere, the isosurfaces, julia_fractal, sphere_sweep, bicubic_patch
+    EXPECT_EQ(p.scene.objects.size(), 6u);
     EXPECT_EQ(p.warnings,
               (std::vector<std::string>{
                   "6:1: 'parametric' is not supported: the object is left out",
-                  "8:1: 'sphere_sweep' is not supported: the object is left out",
                   "10:1: 'ovus' is not supported: the object is left out",
                   "11:1: 'lemon' is not supported: the object is left out"}));
 }

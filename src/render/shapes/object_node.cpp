@@ -157,6 +157,8 @@ struct Builder {
                     p = make_bicubic_patch(s, obj.transform, &why);
                 } else if constexpr (std::is_same_v<T, scene::Isosurface>) {
                     p = make_isosurface(s, scene, &why);
+                } else if constexpr (std::is_same_v<T, scene::SphereSweep>) {
+                    p = make_sphere_sweep(s, &why);
                 }
             },
             obj.shape);

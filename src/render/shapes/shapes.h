@@ -54,6 +54,8 @@ std::unique_ptr<Primitive> make_bicubic_patch(const scene::BicubicPatch& s, cons
 // isosurface.cpp: evaluates the scene's user functions (it keeps a copy of them).
 std::unique_ptr<Primitive> make_isosurface(const scene::Isosurface& s, const scene::Scene& scene,
                                            const char** why);
+// sphere_sweep.cpp: nullptr with `*why` set for too few spheres or non-finite numbers.
+std::unique_ptr<Primitive> make_sphere_sweep(const scene::SphereSweep& s, const char** why);
 // POV-Ray's max_gradient advice after the render, one warning per isosurface that needs one.
 void report_gradients(const std::vector<GradientNote>& notes, const scene::Scene& scene,
                       Diagnostics& diag);
