@@ -1,6 +1,7 @@
 #include "core/transform.h"
 
 #include <cmath>
+#include <utility>
 
 #include "core/error.h"
 #include "core/float.h"
@@ -184,8 +185,31 @@ Bounds3 Transform::bounds(const Bounds3& b) const {
     if (b.empty()) return b;
     Bounds3 r;
     if (b.is_infinite()) {
-        // Unbounded stays unbounded; a finite transform cannot make it bounded.
-        return Bounds3{Vec3(-kInfinity), Vec3(kInfinity)};
+        // A box open along some axes (a half-space, an infinite cylinder's slab) keeps its
+        // finite sides under a transform that maps each axis onto one axis (scales, mirrors,
+        // axis swaps, translations); any other turns it unbounded.
+        const auto& a = m_.m;
+        Bounds3 out;
+        for (int i = 0; i < 3; ++i) {
+            int src = -1;
+            for (int j = 0; j < 3; ++j) {
+                if (a[i][j] == 0) continue;
+                if (src >= 0) return Bounds3{Vec3(-kInfinity), Vec3(kInfinity)};
+                src = j;
+            }
+            if (src < 0) return Bounds3{Vec3(-kInfinity), Vec3(kInfinity)};
+            for (int k = 0; k < 3; ++k)
+                if (k != i && a[k][src] != 0) return Bounds3{Vec3(-kInfinity), Vec3(kInfinity)};
+            const double s = a[i][src], t = a[i][3];
+            double lo = s * b.lo[src] + t, hi = s * b.hi[src] + t;
+            if (lo > hi) std::swap(lo, hi);
+            // Widen the finite sides by their rounding.
+            if (std::isfinite(lo)) lo -= gamma(3) * (std::fabs(lo) + std::fabs(t));
+            if (std::isfinite(hi)) hi += gamma(3) * (std::fabs(hi) + std::fabs(t));
+            out.lo[i] = lo;
+            out.hi[i] = hi;
+        }
+        return out;
     }
     for (int i = 0; i < 8; ++i) {
         Vec3 c{(i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z};

@@ -31,6 +31,60 @@ scene::Object box(Vec3 a, Vec3 b, int material = -1) {
     return object(scene::Box{a, b}, {}, material);
 }
 
+scene::Object plane(Vec3 n, double d) { return object(scene::Plane{n, d}, {}, -1); }
+
+scene::Object quadric(Vec3 square, double constant, Transform xf = {}) {
+    scene::Quadric q;
+    q.square = square;
+    q.constant = constant;
+    return object(q, xf, -1);
+}
+
+// shapes.inc's Cylinder_Y and Hyperboloid_Y cut by planes, as POV-Ray's chess pieces are: the
+// intersection is finite (POV-Ray's bounding boxes find it too), and still hit where it was.
+TEST(Csg, QuadricsBetweenPlanesAreBounded) {
+    const Transform wide = Transform::scale({2, 1, 2});
+    auto g = build(scene_of({csg(scene::CsgOp::Intersection,
+                                 {quadric({1, 0, 1}, -1, wide), plane({0, 1, 0}, 3),
+                                  plane({0, -1, 0}, 1)})}));
+    const Bounds3 b = g->finite_bounds();
+    ASSERT_FALSE(b.empty());
+    EXPECT_NEAR(b.lo.x, -2, 1e-6);
+    EXPECT_NEAR(b.hi.x, 2, 1e-6);
+    EXPECT_NEAR(b.lo.y, -1, 1e-6);
+    EXPECT_NEAR(b.hi.y, 3, 1e-6);
+    EXPECT_NEAR(b.hi.z, 2, 1e-6);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({-5, 0, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 3, 1e-9);
+    ASSERT_TRUE(g->intersect(ray({0, 10, 0}, {0, -1, 0}), &h));
+    EXPECT_NEAR(h.t, 7, 1e-9);
+    // A hyperboloid of one sheet between y = 0 and y = 2: |x| <= sqrt(1 + 2^2).
+    auto hyp = build(scene_of({csg(scene::CsgOp::Intersection,
+                                   {quadric({1, -1, 1}, -1), plane({0, 1, 0}, 2),
+                                    plane({0, -1, 0}, 0)})}));
+    const Bounds3 hb = hyp->finite_bounds();
+    ASSERT_FALSE(hb.empty());
+    EXPECT_NEAR(hb.hi.x, std::sqrt(5.0), 1e-6);
+    EXPECT_NEAR(hb.lo.z, -std::sqrt(5.0), 1e-6);
+    ASSERT_TRUE(hyp->intersect(ray({-5, 2 - 1e-9, 0}, {1, 0, 0}), &h));
+    EXPECT_NEAR(h.t, 5 - std::sqrt(5.0), 1e-6);
+    // A rotated plane bounds nothing: the intersection stays unbounded.
+    auto open = build(scene_of({csg(scene::CsgOp::Intersection,
+                                    {quadric({1, 0, 1}, -1), plane({0, 1, 1}, 3)})}));
+    EXPECT_TRUE(open->finite_bounds().empty());
+}
+
+TEST(Csg, HalfSpacesKeepTheirSideUnderAxisTransforms) {
+    const Bounds3 half{Vec3(-kInfinity, -kInfinity, -kInfinity), Vec3(kInfinity, 2, kInfinity)};
+    const Bounds3 b = Transform::scale({1, -3, 1}).then(Transform::translate({0, 1, 0})).bounds(half);
+    EXPECT_NEAR(b.lo.y, -5, 1e-9);
+    EXPECT_TRUE(std::isinf(b.hi.y));
+    EXPECT_TRUE(std::isinf(b.lo.x));
+    const Bounds3 r = Transform::rotate_xyz_degrees({0, 0, 30}).bounds(half);
+    EXPECT_TRUE(std::isinf(r.hi.y));
+}
+
 // Sphere A at the origin minus sphere B at x = 1: the solid is the part of A left of B.
 TEST(Csg, DifferenceOfTwoSpheres) {
     auto g = build(scene_of({csg(scene::CsgOp::Difference,

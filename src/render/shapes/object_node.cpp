@@ -288,6 +288,11 @@ void ObjectNode::compute_bounds() {
     } else if (op_ == scene::CsgOp::Intersection) {
         local = kEverywhere;
         for (const auto& c : children_) local = overlap(local, c->bounds());
+        // Unbounded quadrics between planes (shapes.inc's Cylinder_Y, Hyperboloid_Y cut to a
+        // height) are finite there, as POV-Ray's bounding boxes find: twice, since each
+        // axis bounded can bound the others.
+        for (int pass = 0; pass < 2 && !local.empty() && local.is_infinite(); ++pass)
+            for (const auto& c : children_) local = overlap(local, c->bounds_within(local));
     } else if (op_ == scene::CsgOp::Difference) {
         local = children_[0]->bounds();
     } else {
@@ -504,6 +509,15 @@ void ObjectNode::gradient_notes(std::vector<GradientNote>* out) const {
     if (still_) still_->gradient_notes(out);
     if (prim_) prim_->gradient_notes(out);
     for (const auto& c : children_) c->gradient_notes(out);
+}
+
+Bounds3 ObjectNode::bounds_within(const Bounds3& box) const {
+    const Bounds3 b = overlap(bounds_, box);
+    if (!prim_ || inverse_ || motion_ || b.empty()) return b;
+    const Bounds3 local_box = identity_ ? b : xf_.inverse().bounds(b);
+    const Bounds3 in = prim_->bounds_within(local_box);
+    if (in.empty()) return in;
+    return overlap(b, identity_ ? in : xf_.bounds(in));
 }
 
 bool ObjectNode::inside(const Vec3& p) const {

@@ -82,6 +82,9 @@ private:
     void finish(LocalHit* h) const;
     void finish_point(LocalHit* h) const;
     void compute_bounds();
+    // Where this node's solid can lie within `box` (its parent's space): a quadric in a CSG
+    // intersection is bounded by its partners (Primitive::bounds_within).
+    Bounds3 bounds_within(const Bounds3& box) const;
     void build_child_bvh();
     bool union_intersect(const Ray& ray, double tmax, bool shadow, LocalHit* hit) const;
 

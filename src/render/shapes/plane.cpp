@@ -15,7 +15,23 @@ public:
         : n_(s.normal), d_(s.distance), nn_(dot(s.normal, s.normal)),
           unit_(normalize(s.normal)) {}
 
-    Bounds3 bounds() const override { return {Vec3(-kInfinity), Vec3(kInfinity)}; }
+    // An axis-aligned plane bounds its inside on one side (POV-Ray's Plane::Compute_BBox),
+    // which a CSG intersection with finite or slab-bounded partners turns into a finite box.
+    Bounds3 bounds() const override {
+        Bounds3 b{Vec3(-kInfinity), Vec3(kInfinity)};
+        int axis = -1;
+        for (int k = 0; k < 3; ++k) {
+            if (n_[k] == 0) continue;
+            if (axis >= 0) return b;
+            axis = k;
+        }
+        if (axis < 0) return b;
+        const double at = d_ / n_[axis];
+        const double pad = 1e-9 * (1 + std::fabs(at));
+        if (n_[axis] > 0) b.hi[axis] = at + pad;  // inside: coordinate below `at`
+        else b.lo[axis] = at - pad;
+        return b;
+    }
 
     bool intersect(const Ray& ray, double tmax, LocalHit* hit) const override {
         double denom = dot(ray.dir, n_);

@@ -130,6 +130,13 @@ public:
     virtual bool texture_blend(const Vec3& /*p*/, std::vector<TextureWeight>* /*out*/) const {
         return false;
     }
+    // Where the shape's inside (and surface) can lie within `box`, for a CSG intersection's
+    // bounds: by default the overlap of its bounds with the box; an unbounded quadric can do
+    // better (its extent where its partners leave it).
+    virtual Bounds3 bounds_within(const Bounds3& box) const {
+        const Bounds3 b = bounds();
+        return {max(b.lo, box.lo), min(b.hi, box.hi)};
+    }
     // POV-Ray's inside test (CSG); shapes without an inside (triangles, discs) return false.
     virtual bool inside(const Vec3& p) const = 0;
     // After the render: what POV-Ray would report (isosurfaces only).

@@ -4,6 +4,7 @@
 // within the rounding of Q at the ray origin are not trusted to be in front of it. Bounds are
 // finite for ellipsoids (A positive definite), infinite otherwise, as POV-Ray's quadrics are
 // unbounded unless clipped.
+#include <algorithm>
 #include <cmath>
 
 #include "render/shapes/shapes.h"
@@ -43,7 +44,62 @@ public:
 
     bool inside(const Vec3& p) const override { return value(p) <= 0; }
 
-private:
+    // Without mixed terms Q is a sum of one-axis terms q_k(x) = A_k x^2 + L_k x plus J, so
+    // the inside within `box` reaches along axis k only where q_k(x) <= -(J + the least the
+    // other terms can be in the box). POV-Ray bounds its quadrics between planes likewise.
+    Bounds3 bounds_within(const Bounds3& box) const override {
+        Bounds3 r{max(bounds_.lo, box.lo), min(bounds_.hi, box.hi)};
+        if (b_ != 0 || c_ != 0 || f_ != 0 || empty_) return r;
+        const double sq[3] = {a_, e_, h_}, ln[3] = {d_, g_, i_};
+        // The least of q_k over [lo, hi] (-infinity where it is unbounded below).
+        auto least = [&](int k) {
+            const double A = sq[k], L = ln[k], lo = r.lo[k], hi = r.hi[k];
+            auto q = [&](double x) {
+                return std::isinf(x) ? (A > 0   ? kInfinity
+                                        : A < 0 ? -kInfinity
+                                                : L * x)
+                                     : x * (A * x + L);
+            };
+            if (A > 0) {
+                const double v = std::clamp(-L / (2 * A), lo, hi);
+                return v * (A * v + L);
+            }
+            if (A == 0 && L == 0) return 0.0;
+            return std::min(q(lo), q(hi));
+        };
+        for (int pass = 0; pass < 2 && !r.empty(); ++pass) {
+            for (int k = 0; k < 3; ++k) {
+                double rest = j_;
+                for (int j = 0; j < 3; ++j)
+                    if (j != k) rest += least(j);
+                if (!(rest > -kInfinity) || std::isnan(rest)) continue;
+                const double A = sq[k], L = ln[k];
+                double lo = -kInfinity, hi = kInfinity;
+                if (A > 0) {
+                    const double disc = L * L - 4 * A * rest;
+                    if (disc < 0) return Bounds3{};  // nothing inside within the box
+                    const double sd = std::sqrt(disc);
+                    lo = (-L - sd) / (2 * A);
+                    hi = (-L + sd) / (2 * A);
+                } else if (A == 0 && L > 0) {
+                    hi = -rest / L;
+                } else if (A == 0 && L < 0) {
+                    lo = -rest / L;
+                } else {
+                    continue;
+                }
+                // Widened well past the rounding of the roots.
+                if (std::isfinite(lo)) lo -= 1e-7 * (1 + std::fabs(lo));
+                if (std::isfinite(hi)) hi += 1e-7 * (1 + std::fabs(hi));
+                r.lo[k] = std::max(r.lo[k], lo);
+                r.hi[k] = std::min(r.hi[k], hi);
+                if (r.empty()) return r;
+            }
+        }
+        return r;
+    }
+
+  private:
     double value(const Vec3& p) const {
         return p.x * (a_ * p.x + b_ * p.y + c_ * p.z + d_) + p.y * (e_ * p.y + f_ * p.z + g_) +
                p.z * (h_ * p.z + i_) + j_;
