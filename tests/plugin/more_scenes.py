@@ -4,6 +4,7 @@ node_material, bare_material, emission_stage."""
 
 import math
 import os
+import shutil
 
 import bpy
 
@@ -454,7 +455,11 @@ def build_smoke(out_dir):
     settings = next(m for m in domain.modifiers if m.type == "FLUID").domain_settings
     settings.resolution_max = 40
     settings.cache_type = "ALL"
-    settings.cache_directory = os.path.join(out_dir, "smoke_cache")
+    # A cache left by an earlier build of the scene would be read back as it is (a build
+    # folder's stale bake failed the Z-test): bake from scratch every time.
+    cache = os.path.join(out_dir, "smoke_cache")
+    shutil.rmtree(cache, ignore_errors=True)
+    settings.cache_directory = cache
     settings.cache_frame_start, settings.cache_frame_end = -10, 1
     scene = bpy.context.scene
     scene.frame_start = -10
