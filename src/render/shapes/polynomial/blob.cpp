@@ -37,6 +37,14 @@ struct Element {
 
     Vec3 to_local(const Vec3& p) const { return identity ? p : xf.inverse_point(p); }
     Vec3 dir_local(const Vec3& d) const { return identity ? d : xf.inverse_vector(d); }
+    // The element's field at blob-space point p, and whether p is in its range.
+    bool field_at(const Vec3& p, double* f) const {
+        Vec3 v;
+        if (!radial(to_local(p), &v)) return false;
+        const double r2 = length_squared(v);
+        *f = r2 * (r2 * c0 + c1) + c2;
+        return true;
+    }
     // The vector whose squared length is r^2 (element space), and whether p is in range.
     bool radial(const Vec3& pl, Vec3* v) const {
         switch (kind) {
@@ -120,11 +128,8 @@ public:
     double field(const Vec3& p) const {
         double sum = 0;
         for (int i : near_point(p)) {
-            const Element& e = els_[i];
-            Vec3 v;
-            if (!e.radial(e.to_local(p), &v)) continue;
-            double r2 = length_squared(v);
-            sum += r2 * (r2 * e.c0 + e.c1) + e.c2;
+            double f;
+            if (els_[i].field_at(p, &f)) sum += f;
         }
         return sum;
     }
@@ -136,13 +141,11 @@ public:
         if (!textured_) return false;
         double sum = 0;
         for (int i : near_point(p)) {
-            const Element& e = els_[i];
-            Vec3 v;
-            if (!e.radial(e.to_local(p), &v)) continue;
-            double r2 = length_squared(v);
-            double d = std::fabs(r2 * (r2 * e.c0 + e.c1) + e.c2);
+            double f;
+            if (!els_[i].field_at(p, &f)) continue;
+            const double d = std::fabs(f);
             if (!(d > 0)) continue;
-            out->push_back({e.material, d});
+            out->push_back({els_[i].material, d});
             sum += d;
         }
         // No element reaching the surface (a threshold <= 0) leaves no texture: POV-Ray
