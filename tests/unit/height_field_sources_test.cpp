@@ -6,6 +6,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <string>
+
+#include <unistd.h>
 #include <vector>
 
 #include "geom_test_util.h"
@@ -112,7 +115,8 @@ void write_gif(const std::string& path, int w, int h, const std::vector<uint8_t>
 }
 
 TEST(HeightFieldPot, HalvesAreHighAndLowBytes) {
-    auto dir = std::filesystem::temp_directory_path() / "glint_hf_pot_test";
+    auto dir = std::filesystem::temp_directory_path() /
+               ("glint_hf_pot_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const std::string path = (dir / "t.pot").string();
     // 4 x 2 GIF -> 2 x 2 heights. Top row: 0x1234, 0x0000; bottom row: 0x8000, 0xFFFF.

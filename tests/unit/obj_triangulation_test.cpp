@@ -5,6 +5,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
+
+#include <unistd.h>
 
 #include "formats/obj/face_triangulation.h"
 #include "formats/obj/obj_importer.h"
@@ -86,7 +89,8 @@ TEST(ObjTriangulation, ImporterCutsSmoothQuadsAsBlenderDoes) {
     // A bent quad (corner 2 raised) with a distinct normal per corner: which diagonal the cut
     // takes decides every interpolated normal inside it.
     namespace fs = std::filesystem;
-    const fs::path path = fs::temp_directory_path() / "glint-obj-triangulation-test.obj";
+    const fs::path path = fs::temp_directory_path() /
+                          ("glint-obj-triangulation-" + std::to_string(::getpid()) + ".obj");
     std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 1 1 0.5\nv 0 1 0\n"
                            "vn 0 0 1\nvn 0.1 0 1\nvn 0.1 0.1 1\nvn 0 0.1 1\n"
                            "f 1//1 2//2 3//3 4//4\n";

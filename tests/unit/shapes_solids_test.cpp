@@ -5,6 +5,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
+
+#include <unistd.h>
 #include <random>
 
 #include "geom_test_util.h"
@@ -447,7 +450,8 @@ TEST(SolidsParser, BlobComponentTextures) {
 
 TEST(HeightField, GreyImageHeights) {
     // 3x3 PGM, all 0 except the centre 255: a pyramid of height 255*257/65536.
-    auto dir = std::filesystem::temp_directory_path() / "glint_hf_test";
+    auto dir = std::filesystem::temp_directory_path() /
+               ("glint_hf_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     std::string path = (dir / "hf.pgm").string();
     {

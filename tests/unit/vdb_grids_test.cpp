@@ -6,6 +6,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
+
+#include <unistd.h>
 
 #include <openvdb/openvdb.h>
 
@@ -18,7 +21,9 @@ namespace {
 using render::VdbGrids;
 
 // A file with 'ramp' (value = x index over 0..15 x 0..3 x 0..3) and 'wind' (a vector grid
-// (1, 2, 3) at every voxel of 0..3^3), voxels of `voxel`.
+// (1, 2, 3) at every voxel of 0..3^3), voxels of `voxel`. Each test writes its own file:
+// ctest runs the tests of this file side by side, and one would read the other's half-written
+// file.
 std::string write_file(double voxel) {
     openvdb::initialize();
     auto ramp = openvdb::FloatGrid::create(0.0f);
@@ -37,7 +42,10 @@ std::string write_file(double voxel) {
     ramp->setTransform(xf);
     wind->setTransform(xf->copy());
     const std::string path =
-        (std::filesystem::temp_directory_path() / "glint_vdb_grids_test.vdb").string();
+        (std::filesystem::temp_directory_path() /
+         ("glint_vdb_grids_" + std::to_string(::getpid()) + "_" +
+          ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".vdb"))
+            .string();
     openvdb::io::File(path).write({ramp, wind});
     return path;
 }
