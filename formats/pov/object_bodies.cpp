@@ -4,7 +4,10 @@
 // returns BodyEnd::Done.
 #include "formats/pov/object_bodies.h"
 
+#include <filesystem>
+#include <string>
 #include <string_view>
+#include <system_error>
 #include <unordered_map>
 
 #include "formats/pov/solids.h"
@@ -143,40 +146,45 @@ BodyEnd solid_body(Parser& p, const ObjectStart& start, PovObject& po) {
 }
 
 // text { ttf "font.ttf" "string" thickness, <offset> } (parse.cpp Parse_TrueType).
-BodyEnd text_body(Parser& p, const ObjectStart& start, PovObject& po) {
+BodyEnd text_body(Parser& p, const ObjectStart&, PovObject& po) {
     scene::Text s;
-    // POV-Ray's built-in font (`internal N` instead of `ttf "file"`) is not in glint: the text
-    // is read and left out.
-    const bool internal = p.accept("internal");
-    if (internal) {
-        warn_unsupported(p, "text with a built-in font ('internal')", p.loc(),
-                         "the object is left out");
-        p.parse_float();
-        po.left_out = "text";
-    } else {
-        p.expect("ttf", "in text (ttf \"font.ttf\" \"string\" thickness, offset)");
-    }
-    p.peek();
-    FileLoc floc = p.loc();
-    if (internal) {
-        s.text = p.parse_string();
-        p.skip_comma();
-        p.parse_float();
-        p.skip_comma();
-        p.parse_vector();
-        p.parse_object_mods(po, "text", start.opened);
-        return BodyEnd::Done;
-    }
-    s.file = p.parse_string();
-    // Like POV-Ray's Locate_File, a name without its extension also finds "name.ttf".
-    try {
-        s.font = p.resolve_file(s.file, floc);
-    } catch (const Error& e) {
-        if (e.kind() != ErrorKind::MissingFile) throw;
+    if (p.accept("internal")) {
+        // POV-Ray's built-in fonts (fileinputoutput.cpp IMemStream) are compiled-in copies of
+        // the four fonts Debian ships with POV-Ray's includes: 1 timrom, 2 cyrvetic,
+        // 3 crystal, any other number povlogo. glint reads those files.
+        p.peek();
+        const FileLoc floc = p.loc();
+        const int id = to_int(p.parse_float());
+        s.file = id == 1 ? "timrom.ttf" : id == 2 ? "cyrvetic.ttf" : id == 3 ? "crystal.ttf"
+                                                                           : "povlogo.ttf";
         try {
-            s.font = p.resolve_file(s.file + ".ttf", floc);
-        } catch (const Error&) {
-            throw e;
+            s.font = p.resolve_file(s.file, floc);
+        } catch (const Error& e) {
+            if (e.kind() != ErrorKind::MissingFile) throw;
+            const std::string shipped = "/usr/share/fonts/truetype/povray/" + s.file;
+            std::error_code ec;
+            if (!std::filesystem::is_regular_file(shipped, ec))
+                throw Error(ErrorKind::MissingFile, floc,
+                            "the built-in font " + std::to_string(id) + " is POV-Ray's '" + s.file +
+                                "', which is in no include folder (Debian's povray-includes "
+                                "installs it)");
+            s.font = shipped;
+        }
+    } else {
+        p.expect("ttf", "in text (ttf \"font.ttf\" or internal N, \"string\" thickness, offset)");
+        p.peek();
+        const FileLoc floc = p.loc();
+        s.file = p.parse_string();
+        // Like POV-Ray's Locate_File, a name without its extension also finds "name.ttf".
+        try {
+            s.font = p.resolve_file(s.file, floc);
+        } catch (const Error& e) {
+            if (e.kind() != ErrorKind::MissingFile) throw;
+            try {
+                s.font = p.resolve_file(s.file + ".ttf", floc);
+            } catch (const Error&) {
+                throw e;
+            }
         }
     }
     p.skip_comma();

@@ -156,12 +156,3 @@ TEST(PovUnsupported, FinishFeatures) {
     EXPECT_DOUBLE_EQ(p.scene.materials[p.scene.objects[0].material].interior.ior, 1.5);
 }
 
-TEST(PovUnsupported, TextWithBuiltInFontIsLeftOut) {
-    Parsed p = parse_warn(
-        "text { internal 1 \"glint\" 0.5, 0 pigment { rgb 1 } translate x }\n"
-        "sphere { 0, 1 }\n");
-    EXPECT_EQ(p.scene.objects.size(), 1u);  // the sphere
-    EXPECT_EQ(p.warnings,
-              (std::vector<std::string>{"2:8: 'text with a built-in font ('internal')' is not "
-                                        "supported: the object is left out"}));
-}

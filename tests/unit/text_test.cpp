@@ -101,8 +101,31 @@ TEST(TextParser, TextStatementAndItsErrors) {
     EXPECT_EQ(pov::testing::error_of("text { ttf \"nofont.ttf\" \"x\" 1, 0 }", opts),
               "1:12: cannot find the file 'nofont.ttf'");
     EXPECT_EQ(pov::testing::error_of("text { \"timrom.ttf\" \"x\" 1, 0 }", opts),
-              "1:8: expected 'ttf' in text (ttf \"font.ttf\" \"string\" thickness, offset), "
+              "1:8: expected 'ttf' in text (ttf \"font.ttf\" or internal N, \"string\" thickness, "
+              "offset), "
               "got the string \"timrom.ttf\"");
+}
+
+TEST(TextParser, BuiltInFontsAreTheFontsPovRayShips) {
+    if (!have_fonts()) GTEST_SKIP() << "povray-includes not installed";
+    pov::ParseOptions opts;
+    opts.include_dirs.push_back(kFonts);
+    // POV-Ray 3.7 compiles in copies of its four fonts: 1 timrom, 2 cyrvetic, 3 crystal, and
+    // povlogo for any other number (fileinputoutput.cpp).
+    const char* expected[] = {"povlogo.ttf", "timrom.ttf", "cyrvetic.ttf", "crystal.ttf",
+                              "povlogo.ttf", "povlogo.ttf"};
+    const char* ids[] = {"0", "1", "2", "3", "7", "-1"};
+    for (int i = 0; i < 6; ++i) {
+        auto s = pov::testing::parse(std::string("text { internal ") + ids[i] + " \"Ab\" 0.5, 0 }",
+                                     opts);
+        ASSERT_EQ(s.objects.size(), 1u) << ids[i];
+        const auto* t = std::get_if<scene::Text>(&s.objects[0].shape);
+        ASSERT_TRUE(t) << ids[i];
+        EXPECT_EQ(t->file, expected[i]) << ids[i];
+        EXPECT_EQ(std::filesystem::path(t->font).filename(), expected[i]) << ids[i];
+        EXPECT_EQ(t->text, "Ab");
+        EXPECT_EQ(t->thickness, 0.5);
+    }
 }
 
 }  // namespace
