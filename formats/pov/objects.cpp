@@ -37,8 +37,10 @@ void transform_light(scene::Light& l, const Transform& t) {
 
 // Textures of CSG children are in world space too: they follow every enclosing transform.
 void transform_child_textures(PovObject& o, const Transform& t) {
-    if (o.texture) transform_texture(*o.texture, t);
-    if (o.interior_texture) transform_texture(*o.interior_texture, t);
+    if (!o.uv_mapping) {  // uv-mapped textures live in uv space (objects.cpp Translate_Object)
+        if (o.texture) transform_texture(*o.texture, t);
+        if (o.interior_texture) transform_texture(*o.interior_texture, t);
+    }
     if (o.interior) transform_interior(*o.interior, t);
     for (auto& c : o.children) transform_child_textures(c, t);
 }
@@ -94,6 +96,16 @@ void Parser::give_faces_interior_texture(scene::MeshRef& ref, const scene::Textu
     }
 }
 
+void Parser::give_faces_uv_points(scene::MeshRef& ref) {
+    if (!own_face_materials(ref)) return;
+    for (auto& [from, to] : ref.face_materials) {
+        scene::Material m = scene.materials[static_cast<size_t>(to)];
+        m.uv_points = true;
+        scene.materials.push_back(std::move(m));
+        to = static_cast<int>(scene.materials.size()) - 1;
+    }
+}
+
 void Parser::transform_face_materials(scene::MeshRef& ref, const Transform& t) {
     if (!own_face_materials(ref)) return;
     for (auto& [from, to] : ref.face_materials) {
@@ -107,10 +119,13 @@ void Parser::transform_face_materials(scene::MeshRef& ref, const Transform& t) {
 
 void Parser::apply_transform(PovObject& o, const Transform& t) {
     o.obj.transform = o.obj.transform.then(t);
-    if (auto* ref = std::get_if<scene::MeshRef>(&o.obj.shape)) transform_face_materials(*ref, t);
+    if (auto* ref = std::get_if<scene::MeshRef>(&o.obj.shape); ref && !o.uv_mapping)
+        transform_face_materials(*ref, t);
     transform_component_materials(scene, o, t);
-    if (o.texture) transform_texture(*o.texture, t);
-    if (o.interior_texture) transform_texture(*o.interior_texture, t);
+    if (!o.uv_mapping) {  // uv-mapped textures live in uv space (objects.cpp Translate_Object)
+        if (o.texture) transform_texture(*o.texture, t);
+        if (o.interior_texture) transform_texture(*o.interior_texture, t);
+    }
     if (o.interior) transform_interior(*o.interior, t);
     for (auto& c : o.children) transform_child_textures(c, t);
     for (auto& l : o.lights) transform_light(l, t);
@@ -409,7 +424,12 @@ void Parser::parse_object_mods(PovObject& o, const char* what, const FileLoc& op
                 layer_texture(*o.interior_texture, tex, kw);
             else
                 o.interior_texture = tex;
-        } else if (w == "uv_mapping" || w == "cutaway_textures") {
+        } else if (w == "uv_mapping") {
+            // Parse_Object_Mods: the object's textures come after it, or it is an error.
+            if (o.texture || o.interior_texture)
+                fail("uv_mapping must come before the object's texture");
+            o.uv_mapping = true;
+        } else if (w == "cutaway_textures") {
             warn_unsupported(*this, w, loc(), "ignored; textures keep their usual mapping");
         } else if (w == "split_union") {
             flag();  // how POV-Ray bounds a union's parts: no effect on the image

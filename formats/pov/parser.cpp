@@ -18,9 +18,10 @@ namespace glint::pov {
 namespace fs = std::filesystem;
 
 int Parser::add_material(const scene::Texture& t, const scene::Interior& in, const FileLoc& l,
-                         int interior_id, const scene::Texture* inside) {
+                         int interior_id, const scene::Texture* inside, bool uv_points) {
     scene::Material m;
     m.texture = t;
+    m.uv_points = uv_points;
     if (inside) m.interior_texture.push_back(*inside);
     m.interior = in;
     if (t.kind == scene::PatternKind::Plain) {
@@ -38,28 +39,31 @@ int Parser::add_material(const scene::Texture& t, const scene::Interior& in, con
 
 // Children without a texture, interior_texture or interior of their own inherit (material
 // -1); those with one get a material completed from what they inherit. POV-Ray's
-// Post_Process hands each of the three down on its own. An object that declares an interior
-// (and each top-level object) starts a new interior id; the others share their parent's.
+// Post_Process hands each of the three down on its own, and the parent's uv_mapping with
+// an inherited texture. An object that declares an interior (and each top-level object)
+// starts a new interior id; the others share their parent's.
 static scene::Object to_ir(Parser& p, const PovObject& po, const scene::Texture& inh_tex,
                            const scene::Texture* inh_inside, const scene::Interior& inh_in,
-                           int inh_id, bool top, int* next_id) {
+                           int inh_id, bool inh_uv, bool top, int* next_id) {
     scene::Object o = po.obj;
     const scene::Texture& tex = po.texture ? *po.texture : inh_tex;
     const scene::Texture* inside = po.interior_texture ? &*po.interior_texture : inh_inside;
     const scene::Interior& in = po.interior ? *po.interior : inh_in;
     const int id = top || po.interior ? (*next_id)++ : inh_id;
-    if (top || po.texture || po.interior || po.interior_texture)
-        o.material =
-            p.add_material(tex, in, po.texture ? po.texture->loc : po.obj.loc, id, inside);
+    const bool uv = po.uv_mapping || (!po.texture && inh_uv);
+    if (top || po.texture || po.interior || po.interior_texture || uv != inh_uv)
+        o.material = p.add_material(tex, in, po.texture ? po.texture->loc : po.obj.loc, id,
+                                    inside, uv);
     else
         o.material = -1;
     if (auto* ref = std::get_if<scene::MeshRef>(&o.shape); ref && inside)
         p.give_faces_interior_texture(*ref, *inside);
+    if (auto* ref = std::get_if<scene::MeshRef>(&o.shape); ref && uv) p.give_faces_uv_points(*ref);
     if (auto csg = std::get_if<scene::Csg>(&o.shape)) {
         csg->children.clear();
         csg->children.reserve(po.children.size());
         for (const auto& c : po.children)
-            csg->children.push_back(to_ir(p, c, tex, inside, in, id, false, next_id));
+            csg->children.push_back(to_ir(p, c, tex, inside, in, id, uv, false, next_id));
     }
     return o;
 }
@@ -88,7 +92,7 @@ void Parser::place_object(PovObject o) {
                    "the scene has more than " + std::to_string(options.max_objects) + " objects",
                    "--max-objects");
     scene.objects.push_back(
-        to_ir(*this, o, def, nullptr, scene::Interior{}, -1, true, &next_interior_id_));
+        to_ir(*this, o, def, nullptr, scene::Interior{}, -1, false, true, &next_interior_id_));
     propagate_flags(scene.objects.back());
 }
 

@@ -177,6 +177,8 @@ public:
     // Mesh::Determine_Textures: a hit from inside shows the mesh's interior_texture whatever
     // the face's own texture, so the faces' materials get copies that carry it.
     void give_faces_interior_texture(scene::MeshRef& ref, const scene::Texture& inside);
+    // The mesh object's own uv_mapping reaches its faces' textures too (copies that carry it).
+    void give_faces_uv_points(scene::MeshRef& ref);
     // Fills ref.face_materials (identity) if empty; false if the mesh's faces name none.
     bool own_face_materials(scene::MeshRef& ref);
     std::unordered_map<int, std::vector<int>> face_material_ids_;  // per mesh, distinct
@@ -214,7 +216,8 @@ public:
     // `interior_id`: scene::Material::interior_id (-1 for mesh face textures); `inside`:
     // the interior_texture, or null for none.
     int add_material(const scene::Texture& t, const scene::Interior& in, const FileLoc& loc,
-                     int interior_id = -1, const scene::Texture* inside = nullptr);
+                     int interior_id = -1, const scene::Texture* inside = nullptr,
+                     bool uv_points = false);
     // What a #declare right-hand side can be: object, texture, expression, ...
     Value parse_rvalue() override;
     void parse_default() override;

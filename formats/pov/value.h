@@ -87,6 +87,9 @@ struct PovObject {
     std::optional<scene::Interior> interior;
     std::vector<scene::Light> lights;
     bool is_light = false;  // a bare light_source: only lights[0] matters
+    // The object's own `uv_mapping` (scene::Material::uv_points); its transforms then leave
+    // its textures alone (POV-Ray's UV_FLAG).
+    bool uv_mapping = false;
     // Non-empty for an object glint cannot render (the keyword, e.g. "isosurface"): it was
     // read over with a warning and is dropped where it would be placed (unsupported.h).
     std::string left_out;

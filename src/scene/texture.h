@@ -428,6 +428,10 @@ struct Material {
     // different one at a child that declares its own. -1: one interior per object (other
     // importers).
     int interior_id = -1;
+    // POV-Ray's object-level `uv_mapping` (the object's UV_FLAG): every texture of the object
+    // is evaluated at the surface's (u, v, 0) instead of the point, and the object's
+    // transforms leave its textures alone.
+    bool uv_points = false;
     Pbr pbr;
     // A shader node graph (Scene::shader_graphs) that the path tracer evaluates instead of
     // `pbr`; -1: none.

@@ -251,7 +251,9 @@ TEST(Pigment, UvMappingUsesSurfaceCoordinates) {
     ColorFT c;
     ASSERT_TRUE(e.evaluate(p, {Vec3(0.9, 0, 0), Vec2(0.25, 0.5), true}, &c));
     EXPECT_NEAR(c.rgb.r, 0.25, 1e-12);
-    EXPECT_THROW(e.evaluate(p, {Vec3(0.9, 0, 0), Vec2(), false}, &c), Error);
+    // A surface without uv of its own: the world point's x and y (ObjectBase::UVCoord).
+    ASSERT_TRUE(e.evaluate(p, {Vec3(0.375, 0.5, 0.9), Vec2(), false}, &c));
+    EXPECT_NEAR(c.rgb.r, 0.375, 1e-12);
 }
 
 class ImageMapTest : public ::testing::Test {

@@ -178,6 +178,40 @@ TEST(Lathe, QuadraticAndBezier) {
     EXPECT_NEAR(h.t, 4, 1e-9);
 }
 
+TEST(Lathe, UvIsTheTurnAndTheSplineParameter) {
+    // Lathe::UVCoord: u the turn about y from +x towards +z, v (segment + parameter) over
+    // the segment count. Linear profile: three segments (the bottom disc, the wall, the top).
+    scene::Lathe l;
+    l.points = {{0, 0}, {1, 0}, {1, 2}, {0, 2}};
+    auto g = build_one(l);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({0, 1.5, -5}, {0, 0, 1}), &h));  // the wall at -z
+    ASSERT_TRUE(h.has_uv);
+    EXPECT_NEAR(h.uv.x, 0.75, 1e-12);
+    EXPECT_NEAR(h.uv.y, (1 + 0.75) / 3, 1e-9);
+    ASSERT_TRUE(g->intersect(ray({-0.5, 5, 0}, {0, -1, 0}), &h));  // the top disc at -x
+    EXPECT_NEAR(h.uv.x, 0.5, 1e-12);
+    EXPECT_NEAR(h.uv.y, (2 + 0.5) / 3, 1e-9);
+}
+
+TEST(Sor, UvUpTheCurveAcrossBaseAndCap) {
+    // Sor::UVCoord: v 0..1 up the curve, -1..0 across the base, 1..2 across the cap.
+    scene::Sor s;
+    s.points = {{1, -1}, {1, 0}, {1, 1}, {1, 2}};  // one segment, y 0..1, radius 1
+    auto g = build_one(s);
+    Hit h;
+    ASSERT_TRUE(g->intersect(ray({5, 0.25, 0}, {-1, 0, 0}), &h));  // the wall at +x
+    ASSERT_TRUE(h.has_uv);
+    EXPECT_NEAR(h.uv.x, 0, 1e-12);
+    EXPECT_NEAR(h.uv.y, 0.25, 1e-9);
+    ASSERT_TRUE(g->intersect(ray({0, 5, 0.5}, {0, -1, 0}), &h));  // the cap, half way out
+    EXPECT_NEAR(h.uv.x, 0.25, 1e-12);
+    EXPECT_NEAR(h.uv.y, 1.5, 1e-9);
+    ASSERT_TRUE(g->intersect(ray({0, -5, -0.25}, {0, 1, 0}), &h));  // the base
+    EXPECT_NEAR(h.uv.x, 0.75, 1e-12);
+    EXPECT_NEAR(h.uv.y, -0.75, 1e-9);
+}
+
 TEST(Sor, CylinderWithCaps) {
     scene::Sor s;
     s.points = {{1, -1}, {1, 0}, {1, 1}, {1, 2}};

@@ -444,7 +444,7 @@ void Whitted::photon_surface(const Ray& ray, const Hit& hit, Color light, double
     }
     // The texture the photon meets: patterned textures pick the nearer entry of their map.
     const scene::Texture* tex = &mat.texture;
-    Vec3 at_p = hit.p;
+    Vec3 at_p = texture_point({hit.p, hit.uv, hit.has_uv}, mat.uv_points).p;
     for (int guard = 0; guard < 16 && tex->kind != scene::PatternKind::Plain; ++guard) {
         const Vec3 local =
             tex->transform.is_identity() ? at_p : tex->transform.inverse_point(at_p);

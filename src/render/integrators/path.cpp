@@ -147,7 +147,7 @@ SurfacePbr PathIntegrator::surface(Hit& hit, const Vec3& dir) const {
     const scene::Material& m = scene_.materials[hit.material];
     // The slope pattern reads the surface's own (outward) normal here: the path tracer shades
     // without the ray's side, which only differs from POV-Ray's facing normal seen from inside.
-    const PatternPoint at{hit.p, hit.uv, hit.has_uv, &hit.n, &dir};
+    const PatternPoint at = texture_point({hit.p, hit.uv, hit.has_uv, &hit.n, &dir}, m.uv_points);
     if (!m.pbr.derived) {
         // Only materials with maps get here. A surface without uvs reads its maps at uv
         // (0, 0), as Cycles reads an Image Texture on a mesh without a UV map (a missing

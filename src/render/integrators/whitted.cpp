@@ -52,8 +52,9 @@ const scene::Texture& side_texture(const scene::Material& mat, bool from_inside)
 
 // `raw_normal`: the surface normal facing the ray (the slope pattern's), `dir` the ray's
 // direction (the aoi pattern's), both kept alive by the caller.
-PatternPoint pattern_point(const Hit& hit, const Vec3& raw_normal, const Vec3& dir) {
-    return {hit.p, hit.uv, hit.has_uv, &raw_normal, &dir};
+PatternPoint pattern_point(const Hit& hit, const scene::Material& mat, const Vec3& raw_normal,
+                           const Vec3& dir) {
+    return texture_point({hit.p, hit.uv, hit.has_uv, &raw_normal, &dir}, mat.uv_points);
 }
 
 // A blend's textures below adc_bailout are skipped (ComputeTextureColour); entries of the same
@@ -303,7 +304,7 @@ Color Whitted::shade(const Ray& ray, const Hit& hit, double weight, const RaySta
         // A blob with component textures: each one is lit on its own and the colours mixed
         // by weight (interior_texture does not apply).
         merge_blend(&blend, state.adc);
-        const PatternPoint at = pattern_point(hit, n, ray.dir);
+        const PatternPoint at = pattern_point(hit, mat, n, ray.dir);
         Color sum;
         for (const TextureWeight& w : blend) {
             const scene::Texture& tex =
@@ -312,7 +313,7 @@ Color Whitted::shade(const Ray& ray, const Hit& hit, double weight, const RaySta
         }
         return sum;
     }
-    return texture_colour(ray, hit, side_texture(mat, from_inside), pattern_point(hit, n, ray.dir),
+    return texture_colour(ray, hit, side_texture(mat, from_inside), pattern_point(hit, mat, n, ray.dir),
                           n, weight, state, stack);
 }
 
@@ -721,13 +722,13 @@ Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& l
                     const scene::Texture& tex =
                         w.material >= 0 ? scene_.materials[w.material].texture : mat.texture;
                     filter +=
-                        shadow_texture(tex, pattern_point(hit, facing, r.dir),
+                        shadow_texture(tex, pattern_point(hit, mat, facing, r.dir),
                                        45.0 * mat.interior.caustics, facing, normalize(r.dir)) *
                         w.weight;
                 }
             } else {
                 filter = shadow_texture(side_texture(mat, from_inside),
-                                        pattern_point(hit, facing, r.dir),
+                                        pattern_point(hit, mat, facing, r.dir),
                                         45.0 * mat.interior.caustics, facing, normalize(r.dir));
             }
             const scene::Interior& interior = mat.interior;

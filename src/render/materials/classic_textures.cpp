@@ -27,12 +27,7 @@ Color Whitted::texture_colour(const Ray& ray, const Hit& hit, const scene::Textu
         return lighted_texture(ray, hit, tex, at, n, weight, state, stack);
     if (stack.count < TextureStack::kMax) stack.texture[stack.count++] = &tex;
     Vec3 p = at.p;
-    if (tex.uv_mapping) {
-        if (!at.has_uv)
-            throw Error(ErrorKind::Render, tex.loc,
-                        "uv_mapping on a surface that has no uv coordinates");
-        p = Vec3(at.uv.x, at.uv.y, 0);
-    }
+    if (tex.uv_mapping) p = uv_mapped(at);
     const scene::PatternParams& pp = tex.params;
     const Vec3 local = tex.transform.is_identity() ? p : tex.transform.inverse_point(p);
     const Vec3 tp = pp.warps.empty() ? local : warp_point(tex.kind, pp, local);
@@ -105,7 +100,7 @@ Color Whitted::shadow_texture(const scene::Texture& tex, const PatternPoint& at,
         return filter;
     }
     Vec3 p = at.p;
-    if (tex.uv_mapping && at.has_uv) p = Vec3(at.uv.x, at.uv.y, 0);
+    if (tex.uv_mapping) p = uv_mapped(at);
     const scene::PatternParams& pp = tex.params;
     const Vec3 local = tex.transform.is_identity() ? p : tex.transform.inverse_point(p);
     const PatternPoint sub{pp.warps.empty() ? local : warp_point(tex.kind, pp, local), at.uv,

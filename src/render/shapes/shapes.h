@@ -3,6 +3,8 @@
 // frame that places their canonical form, which the caller composes with the object transform.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -17,6 +19,17 @@ struct Scene;
 }
 
 namespace glint::render {
+
+// The u of POV-Ray's uv_mapping on shapes of revolution about y (sphere, lathe, sor): the
+// angle of (x, z) from +x towards +z as a fraction of a turn, 0 on the axis.
+inline double turn_about_y(double x, double z) {
+    double len = x * x + z * z;
+    if (!(len > 1e-10)) return 0;
+    if (z == 0) return x > 0 ? 0.0 : 0.5;
+    double theta = std::acos(std::clamp(x / std::sqrt(len), -1.0, 1.0));
+    if (z < 0) theta = 2 * kPi - theta;
+    return theta / (2 * kPi);
+}
 
 std::unique_ptr<Primitive> make_sphere(const scene::Sphere& s);
 std::unique_ptr<Primitive> make_plane(const scene::Plane& s);

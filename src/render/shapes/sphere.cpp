@@ -114,20 +114,7 @@ private:
     // POV-Ray's sphere uv_mapping (spheres.cpp, Sphere::UVCoord): u is the angle around y
     // measured from +x towards +z, v the latitude, both in [0, 1]. `n`: the unit normal.
     Vec2 uv_at(const Vec3& n) const override {
-        double v = 0.5 + std::asin(std::clamp(n.y, -1.0, 1.0)) / kPi;
-        double u = 0;
-        double len = n.x * n.x + n.z * n.z;
-        if (len > 1e-10) {
-            len = std::sqrt(len);
-            if (n.z == 0) {
-                u = n.x > 0 ? 0.0 : kPi;
-            } else {
-                u = std::acos(std::clamp(n.x / len, -1.0, 1.0));
-                if (n.z < 0) u = 2 * kPi - u;
-            }
-            u /= 2 * kPi;
-        }
-        return {u, v};
+        return {turn_about_y(n.x, n.z), 0.5 + std::asin(std::clamp(n.y, -1.0, 1.0)) / kPi};
     }
 
     Vec3 c_;

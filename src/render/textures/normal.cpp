@@ -199,12 +199,7 @@ Vec3 perturb_normal(const scene::Normal& normal, const PatternPoint& at, const V
                     const PatternContext& ctx, const TextureCache* textures) {
     if (normal.kind == PatternKind::Plain) return n;
     Vec3 p = at.p;
-    if (normal.uv_mapping) {
-        if (!at.has_uv)
-            throw Error(ErrorKind::Render, normal.loc,
-                        "uv_mapping on a surface that has no uv coordinates");
-        p = Vec3(at.uv.x, at.uv.y, 0);
-    }
+    if (normal.uv_mapping) p = uv_mapped(at);
     return perturb(normal, p, n, ctx, textures);
 }
 

@@ -69,13 +69,7 @@ double PigmentEvaluator::pattern_value(const scene::Pigment& pigment, const Vec3
 bool PigmentEvaluator::evaluate(const scene::Pigment& pigment, const PatternPoint& at,
                                 ColorFT* out) const {
     Vec3 p = at.p;
-    if (pigment.uv_mapping) {
-        if (!at.has_uv) {
-            throw Error(ErrorKind::Render, pigment.loc,
-                        "uv_mapping on a surface that has no uv coordinates");
-        }
-        p = Vec3(at.uv.x, at.uv.y, 0);
-    }
+    if (pigment.uv_mapping) p = uv_mapped(at);
     if ((at.normal && at.normal != ctx_.normal) ||
         (at.ray_dir && at.ray_dir != ctx_.ray_dir)) {  // the slope and aoi patterns read them
         PigmentEvaluator on_surface(*this);

@@ -23,6 +23,22 @@ struct PatternPoint {
     const Vec3* ray_dir = nullptr;
 };
 
+// Where uv_mapping evaluates a pattern: (u, v, 0) from the shape's own parameterization, and
+// on shapes that have none the world point's x and y, as POV-Ray's ObjectBase::UVCoord
+// answers for them (planes, cones, CSG, blobs, ...).
+inline Vec3 uv_mapped(const PatternPoint& at) {
+    return at.has_uv ? Vec3(at.uv.x, at.uv.y, 0) : Vec3(at.p.x, at.p.y, 0);
+}
+
+// The point an object's textures see: the surface point, or under the object's own
+// `uv_mapping` (scene::Material::uv_points) its uv point, for every texture of the object.
+inline PatternPoint texture_point(const PatternPoint& at, bool uv_points) {
+    if (!uv_points) return at;
+    PatternPoint q = at;
+    q.p = uv_mapped(at);
+    return q;
+}
+
 class PigmentEvaluator {
 public:
     // `textures` may be null when the scene has no image maps.

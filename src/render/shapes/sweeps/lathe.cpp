@@ -166,7 +166,15 @@ private:
         }
         h.ng = n;
         h.n = n;
+        // Lathe::UVCoord: u the turn about y, v the spline parameter over all segments.
+        h.uv_source = this;
+        h.uv_point = Vec3(h.p.x, std::min(1.0, (w + static_cast<double>(j)) /
+                                                   static_cast<double>(segs_.size())),
+                          h.p.z);
+        h.has_uv = true;
     }
+
+    Vec2 uv_at(const Vec3& q) const override { return {turn_about_y(q.x, q.z), q.y}; }
 
     std::vector<SplineSegment> segs_;
     std::vector<int> outward_;

@@ -56,7 +56,9 @@ public:
         if (r > 0) r0 /= std::sqrt(r);
         if (r0 > rmax_ * (1 + 1e-9)) return;
         double kmax = tmax * len, kmin = 1e-9 * scale_;
-        auto add = [&](double k, const Vec3& n) {
+        // Sor::UVCoord: u the turn about y; v runs 0..1 up the curve, segment by segment,
+        // from -1 to 0 across the base and from 1 to 2 across the cap (centre outwards).
+        auto add = [&](double k, const Vec3& n, int part) {
             if (!(k > kmin) || !(k < kmax)) return;
             LocalHit& h = hits->emplace_back();
             h.t = k / len;
@@ -64,6 +66,19 @@ public:
             h.p_error = rounding_error(h.p, 8) + Vec3(1e-9 * scale_);
             h.ng = n;
             h.n = n;
+            const double rad = std::sqrt(h.p.x * h.p.x + h.p.z * h.p.z);
+            double v;
+            if (part == kBase) {
+                v = rad / std::sqrt(base2_) - 1;
+            } else if (part == kCap) {
+                v = 2 - rad / std::sqrt(cap2_);
+            } else {
+                const SorSegment& s = segs_[static_cast<size_t>(part)];
+                v = ((h.p.y - s.y1) / (s.y2 - s.y1) + part) / static_cast<double>(segs_.size());
+            }
+            h.uv_source = this;
+            h.uv_point = Vec3(h.p.x, v, h.p.z);
+            h.has_uv = true;
         };
         const double kEps = 1e-10;
         if (closed_ && std::fabs(D.y) > kEps) {
@@ -72,7 +87,7 @@ public:
                 if (rr <= 1e-4) continue;  // POV-Ray skips caps this small
                 double k = ((cap ? ymax_ : ymin_) - P.y) / D.y;
                 double u = P.x + k * D.x, v = P.z + k * D.z;
-                if (u * u + v * v <= rr) add(k, Vec3(0, cap ? 1.0 : -1.0, 0));
+                if (u * u + v * v <= rr) add(k, Vec3(0, cap ? 1.0 : -1.0, 0), cap ? kCap : kBase);
             }
         }
         // The ray's stretch inside the bounding cylinder bounds the search.
@@ -86,7 +101,8 @@ public:
             ka = std::max(ka, (-bh - sq) / r);
             kb = std::min(kb, (-bh + sq) / r);
         }
-        for (const SorSegment& s : segs_) {
+        for (size_t j = 0; j < segs_.size(); ++j) {
+            const SorSegment& s = segs_[j];
             double k0 = ka, k1 = kb;
             if (std::fabs(D.y) > kEps) {
                 double ya = (s.y1 - P.y) / D.y, yb = (s.y2 - P.y) / D.y;
@@ -116,7 +132,7 @@ public:
                 if (!(p.y >= s.y1 && p.y <= s.y2)) continue;
                 Vec3 nrm(p.x, -0.5 * s.dr2(p.y), p.z);
                 double nl = length(nrm);
-                add(k, nl > 0 ? nrm / nl : Vec3(0, 1, 0));
+                add(k, nl > 0 ? nrm / nl : Vec3(0, 1, 0), static_cast<int>(j));
             }
         }
     }
@@ -130,7 +146,10 @@ public:
         return false;
     }
 
+    Vec2 uv_at(const Vec3& q) const override { return {turn_about_y(q.x, q.z), q.y}; }
+
 private:
+    static constexpr int kBase = -1, kCap = -2;  // parts of the surface besides the segments
     static double m_of(const Vec3& P, const Vec3& D) { return P.x * D.x + P.z * D.z; }
 
     std::vector<SorSegment> segs_;
