@@ -113,7 +113,8 @@ Transform Parser::parse_transform_body() {
 
 // ---------------------------------------------------------------- pigment
 
-void Parser::parse_image_map_body(scene::ImageMap& im, double* bump_size, bool material_map) {
+void Parser::parse_image_map_body(scene::ImageMap& im, double* bump_size, bool material_map,
+                                  bool image_pattern) {
     static const std::unordered_set<std::string> kTypes = {
         "png", "jpeg", "tga", "gif", "tiff", "ppm", "pgm", "sys", "iff", "hdr", "exr", "bmp"};
     const Token& t = next();
@@ -178,8 +179,12 @@ void Parser::parse_image_map_body(scene::ImageMap& im, double* bump_size, bool m
         } else if (k.is("premultiplied")) {
             im.premultiplied = allow_float(1) != 0;
         } else if (k.is("use_color") || k.is("use_colour") || k.is("use_index")) {
-            // Only a bump_map on a palette image tells them apart.
+            // Only a bump_map on a palette image tells them apart (image_pattern reads the
+            // grey with either: its test in imageutil.cpp holds for both).
             im.use_index = k.is("use_index");
+            im.use_alpha = false;
+        } else if (image_pattern && k.is("use_alpha")) {
+            im.use_alpha = true;
         } else {
             fail("expected an image_map item (map_type, once, interpolate, ...), got " +
                  got(k));

@@ -119,8 +119,9 @@ public:
     std::vector<scene::ColorMapEntry> parse_color_map_body();
     // bump_size is read into *bump_size when given (bump_map).
     // `material_map`: the body of a material_map, whose image items stop at its first texture.
+    // `image_pattern`: the items of Parse_Image_Pattern (use_alpha too).
     void parse_image_map_body(scene::ImageMap& im, double* bump_size = nullptr,
-                              bool material_map = false);
+                              bool material_map = false, bool image_pattern = false);
     // ---- patterns and maps (patterns.cpp, pattern_grammar.cpp)
     void parse_pattern_arguments(scene::PatternKind kind, scene::PatternParams& pp, bool normal);
     // A pattern modifier (turbulence, frequency, warp, brick_size, ...) if `w` is one; `head`

@@ -138,6 +138,17 @@ void Parser::parse_pattern_arguments(PatternKind kind, scene::PatternParams& pp,
             pp.pigment = std::move(pg);
             break;
         }
+        case PatternKind::ImagePattern: {  // image_pattern { [type] "file" items }
+            expect_open("image_pattern");
+            FileLoc io = loc();
+            pp.image = scene::ImageMap{};
+            pp.image.loc = io;
+            pp.image.data = true;  // Parse_Image without gamma correction
+            parse_image_map_body(pp.image, nullptr, false, true);
+            expect_close("image_pattern", io);
+            pp.frequency = 0;  // Parse_Image_Pattern: the values are not reshaped by default
+            break;
+        }
         case PatternKind::Function:  // function { expression } (functions.cpp)
             pp.function = parse_function_definition();
             break;

@@ -46,6 +46,7 @@ constexpr PatternWord kPatternWords[] = {
     {"gradient", PatternKind::Gradient},   {"average", PatternKind::Average},
     {"function", PatternKind::Function},   {"density_file", PatternKind::DensityFile},
     {"object", PatternKind::Object},       {"pigment_pattern", PatternKind::PigmentPattern},
+    {"image_pattern", PatternKind::ImagePattern},
     {"slope", PatternKind::Slope},
     {"aoi", PatternKind::Aoi},
     {"magnet", PatternKind::Magnet},       {"tiling", PatternKind::Tiling},
@@ -60,7 +61,7 @@ std::optional<PatternKind> pattern_keyword(const std::string& w) {
 // POV-Ray patterns glint does not evaluate: named so the message is precise.
 const std::unordered_set<std::string>& unsupported_patterns() {
     static const std::unordered_set<std::string> k = {
-        "image_pattern", "pavement",
+        "pavement",
         "gradient_map", "material_map"};
     return k;
 }
@@ -97,8 +98,7 @@ bool skip_unsupported_pattern(Parser& p, const std::string& w, PatternKind* kind
     // it was without it.
     warn_unsupported(p, w, p.loc(),
                      w == "object" ? "the pigment or texture is left as it was" : consequence);
-    if (w == "object" || w == "pigment_pattern" || w == "image_pattern" ||
-        w == "material_map" || w == "gradient_map") {
+    if (w == "object" || w == "pigment_pattern" || w == "material_map" || w == "gradient_map") {
         skip_braced_block(p, w);
     } else if (w == "pavement") {
         while (p.accept("number_of_sides") || p.accept("number_of_tiles") ||

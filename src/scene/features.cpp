@@ -21,6 +21,9 @@ public:
             for (const Pigment& p : scene_.sky_sphere->pigments) pigment(p);
         }
         for (const Media& m : scene_.media) media(m);
+        // `function { pigment { ... } }` and `function { pattern { ... } }` (their images).
+        for (const Function& f : scene_.functions)
+            for (const Pigment& p : f.pigment) pigment(p);
         normal(scene_.camera.normal);
         f_.radiosity = scene_.global.radiosity.has_value();
         f_.photons = scene_.global.photons.has_value();
@@ -102,6 +105,7 @@ private:
     }
 
     void pattern_kind(PatternKind k) {
+        if (k == PatternKind::ImagePattern) f_.image_textures = true;
         if (k == PatternKind::Checker) f_.checker = true;
         else if (k == PatternKind::Gradient) f_.gradient = true;
         else if (k != PatternKind::Plain && k != PatternKind::ImageMap) f_.patterns = true;

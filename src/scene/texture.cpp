@@ -36,6 +36,7 @@ const char* pattern_name(PatternKind kind) {
         case PatternKind::Julia: return "julia";
         case PatternKind::Magnet: return "magnet";
         case PatternKind::Tiling: return "tiling";
+        case PatternKind::ImagePattern: return "image_pattern";
         case PatternKind::Function: return "function";
         case PatternKind::DensityFile: return "density_file";
         case PatternKind::Brick: return "brick";

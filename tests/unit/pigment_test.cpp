@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "render/materials/opacity.h"
 #include "render/textures/pigment.h"
+#include "unit/pov_test_util.h"
 
 namespace glint::render {
 namespace {
@@ -303,6 +304,57 @@ TEST_F(ImageMapTest, PlanarMapPutsTheImageOnTheUnitSquare) {
     EXPECT_NEAR(w.transmit, 1.0 - 128.0 / 255.0, 1e-6);
     // Repeats without `once`.
     EXPECT_EQ(eval(e, p, Vec3(1.25, -0.25, 0)).rgb, Color(1, 0, 0));  // = (0.25, 0.75)
+}
+
+TEST_F(ImageMapTest, ImagePatternIsTheGreyOrTheAlphaReadAsData) {
+    // image_pattern { "file" } as a pigment pattern: the texel's grey (0.297 r + 0.589 g +
+    // 0.114 b) picks the colour map's value; the file's values as stored (no sRGB decoding),
+    // and under use_alpha the transmit.
+    Pigment p;
+    p.kind = scene::PatternKind::ImagePattern;
+    p.params.image.file = path_;
+    p.params.image.resolved_path = path_;
+    p.params.image.data = true;
+    p.params.frequency = 0;
+    scene::Scene s;
+    s.materials.resize(1);
+    s.materials[0].texture.pigment = p;
+    TextureCache cache(image_gamma(s));  // a 3.7 scene: an image_map would be sRGB decoded
+    cache.preload(s);
+    ASSERT_EQ(cache.size(), 1u);
+    PigmentEvaluator e(&cache);
+    // POV-Ray's default map runs black to white: the value shows as the grey.
+    EXPECT_NEAR(eval(e, p, Vec3(0.25, 0.75, 0)).rgb.r, 0.297, 1e-6);  // red texel
+    EXPECT_NEAR(eval(e, p, Vec3(0.75, 0.75, 0)).rgb.r, 0.589, 1e-6);  // green
+    EXPECT_NEAR(eval(e, p, Vec3(0.75, 0.25, 0)).rgb.r, 1.0, 1e-6);    // white
+    Pigment a = p;
+    a.params.image.use_alpha = true;
+    EXPECT_NEAR(eval(e, a, Vec3(0.75, 0.25, 0)).rgb.r, 1.0 - 128.0 / 255.0, 1e-6);
+    EXPECT_NEAR(eval(e, a, Vec3(0.25, 0.75, 0)).rgb.r, 0.0, 1e-6);  // opaque
+    // The same file as an image_map is another (decoded) image in the cache.
+    s.materials[0].texture.pigment = image_pigment();
+    cache.preload(s);
+    EXPECT_EQ(cache.size(), 2u);
+}
+
+TEST_F(ImageMapTest, ImagePatternParsesAsAContinuousPatternOfData) {
+    auto s = pov::testing::parse("plane { y, 0 pigment { image_pattern { png \"" + path_ +
+                                 "\" use_alpha map_type 1 once } color_map { [0 rgb 0] [1 rgb 1] } } "
+                                 "normal { image_pattern { \"" + path_ + "\" } 0.5 } }");
+    const scene::Texture& t = s.materials.back().texture;
+    EXPECT_EQ(t.pigment.kind, scene::PatternKind::ImagePattern);
+    EXPECT_TRUE(t.pigment.params.image.data);
+    EXPECT_TRUE(t.pigment.params.image.use_alpha);
+    EXPECT_TRUE(t.pigment.params.image.once);
+    EXPECT_EQ(t.pigment.params.image.map_type, 1);
+    EXPECT_EQ(t.pigment.params.frequency, 0);  // values are not reshaped
+    EXPECT_EQ(t.pigment.color_map.size(), 2u);
+    EXPECT_EQ(t.normal.kind, scene::PatternKind::ImagePattern);
+    EXPECT_FALSE(t.normal.params.image.use_alpha);
+    EXPECT_NE(pov::testing::error_of("plane { y, 0 pigment { image_pattern { \"" + path_ +
+                                     "\" bump_size 2 } } }")
+                  .find("expected an image_map item"),
+              std::string::npos);
 }
 
 TEST_F(ImageMapTest, OnceLeavesTheOutsideClear) {

@@ -373,9 +373,9 @@ TEST(PovMaterials, UnsupportedFeaturesSaySo) {
     EXPECT_EQ(warnings_of("sphere { 0, 1 normal { pavement 0.5 } }"),
               std::vector<std::string>{
                   "1:24: 'pavement' is not supported: the normal is not perturbed by it"});
-    EXPECT_EQ(warnings_of("sphere { 0, 1 pigment { image_pattern { png \"x.png\" } "
+    EXPECT_EQ(warnings_of("sphere { 0, 1 pigment { pavement number_of_sides 4 "
                           "color_map { [0 rgb 1] [1 rgb 0] } } }"),
-              std::vector<std::string>{"1:25: 'image_pattern' is not supported: the pattern is "
+              std::vector<std::string>{"1:25: 'pavement' is not supported: the pattern is "
                                        "constant 0 (its map's first entry)"});
     EXPECT_TRUE(warnings_of("sphere { 0, 1 pigment { aoi color_map { [0 rgb 1] [1 rgb 0] } } }")
                     .empty());

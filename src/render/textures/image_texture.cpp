@@ -17,9 +17,19 @@ double srgb_decode(double v) {
 
 namespace {
 
+void collect(const scene::Pigment& p, std::vector<const scene::ImageMap*>* out);
+
+// The images a pattern itself reads: image_pattern's, and those of pigment_pattern's pigment.
+void collect(scene::PatternKind kind, const scene::PatternParams& pp,
+             std::vector<const scene::ImageMap*>* out) {
+    if (kind == scene::PatternKind::ImagePattern) out->push_back(&pp.image);
+    if (pp.pigment) collect(*pp.pigment, out);
+}
+
 // Collects image maps from a pigment tree.
 void collect(const scene::Pigment& p, std::vector<const scene::ImageMap*>* out) {
     if (p.kind == scene::PatternKind::ImageMap) out->push_back(&p.params.image);
+    collect(p.kind, p.params, out);
     for (const scene::Pigment& e : p.entries) collect(e, out);
     for (const scene::PigmentMapEntry& e : p.pigment_map) collect(e.pigment[0], out);
 }
@@ -27,6 +37,7 @@ void collect(const scene::Pigment& p, std::vector<const scene::ImageMap*>* out) 
 // ... from a normal tree (bump_map) ...
 void collect(const scene::Normal& n, std::vector<const scene::ImageMap*>* out) {
     if (n.kind == scene::PatternKind::ImageMap) out->push_back(&n.params.image);
+    collect(n.kind, n.params, out);
     for (const scene::Normal& e : n.entries) collect(e, out);
     for (const scene::NormalMapEntry& e : n.normal_map) collect(e.normal[0], out);
 }
@@ -34,6 +45,7 @@ void collect(const scene::Normal& n, std::vector<const scene::ImageMap*>* out) {
 // ... and from a texture: its material_map image, layers, texture_map and block entries.
 void collect(const scene::Texture& t, std::vector<const scene::ImageMap*>* out) {
     if (t.kind == scene::PatternKind::ImageMap) out->push_back(&t.params.image);
+    collect(t.kind, t.params, out);
     collect(t.pigment, out);
     collect(t.normal, out);
     for (const scene::Texture& l : t.layers) collect(l, out);
@@ -96,6 +108,11 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const scene::ImageMap& ma
     // Parse_Image: defaultGamma / workingGamma per gamma mode; `gamma G` overrides).
     auto decode = [&](double v) -> double {
         if (is_float) return v;  // linear formats are not gamma-adjusted
+        if (map.data) {  // no default decoding and no working gamma; `gamma G` still decodes
+            if (map.gamma > 0) return std::pow(std::max(v, 0.0), map.gamma);
+            if (map.gamma < 0) return srgb_decode(v);
+            return v;
+        }
         double linear;
         if (map.gamma > 0) {
             linear = std::pow(std::max(v, 0.0), map.gamma);
@@ -162,14 +179,14 @@ std::shared_ptr<const ImageTexture> ImageTexture::load(const scene::ImageMap& ma
 }
 
 TextureCache::KeyView TextureCache::key(const scene::ImageMap& map) {
-    return {map.resolved_path.empty() ? map.file : map.resolved_path, map.gamma};
+    return {map.resolved_path.empty() ? map.file : map.resolved_path, map.gamma, map.data};
 }
 
 void TextureCache::add(const scene::ImageMap& map) {
     KeyView k = key(map);
     auto it = images_.find(k);
     if (it == images_.end())
-        it = images_.emplace(Key{std::string(k.path), k.gamma}, ImageTexture::load(map, gamma_))
+        it = images_.emplace(Key{std::string(k.path), k.gamma, k.data}, ImageTexture::load(map, gamma_))
                  .first;
     // POV-Ray's parser reads the image and stops on these; glint reads images here.
     const ImageTexture& image = *it->second;
@@ -190,10 +207,18 @@ void TextureCache::add(const scene::ImageMap& map) {
 
 void TextureCache::preload(const scene::Scene& scene) {
     std::vector<const scene::ImageMap*> maps;
+    auto media = [&](const std::vector<scene::Media>& list) {
+        for (const scene::Media& md : list)
+            for (const scene::Pigment& d : md.density) collect(d, &maps);
+    };
     for (const scene::Material& m : scene.materials) {
         collect(m.texture, &maps);
         for (const scene::Texture& t : m.interior_texture) collect(t, &maps);
+        media(m.interior.media);
     }
+    media(scene.media);
+    for (const scene::Function& f : scene.functions)
+        for (const scene::Pigment& p : f.pigment) collect(p, &maps);
     if (scene.sky_sphere)
         for (const scene::Pigment& p : scene.sky_sphere->pigments) collect(p, &maps);
     collect(scene.camera.normal, &maps);

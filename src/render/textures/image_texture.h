@@ -89,16 +89,19 @@ private:
     struct KeyView {
         std::string_view path;
         double gamma;
+        bool data = false;  // scene::ImageMap::data
     };
     struct Key {
         std::string path;
         double gamma;
-        operator KeyView() const { return {path, gamma}; }
+        bool data = false;
+        operator KeyView() const { return {path, gamma, data}; }
     };
     struct KeyLess {
         using is_transparent = void;
         bool operator()(KeyView a, KeyView b) const {
-            return a.path != b.path ? a.path < b.path : a.gamma < b.gamma;
+            if (a.path != b.path) return a.path < b.path;
+            return a.gamma != b.gamma ? a.gamma < b.gamma : a.data < b.data;
         }
     };
     void add(const scene::ImageMap& map);

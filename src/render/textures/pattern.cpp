@@ -543,6 +543,8 @@ double raw_pattern(PatternKind kind, const PatternParams& params, const Vec3& p,
             return aoi_pattern(ctx);
         case PatternKind::PigmentPattern:
             return pigment_pattern(params, p, ctx);
+        case PatternKind::ImagePattern:
+            return image_pattern(params, p, ctx);
         case PatternKind::Leopard:
             return leopard(p);
         case PatternKind::Mandel:

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.h"
+#include "render/textures/image_texture.h"
 #include "render/textures/pigment.h"
 
 namespace glint::render {
@@ -48,6 +50,19 @@ double slope_pattern(const scene::SlopeParams& s, const Vec3& p, const PatternCo
     double v = s.weight * v1 + s.altitude_weight * v2;
     if (v - 1.0 < kPovEpsilon && v >= 1.0) return v - kPovEpsilon;
     return v < 0.0 ? 1.0 + std::fmod(v, 1.0) : std::fmod(v, 1.0);
+}
+
+double image_pattern(const scene::PatternParams& params, const Vec3& p, const PatternContext& ctx) {
+    const scene::ImageMap& im = params.image;
+    const ImageTexture* image = ctx.textures ? ctx.textures->find(im) : nullptr;
+    if (!image) throw Error(ErrorKind::Render, im.loc, "image '" + im.file + "' was not loaded");
+    double xc, yc;
+    if (!image_map_position(im, *image, p, &xc, &yc)) return 0.0;
+    const scene::ColorFT c = image_map_sample(im, *image, xc, yc);
+    const double v = !im.use_alpha ? 0.297 * c.rgb.r + 0.589 * c.rgb.g + 0.114 * c.rgb.b
+                     : image->has_alpha() ? c.transmit
+                                          : c.rgb.r;
+    return std::clamp(v, 0.0, 1.0);
 }
 
 double pigment_pattern(const scene::PatternParams& params, const Vec3& p,

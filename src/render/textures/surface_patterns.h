@@ -1,5 +1,6 @@
-// Patterns that read more than the point: slope (the surface normal, PatternContext::normal)
-// and pigment_pattern (a whole pigment evaluated at the point). Called by evaluate_pattern.
+// Patterns that read more than the point: slope (the surface normal, PatternContext::normal),
+// aoi, pigment_pattern (a whole pigment evaluated at the point) and image_pattern (an image,
+// PatternContext::textures). Called by evaluate_pattern.
 #pragma once
 
 #include "render/textures/pattern.h"
@@ -13,6 +14,9 @@ double slope_pattern(const scene::SlopeParams& s, const Vec3& p, const PatternCo
 // no normal or ray.
 double aoi_pattern(const PatternContext& ctx);
 // POV-Ray's pigment_pattern: params.pigment's grey at p, 0 where it has no color.
+// imageutil.cpp image_pattern: the image (mapped as an image_map) at the point: its grey, or
+// under use_alpha its transmit (red without alpha), within 0..1; 0 off an image used once.
+double image_pattern(const scene::PatternParams& params, const Vec3& p, const PatternContext& ctx);
 double pigment_pattern(const scene::PatternParams& params, const Vec3& p,
                        const PatternContext& ctx);
 
