@@ -33,6 +33,13 @@ void transform_light(scene::Light& l, const Transform& t) {
         l.area->axis1 = t.vector(l.area->axis1);
         l.area->axis2 = t.vector(l.area->axis2);
     }
+    if (l.projected_through) {  // moves with the light (point.cpp Transform)
+        auto o = std::make_shared<scene::Object>(*l.projected_through);
+        o->transform = o->transform.then(t);
+        for (auto& b : o->bounded_by) b.transform = b.transform.then(t);
+        for (auto& c : o->clipped_by) c.transform = c.transform.then(t);
+        l.projected_through = std::move(o);
+    }
 }
 
 // Textures of CSG children are in world space too: they follow every enclosing transform.
@@ -279,8 +286,19 @@ void Parser::parse_light_body(scene::Light& l, std::optional<PovObject>* looks_l
         } else if (w == "photons") {
             parse_light_photons(l);
         } else if (w == "projected_through") {
-            warn_unsupported(*this, w, loc(), "ignored in light_source");
-            skip_braced_block(*this, w);
+            // Parse_Light_Source: one object with its modifiers (textures do not matter);
+            // the light's later transforms move it too.
+            if (l.projected_through) fail("only one projected_through is allowed per light_source");
+            expect_open("projected_through");
+            FileLoc po = loc();
+            const Token& ot = next();
+            PovObject obj;
+            if (!parse_object(ot, obj)) fail("expected an object in projected_through, got " + got(ot));
+            parse_object_mods(obj, "projected_through", po);
+            // Placed where the light is placed: undo the transforms read so far, which
+            // transform_light applies to the light (and to this object) at the end.
+            apply_transform(obj, tr.inverse());
+            l.projected_through = std::make_shared<const scene::Object>(object_without_materials(obj));
         } else if (w == "looks_like") {
             unsupported("light_source '" + w + "'");
         } else {

@@ -39,8 +39,11 @@ void warn_classic_only(const scene::Scene& scene, Diagnostics& diag) {
     auto add = [&](bool found, const char* name) {
         if (found) what += std::string(what.empty() ? "" : "; ") + name;
     };
-    bool groups = false;
-    for (const scene::Light& l : scene.lights) groups = groups || l.group >= 0;
+    bool groups = false, projected = false;
+    for (const scene::Light& l : scene.lights) {
+        groups = groups || l.group >= 0;
+        projected = projected || l.projected_through;
+    }
     bool blob_textures = false;
     for (const scene::Object& o : scene.objects)
         blob_textures = blob_textures || has_blob_component_textures(o);
@@ -48,6 +51,7 @@ void warn_classic_only(const scene::Scene& scene, Diagnostics& diag) {
     for (const scene::Material& m : scene.materials)
         inside_textures = inside_textures || !m.interior_texture.empty();
     add(groups, "light_group (every light lights every object)");
+    add(projected, "projected_through (the light shines everywhere)");
     add(blob_textures, "blob component textures (the blob's own texture everywhere)");
     add(inside_textures, "interior_texture (the outside texture on both sides)");
     if (!what.empty())

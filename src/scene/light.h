@@ -1,6 +1,7 @@
 // Light sources with POV-Ray's defaults (reference manual 3.4.7 "Light Sources").
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -8,6 +9,8 @@
 #include "core/math.h"
 
 namespace glint::scene {
+
+struct Object;
 
 enum class LightKind { Point, Spot, Cylinder };
 
@@ -72,6 +75,10 @@ struct Light {
     // A group light also lights the objects of these groups (POV-Ray lets a group's lights
     // into a group nested in it that is a copy of a declared one).
     std::vector<int> also_groups;
+    // `projected_through { OBJECT }`: the light reaches a point only along a ray that meets
+    // this object (world space, no textures), and only what lies before that meeting
+    // shadows it (trace.cpp TracePointLightShadowRay). Null: none.
+    std::shared_ptr<const Object> projected_through;
     FileLoc loc;
 };
 

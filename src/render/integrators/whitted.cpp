@@ -112,6 +112,7 @@ Whitted::Whitted(const PreparedScene& prepared)
     : scene_(prepared.scene),
       features_(prepared.features),
       geometry_(*prepared.geometry),
+      projected_(prepared.projected_through),
       materials_(prepared.materials),
       pigments_(prepared.textures.get(),
                 PatternContext{scene_.global.noise_generator, scene_.global.number_of_waves,
@@ -422,6 +423,13 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
                     if (!(std::fabs(lc.r) > kPovEpsilon || std::fabs(lc.g) > kPovEpsilon ||
                           std::fabs(lc.b) > kPovEpsilon))
                         continue;
+                } else if (light_index < projected_.size() && projected_[light_index]) {
+                    // A shadowless light still passes only through its projected_through.
+                    Vec3 end;
+                    if (!projected_end(light_index,
+                                       offset_ray_origin(hit.p, hit.p_error, hit.ng, ls.dir),
+                                       hit.p + ls.dir * ls.distance, &end))
+                        continue;
                 }
                 Color one;
                 if (!sslt) one += diffuse_term(f, lay_n, ls.dir, pig.rgb, lc, att);
@@ -631,9 +639,28 @@ Color Whitted::shadow_filter(const Vec3& p, const Hit& at, const LightSample& ls
                        ls.dir, ls.color, eye.interiors, light, collects);
 }
 
-Color Whitted::shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& light_dir,
+bool Whitted::projected_end(size_t light, const Vec3& origin, const Vec3& target,
+                            Vec3* end) const {
+    *end = target;
+    if (light >= projected_.size() || !projected_[light]) return true;
+    Ray r;
+    r.origin = origin;
+    r.dir = target - origin;
+    r.tmax = kShadowEnd;
+    LocalHit h;
+    if (!projected_[light]->intersect(r, r.tmax, false, &h)) return false;
+    const double len = length(r.dir);
+    *end = origin + r.dir * (std::max(0.0, h.t * len - kShadowTolerance) / len);
+    return true;
+}
+
+Color Whitted::shadow_walk(const Vec3& origin, const Vec3& light_target, const Vec3& light_dir,
                            const Color& light_colour, const Interiors& eye, size_t light,
                            bool collects) const {
+    // TracePointLightShadowRay's projected_through test: only what lies before the object
+    // can shadow the light, and a ray that misses the object gets none.
+    Vec3 target;
+    if (!projected_end(light, origin, light_target, &target)) return Color();
     Ray r;
     r.origin = origin;
     r.dir = target - r.origin;

@@ -145,6 +145,11 @@ private:
     Color shadow_walk(const Vec3& origin, const Vec3& target, const Vec3& light_dir,
                       const Color& light_colour, const Interiors& eye, size_t light,
                       bool collects = false) const;
+    // A light with projected_through reaches `origin` from `target` only along a ray that
+    // meets its object: false where it misses; `*end` is where the object is met (less
+    // POV-Ray's SMALL_TOLERANCE), the end of what may shadow it. True (end = target) for
+    // other lights.
+    bool projected_end(size_t light, const Vec3& origin, const Vec3& target, Vec3* end) const;
     // Whether `light`'s photons refract through scene object `object` (a target).
     bool photon_refracts(const scene::Light& light, int object) const;
     // Media: the light reaching a point in a medium (TestShadow), the media of the objects a
@@ -177,6 +182,8 @@ private:
     const scene::Scene& scene_;
     const scene::Features& features_;
     const Geometry& geometry_;
+    // Per light, its projected_through object (PreparedScene::projected_through).
+    const std::vector<std::unique_ptr<ObjectNode>>& projected_;
     const MaterialTable& materials_;
     PigmentEvaluator pigments_;
     Atmosphere atmosphere_;  // fog and rainbow

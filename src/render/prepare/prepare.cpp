@@ -36,10 +36,19 @@ std::unique_ptr<PreparedScene> prepare_with(const scene::Scene& scene,
                                          scene.global.number_of_waves, &scene.functions,
                                          objects.get(), textures.get()};
     Camera camera(scene.camera, options.width, options.height, &scene.meshes, camera_patterns);
+    std::vector<std::unique_ptr<ObjectNode>> projected;
+    for (const scene::Light& l : scene.lights) {
+        if (!l.projected_through) continue;
+        projected.resize(scene.lights.size());
+        break;
+    }
+    for (size_t i = 0; i < projected.size(); ++i)
+        if (const auto& o = scene.lights[i].projected_through)
+            projected[i] = ObjectNode::build(*o, scene, diag ? *diag : quiet);
     return std::unique_ptr<PreparedScene>(new PreparedScene{
         scene, std::move(features), std::move(textures), std::move(programs),
         std::move(materials), std::move(geometry), std::move(camera), Shutter(scene),
-        std::move(objects)});
+        std::move(objects), std::move(projected)});
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "core/log.h"
 #include "render/camera.h"
@@ -13,6 +14,7 @@
 #include "render/options.h"
 #include "render/prepare/geometry.h"
 #include "render/prepare/material_table.h"
+#include "render/shapes/object_node.h"
 #include "render/shader/shading.h"
 #include "render/textures/image_texture.h"
 #include "render/textures/pattern.h"
@@ -36,6 +38,9 @@ struct PreparedScene {
     Shutter shutter;  // motion blur; inactive for scenes without motion
     // Object patterns' objects (PatternContext::objects); null without any.
     std::unique_ptr<PatternObjects> pattern_objects;
+    // Per scene light: its projected_through object (scene::Light::projected_through), null
+    // for lights without one; empty when no light has one.
+    std::vector<std::unique_ptr<ObjectNode>> projected_through;
 };
 
 // Prepares `scene` for a render with `options` (its integrator and image size). Degenerate
