@@ -97,10 +97,15 @@ BodyEnd torus_body(Parser& p, const ObjectStart&, PovObject& po) {
 // bottom one makes the egg a sphere, which POV-Ray puts in its place with a warning.
 BodyEnd ovus_body(Parser& p, const ObjectStart& start, PovObject& po) {
     scene::Ovus s;
+    p.peek();
+    const FileLoc bottom_at = p.loc();
     s.bottom_radius = p.parse_float();
     p.skip_comma();
+    p.peek();
+    const FileLoc top_at = p.loc();
     s.top_radius = p.parse_float();
-    if (s.top_radius < 0 || s.bottom_radius < 0) p.fail("both ovus radii must be positive");
+    if (s.bottom_radius < 0) p.fail_at(bottom_at, "both ovus radii must be positive");
+    if (s.top_radius < 0) p.fail_at(top_at, "both ovus radii must be positive");
     if (!(s.top_radius < 2.0 * s.bottom_radius)) {
         p.diag.warning(start.keyword_loc,
                        "ovus top radius is not less than twice the bottom radius: a sphere "

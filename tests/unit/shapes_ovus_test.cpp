@@ -143,7 +143,7 @@ TEST(OvusParser, IntoTheIrSphereSubstituteAndErrors) {
         about_ovus += d.message.find("ovus top radius") != std::string::npos;
     EXPECT_EQ(about_ovus, 1);
     EXPECT_EQ(pov::testing::error_of("ovus { -1, 0.5 }"),
-              "1:16: both ovus radii must be positive");
+              "1:8: both ovus radii must be positive");
     EXPECT_EQ(pov::testing::error_of("ovus { }"), "1:8: expected a value, got '}'");
 }
 
