@@ -369,6 +369,25 @@ public:
                                     std::to_string(v.spheres.size());
                     for (const Sphere& c : v.spheres) r += " " + vec(c.center) + " " + num(c.radius);
                     return r + " tolerance " + num(v.tolerance);
+                } else if constexpr (std::is_same_v<T, Ovus>) {
+                    return "ovus " + num(v.bottom_radius) + " " + num(v.top_radius);
+                } else if constexpr (std::is_same_v<T, Parametric>) {
+                    std::string r = "parametric functions " + std::to_string(v.function[0]) + " " +
+                                    std::to_string(v.function[1]) + " " +
+                                    std::to_string(v.function[2]) + " uv " + num(v.uv_min.x) +
+                                    " " + num(v.uv_min.y) + " " + num(v.uv_max.x) + " " +
+                                    num(v.uv_max.y) +
+                                    (v.sphere ? " contained_by sphere " + vec(v.center) + " " +
+                                                    num(v.radius)
+                                              : " contained_by box " + vec(v.corner1) + " " +
+                                                    vec(v.corner2));
+                    r += " accuracy " + num(v.accuracy) + " max_gradient " + num(v.max_gradient);
+                    if (v.precompute[0] || v.precompute[1] || v.precompute[2]) {
+                        r += " precompute " + std::to_string(v.precompute_depth);
+                        for (int i = 0; i < 3; ++i)
+                            if (v.precompute[i]) r += std::string(" ") + "xyz"[i];
+                    }
+                    return r;
                 } else {
                     static const char* kOps[] = {"union", "merge", "intersection", "difference"};
                     return std::string(kOps[static_cast<int>(v.op)]) + " (" +

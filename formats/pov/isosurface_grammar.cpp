@@ -8,11 +8,8 @@
 
 namespace glint::pov {
 
-namespace {
-
-constexpr int kMaxTrace = 10;  // POV-Ray's ISOSURFACE_MAXTRACE: what all_intersections asks for
-
-void parse_container(Parser& p, scene::Isosurface* s) {
+void parse_contained_by(Parser& p, bool* sphere, Vec3* corner1, Vec3* corner2, Vec3* center,
+                        double* radius) {
     p.expect_open("contained_by");
     FileLoc opened = p.loc();
     if (p.accept("box")) {
@@ -22,20 +19,24 @@ void parse_container(Parser& p, scene::Isosurface* s) {
         p.skip_comma();
         Vec3 b = p.parse_vector();
         p.expect_close("box", lo);
-        s->sphere = false;
-        s->corner1 = min(a, b);
-        s->corner2 = max(a, b);
+        *sphere = false;
+        *corner1 = min(a, b);
+        *corner2 = max(a, b);
     } else if (p.accept("sphere")) {
         p.expect_open("sphere");
         FileLoc lo = p.loc();
-        s->center = p.parse_vector();
+        *center = p.parse_vector();
         p.skip_comma();
-        s->radius = p.parse_float();
+        *radius = p.parse_float();
         p.expect_close("sphere", lo);
-        s->sphere = true;
+        *sphere = true;
     }
     p.expect_close("contained_by", opened);
 }
+
+namespace {
+
+constexpr int kMaxTrace = 10;  // POV-Ray's ISOSURFACE_MAXTRACE: what all_intersections asks for
 
 }  // namespace
 
@@ -45,7 +46,7 @@ scene::Isosurface parse_isosurface(Parser& p, const FileLoc& kw) {
     s.function = p.parse_function_definition();
     for (;;) {
         if (p.accept("contained_by")) {
-            parse_container(p, &s);
+            parse_contained_by(p, &s.sphere, &s.corner1, &s.corner2, &s.center, &s.radius);
         } else if (p.accept("threshold")) {
             s.threshold = p.parse_float();
         } else if (p.accept("accuracy")) {

@@ -93,6 +93,30 @@ BodyEnd torus_body(Parser& p, const ObjectStart&, PovObject& po) {
     return BodyEnd::Modifiers;
 }
 
+// ovus { bottom_radius, top_radius } (parse.cpp Parse_Ovus): a top radius of at least twice the
+// bottom one makes the egg a sphere, which POV-Ray puts in its place with a warning.
+BodyEnd ovus_body(Parser& p, const ObjectStart& start, PovObject& po) {
+    scene::Ovus s;
+    p.peek();
+    const FileLoc bottom_at = p.loc();
+    s.bottom_radius = p.parse_float();
+    p.skip_comma();
+    p.peek();
+    const FileLoc top_at = p.loc();
+    s.top_radius = p.parse_float();
+    if (s.bottom_radius < 0) p.fail_at(bottom_at, "both ovus radii must be positive");
+    if (s.top_radius < 0) p.fail_at(top_at, "both ovus radii must be positive");
+    if (!(s.top_radius < 2.0 * s.bottom_radius)) {
+        p.diag.warning(start.keyword_loc,
+                       "ovus top radius is not less than twice the bottom radius: a sphere "
+                       "takes its place, as in POV-Ray");
+        po.obj.shape = scene::Sphere{Vec3(0, s.bottom_radius, 0), s.top_radius};
+    } else {
+        po.obj.shape = s;
+    }
+    return BodyEnd::Modifiers;
+}
+
 BodyEnd triangle_body(Parser& p, const ObjectStart&, PovObject& po) {
     scene::Triangle s;
     for (int i = 0; i < 3; ++i) {
@@ -242,6 +266,7 @@ BodyParser object_body_parser(const std::string& word) {
         {"cone", cone_body},
         {"disc", disc_body},
         {"torus", torus_body},
+        {"ovus", ovus_body},
         {"triangle", triangle_body},
         {"smooth_triangle", smooth_triangle_body},
         {"mesh", parse_mesh_body},

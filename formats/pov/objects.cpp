@@ -3,19 +3,12 @@
 // texture with the object, as POV-Ray does.
 #include <cstdio>
 #include <cmath>
-#include <unordered_set>
 
 #include "formats/pov/object_bodies.h"
 
 namespace glint::pov {
 
 namespace {
-
-const std::unordered_set<std::string>& unsupported_objects() {
-    static const std::unordered_set<std::string> k = {
-        "parametric", "ovus", "lemon"};
-    return k;
-}
 
 void transform_light(scene::Light& l, const Transform& t) {
     l.location = t.point(l.location);
@@ -165,11 +158,10 @@ bool Parser::parse_object(const Token& kw, PovObject& out) {
         return true;
     }
     const std::string w = kw.text;
-    if (unsupported_objects().count(w)) {
-        FileLoc at = loc();
-        out = skip_unsupported_object(*this, w, at);
-        return true;
-    }
+    // POV-Ray 3.8's lemon is an undeclared identifier to 3.7, whose parse stops there.
+    if (w == "lemon")
+        fail("'lemon' is not a POV-Ray 3.7 shape (it came with POV-Ray 3.8); POV-Ray 3.7 stops "
+             "here: undeclared identifier 'lemon'");
     if (w == "blender_light") {  // glint's extension for the Blender add-on
         out = PovObject{};
         out.is_light = true;

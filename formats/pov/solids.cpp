@@ -649,7 +649,7 @@ bool is_solid_keyword(const std::string& w) {
     static const std::unordered_set<std::string> k = {
         "quadric", "polygon", "prism", "lathe", "sor", "superellipsoid", "blob", "height_field",
         "poly", "cubic", "quartic", "polynomial", "julia_fractal", "bicubic_patch",
-        "isosurface", "sphere_sweep"};
+        "isosurface", "sphere_sweep", "parametric"};
     return k.count(w) > 0;
 }
 
@@ -667,6 +667,7 @@ void parse_solid_body(Parser& p, const std::string& w, const FileLoc& kw, scene:
     else if (w == "bicubic_patch") *out = parse_bicubic_patch(p, kw);
     else if (w == "isosurface") *out = parse_isosurface(p, kw);
     else if (w == "sphere_sweep") *out = parse_sphere_sweep(p);
+    else if (w == "parametric") *out = parse_parametric(p, kw);
     else *out = parse_poly(p, w);
 }
 

@@ -1,6 +1,6 @@
 // The bodies of POV-Ray's spline, implicit and image solids (parse.cpp: Parse_Quadric,
 // Parse_Polygon, Parse_Prism, Parse_Lathe, Parse_Sor, Parse_Superellipsoid, Parse_Blob,
-// Parse_HField, Parse_Poly, Parse_Polynom, Parse_Sphere_Sweep). Called by parse_object
+// Parse_HField, Parse_Poly, Parse_Polynom, Parse_Sphere_Sweep, Parse_Parametric). Called by parse_object
 // (objects.cpp) after the opening brace; the object modifiers that follow are parsed there.
 #pragma once
 
@@ -14,6 +14,14 @@ bool is_solid_keyword(const std::string& word);
 
 // After `isosurface {` (isosurface_grammar.cpp).
 scene::Isosurface parse_isosurface(Parser& p, const FileLoc& kw);
+
+// contained_by { box { C1, C2 } | sphere { C, R } | } after the keyword, as isosurface and
+// parametric read it: the box's corners sorted per axis; an empty body changes nothing.
+void parse_contained_by(Parser& p, bool* sphere, Vec3* corner1, Vec3* corner2, Vec3* center,
+                        double* radius);
+
+// After `parametric {` (parametric_grammar.cpp); `kw`: the keyword's location.
+scene::Parametric parse_parametric(Parser& p, const FileLoc& kw);
 
 // A count written before a point list, `4 <1, 0>` as well as `4, <1, 0>`: POV-Ray compares only
 // inside parentheses, so a number followed by `<` is the count, not `4 < ...`.

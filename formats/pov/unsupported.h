@@ -37,7 +37,7 @@ void warn_unsupported(Parser& p, const std::string& feature, const FileLoc& at,
 // still run, as they would in POV-Ray). `what` names the block in an "unterminated" error.
 void skip_braced_block(Parser& p, const std::string& what);
 
-// After the keyword of an object glint cannot render (isosurface, parametric, ...): warns,
+// After the keyword of an object glint cannot render (none at present): warns,
 // reads over its block and returns an object marked left out (PovObject::left_out), which
 // CSG and the scene drop.
 PovObject skip_unsupported_object(Parser& p, const std::string& keyword, const FileLoc& at);

@@ -172,7 +172,7 @@ std::vector<std::string> Features::used() const {
                                      Quadric{}, Polygon{}, Prism{}, Lathe{}, Sor{},
                                      Superellipsoid{}, Blob{}, HeightField{}, Poly{}, Text{},
                                      JuliaFractal{}, BicubicPatch{}, Isosurface{},
-                                     SphereSweep{}};
+                                     SphereSweep{}, Ovus{}, Parametric{}};
     static_assert(std::size(kSamples) == std::variant_size_v<Shape>);
     for (size_t i = 0; i < shapes.size(); ++i)
         if (shapes[i] && i != kSamples[10].index()) out.push_back(shape_name(kSamples[i]));

@@ -9,7 +9,7 @@ const char* shape_name(const Shape& shape) {
                                              "quadric",  "polygon", "prism", "lathe", "sor",
                                              "superellipsoid", "blob", "height_field", "poly",
                                              "text", "julia_fractal", "bicubic_patch",
-                                             "isosurface", "sphere_sweep"};
+                                             "isosurface", "sphere_sweep", "ovus", "parametric"};
     static_assert(std::size(kNames) == std::variant_size_v<Shape>);
     if (const auto* csg = std::get_if<Csg>(&shape)) {
         switch (csg->op) {

@@ -235,6 +235,34 @@ struct SphereSweep {
     double tolerance = 1e-6;
 };
 
+// ovus (POV-Ray 3.7 reference 3.4.5.1.11; ovus.cpp): an egg around the y axis, a sphere of
+// radius bottom_radius at the origin below, one of radius top_radius centred at
+// <0, bottom_radius, 0> above, joined by a band of a spindle torus tangent to both. POV-Ray's
+// parser makes a sphere of it when top_radius >= 2 bottom_radius, and so does the importer.
+struct Ovus {
+    double bottom_radius = 1;
+    double top_radius = 0.5;  // 0 <= top_radius < 2 bottom_radius
+};
+
+// parametric (POV-Ray 3.7 reference 3.4.5.1.10; fpmetric.cpp): the surface
+// <fx(u, v), fy(u, v), fz(u, v)> (Scene::functions[function[i]], called with x = u, y = v,
+// z = 0) for u, v in [uv_min, uv_max], found by subdividing that rectangle within the container
+// (a box, or a sphere when `sphere`) down to `accuracy`, each piece's range bounded by
+// max_gradient. precompute[i]: the ranges of coordinate i over the first 2^precompute_depth
+// pieces are computed once. No inside.
+struct Parametric {
+    int function[3] = {-1, -1, -1};
+    Vec2 uv_min{0, 0}, uv_max{1, 1};  // uv_min <= uv_max
+    bool sphere = false;
+    Vec3 corner1{-1, -1, -1}, corner2{1, 1, 1};  // box container, corner1 <= corner2
+    Vec3 center{0, 0, 0};                        // sphere container
+    double radius = 1;
+    double accuracy = 0.001;
+    double max_gradient = 1;
+    int precompute_depth = 0;  // 1 to 20 when any of `precompute` is set
+    bool precompute[3] = {false, false, false};
+};
+
 enum class CsgOp { Union, Merge, Intersection, Difference };
 
 struct Csg {
@@ -245,7 +273,7 @@ struct Csg {
 using Shape = std::variant<Sphere, Plane, Box, Cylinder, Cone, Disc, Torus, Triangle,
                            SmoothTriangle, MeshRef, Csg, Quadric, Polygon, Prism, Lathe, Sor,
                            Superellipsoid, Blob, HeightField, Poly, Text, JuliaFractal,
-                           BicubicPatch, Isosurface, SphereSweep>;
+                           BicubicPatch, Isosurface, SphereSweep, Ovus, Parametric>;
 
 // Names for messages and `glint ir`, in variant order.
 const char* shape_name(const Shape& shape);

@@ -242,6 +242,30 @@ private:
         }
         check_finite(s.tolerance, loc, "sphere_sweep tolerance");
     }
+    void shape(const Ovus& s, const FileLoc& loc) {
+        check_finite(s.bottom_radius, loc, "ovus radius");
+        check_finite(s.top_radius, loc, "ovus radius");
+        if (!(s.bottom_radius > 0) || s.top_radius < 0 || !(s.top_radius < 2 * s.bottom_radius))
+            fail(loc, "ovus radii must satisfy bottom > 0 and 0 <= top < 2 bottom");
+    }
+    void shape(const Parametric& s, const FileLoc& loc) {
+        for (int f : s.function)
+            if (f < 0 || f >= static_cast<int>(scene_.functions.size()))
+                fail(loc, "parametric function out of range");
+        check_finite(s.uv_min.x, loc, "parametric uv range");
+        check_finite(s.uv_min.y, loc, "parametric uv range");
+        check_finite(s.uv_max.x, loc, "parametric uv range");
+        check_finite(s.uv_max.y, loc, "parametric uv range");
+        check_finite(s.corner1, loc, "parametric container");
+        check_finite(s.corner2, loc, "parametric container");
+        check_finite(s.center, loc, "parametric container");
+        check_finite(s.radius, loc, "parametric container radius");
+        if (!(s.accuracy > 0) || !(s.max_gradient > 0) || !std::isfinite(s.accuracy) ||
+            !std::isfinite(s.max_gradient))
+            fail(loc, "parametric accuracy and max_gradient must be positive");
+        if (s.precompute_depth < 0 || s.precompute_depth > 20)
+            fail(loc, "parametric precompute depth must be 1 to 20");
+    }
     void shape(const Csg& s, const FileLoc&) {
         for (const Object& c : s.children) object(c, false);
     }

@@ -404,8 +404,8 @@ TEST(PovMaterials, UnsupportedFeaturesSaySo) {
     EXPECT_DOUBLE_EQ(fi.irid_turbulence, 0.4);
     EXPECT_DOUBLE_EQ(fi.irid_thickness, 0.2);
     EXPECT_DOUBLE_EQ(fi.phong, 1.0);
-    // Objects glint lacks are left out with a warning (pov_unsupported_test.cpp).
-    EXPECT_EQ(error_of("ovus { }"), "(no error)");
+    // An ovus needs its two radii (shapes_ovus_test.cpp).
+    EXPECT_NE(error_of("ovus { }"), "(no error)");
     // tiles is a checker texture (pov_patterns_test.cpp): no warning.
     EXPECT_EQ(warnings_of("sphere { 0, 1 texture { tiles { texture { } tile2 texture { } } } }"),
               std::vector<std::string>{});

@@ -159,6 +159,10 @@ struct Builder {
                     p = make_isosurface(s, scene, &why);
                 } else if constexpr (std::is_same_v<T, scene::SphereSweep>) {
                     p = make_sphere_sweep(s, &why);
+                } else if constexpr (std::is_same_v<T, scene::Ovus>) {
+                    p = make_ovus(s, &why);
+                } else if constexpr (std::is_same_v<T, scene::Parametric>) {
+                    p = make_parametric(s, scene, obj.transform, &why);
                 }
             },
             obj.shape);

@@ -69,6 +69,12 @@ std::unique_ptr<Primitive> make_isosurface(const scene::Isosurface& s, const sce
                                            const char** why);
 // sphere_sweep.cpp: nullptr with `*why` set for too few spheres or non-finite numbers.
 std::unique_ptr<Primitive> make_sphere_sweep(const scene::SphereSweep& s, const char** why);
+// ovus.cpp: nullptr with `*why` set unless bottom > 0 and 0 <= top < 2 bottom.
+std::unique_ptr<Primitive> make_ovus(const scene::Ovus& s, const char** why);
+// parametric.cpp: evaluates the scene's user functions (it keeps a copy of them). `xf`: the
+// object's transform, in whose units POV-Ray measures the search's depths.
+std::unique_ptr<Primitive> make_parametric(const scene::Parametric& s, const scene::Scene& scene,
+                                           const Transform& xf, const char** why);
 // POV-Ray's max_gradient advice after the render, one warning per isosurface that needs one.
 void report_gradients(const std::vector<GradientNote>& notes, const scene::Scene& scene,
                       Diagnostics& diag);
