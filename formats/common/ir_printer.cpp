@@ -20,6 +20,11 @@ std::string num(double v) {
     return buf;
 }
 std::string vec(const Vec3& v) { return "<" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ">"; }
+
+std::string contained_by(const scene::Container& c) {
+    return c.sphere ? " contained_by sphere " + vec(c.center) + " " + num(c.radius)
+                    : " contained_by box " + vec(c.corner1) + " " + vec(c.corner2);
+}
 std::string rgb(const Color& c) { return "rgb <" + num(c.r) + ", " + num(c.g) + ", " + num(c.b) + ">"; }
 std::string rgbft(const ColorFT& c) {
     if (c.filter == 0 && c.transmit == 0) return rgb(c.rgb);
@@ -351,10 +356,7 @@ public:
                     return r;
                 } else if constexpr (std::is_same_v<T, Isosurface>) {
                     std::string r = "isosurface function " + std::to_string(v.function) +
-                                     (v.sphere ? " contained_by sphere " + vec(v.center) + " " +
-                                                     num(v.radius)
-                                               : " contained_by box " + vec(v.corner1) + " " +
-                                                     vec(v.corner2));
+                                     contained_by(v.container);
                     r += " threshold " + num(v.threshold) + " accuracy " + num(v.accuracy) +
                          " max_gradient " + num(v.max_gradient) + " max_trace " +
                          std::to_string(v.max_trace);
@@ -377,10 +379,7 @@ public:
                                     std::to_string(v.function[2]) + " uv " + num(v.uv_min.x) +
                                     " " + num(v.uv_min.y) + " " + num(v.uv_max.x) + " " +
                                     num(v.uv_max.y) +
-                                    (v.sphere ? " contained_by sphere " + vec(v.center) + " " +
-                                                    num(v.radius)
-                                              : " contained_by box " + vec(v.corner1) + " " +
-                                                    vec(v.corner2));
+                                    contained_by(v.container);
                     r += " accuracy " + num(v.accuracy) + " max_gradient " + num(v.max_gradient);
                     if (v.precompute[0] || v.precompute[1] || v.precompute[2]) {
                         r += " precompute " + std::to_string(v.precompute_depth);

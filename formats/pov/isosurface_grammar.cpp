@@ -8,8 +8,7 @@
 
 namespace glint::pov {
 
-void parse_contained_by(Parser& p, bool* sphere, Vec3* corner1, Vec3* corner2, Vec3* center,
-                        double* radius) {
+void parse_contained_by(Parser& p, scene::Container* c) {
     p.expect_open("contained_by");
     FileLoc opened = p.loc();
     if (p.accept("box")) {
@@ -19,17 +18,17 @@ void parse_contained_by(Parser& p, bool* sphere, Vec3* corner1, Vec3* corner2, V
         p.skip_comma();
         Vec3 b = p.parse_vector();
         p.expect_close("box", lo);
-        *sphere = false;
-        *corner1 = min(a, b);
-        *corner2 = max(a, b);
+        c->sphere = false;
+        c->corner1 = min(a, b);
+        c->corner2 = max(a, b);
     } else if (p.accept("sphere")) {
         p.expect_open("sphere");
         FileLoc lo = p.loc();
-        *center = p.parse_vector();
+        c->center = p.parse_vector();
         p.skip_comma();
-        *radius = p.parse_float();
+        c->radius = p.parse_float();
         p.expect_close("sphere", lo);
-        *sphere = true;
+        c->sphere = true;
     }
     p.expect_close("contained_by", opened);
 }
@@ -46,7 +45,7 @@ scene::Isosurface parse_isosurface(Parser& p, const FileLoc& kw) {
     s.function = p.parse_function_definition();
     for (;;) {
         if (p.accept("contained_by")) {
-            parse_contained_by(p, &s.sphere, &s.corner1, &s.corner2, &s.center, &s.radius);
+            parse_contained_by(p, &s.container);
         } else if (p.accept("threshold")) {
             s.threshold = p.parse_float();
         } else if (p.accept("accuracy")) {

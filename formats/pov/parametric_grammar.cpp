@@ -45,7 +45,7 @@ scene::Parametric parse_parametric(Parser& p, const FileLoc& kw) {
             s.precompute[2] = p.accept("z");
             precompute = s.precompute[0] || s.precompute[1] || s.precompute[2];
         } else if (p.accept("contained_by")) {
-            parse_contained_by(p, &s.sphere, &s.corner1, &s.corner2, &s.center, &s.radius);
+            parse_contained_by(p, &s.container);
         } else {
             break;
         }

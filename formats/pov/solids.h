@@ -17,8 +17,7 @@ scene::Isosurface parse_isosurface(Parser& p, const FileLoc& kw);
 
 // contained_by { box { C1, C2 } | sphere { C, R } | } after the keyword, as isosurface and
 // parametric read it: the box's corners sorted per axis; an empty body changes nothing.
-void parse_contained_by(Parser& p, bool* sphere, Vec3* corner1, Vec3* corner2, Vec3* center,
-                        double* radius);
+void parse_contained_by(Parser& p, scene::Container* c);
 
 // After `parametric {` (parametric_grammar.cpp); `kw`: the keyword's location.
 scene::Parametric parse_parametric(Parser& p, const FileLoc& kw);

@@ -194,15 +194,26 @@ struct BicubicPatch {
     Vec2 uv[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};  // uv_vectors: the corners' texture uv
 };
 
+// The contained_by of an isosurface or parametric: a box (corners sorted, corner1 <= corner2),
+// or a sphere when `sphere`.
+struct Container {
+    bool sphere = false;
+    Vec3 corner1{-1, -1, -1}, corner2{1, 1, 1};
+    Vec3 center{0, 0, 0};
+    double radius = 1;
+    // A box with its corners in order, or a sphere of positive radius.
+    bool valid() const {
+        return sphere ? radius > 0
+                      : corner1.x <= corner2.x && corner1.y <= corner2.y && corner1.z <= corner2.z;
+    }
+};
+
 // isosurface (POV-Ray 3.7 manual 2.4.2.3): the surface where Scene::functions[function](x, y, z)
 // equals threshold, inside where it is lower, cut to its container (a box, or a sphere when
 // `sphere`); the root search steps by max_gradient and stops at accuracy (POV-Ray's isosurf.cpp).
 struct Isosurface {
     int function = -1;  // index into Scene::functions
-    bool sphere = false;
-    Vec3 corner1{-1, -1, -1}, corner2{1, 1, 1};  // box container, corner1 <= corner2
-    Vec3 center{0, 0, 0};                        // sphere container
-    double radius = 1;
+    Container container;
     double threshold = 0;
     double accuracy = 0.001;
     double max_gradient = 1.1;
@@ -253,10 +264,7 @@ struct Ovus {
 struct Parametric {
     int function[3] = {-1, -1, -1};
     Vec2 uv_min{0, 0}, uv_max{1, 1};  // uv_min <= uv_max
-    bool sphere = false;
-    Vec3 corner1{-1, -1, -1}, corner2{1, 1, 1};  // box container, corner1 <= corner2
-    Vec3 center{0, 0, 0};                        // sphere container
-    double radius = 1;
+    Container container;
     double accuracy = 0.001;
     double max_gradient = 1;
     int precompute_depth = 0;  // 1 to 20 when any of `precompute` is set

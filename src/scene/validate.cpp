@@ -20,6 +20,13 @@ void check_finite(double v, const FileLoc& loc, const char* what) {
     if (!std::isfinite(v)) fail(loc, std::string(what) + " is not a finite number");
 }
 
+void container(const Container& c, const FileLoc& loc, const std::string& shape) {
+    check_finite(c.corner1, loc, (shape + " container").c_str());
+    check_finite(c.corner2, loc, (shape + " container").c_str());
+    check_finite(c.center, loc, (shape + " container").c_str());
+    check_finite(c.radius, loc, (shape + " container radius").c_str());
+}
+
 class Validator {
 public:
     explicit Validator(const Scene& s) : scene_(s) {}
@@ -222,10 +229,7 @@ private:
     void shape(const Isosurface& s, const FileLoc& loc) {
         if (s.function < 0 || s.function >= static_cast<int>(scene_.functions.size()))
             fail(loc, "isosurface function out of range");
-        check_finite(s.corner1, loc, "isosurface container");
-        check_finite(s.corner2, loc, "isosurface container");
-        check_finite(s.center, loc, "isosurface container");
-        check_finite(s.radius, loc, "isosurface container radius");
+        container(s.container, loc, "isosurface");
         check_finite(s.threshold, loc, "isosurface threshold");
         if (!(s.accuracy > 0) || !(s.max_gradient > 0) || !std::isfinite(s.accuracy) ||
             !std::isfinite(s.max_gradient) || s.max_trace < 1)
@@ -256,10 +260,7 @@ private:
         check_finite(s.uv_min.y, loc, "parametric uv range");
         check_finite(s.uv_max.x, loc, "parametric uv range");
         check_finite(s.uv_max.y, loc, "parametric uv range");
-        check_finite(s.corner1, loc, "parametric container");
-        check_finite(s.corner2, loc, "parametric container");
-        check_finite(s.center, loc, "parametric container");
-        check_finite(s.radius, loc, "parametric container radius");
+        container(s.container, loc, "parametric");
         if (!(s.accuracy > 0) || !(s.max_gradient > 0) || !std::isfinite(s.accuracy) ||
             !std::isfinite(s.max_gradient))
             fail(loc, "parametric accuracy and max_gradient must be positive");

@@ -195,9 +195,9 @@ TEST(IsosurfaceParser, IntoTheIrAndMessages) {
         "test.pov", {}, diag);
     ASSERT_EQ(sc.objects.size(), 1u);
     const auto& s = std::get<scene::Isosurface>(sc.objects[0].shape);
-    EXPECT_TRUE(s.sphere);
-    EXPECT_EQ(s.center, Vec3(1, 2, 3));
-    EXPECT_EQ(s.radius, 4);
+    EXPECT_TRUE(s.container.sphere);
+    EXPECT_EQ(s.container.center, Vec3(1, 2, 3));
+    EXPECT_EQ(s.container.radius, 4);
     EXPECT_EQ(s.threshold, 0.25);
     EXPECT_EQ(s.accuracy, 0.01);
     EXPECT_EQ(s.max_gradient, 3);
@@ -208,8 +208,8 @@ TEST(IsosurfaceParser, IntoTheIrAndMessages) {
     EXPECT_GE(diag.warning_count(), 1);
     auto box = pov::testing::parse("isosurface { function { x } contained_by { box { 1, -1 } } }");
     const auto& b = std::get<scene::Isosurface>(box.objects.at(0).shape);
-    EXPECT_EQ(b.corner1, Vec3(-1, -1, -1));  // corners sorted
-    EXPECT_EQ(b.corner2, Vec3(1, 1, 1));
+    EXPECT_EQ(b.container.corner1, Vec3(-1, -1, -1));  // corners sorted
+    EXPECT_EQ(b.container.corner2, Vec3(1, 1, 1));
     EXPECT_EQ(pov::testing::error_of("isosurface { threshold 1 }"),
               "1:14: expected function after isosurface {, got 'threshold'");
 }

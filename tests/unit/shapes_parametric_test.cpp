@@ -150,17 +150,17 @@ TEST(ParametricParser, IntoTheIrAndMessages) {
     EXPECT_TRUE(s.precompute[0]);
     EXPECT_FALSE(s.precompute[1]);
     EXPECT_TRUE(s.precompute[2]);
-    EXPECT_TRUE(s.sphere);
-    EXPECT_EQ(s.center, Vec3(1, 2, 3));
-    EXPECT_EQ(s.radius, 4);
+    EXPECT_TRUE(s.container.sphere);
+    EXPECT_EQ(s.container.center, Vec3(1, 2, 3));
+    EXPECT_EQ(s.container.radius, 4);
     for (int f : s.function) EXPECT_GE(f, 0);
     // POV-Ray's defaults.
     auto d = parse("parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }");
     const auto& ds = std::get<scene::Parametric>(d.objects.at(0).shape);
     EXPECT_EQ(ds.accuracy, 0.001);
     EXPECT_EQ(ds.max_gradient, 1);
-    EXPECT_FALSE(ds.sphere);
-    EXPECT_EQ(ds.corner1, Vec3(-1, -1, -1));
+    EXPECT_FALSE(ds.container.sphere);
+    EXPECT_EQ(ds.container.corner1, Vec3(-1, -1, -1));
     EXPECT_EQ(ds.precompute_depth, 0);
     EXPECT_EQ(pov::testing::error_of(
                   "parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1>\n"

@@ -13,6 +13,7 @@
 #include <map>
 #include <string>
 
+#include "render/shapes/container.h"
 #include "render/shapes/shapes.h"
 #include "render/textures/pattern.h"
 #include "scene/scene.h"
@@ -22,7 +23,6 @@ namespace {
 
 constexpr double kEpsilon = 1e-10;        // POV-Ray's EPSILON
 constexpr double kBoundHuge = 2e10;       // BOUND_HUGE
-constexpr double kDepthTolerance = 1e-6;  // boxes.cpp DEPTH_TOLERANCE
 constexpr int kMaxHits = 12;              // max_trace (at most 10) + the container's two
 
 struct Sample {
@@ -41,13 +41,7 @@ public:
     IsosurfacePrim(const IsosurfacePrim&) = delete;
     IsosurfacePrim& operator=(const IsosurfacePrim&) = delete;
 
-    Bounds3 bounds() const override {
-        if (s_.sphere) {
-            const Vec3 r(s_.radius, s_.radius, s_.radius);
-            return {s_.center - r, s_.center + r};
-        }
-        return {s_.corner1, s_.corner2};
-    }
+    Bounds3 bounds() const override { return container_bounds(s_.container); }
 
     bool intersect(const Ray& ray, double tmax, LocalHit* hit) const override {
         Found found[kMaxHits];
@@ -89,11 +83,12 @@ public:
 
     // POV-Ray's IsoSurface::Inside: in the container (faces included) and f <= threshold.
     bool inside(const Vec3& p) const override {
-        if (s_.sphere) {
-            if (length_squared(s_.center - p) > s_.radius * s_.radius) return false;
+        const scene::Container& c = s_.container;
+        if (c.sphere) {
+            if (length_squared(c.center - p) > c.radius * c.radius) return false;
         } else {
             for (int i = 0; i < 3; ++i)
-                if (p[i] < s_.corner1[i] || p[i] > s_.corner2[i]) return false;
+                if (p[i] < c.corner1[i] || p[i] > c.corner2[i]) return false;
         }
         return !(value(p) > 0);
     }
@@ -129,48 +124,7 @@ private:
 
     // Box::Intersect / Sphere::Intersect as the isosurface uses them (a unit direction).
     bool container(const Ray& ray, double* t1, double* t2, int* side1, int* side2) const {
-        if (s_.sphere) {
-            const Vec3& d = ray.dir;
-            const Vec3 oc = s_.center - ray.origin;
-            const double oc2 = dot(oc, oc), closest = dot(oc, d), r2 = s_.radius * s_.radius;
-            if (oc2 >= r2 && closest < kEpsilon) return false;
-            const double half2 = r2 - oc2 + closest * closest;
-            if (!(half2 > kEpsilon)) return false;
-            const double half = std::sqrt(half2);
-            *t1 = closest - half;
-            *t2 = closest + half;
-            *side1 = *side2 = 0;
-            return true;
-        }
-        double tmin = 0, tmax = kBoundHuge;
-        int smin = 0, smax = 0;
-        for (int i = 0; i < 3; ++i) {
-            const double o = ray.origin[i], d = ray.dir[i];
-            const double lo = s_.corner1[i], hi = s_.corner2[i];
-            if (d < -kEpsilon || d > kEpsilon) {
-                const bool neg = d < 0;
-                const double t_far = ((neg ? lo : hi) - o) / d;
-                const double t_near = ((neg ? hi : lo) - o) / d;
-                if (t_far < tmin) return false;
-                if (t_far <= tmax) {
-                    tmax = t_far;
-                    smax = 2 * i + (neg ? 1 : 2);
-                }
-                if (t_near >= tmin) {
-                    if (t_near > tmax) return false;
-                    tmin = t_near;
-                    smin = 2 * i + (neg ? 2 : 1);
-                }
-            } else if (o < lo || o > hi || std::isnan(o)) {
-                return false;
-            }
-        }
-        if (tmax < kDepthTolerance) return false;
-        *t1 = tmin;
-        *t2 = tmax;
-        *side1 = smin;
-        *side2 = smax;
-        return true;
+        return container_interval(s_.container, ray.origin, ray.dir, t1, t2, side1, side2);
     }
 
     // IsoSurface::All_Intersections: up to max_trace roots (and the container's own surface
@@ -294,9 +248,9 @@ private:
             n[(side - 1) / 2] = (side % 2 == 1) ? -1 : 1;
             return n;
         }
-        if (s_.sphere) {
-            const Vec3 r = p - s_.center;
-            if (std::fabs(length(r) - s_.radius) < kEpsilon) return r / s_.radius;
+        if (s_.container.sphere) {
+            const Vec3 r = p - s_.container.center;
+            if (std::fabs(length(r) - s_.container.radius) < kEpsilon) return r / s_.container.radius;
         }
         const double f0 = raw(p), h = s_.accuracy;
         Vec3 g(raw(p + Vec3(h, 0, 0)) - f0, raw(p + Vec3(0, h, 0)) - f0,
@@ -364,8 +318,7 @@ std::unique_ptr<Primitive> make_isosurface(const scene::Isosurface& s, const sce
         *why = "isosurface of a vector (pigment, transform or spline) function";
         return nullptr;
     }
-    if (s.sphere ? !(s.radius > 0) : !(s.corner1.x <= s.corner2.x && s.corner1.y <= s.corner2.y &&
-                                        s.corner1.z <= s.corner2.z)) {
+    if (!s.container.valid()) {
         *why = "isosurface with an empty container";
         return nullptr;
     }

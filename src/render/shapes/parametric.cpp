@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "render/shapes/container.h"
 #include "render/shapes/shapes.h"
 #include "render/textures/pattern.h"
 #include "scene/scene.h"
@@ -25,8 +26,6 @@ namespace glint::render {
 namespace {
 
 constexpr double kEpsilon = 1e-10;        // POV-Ray's EPSILON
-constexpr double kBoundHuge = 2e10;       // BOUND_HUGE
-constexpr double kDepthTolerance = 1e-6;  // boxes.cpp DEPTH_TOLERANCE
 constexpr double kMinDepth = 1e-4;        // MIN_ISECT_DEPTH
 constexpr int kMaxSector = 10000000;      // fpmetric.cpp Max_intNumber
 constexpr int kStack = 64;                // POV-Ray's 32, which deep searches overrun
@@ -54,13 +53,7 @@ public:
     ParametricPrim(const ParametricPrim&) = delete;
     ParametricPrim& operator=(const ParametricPrim&) = delete;
 
-    Bounds3 bounds() const override {
-        if (s_.sphere) {
-            const Vec3 r(s_.radius, s_.radius, s_.radius);
-            return {s_.center - r, s_.center + r};
-        }
-        return {s_.corner1, s_.corner2};
-    }
+    Bounds3 bounds() const override { return container_bounds(s_.container); }
 
     bool intersect(const Ray& ray, double tmax, LocalHit* hit) const override {
         double t;
@@ -137,42 +130,14 @@ private:
         }
     }
 
-    // The container's interval along P + t D (Box::Intersect, Sphere::Intersect).
+    // The container's interval along P + t D (Box::Intersect with D as it is; Sphere::Intersect
+    // with D normalized, its depths scaled back).
     bool container(const Vec3& p, const Vec3& d, double* t1, double* t2) const {
-        if (s_.sphere) {
-            const double dl = length(d);
-            const Vec3 u = d / dl;
-            const Vec3 oc = s_.center - p;
-            const double oc2 = dot(oc, oc), closest = dot(oc, u), r2 = s_.radius * s_.radius;
-            if (oc2 >= r2 && closest < kEpsilon) return false;
-            const double half2 = r2 - oc2 + closest * closest;
-            if (!(half2 > kEpsilon)) return false;
-            const double half = std::sqrt(half2);
-            *t1 = (closest - half) / dl;
-            *t2 = (closest + half) / dl;
-            return true;
-        }
-        double tmin = 0, tmax = kBoundHuge;
-        for (int i = 0; i < 3; ++i) {
-            const double o = p[i], di = d[i];
-            const double lo = s_.corner1[i], hi = s_.corner2[i];
-            if (di < -kEpsilon || di > kEpsilon) {
-                const bool neg = di < 0;
-                const double t_far = ((neg ? lo : hi) - o) / di;
-                const double t_near = ((neg ? hi : lo) - o) / di;
-                if (t_far < tmin) return false;
-                if (t_far <= tmax) tmax = t_far;
-                if (t_near >= tmin) {
-                    if (t_near > tmax) return false;
-                    tmin = t_near;
-                }
-            } else if (o < lo || o > hi || std::isnan(o)) {
-                return false;
-            }
-        }
-        if (tmax < kDepthTolerance) return false;
-        *t1 = tmin;
-        *t2 = tmax;
+        if (!s_.container.sphere) return container_interval(s_.container, p, d, t1, t2);
+        const double dl = length(d);
+        if (!container_interval(s_.container, p, d / dl, t1, t2)) return false;
+        *t1 /= dl;
+        *t2 /= dl;
         return true;
     }
 
@@ -332,8 +297,7 @@ std::unique_ptr<Primitive> make_parametric(const scene::Parametric& s, const sce
             return nullptr;
         }
     }
-    if (s.sphere ? !(s.radius > 0) : !(s.corner1.x <= s.corner2.x && s.corner1.y <= s.corner2.y &&
-                                        s.corner1.z <= s.corner2.z)) {
+    if (!s.container.valid()) {
         *why = "parametric with an empty container";
         return nullptr;
     }
