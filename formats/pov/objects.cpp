@@ -280,17 +280,20 @@ void Parser::parse_light_body(scene::Light& l, std::optional<PovObject>* looks_l
         } else if (w == "projected_through") {
             // Parse_Light_Source: one object with its modifiers (textures do not matter);
             // the light's later transforms move it too.
-            if (l.projected_through) fail("only one projected_through is allowed per light_source");
+            if (l.projected_through)
+                fail("only one projected_through is allowed per light_source");
             expect_open("projected_through");
             FileLoc po = loc();
             const Token& ot = next();
             PovObject obj;
-            if (!parse_object(ot, obj)) fail("expected an object in projected_through, got " + got(ot));
+            if (!parse_object(ot, obj))
+                fail("expected an object in projected_through, got " + got(ot));
             parse_object_mods(obj, "projected_through", po);
             // Placed where the light is placed: undo the transforms read so far, which
             // transform_light applies to the light (and to this object) at the end.
             apply_transform(obj, tr.inverse());
-            l.projected_through = std::make_shared<const scene::Object>(object_without_materials(obj));
+            l.projected_through =
+                std::make_shared<const scene::Object>(object_without_materials(obj));
         } else if (w == "looks_like") {
             unsupported("light_source '" + w + "'");
         } else {

@@ -1,7 +1,8 @@
 // The bodies of POV-Ray's spline, implicit and image solids (parse.cpp: Parse_Quadric,
 // Parse_Polygon, Parse_Prism, Parse_Lathe, Parse_Sor, Parse_Superellipsoid, Parse_Blob,
-// Parse_HField, Parse_Poly, Parse_Polynom, Parse_Sphere_Sweep, Parse_Parametric). Called by parse_object
-// (objects.cpp) after the opening brace; the object modifiers that follow are parsed there.
+// Parse_HField, Parse_Poly, Parse_Polynom, Parse_Sphere_Sweep, Parse_Parametric). Called by
+// parse_object (objects.cpp) after the opening brace; the object modifiers that follow are
+// parsed there.
 #pragma once
 
 #include <string>

@@ -339,7 +339,8 @@ TEST_F(ImageMapTest, ImagePatternIsTheGreyOrTheAlphaReadAsData) {
 
 TEST_F(ImageMapTest, ImagePatternParsesAsAContinuousPatternOfData) {
     auto s = pov::testing::parse("plane { y, 0 pigment { image_pattern { png \"" + path_ +
-                                 "\" use_alpha map_type 1 once } color_map { [0 rgb 0] [1 rgb 1] } } "
+                                 "\" use_alpha map_type 1 once } "
+                                 "color_map { [0 rgb 0] [1 rgb 1] } } "
                                  "normal { image_pattern { \"" + path_ + "\" } 0.5 } }");
     const scene::Texture& t = s.materials.back().texture;
     EXPECT_EQ(t.pigment.kind, scene::PatternKind::ImagePattern);

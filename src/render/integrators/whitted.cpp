@@ -314,8 +314,8 @@ Color Whitted::shade(const Ray& ray, const Hit& hit, double weight, const RaySta
         }
         return sum;
     }
-    return texture_colour(ray, hit, side_texture(mat, from_inside), pattern_point(hit, mat, n, ray.dir),
-                          n, weight, state, stack);
+    return texture_colour(ray, hit, side_texture(mat, from_inside),
+                          pattern_point(hit, mat, n, ray.dir), n, weight, state, stack);
 }
 
 Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Texture& tex,

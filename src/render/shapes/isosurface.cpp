@@ -248,9 +248,9 @@ private:
             n[(side - 1) / 2] = (side % 2 == 1) ? -1 : 1;
             return n;
         }
-        if (s_.container.sphere) {
-            const Vec3 r = p - s_.container.center;
-            if (std::fabs(length(r) - s_.container.radius) < kEpsilon) return r / s_.container.radius;
+        if (const scene::Container& c = s_.container; c.sphere) {
+            const Vec3 r = p - c.center;
+            if (std::fabs(length(r) - c.radius) < kEpsilon) return r / c.radius;
         }
         const double f0 = raw(p), h = s_.accuracy;
         Vec3 g(raw(p + Vec3(h, 0, 0)) - f0, raw(p + Vec3(0, h, 0)) - f0,

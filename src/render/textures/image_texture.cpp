@@ -186,7 +186,8 @@ void TextureCache::add(const scene::ImageMap& map) {
     KeyView k = key(map);
     auto it = images_.find(k);
     if (it == images_.end())
-        it = images_.emplace(Key{std::string(k.path), k.gamma, k.data}, ImageTexture::load(map, gamma_))
+        it = images_
+                 .emplace(Key{std::string(k.path), k.gamma, k.data}, ImageTexture::load(map, gamma_))
                  .first;
     // POV-Ray's parser reads the image and stops on these; glint reads images here.
     const ImageTexture& image = *it->second;
