@@ -2,6 +2,7 @@
 
 #include "render/prepare/pattern_objects.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace glint::render {
@@ -36,12 +37,10 @@ std::unique_ptr<PreparedScene> prepare_with(const scene::Scene& scene,
                                          scene.global.number_of_waves, &scene.functions,
                                          objects.get(), textures.get()};
     Camera camera(scene.camera, options.width, options.height, &scene.meshes, camera_patterns);
-    std::vector<std::unique_ptr<ObjectNode>> projected;
-    for (const scene::Light& l : scene.lights) {
-        if (!l.projected_through) continue;
-        projected.resize(scene.lights.size());
-        break;
-    }
+    const bool any_projected =
+        std::any_of(scene.lights.begin(), scene.lights.end(),
+                    [](const scene::Light& l) { return l.projected_through != nullptr; });
+    std::vector<std::unique_ptr<ObjectNode>> projected(any_projected ? scene.lights.size() : 0);
     for (size_t i = 0; i < projected.size(); ++i)
         if (const auto& o = scene.lights[i].projected_through)
             projected[i] = ObjectNode::build(*o, scene, diag ? *diag : quiet);
