@@ -335,6 +335,29 @@ TEST(Pattern, HugeAndNonFiniteCoordinatesStayDefined) {
     }
 }
 
+TEST(Pattern, SpecialNormalIsUnitLengthInsideItsWarpTransforms) {
+    // Warp_Normal normalizes the normal carried into the warped space, so the amount perturbs
+    // a unit normal: `bumps 0.6 scale 0.025 warp { turbulence ... }` (the scale becomes a
+    // transform warp before the turbulence) bumps as much as an unscaled one at the same
+    // pattern point (a uniform scale leaves normal directions alone).
+    const PatternContext ctx;
+    PatternParams scaled;
+    Warp w;
+    w.kind = WarpKind::Transform;
+    w.transform = Transform::scale(Vec3(0.025, 0.025, 0.025));
+    scaled.warps.push_back(w);
+    const PatternParams plain;
+    const Vec3 n = normalize(Vec3(0.1, 1, -0.2));
+    const Vec3 q(0.37, 1.21, -2.6);  // the point in pattern space
+    for (PatternKind k : {PatternKind::Bumps, PatternKind::Quilted, PatternKind::Wrinkles}) {
+        const Vec3 a = special_normal(k, scaled, q * 0.025, n, 0.6, ctx);
+        const Vec3 b = special_normal(k, plain, q, n, 0.6, ctx);
+        EXPECT_NEAR(a.x, b.x, 1e-9) << scene::pattern_name(k);
+        EXPECT_NEAR(a.y, b.y, 1e-9);
+        EXPECT_NEAR(a.z, b.z, 1e-9);
+    }
+}
+
 TEST(Pattern, SpecialNormalWithoutPerturbationKeepsTheNormal) {
     const PatternContext ctx;
     PatternParams pp;

@@ -723,10 +723,20 @@ bool has_special_normal(PatternKind kind) {
 
 Vec3 special_normal(PatternKind kind, const PatternParams& params, const Vec3& p_pattern,
                     const Vec3& normal, double amount, const PatternContext& ctx) {
-    // Warp_Normal: `warp { transform }` entries carry the normal into the warped space.
+    // Warp_Normal: `warp { transform }` entries (and transforms written before another warp)
+    // carry the normal into the warped space, where it is unit length again: the amount
+    // below perturbs a unit normal whatever the transforms' scale.
     Vec3 n = normal;
-    for (const Warp& w : params.warps)
-        if (w.kind == WarpKind::Transform) n = w.transform.inverse().normal(n);
+    bool warped = false;
+    for (const Warp& w : params.warps) {
+        if (w.kind != WarpKind::Transform) continue;
+        n = w.transform.inverse().normal(n);
+        warped = true;
+    }
+    if (warped) {
+        const double len = length(n);
+        if (len > 0.0) n = n / len;
+    }
     const Vec3 p = warp_point(kind, params, p_pattern);
     switch (kind) {
         case PatternKind::Bumps:
