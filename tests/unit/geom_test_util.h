@@ -1,9 +1,13 @@
 // Helpers for the geometry tests: one-object scenes and hit queries through build_geometry().
 #pragma once
 
+#include <algorithm>
 #include <memory>
+#include <vector>
 
+#include "core/log.h"
 #include "render/prepare/geometry.h"
+#include "render/shapes/object_node.h"
 #include "scene/features.h"
 #include "scene/scene.h"
 
@@ -62,5 +66,31 @@ inline scene::Mesh unit_cube_mesh(Vec3 lo = {}) {
 }
 
 inline render::Ray ray(Vec3 o, Vec3 d, double tmax = kInfinity) { return {o, d, tmax}; }
+
+// The object tree of one shape in an otherwise empty scene (null where it cannot be built).
+inline std::unique_ptr<render::ObjectNode> node_of(const scene::Shape& s, Transform xf = {}) {
+    const scene::Scene sc = scene_of({});
+    Diagnostics diag;
+    return render::ObjectNode::build(object(s, xf), sc, diag);
+}
+
+// POV-Ray's Inside through the object tree.
+inline bool inside(const scene::Shape& s, const Vec3& p) {
+    auto node = node_of(s);
+    return node && node->inside(p);
+}
+
+// Every hit depth along a ray (intersect_all), sorted.
+inline std::vector<double> hit_depths(const render::ObjectNode& node, const render::Ray& r) {
+    render::HitList hits;
+    node.intersect_all(r, kInfinity, &hits);
+    std::vector<double> t;
+    for (const auto& h : hits) t.push_back(h.t);
+    std::sort(t.begin(), t.end());
+    return t;
+}
+inline std::vector<double> hit_depths(const scene::Shape& s, const render::Ray& r) {
+    return hit_depths(*node_of(s), r);
+}
 
 }  // namespace glint::test

@@ -9,17 +9,12 @@
 #include "core/log.h"
 #include "render/render.h"
 #include "unit/pov_test_util.h"
+#include "unit/render_test_util.h"
 
 namespace glint::render {
 namespace {
 
-Image render_text(const std::string& text) {
-    RenderOptions o;
-    o.width = 40;
-    o.height = 40;
-    Diagnostics diag;
-    return render(pov::testing::parse(text), o, diag).image;
-}
+Image render_text(const std::string& text) { return test::render_pov(text); }
 
 // An orthographic view of the plane z = 0 over [-1, 1]^2, lit by ambient only.
 std::string plane_with(const std::string& pigment) {

@@ -8,17 +8,12 @@
 #include "core/log.h"
 #include "render/render.h"
 #include "unit/pov_test_util.h"
+#include "unit/render_test_util.h"
 
 namespace glint::render {
 namespace {
 
-Image render_text(const std::string& text) {
-    RenderOptions o;
-    o.width = 40;
-    o.height = 40;
-    Diagnostics diag;
-    return render(pov::testing::parse(text), o, diag).image;
-}
+Image render_text(const std::string& text) { return test::render_pov(text); }
 
 // The floor y = 0 over [-4, 4]^2 seen from above; a light straight above at height 10.
 std::string floor_scene(const std::string& light_items, const std::string& more = "") {

@@ -30,13 +30,7 @@ std::unique_ptr<render::ObjectNode> node_of(const scene::Scene& sc) {
 }
 
 std::vector<double> all_hits(const scene::Scene& sc, const render::Ray& r) {
-    auto node = node_of(sc);
-    render::HitList hits;
-    node->intersect_all(r, kInfinity, &hits);
-    std::vector<double> t;
-    for (const auto& h : hits) t.push_back(h.t);
-    std::sort(t.begin(), t.end());
-    return t;
+    return test::hit_depths(*node_of(sc), r);
 }
 
 TEST(Isosurface, SphereFunctionHitsTheSphere) {

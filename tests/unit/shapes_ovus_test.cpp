@@ -19,6 +19,8 @@ namespace {
 using render::Hit;
 using test::build_one;
 using test::ray;
+using test::inside;
+using test::node_of;
 
 scene::Ovus ovus(double bottom, double top) {
     scene::Ovus o;
@@ -31,22 +33,6 @@ scene::Ovus ovus(double bottom, double top) {
 // <-hp, vp> in the (h, y) half plane, between heights 0.125 and 1.375.
 constexpr double kVp = -0.125;
 const double kHp = std::sqrt(1 - kVp * kVp);
-
-std::unique_ptr<render::ObjectNode> node_of(const scene::Shape& s, Transform xf = {}) {
-    scene::Scene sc = test::scene_of({});
-    Diagnostics diag;
-    return render::ObjectNode::build(test::object(s, xf), sc, diag);
-}
-
-std::vector<double> all_hits(const scene::Shape& s, const render::Ray& r) {
-    auto node = node_of(s);
-    render::HitList hits;
-    node->intersect_all(r, kInfinity, &hits);
-    std::vector<double> t;
-    for (const auto& h : hits) t.push_back(h.t);
-    std::sort(t.begin(), t.end());
-    return t;
-}
 
 TEST(Ovus, BottomSphereTopSphereAndBand) {
     auto g = build_one(ovus(1, 0.5));
@@ -67,7 +53,7 @@ TEST(Ovus, BottomSphereTopSphereAndBand) {
     EXPECT_NEAR(h.ng.y, n.y, 1e-9);
     EXPECT_NEAR(h.ng.z, n.z, 1e-9);
     // Both crossings for CSG, and a miss beside it.
-    auto t = all_hits(ovus(1, 0.5), ray({0, 0.8, -5}, {0, 0, 1}));
+    auto t = test::hit_depths(ovus(1, 0.5), ray({0, 0.8, -5}, {0, 0, 1}));
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 5 - w, 1e-9);
     EXPECT_NEAR(t[1], 5 + w, 1e-9);

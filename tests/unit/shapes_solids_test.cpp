@@ -22,34 +22,12 @@ namespace {
 using render::Hit;
 using test::build_one;
 using test::ray;
+using test::inside;
 
 void expect_vec(const Vec3& a, const Vec3& b, double tol) {
     EXPECT_NEAR(a.x, b.x, tol);
     EXPECT_NEAR(a.y, b.y, tol);
     EXPECT_NEAR(a.z, b.z, tol);
-}
-
-// Inside test through the object tree (POV-Ray's Inside).
-bool inside(const scene::Shape& s, const Vec3& p) {
-    scene::Scene sc = test::scene_of({});
-    scene::Object o = test::object(s);
-    Diagnostics diag;
-    auto node = render::ObjectNode::build(o, sc, diag);
-    return node && node->inside(p);
-}
-
-// All hits along a ray, sorted.
-std::vector<double> all_hits(const scene::Shape& s, const render::Ray& r) {
-    scene::Scene sc = test::scene_of({});
-    scene::Object o = test::object(s);
-    Diagnostics diag;
-    auto node = render::ObjectNode::build(o, sc, diag);
-    render::HitList hits;
-    node->intersect_all(r, kInfinity, &hits);
-    std::vector<double> t;
-    for (const auto& h : hits) t.push_back(h.t);
-    std::sort(t.begin(), t.end());
-    return t;
 }
 
 // ---- quadric -----------------------------------------------------------------------------
@@ -109,7 +87,7 @@ TEST(Prism, LinearSweepSidesCapsInside) {
     ASSERT_TRUE(g->intersect(ray({0.2, 5, 0.3}, {0, -1, 0}), &h));
     EXPECT_NEAR(h.t, 4, 1e-12);
     expect_vec(h.ng, {0, 1, 0}, 1e-12);
-    EXPECT_EQ(all_hits(p, ray({-5, 0.5, 0}, {1, 0, 0})).size(), 2u);
+    EXPECT_EQ(test::hit_depths(p, ray({-5, 0.5, 0}, {1, 0, 0})).size(), 2u);
     EXPECT_TRUE(inside(p, {0, 0.5, 0}));
     EXPECT_FALSE(inside(p, {0, 1.5, 0}));
     EXPECT_FALSE(inside(p, {1.5, 0.5, 0}));
@@ -283,7 +261,7 @@ TEST(Blob, SphereAndCylinderComponents) {
     two.components.push_back(two.components[0]);
     two.components[1].center = {1, 0, 0};
     EXPECT_TRUE(inside(two, {0, 0, 0}));
-    EXPECT_EQ(all_hits(two, ray({-5, 0, 0}, {1, 0, 0})).size(), 2u);
+    EXPECT_EQ(test::hit_depths(two, ray({-5, 0, 0}, {1, 0, 0})).size(), 2u);
 }
 
 TEST(Blob, ComponentTexturesBlendByField) {
@@ -528,7 +506,7 @@ TEST(Poly, SphereAndTorusQuartic) {
     g = build_one(sc.objects[0].shape);
     ASSERT_TRUE(g->intersect(ray({-5, 0, 0}, {1, 0, 0}), &h));
     EXPECT_NEAR(h.t, 2.5, 1e-9);
-    EXPECT_EQ(all_hits(sc.objects[0].shape, ray({-5, 0, 0}, {1, 0, 0})).size(), 4u);
+    EXPECT_EQ(test::hit_depths(sc.objects[0].shape, ray({-5, 0, 0}, {1, 0, 0})).size(), 4u);
 }
 
 // ---- importer ----------------------------------------------------------------------------

@@ -17,33 +17,13 @@ namespace {
 using render::Hit;
 using test::build_one;
 using test::ray;
+using test::inside;
 
 scene::SphereSweep sweep(scene::SweepSpline spline, std::vector<scene::Sphere> spheres) {
     scene::SphereSweep s;
     s.spline = spline;
     s.spheres = std::move(spheres);
     return s;
-}
-
-bool inside(const scene::Shape& s, const Vec3& p) {
-    scene::Scene sc = test::scene_of({});
-    scene::Object o = test::object(s);
-    Diagnostics diag;
-    auto node = render::ObjectNode::build(o, sc, diag);
-    return node && node->inside(p);
-}
-
-std::vector<double> all_hits(const scene::Shape& s, const render::Ray& r) {
-    scene::Scene sc = test::scene_of({});
-    scene::Object o = test::object(s);
-    Diagnostics diag;
-    auto node = render::ObjectNode::build(o, sc, diag);
-    render::HitList hits;
-    node->intersect_all(r, kInfinity, &hits);
-    std::vector<double> t;
-    for (const auto& h : hits) t.push_back(h.t);
-    std::sort(t.begin(), t.end());
-    return t;
 }
 
 // The nearest hit of the ray o + t d (d unit) with the capsule of radius r around a..b, or
@@ -169,11 +149,11 @@ TEST(SphereSweep, LinearAllHitsAreTheCapsulesTwo) {
     auto s = sweep(scene::SweepSpline::Linear, {{{0, 0, 0}, 0.5}, {{2, 0, 0}, 0.5}});
     // Through the middle, across the axis and along it: one entry, one exit; the spheres and
     // discs inside the capsule are merged away.
-    auto t = all_hits(s, ray({1, 5, 0}, {0, -1, 0}));
+    auto t = test::hit_depths(s, ray({1, 5, 0}, {0, -1, 0}));
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[0], 4.5, 1e-9);
     EXPECT_NEAR(t[1], 5.5, 1e-9);
-    t = all_hits(s, ray({-5, 0.1, 0.1}, {1, 0, 0}));
+    t = test::hit_depths(s, ray({-5, 0.1, 0.1}, {1, 0, 0}));
     ASSERT_EQ(t.size(), 2u);
     EXPECT_NEAR(t[1] - t[0], 2 + 2 * std::sqrt(0.25 - 0.02), 1e-9);
 }

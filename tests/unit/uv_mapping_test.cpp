@@ -10,6 +10,7 @@
 #include "core/log.h"
 #include "render/render.h"
 #include "unit/pov_test_util.h"
+#include "unit/render_test_util.h"
 
 namespace glint::render {
 namespace {
@@ -17,13 +18,7 @@ namespace {
 using pov::testing::error_of;
 using pov::testing::parse;
 
-Image render_text(const std::string& text) {
-    RenderOptions o;
-    o.width = 40;
-    o.height = 40;
-    Diagnostics diag;
-    return render(parse(text), o, diag).image;
-}
+Image render_text(const std::string& text) { return test::render_pov(text); }
 
 // Looking down -z at the unit sphere: ambient-only, so the pixel is the pigment.
 std::string sphere_scene(const std::string& mods) {
