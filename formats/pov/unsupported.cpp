@@ -25,13 +25,4 @@ void skip_braced_block(Parser& p, const std::string& what) {
     }
 }
 
-PovObject skip_unsupported_object(Parser& p, const std::string& keyword, const FileLoc& at) {
-    warn_unsupported(p, keyword, at, "the object is left out");
-    skip_braced_block(p, keyword);
-    PovObject o;
-    o.obj.loc = at;
-    o.left_out = keyword;
-    return o;
-}
-
 }  // namespace glint::pov

@@ -13,7 +13,6 @@
 namespace glint::pov {
 
 class Parser;
-struct PovObject;
 
 // Which features were already reported. The standard include files count apart from the
 // scene's own: the CLI hides the includes' warnings, so a feature first met in an include
@@ -36,10 +35,5 @@ void warn_unsupported(Parser& p, const std::string& feature, const FileLoc& at,
 // Reads the `{ ... }` that comes next up to its matching '}' (directives and macros inside
 // still run, as they would in POV-Ray). `what` names the block in an "unterminated" error.
 void skip_braced_block(Parser& p, const std::string& what);
-
-// After the keyword of an object glint cannot render (none at present): warns,
-// reads over its block and returns an object marked left out (PovObject::left_out), which
-// CSG and the scene drop.
-PovObject skip_unsupported_object(Parser& p, const std::string& keyword, const FileLoc& at);
 
 }  // namespace glint::pov
