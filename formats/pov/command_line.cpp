@@ -265,7 +265,7 @@ void apply_pov_switch(const std::string& sw, PovSettings& s) {
         s.aa_depth = d;
     } else if (key == "J" || (key[0] == 'J' && key.size() > 1 &&
                               (std::isdigit(static_cast<unsigned char>(key[1])) || key[1] == '.'))) {
-        if (key.size() > 1) to_double(rest(1), sw);  // the amount: checked, not used
+        if (key.size() > 1) s.jitter_amount = std::clamp(to_double(rest(1), sw), 0.0, 1.0);
         s.jitter = on;
     } else if (starts_with(key, "F") &&
                (key.size() == 1 || std::isalpha(static_cast<unsigned char>(key[1])))) {
@@ -319,7 +319,7 @@ void apply_ini_option(const std::string& key_in, const std::string& value_in, Po
         if (m < 1 || m > 3) throw usage(what + ": sampling method must be 1, 2 or 3");
         s.sampling_method = m;
     } else if (key == "jitter") s.jitter = b();
-    else if (key == "jitter_amount") f();
+    else if (key == "jitter_amount") s.jitter_amount = std::clamp(f(), 0.0, 1.0);
     else if (key == "library_path") s.library_paths.push_back(value);
     else if (key == "clock") s.clock = f();
     else if (key == "initial_frame") s.initial_frame = i();

@@ -24,6 +24,7 @@ struct PovSettings {
     std::optional<int> aa_depth;         // +R
     std::optional<int> sampling_method;  // +AM
     std::optional<bool> jitter;          // +J / -J
+    std::optional<double> jitter_amount; // +J0.5, Jitter_Amount (POV-Ray clips it to [0, 1])
     std::vector<std::string> library_paths;  // +L (accumulates)
     std::optional<double> clock;             // +K
     std::optional<int> initial_frame, final_frame;      // +KFI, +KFF

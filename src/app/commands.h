@@ -20,6 +20,7 @@ struct RenderArgs {
     std::string aa = "none";
     int threads = 0;
     int aa_depth = 3;  // POV-Ray's +R (adaptive anti-aliasing recursion depth)
+    double aa_jitter = 1.0;  // --aa-jitter: POV-Ray's +J amount (0: -J)
     bool verbose = false;
     std::string progress;  // empty: bar on a terminal, none otherwise
     // Path tracer (--integrator path): samples per pixel, bounces, sampler seed, time limit.
@@ -53,7 +54,8 @@ struct RenderArgs {
     // glint's own flags, where given, win over them; `given` records which were.
     std::vector<std::string> pov_args;
     struct {
-        bool width = false, height = false, aa = false, threads = false, clock = false;
+        bool width = false, height = false, aa = false, aa_jitter = false, threads = false;
+        bool clock = false;
         bool integrator = false, spp = false, seed = false, max_depth = false;
     } given;
 };

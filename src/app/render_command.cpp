@@ -51,7 +51,8 @@ void parse_aa(const std::string& text, render::RenderOptions& options) {
     auto bad = [&](const std::string& why) {
         return Error(
             ErrorKind::Usage, {},
-            "--aa " + text + ": " + why + " (expected none, adaptive, adaptive:T or grid:N)");
+            "--aa " + text + ": " + why +
+                " (expected none, adaptive[:T], adaptive2[:T] or grid:N)");
     };
     std::string mode = text;
     std::string param;
@@ -64,8 +65,8 @@ void parse_aa(const std::string& text, render::RenderOptions& options) {
     if (mode == "none") {
         if (!param.empty()) throw bad("none takes no value");
         options.aa = render::AaMode::None;
-    } else if (mode == "adaptive") {
-        options.aa = render::AaMode::Adaptive;
+    } else if (mode == "adaptive" || mode == "adaptive2") {
+        options.aa = mode == "adaptive" ? render::AaMode::Adaptive : render::AaMode::Adaptive2;
         if (!param.empty()) {
             double t = std::strtod(param.c_str(), &end);
             if (*end != '\0' || !(t >= 0 && t <= 3)) throw bad("threshold must be in [0, 3]");
@@ -145,8 +146,15 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                     "Output image; format from the extension: png, exr, tif, hdr, jpg "
                     "(with POV-Ray options it may be left out: the scene's name with .png, as "
                     "POV-Ray names it)");
-    cmd->add_option("--aa", args.aa, "Anti-aliasing: none, adaptive[:T] (POV-Ray +A), grid:N")
+    cmd->add_option("--aa", args.aa,
+                    "Anti-aliasing: none, adaptive[:T] (POV-Ray +A, sampling method 1), "
+                    "adaptive2[:T] (+AM2, recursive), grid:N")
         ->capture_default_str();
+    cmd->add_option("--aa-jitter", args.aa_jitter,
+                    "Adaptive anti-aliasing: jitter of the sub-samples, as POV-Ray's +J amount "
+                    "(0 turns it off, as -J)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1.0));
     cmd->add_option("--threads", args.threads, "Worker threads (0: all hardware threads)")
         ->capture_default_str()
         ->check(CLI::Range(0, 4096));
@@ -222,6 +230,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
         args.given.width = cmd->count("--width") > 0;
         args.given.height = cmd->count("--height") > 0;
         args.given.aa = cmd->count("--aa") > 0;
+        args.given.aa_jitter = cmd->count("--aa-jitter") > 0;
         args.given.threads = cmd->count("--threads") > 0;
         args.given.clock = cmd->count("--clock") > 0;
         args.given.integrator = cmd->count("--integrator") > 0;
@@ -276,19 +285,22 @@ RenderArgs merge_pov_settings(const RenderArgs& args, const PovSettings& pov) {
     a.scene.declares = pov.declares;
     if (!args.given.aa && pov.antialias.value_or(false)) {
         int method = pov.sampling_method.value_or(1);
-        if (method != 1)
+        if (method > 2)
             warn("anti-aliasing sampling method " + std::to_string(method) +
-                 " (+AM" + std::to_string(method) + ") is not supported: using method 1");
-        if (pov.jitter.value_or(true))
-            warn("anti-aliasing jitter (+J, POV-Ray's default with +A) is not supported: "
-                 "sub-samples are not jittered, as with -J");
+                 " (+AM" + std::to_string(method) + ") is not a POV-Ray 3.7 method: using "
+                 "method 1");
         char buf[64];
-        std::snprintf(buf, sizeof buf, "adaptive:%.17g", pov.aa_threshold.value_or(0.3));
+        std::snprintf(buf, sizeof buf, "%s:%.17g", method == 2 ? "adaptive2" : "adaptive",
+                      pov.aa_threshold.value_or(0.3));
         a.aa = buf;
     } else if (!args.given.aa && pov.antialias) {
         a.aa = "none";
     }
     if (pov.aa_depth) a.aa_depth = *pov.aa_depth;
+    if (!args.given.aa_jitter && pov.jitter)
+        a.aa_jitter = *pov.jitter ? pov.jitter_amount.value_or(1.0) : 0.0;
+    else if (!args.given.aa_jitter && pov.jitter_amount)
+        a.aa_jitter = *pov.jitter_amount;
     if (a.output.empty()) {
         // POV-Ray's default: the scene's name with the format's extension, in the current
         // folder (or in the folder +O names, when it ends with a slash).
@@ -483,6 +495,7 @@ std::string job_settings(const RenderArgs& a) {
     for (const auto& [name, value] : a.scene.declares) s += ";declare " + name + "=" + num(value);
     s += ";size=" + std::to_string(a.scene.width) + "x" + std::to_string(a.scene.height);
     s += ";aa=" + a.aa + ";aa_depth=" + std::to_string(a.aa_depth);
+    if (a.aa != "none") s += ";aa_jitter=" + num(a.aa_jitter);
     s += ";integrator=" + a.integrator;
     if (a.integrator == "path" || a.integrator == "sppm")
         s += ";spp=" + std::to_string(a.spp) + ";max_depth=" + std::to_string(a.max_depth) +
@@ -545,6 +558,7 @@ int render_frame(const RenderArgs& args) {
     options.cancel = &cancel_flag();
     parse_aa(args.aa, options);
     options.aa_depth = args.aa_depth;
+    options.aa_jitter = args.aa_jitter;
     if (args.integrator == "path") options.integrator = render::IntegratorKind::Path;
     if (args.integrator == "sppm") options.integrator = render::IntegratorKind::Sppm;
     options.photons = args.photons;

@@ -6,59 +6,10 @@
 #include "core/error.h"
 #include "core/noise.h"
 #include "render/media/pov_media.h"
+#include "render/pov_jitter.h"
 
 namespace glint::render {
 namespace {
-
-// POV-Ray's jitter values (backend/support/jitter.cpp, JitterTable): 256 offsets in
-// [-0.5, 0.5], indexed through the noise hash table. Data, kept to the digit.
-constexpr float kJitter[256] = {
-    -0.500000f, 0.005890f,  0.011749f,  -0.490234f, 0.023468f,  -0.470703f, -0.480469f, 0.017609f,
-    0.046906f,  -0.447266f, -0.441406f, 0.056671f,  -0.460938f, 0.044952f,  0.035187f,  -0.466797f,
-    0.093781f,  -0.400391f, -0.394531f, 0.103546f,  -0.382813f, 0.123077f,  0.113312f,  -0.388672f,
-    -0.421875f, 0.084015f,  0.089874f,  -0.412109f, 0.070343f,  -0.423828f, -0.433594f, 0.064484f,
-    0.187531f,  -0.306641f, -0.300781f, 0.197296f,  -0.289063f, 0.216827f,  0.207062f,  -0.294922f,
-    -0.265625f, 0.240265f,  0.246124f,  -0.255859f, 0.226593f,  -0.267578f, -0.277344f, 0.220734f,
-    -0.343750f, 0.162140f,  0.167999f,  -0.333984f, 0.179718f,  -0.314453f, -0.324219f, 0.173859f,
-    0.140656f,  -0.353516f, -0.347656f, 0.150421f,  -0.367188f, 0.138702f,  0.128937f,  -0.373047f,
-    0.375031f,  -0.119141f, -0.113281f, 0.384796f,  -0.101563f, 0.404327f,  0.394562f,  -0.107422f,
-    -0.078125f, 0.427765f,  0.433624f,  -0.068359f, 0.414093f,  -0.080078f, -0.089844f, 0.408234f,
-    -0.031250f, 0.474640f,  0.480499f,  -0.021484f, 0.492218f,  -0.001953f, -0.011719f, 0.486359f,
-    0.453156f,  -0.041016f, -0.035156f, 0.462921f,  -0.054688f, 0.451202f,  0.441437f,  -0.060547f,
-    -0.187500f, 0.318390f,  0.324249f,  -0.177734f, 0.335968f,  -0.158203f, -0.167969f, 0.330109f,
-    0.359406f,  -0.134766f, -0.128906f, 0.369171f,  -0.148438f, 0.357452f,  0.347687f,  -0.154297f,
-    0.281281f,  -0.212891f, -0.207031f, 0.291046f,  -0.195313f, 0.310577f,  0.300812f,  -0.201172f,
-    -0.234375f, 0.271515f,  0.277374f,  -0.224609f, 0.257843f,  -0.236328f, -0.246094f, 0.251984f,
-    -0.249969f, 0.255859f,  0.261719f,  -0.240204f, 0.273438f,  -0.220673f, -0.230438f, 0.267578f,
-    0.296875f,  -0.197235f, -0.191376f, 0.306641f,  -0.210907f, 0.294922f,  0.285156f,  -0.216766f,
-    0.343750f,  -0.150360f, -0.144501f, 0.353516f,  -0.132782f, 0.373047f,  0.363281f,  -0.138641f,
-    -0.171844f, 0.333984f,  0.339844f,  -0.162079f, 0.320313f,  -0.173798f, -0.183563f, 0.314453f,
-    0.437500f,  -0.056610f, -0.050751f, 0.447266f,  -0.039032f, 0.466797f,  0.457031f,  -0.044891f,
-    -0.015594f, 0.490234f,  0.496094f,  -0.005829f, 0.476563f,  -0.017548f, -0.027313f, 0.470703f,
-    -0.093719f, 0.412109f,  0.417969f,  -0.083954f, 0.429688f,  -0.064423f, -0.074188f, 0.423828f,
-    0.390625f,  -0.103485f, -0.097626f, 0.400391f,  -0.117157f, 0.388672f,  0.378906f,  -0.123016f,
-    0.125000f,  -0.369110f, -0.363251f, 0.134766f,  -0.351532f, 0.154297f,  0.144531f,  -0.357391f,
-    -0.328094f, 0.177734f,  0.183594f,  -0.318329f, 0.164063f,  -0.330048f, -0.339813f, 0.158203f,
-    -0.281219f, 0.224609f,  0.230469f,  -0.271454f, 0.242188f,  -0.251923f, -0.261688f, 0.236328f,
-    0.203125f,  -0.290985f, -0.285126f, 0.212891f,  -0.304657f, 0.201172f,  0.191406f,  -0.310516f,
-    -0.437469f, 0.068359f,  0.074219f,  -0.427704f, 0.085938f,  -0.408173f, -0.417938f, 0.080078f,
-    0.109375f,  -0.384735f, -0.378876f, 0.119141f,  -0.398407f, 0.107422f,  0.097656f,  -0.404266f,
-    0.031250f,  -0.462860f, -0.457001f, 0.041016f,  -0.445282f, 0.060547f,  0.050781f,  -0.451141f,
-    -0.484344f, 0.021484f,  0.027344f,  -0.474579f, 0.007813f,  -0.486298f, -0.496063f, 0.001953f,
-};
-
-// POV-Ray's Jitter2d(DBL x, DBL y, jx, jy) (jitter.h): two offsets in [-0.5, 0.5] for a
-// position, from the hash of its coordinates scaled by the primes 1019 and 1021. The int
-// conversions truncate towards zero as C's do.
-void jitter2d(double x, double y, double* jx, double* jy) {
-    auto pick = [](double a, double b, double ka, double kb) {
-        const int i = noise_hash(static_cast<int>(a * ka) & 0xfff);
-        const int j = noise_hash((i ^ static_cast<int>(b * kb)) & 0xfff);
-        return static_cast<double>(kJitter[j & 0xff]);
-    };
-    *jx = pick(x, y, 1021.0, 1019.0);
-    *jy = pick(x, y, 1019.0, 1021.0);
-}
 
 // The aperture's standard grids (tracepixel.cpp): four points, then hexagonal grids of 7, 19
 // and 37 points, each with its jitter and its batch sizes. Data, kept to the digit.
@@ -200,7 +151,7 @@ std::optional<Ray> FocalBlur::ray(double x, double y, int number) const {
     }
     // JitterCameraRay sees the position after CreateCameraRay's move to the pixel centre.
     double jx, jy;
-    jitter2d(x + 0.5, y - 0.5, &jx, &jy);
+    pov_jitter2d(x + 0.5, y - 0.5, &jx, &jy);
     const double radius = ir_.focal_blur.aperture * 0.5;
     const Vec2& g = grid_[number];
     const double xlen = radius * (g.x + jx * max_jitter_ * 2.0);
@@ -231,7 +182,7 @@ Color FocalBlur::pixel(double x, double y, const std::function<Color(const Ray&)
             double dx = static_cast<double>(2 * dxi + 1) / (2 * kSubPixels) - 0.5;
             double dy = static_cast<double>(2 * dyi + 1) / (2 * kSubPixels) - 0.5;
             double jx, jy;
-            jitter2d(dx, dy, &jx, &jy);
+            pov_jitter2d(dx, dy, &jx, &jy);
             dx += (jx - 0.5) / kSubPixels;
             dy += (jy - 0.5) / kSubPixels;
             Color c;

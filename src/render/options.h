@@ -14,6 +14,7 @@ namespace glint::render {
 enum class AaMode {
     None,      // one ray through each pixel centre (POV-Ray -A)
     Adaptive,  // POV-Ray's sampling method 1 with threshold (+A0.3)
+    Adaptive2, // POV-Ray's sampling method 2: recursive corner subdivision (+AM2 +A0.3)
     Grid,      // N x N regular grid per pixel, box filtered
 };
 
@@ -44,6 +45,9 @@ struct RenderOptions {
     AaMode aa = AaMode::None;
     double aa_threshold = 0.3;  // POV-Ray's +A default
     int aa_depth = 3;           // POV-Ray's +R default
+    // Adaptive modes: the sub-samples' jitter as a fraction of their spacing (POV-Ray's +J
+    // amount: on with 1.0 by default; 0 is -J). Position-hashed, so deterministic.
+    double aa_jitter = 1.0;
     int grid_n = 2;
     int threads = 0;  // 0 = all hardware threads
     IntegratorKind integrator = IntegratorKind::Whitted;

@@ -7,8 +7,8 @@
 # Each scene is rendered from a temporary copy of its folder (scenes include local .inc files
 # and images; POV-Ray may only write under its working directory and /tmp) with the command of
 # VALIDATION.md: one thread, 320x240, no anti-aliasing (-A: one ray through each pixel centre);
-# and again with +A0.3 -J (sampling method 1, threshold 0.3, depth 3, jitter off: POV-Ray
-# jitters by default, which no other renderer can reproduce).
+# and again with +A0.3 (sampling method 1, threshold 0.3, depth 3, POV-Ray's default jitter
+# 1.0, which glint reproduces: it is a hash of the sub-sample's position).
 # A reference whose pixels did not change is left alone, so that a re-run does not rewrite
 # files only because POV-Ray stamps the render date into them; new files are stored without
 # that metadata.
@@ -29,7 +29,7 @@ while read -r name path; do
     if [ $# -gt 0 ] && [[ "$wanted" != *" $name "* ]]; then continue; fi
     for kind in plain aa; do
         if [ $kind = plain ]; then flags=(-A); ref="$here/ref/$name.png"
-        else flags=(+A0.3 -J); ref="$here/ref/aa/$name.png"; fi
+        else flags=(+A0.3); ref="$here/ref/aa/$name.png"; fi
         work=$(mktemp -d /tmp/glint-ref.XXXXXX)
         cp -r "$(dirname "$root/$path")"/. "$work"/
         if ! (cd "$work" && povray +I"$(basename "$path")" +Oref.png +W320 +H240 -D "${flags[@]}" \

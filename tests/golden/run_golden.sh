@@ -1,6 +1,6 @@
 #!/bin/bash
 # One golden test: render SCENE with glint exactly like the reference (320x240; no
-# anti-aliasing, or AA=adaptive:0.3 against POV-Ray's +A0.3 -J), then compare with the POV-Ray
+# anti-aliasing, or AA=adaptive:0.3 against POV-Ray's +A0.3), then compare with the POV-Ray
 # reference in 8-bit output space. Passes when >= 99% of pixels are within 2/255 in every
 # channel (VALIDATION.md "agrees"), or for scenes marked `// golden: close` when close.
 #

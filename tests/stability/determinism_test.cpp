@@ -1,7 +1,7 @@
 // VALIDATION.md case 18: the demo scene (reflection, refraction, shadows, image texture)
 // renders to the same film bit for bit with 1 and 2 threads, twice each; without anti-aliasing
-// and with POV-Ray's adaptive method (whose extra samples depend on neighbouring pixels, the
-// likelier place for tile order to leak in).
+// and with POV-Ray's adaptive methods 1 and 2 (whose extra samples depend on neighbouring
+// pixels and on jitter, the likelier places for tile order to leak in).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -42,6 +42,10 @@ TEST(StabilityDeterminism, SameFilmAtOneAndTwoThreads) {
 
 TEST(StabilityDeterminism, SameFilmAtOneAndTwoThreadsWithAdaptiveAa) {
     expect_same_at_one_and_two_threads(render::AaMode::Adaptive, "adaptive AA 0.3");
+}
+
+TEST(StabilityDeterminism, SameFilmAtOneAndTwoThreadsWithRecursiveAa) {
+    expect_same_at_one_and_two_threads(render::AaMode::Adaptive2, "adaptive AA method 2 0.3");
 }
 
 TEST(StabilityDeterminism, PathTracerSameFilmAtOneAndTwoThreads) {

@@ -76,6 +76,9 @@ TEST(PovSwitches, AntiAliasing) {
     EXPECT_EQ(off.antialias, false);
     EXPECT_FALSE(off.aa_threshold.has_value());
     EXPECT_EQ(parse({"+J0.5"}).jitter, true);
+    EXPECT_DOUBLE_EQ(*parse({"+J0.5"}).jitter_amount, 0.5);
+    EXPECT_DOUBLE_EQ(*parse({"+J3"}).jitter_amount, 1.0);  // POV-Ray clips it to [0, 1]
+    EXPECT_FALSE(parse({"+J"}).jitter_amount.has_value());
     EXPECT_EQ(usage_error({"+AM4"}), "+AM4: sampling method must be 1, 2 or 3");
     EXPECT_EQ(usage_error({"+A5"}), "+A5: threshold must be in [0, 3]");
 }
@@ -347,6 +350,29 @@ TEST(PovCliEndToEnd, SwitchesRenderLikeGlintFlags) {
     GlintRun bad = run_glint(t, "render scene.pov +Zap");
     EXPECT_EQ(bad.exit_code, 1);
     EXPECT_NE(bad.err.find("unknown POV-Ray option '+Zap'"), std::string::npos) << bad.err;
+}
+
+// +A, +AM2 and +J map onto --aa and --aa-jitter; POV-Ray's default jitter moves sub-samples.
+TEST(PovCliEndToEnd, AntiAliasingSwitchesRenderLikeGlintFlags) {
+    TempDir t("e2e_aa");
+    t.write("scene.pov", kScene);
+    auto same = [&](const std::string& pov_flags, const std::string& glint_flags) {
+        GlintRun a = run_glint(t, "render scene.pov -o a.png -W 40 -H 30 " + pov_flags);
+        GlintRun b = run_glint(t, "render scene.pov -o b.png -W 40 -H 30 " + glint_flags);
+        EXPECT_EQ(a.exit_code, 0) << a.err;
+        EXPECT_EQ(b.exit_code, 0) << b.err;
+        return glint::io::read_rgb8(t.path("a.png")).rgb == glint::io::read_rgb8(t.path("b.png")).rgb;
+    };
+    EXPECT_TRUE(same("+A0.1", "--aa adaptive:0.1"));  // jitter 1.0 on both sides
+    EXPECT_TRUE(same("+A0.1 -J", "--aa adaptive:0.1 --aa-jitter 0"));
+    EXPECT_TRUE(same("+A0.1 +J0.5", "--aa adaptive:0.1 --aa-jitter 0.5"));
+    EXPECT_TRUE(same("+A0.1 +AM2 +R2", "--aa adaptive2:0.1 +R2"));
+    EXPECT_FALSE(same("+A0.1", "--aa adaptive:0.1 --aa-jitter 0"));
+    EXPECT_FALSE(same("+A0.1 +AM2", "--aa adaptive:0.1"));
+    GlintRun am3 = run_glint(t, "render scene.pov -o c.png -W 8 -H 6 +A +AM3");
+    EXPECT_EQ(am3.exit_code, 0) << am3.err;
+    EXPECT_NE(am3.err.find("sampling method 3 (+AM3) is not a POV-Ray 3.7 method"),
+              std::string::npos) << am3.err;
 }
 
 TEST(PovCliEndToEnd, IniAnimationWritesNumberedFrames) {

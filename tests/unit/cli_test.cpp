@@ -192,6 +192,8 @@ TEST_F(CliTest, RenderRejectsBadFlags) {
     EXPECT_EQ(run(base + "--aa bogus").exit_code, 1);
     EXPECT_EQ(run(base + "--aa grid:0").exit_code, 1);
     EXPECT_EQ(run(base + "--aa adaptive:x").exit_code, 1);
+    EXPECT_EQ(run(base + "--aa adaptive2:9").exit_code, 1);
+    EXPECT_EQ(run(base + "--aa adaptive --aa-jitter 2").exit_code, 1);
     EXPECT_EQ(run(base + "--width 0").exit_code, 1);
     EXPECT_EQ(run(base + "--progress sometimes").exit_code, 1);
     EXPECT_EQ(run(base + "--threads -1").exit_code, 1);

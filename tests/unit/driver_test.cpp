@@ -25,7 +25,7 @@ Color busy(const Ray& r, const SampleId& = {}) {
 
 TEST(Driver, OneAndTwoThreadsGiveIdenticalBits) {
     Camera cam(test_camera(), 97, 61);
-    for (AaMode aa : {AaMode::None, AaMode::Adaptive, AaMode::Grid}) {
+    for (AaMode aa : {AaMode::None, AaMode::Adaptive, AaMode::Adaptive2, AaMode::Grid}) {
         RenderOptions o;
         o.width = 97;
         o.height = 61;
@@ -150,6 +150,7 @@ TEST(Driver, AdaptiveSupersamplesOnlyEdges) {
     o.height = 20;
     o.aa = AaMode::Adaptive;
     o.aa_depth = 3;
+    o.aa_jitter = 0;  // -J: the sub-samples on their grid
     // Edge inside pixel column 10 (not on a pixel boundary).
     double edge_sx = (10 + 0.5 + 0.2) / 33.0 - 0.5;
     RadianceFn step = [edge_sx](const Ray& r, const SampleId&) {
@@ -163,6 +164,76 @@ TEST(Driver, AdaptiveSupersamplesOnlyEdges) {
     EXPECT_NEAR(img.pixel(11, 7)[0], 1.0f, 1e-6);
     EXPECT_FLOAT_EQ(img.pixel(3, 7)[0], 0.0f);
     EXPECT_FLOAT_EQ(img.pixel(20, 7)[0], 1.0f);
+}
+
+// The raster x of a ray of test_camera() on a 33-pixel-wide image (the inverse of its
+// projection: right vector 1.33, pixel centres at integers).
+double raster_x(const Ray& r) { return (r.dir.x / r.dir.z / 1.33 + 0.5) * 33.0 - 0.5; }
+
+// POV-Ray's default jitter (+J1.0) moves each of method 1's sub-samples within its own cell
+// of the aa_depth grid (by at most half a cell), not the pixel's first sample; every pixel
+// still gets the same samples whatever the thread.
+TEST(Driver, AdaptiveJitterStaysInsideEachSubsampleCell) {
+    Camera cam(test_camera(), 33, 20);
+    RenderOptions o;
+    o.width = 33;
+    o.height = 20;
+    o.aa = AaMode::Adaptive;
+    o.aa_depth = 3;
+    o.threads = 1;
+    ASSERT_EQ(o.aa_jitter, 1.0);  // POV-Ray's default
+    const double edge = 10.2;
+    std::mutex m;
+    int subsamples = 0, moved = 0, outside = 0, centre_moved = 0;
+    RadianceFn step = [&](const Ray& r, const SampleId& id) {
+        const double x = raster_x(r);
+        std::lock_guard<std::mutex> lock(m);
+        if (id.index == 0) {
+            centre_moved += std::fabs(x - id.x) > 1e-9;
+        } else {
+            ++subsamples;
+            const int i = static_cast<int>((id.index - 1) % 3);
+            const double cell = id.x - 1.0 / 3.0 + i / 3.0;  // the unjittered column
+            moved += std::fabs(x - cell) > 1e-9;
+            outside += std::fabs(x - cell) > 0.5 / 3.0 + 1e-9;
+        }
+        return x < edge ? Color(0.0) : Color(1.0);
+    };
+    Image img = run_tiles(cam, o, {}, step);
+    EXPECT_GT(subsamples, 0);
+    EXPECT_GT(moved, subsamples / 2);
+    EXPECT_EQ(outside, 0);
+    EXPECT_EQ(centre_moved, 0);
+    // Pixel 10 is still a mix of both sides, its neighbours are not.
+    EXPECT_GT(img.pixel(10, 7)[0], 0.05f);
+    EXPECT_LT(img.pixel(10, 7)[0], 0.95f);
+    EXPECT_FLOAT_EQ(img.pixel(3, 7)[0], 0.0f);
+    EXPECT_FLOAT_EQ(img.pixel(20, 7)[0], 1.0f);
+}
+
+// Sampling method 2 splits a pixel from its four corners while they differ, aa_depth - 1
+// times: with the edge at x = 10.2, pixel 10 (corners at 9.5 and 10.5) splits, its left
+// quarters (9.5 .. 10.0) are 0, its right ones split again at 10.25 into 0.5 and 1:
+// (0 + 0 + 0.75 + 0.75) / 4.
+TEST(Driver, Adaptive2SubdividesFromTheCorners) {
+    Camera cam(test_camera(), 33, 20);
+    RenderOptions o;
+    o.width = 33;
+    o.height = 20;
+    o.aa = AaMode::Adaptive2;
+    o.aa_depth = 3;
+    o.aa_jitter = 0;
+    RadianceFn step = [](const Ray& r, const SampleId&) {
+        return raster_x(r) < 10.2 ? Color(0.0) : Color(1.0);
+    };
+    Image img = run_tiles(cam, o, {}, step);
+    EXPECT_NEAR(img.pixel(10, 7)[0], 0.375f, 1e-6);
+    EXPECT_FLOAT_EQ(img.pixel(11, 7)[0], 1.0f);
+    EXPECT_FLOAT_EQ(img.pixel(9, 7)[0], 0.0f);
+    // aa_depth 1 allows no split: the mean of the four corners.
+    o.aa_depth = 1;
+    img = run_tiles(cam, o, {}, step);
+    EXPECT_NEAR(img.pixel(10, 7)[0], 0.5f, 1e-6);
 }
 
 }  // namespace
@@ -190,17 +261,17 @@ TEST(Driver, RegionsAreTheWholeRendersPixels) {
     Camera cam(test_camera(), 97, 61);
     const Region regions[] = {{0, 0, 97, 61}, {13, 5, 71, 40}, {31, 31, 33, 33},
                               {96, 60, 97, 61}, {0, 32, 64, 61}, {50, 0, 51, 61}};
-    for (AaMode aa : {AaMode::None, AaMode::Adaptive, AaMode::Grid}) {
+    for (AaMode aa : {AaMode::None, AaMode::Adaptive, AaMode::Adaptive2, AaMode::Grid}) {
         RenderOptions o;
         o.width = 97;
         o.height = 61;
         o.aa = aa;
         o.threads = 2;
         const Image full = run_tiles(cam, o, {}, busy);
+        const char* names[] = {"none", "adaptive", "adaptive2", "grid"};
         for (const Region& r : regions) {
             o.region = r;
-            expect_crop(full, run_tiles(cam, o, {}, busy), r,
-                        aa == AaMode::None ? "none" : aa == AaMode::Adaptive ? "adaptive" : "grid");
+            expect_crop(full, run_tiles(cam, o, {}, busy), r, names[static_cast<int>(aa)]);
         }
         o.region = {};
     }

@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "render/focal_blur.h"
+#include "render/pov_jitter.h"
 #include "render/sampling/sampler.h"
 
 namespace glint::render {
@@ -70,6 +71,7 @@ public:
             case AaMode::None: return none(t);
             case AaMode::Grid: return grid(t);
             case AaMode::Adaptive: return adaptive(t);
+            case AaMode::Adaptive2: return adaptive2(t);
         }
         return false;
     }
@@ -155,15 +157,31 @@ private:
         return d >= opt_.aa_threshold;
     }
 
-    // SupersampleOnePixel: aa_depth x aa_depth grid plus the centre sample, averaged.
+    // Sample `index` of pixel (px, py) at raster position (x, y), moved by POV-Ray's jitter
+    // of that position times `scale` (no move at scale 0).
+    Color jittered(double x, double y, double scale, int px, int py, uint32_t index) const {
+        if (scale > 0.0) {
+            double rx, ry;
+            pov_jitter2d(x, y, &rx, &ry);
+            x += rx * scale;
+            y += ry * scale;
+        }
+        return sample(x, y, px, py, index);
+    }
+
+    // SupersampleOnePixel: aa_depth x aa_depth grid plus the centre sample, averaged. The loop
+    // is POV-Ray's, offsets accumulated as it adds them, because the jitter hashes the exact
+    // position (an offset a rounding away lands in another hash cell).
     void supersample(int x, int y, Color* col) const {
-        int depth = std::max(1, opt_.aa_depth);
-        double step = 1.0 / depth;
-        double range = 0.5 - step * 0.5;
-        for (int j = 0; j < depth; ++j)
-            for (int i = 0; i < depth; ++i)
-                *col += sample(x - range + i * step, y - range + j * step, x, y,
-                               static_cast<uint32_t>(1 + j * depth + i));
+        const int depth = std::max(1, opt_.aa_depth);
+        const double step = 1.0 / depth;
+        const double range = 0.5 - step * 0.5;
+        const double scale = opt_.aa_jitter / depth;
+        constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON
+        uint32_t index = 1;
+        for (double yy = -range; yy <= range + kEpsilon; yy += step)
+            for (double xx = -range; xx <= range + kEpsilon; xx += step)
+                *col += jittered(x + xx, y + yy, scale, x, y, index++);
         *col = *col / static_cast<double>(depth * depth + 1);
     }
 
@@ -205,6 +223,88 @@ private:
         const Tile kept = clip(t, region_);
         for (int y = kept.y0; y < kept.y1; ++y)
             for (int x = kept.x0; x < kept.x1; ++x) store(x, y, px[at(x, y)]);
+        return true;
+    }
+
+    // The samples of one pixel under sampling method 2: a (2^depth + 1)^2 grid over the pixel,
+    // corner (0, 0) at its upper-left corner, filled as subdivision asks.
+    struct SubdivisionGrid {
+        int size;
+        std::vector<Color> color;
+        std::vector<char> taken;
+        explicit SubdivisionGrid(int n)
+            : size(n), color(static_cast<size_t>(n) * n), taken(static_cast<size_t>(n) * n) {}
+        size_t at(int bx, int by) const { return static_cast<size_t>(by) * size + bx; }
+        void set(int bx, int by, const Color& c) {
+            color[at(bx, by)] = c;
+            taken[at(bx, by)] = 1;
+        }
+    };
+
+    // SubdivideOnePixel: the square of side 2d around (x, y), its corners at grid cells
+    // (bx, by) .. (bx + step, by + step), is split in four (its edge midpoints and centre
+    // traced, jittered) while `level` allows and any two corners differ; the result is the
+    // mean of the quarters, or of the corners.
+    void subdivide(double x, double y, double d, int bx, int by, int step, SubdivisionGrid& g,
+                   Color* result, int level, int px, int py) const {
+        const Color c00 = g.color[g.at(bx, by)], c02 = g.color[g.at(bx, by + step)];
+        const Color c20 = g.color[g.at(bx + step, by)];
+        const Color c22 = g.color[g.at(bx + step, by + step)];
+        const bool split = level > 0 && (differs(c00, c02) || differs(c00, c20) ||
+                                         differs(c00, c22) || differs(c02, c20) ||
+                                         differs(c02, c22) || differs(c20, c22));
+        if (!split) {
+            *result = (c00 + c02 + c20 + c22) / 4.0;
+            return;
+        }
+        const int half = step / 2;
+        const double scale = opt_.aa_jitter / ((1 << std::max(1, opt_.aa_depth)) + 1);
+        auto take = [&](int cx, int cy, double sx, double sy) {
+            if (g.taken[g.at(cx, cy)]) return;
+            g.set(cx, cy, jittered(sx, sy, scale, px, py, static_cast<uint32_t>(1 + g.at(cx, cy))));
+        };
+        take(bx, by + half, x - d, y);
+        take(bx + half, by, x, y - d);
+        take(bx + step, by + half, x + d, y);
+        take(bx + half, by + step, x, y + d);
+        take(bx + half, by + half, x, y);
+        const double d2 = d * 0.5;
+        Color r00, r01, r10, r11;
+        subdivide(x - d2, y - d2, d2, bx, by, half, g, &r00, level - 1, px, py);
+        subdivide(x - d2, y + d2, d2, bx, by + half, half, g, &r01, level - 1, px, py);
+        subdivide(x + d2, y - d2, d2, bx + half, by, half, g, &r10, level - 1, px, py);
+        subdivide(x + d2, y + d2, d2, bx + half, by + half, half, g, &r11, level - 1, px, py);
+        *result = (r00 + r01 + r10 + r11) / 4.0;
+    }
+
+    // POV-Ray's sampling method 2 (tracetask.cpp AdaptiveSupersamplingM2): the pixels'
+    // corners are traced unjittered, then each pixel is subdivided from its four corners
+    // alone, so a pixel depends on no neighbour and the region needs no whole block.
+    bool adaptive2(const Tile& tile) const {
+        const Tile t = clip(tile, region_);
+        const int depth = std::max(1, opt_.aa_depth);
+        const int w = t.x1 - t.x0 + 1;
+        std::vector<Color> corner(static_cast<size_t>(w) * (t.y1 - t.y0 + 1));
+        auto at = [&](int x, int y) -> size_t { return static_cast<size_t>(y - t.y0) * w + (x - t.x0); };
+        for (int y = t.y0; y <= t.y1; ++y) {
+            if (cancelled()) return false;
+            for (int x = t.x0; x <= t.x1; ++x) corner[at(x, y)] = sample(x - 0.5, y - 0.5, x, y, 0);
+        }
+        SubdivisionGrid g((1 << depth) + 1);
+        const int n = g.size - 1;
+        for (int y = t.y0; y < t.y1; ++y) {
+            if (cancelled()) return false;
+            for (int x = t.x0; x < t.x1; ++x) {
+                std::fill(g.taken.begin(), g.taken.end(), 0);
+                g.set(0, 0, corner[at(x, y)]);
+                g.set(0, n, corner[at(x, y + 1)]);
+                g.set(n, 0, corner[at(x + 1, y)]);
+                g.set(n, n, corner[at(x + 1, y + 1)]);
+                Color c;
+                subdivide(x, y, 0.5, 0, 0, n, g, &c, depth - 1, x, y);
+                store(x, y, c);
+            }
+        }
         return true;
     }
 
