@@ -1,7 +1,8 @@
 // POV-Ray's object-level `uv_mapping` (the object's UV_FLAG): every texture of the object is
 // evaluated at (u, v, 0), the object's later transforms leave its textures alone, CSG
 // children that inherit the texture inherit the mapping, and it must come before the
-// texture. Shapes without a uv of their own give the world point's x and y.
+// texture. Shapes without a uv of their own give the world point's x and y; mesh faces
+// without uv_vectors (0, 0).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -82,6 +83,23 @@ TEST(UvMapping, ShapesWithoutUvUseTheWorldXAndY) {
     EXPECT_FLOAT_EQ(uv.pixel(20, 10)[0], 0.0f);
     EXPECT_FLOAT_EQ(uv.pixel(20, 15)[0], 0.0f);
     EXPECT_NE(world.pixel(20, 10)[0], world.pixel(20, 15)[0]);
+}
+
+TEST(UvMapping, MeshFacesWithoutUvVectorsAreAtTheOrigin) {
+    // POV-Ray gives a mesh triangle without uv_vectors the uv (0, 0) at every corner, not the
+    // world x, y: gradient x under uv_mapping reads 0 across the left face, while the right
+    // face's uv_vectors run u from 0 to 1 over it.
+    const std::string scene =
+        "#version 3.7;\n"
+        "camera { orthographic location <0, 0, -5> look_at 0 right 4*x up 4*y }\n"
+        "mesh { triangle { <-2, -2, 0>, <0, -2, 0>, <0, 2, 0> }\n"
+        "       triangle { <0, -2, 0>, <2, -2, 0>, <2, 2, 0> uv_vectors <0, 0>, <1, 0>, <1, 0> }\n"
+        "       uv_mapping pigment { gradient x } finish { ambient 1 diffuse 0 } }\n";
+    const Image img = render_text(scene);
+    EXPECT_FLOAT_EQ(img.pixel(5, 35)[0], 0.0f);   // x = -1.5
+    EXPECT_FLOAT_EQ(img.pixel(15, 35)[0], 0.0f);  // x = -0.5 (world x would be 0.5)
+    EXPECT_NEAR(img.pixel(25, 35)[0], 0.25f, 0.03f);  // x = 0.5: u = 0.25
+    EXPECT_NEAR(img.pixel(35, 35)[0], 0.75f, 0.03f);  // x = 1.5: u = 0.75
 }
 
 }  // namespace

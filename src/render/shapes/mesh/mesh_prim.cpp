@@ -234,10 +234,12 @@ private:
                 h->n = interpolated_normal(normals_[ni[0]], normals_[ni[1]], normals_[ni[2]],
                                            th.b, h->ng);
         }
+        // A face without uv_vectors has uv (0, 0), as POV-Ray gives a mesh without them (and
+        // Cycles a mesh without a UV map), not the world x, y of shapes with no uv at all.
+        h->has_uv = true;
         if (!uvs_.empty()) {
             const auto& ui = uvidx_[at];
-            h->has_uv = ui[0] >= 0 && ui[1] >= 0 && ui[2] >= 0;
-            if (h->has_uv)
+            if (ui[0] >= 0 && ui[1] >= 0 && ui[2] >= 0)
                 interpolate_uv(p0, p1, p2, uvs_[ui[0]], uvs_[ui[1]], uvs_[ui[2]], th.b, h);
         }
         h->material = material_.empty() ? -1 : material_[at];
