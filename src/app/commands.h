@@ -28,6 +28,7 @@ struct RenderArgs {
     int spp = 16;
     int max_depth = 8;
     unsigned seed = 0;
+    bool no_light_tree = false;  // --no-light-tree
     double time_limit = 0;
     long photons = 0;             // --integrator sppm: photons per pass (0: one per pixel)
     double photon_radius = 2.0;   // --integrator sppm: initial radius in pixel footprints

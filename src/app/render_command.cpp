@@ -171,6 +171,9 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
         ->capture_default_str()
         ->check(CLI::Range(0, 4096));
     cmd->add_option("--seed", args.seed, "Path tracer: sampler seed")->capture_default_str();
+    cmd->add_flag("--no-light-tree", args.no_light_tree,
+                  "Path tracer: pick emitting objects by their power alone, not from the shading "
+                  "point by the light tree (for comparisons, as Cycles' Light Tree unchecked)");
     cmd->add_option("--photons", args.photons,
                     "sppm: photons per pass (0: one per pixel of the image)")
         ->capture_default_str()
@@ -499,8 +502,10 @@ std::string job_settings(const RenderArgs& a) {
     s += ";integrator=" + a.integrator;
     if (a.integrator == "path" || a.integrator == "sppm")
         s += ";spp=" + std::to_string(a.spp) + ";max_depth=" + std::to_string(a.max_depth) +
-             ";seed=" + std::to_string(a.seed) + ";time_limit=" + num(a.time_limit) +
-             ";aov=" + a.aov + ";variance=" + std::to_string(a.variance);
+             ";seed=" + std::to_string(a.seed) +
+             ";light_tree=" + std::to_string(!a.no_light_tree) +
+             ";time_limit=" + num(a.time_limit) + ";aov=" + a.aov +
+             ";variance=" + std::to_string(a.variance);
     if (a.integrator == "sppm")
         s += ";photons=" + std::to_string(a.photons) + ";photon_radius=" + num(a.photon_radius);
     if (a.animation_frame)
@@ -566,6 +571,7 @@ int render_frame(const RenderArgs& args) {
     options.spp = args.spp;
     options.max_depth = args.max_depth;
     options.seed = args.seed;
+    options.light_tree = !args.no_light_tree;
     options.time_limit = args.time_limit;
     const std::vector<std::string> aovs =
         args.aov.empty() ? std::vector<std::string>{} : parse_aov_list(args.aov);

@@ -71,6 +71,9 @@ struct RenderOptions {
     double filter_width = 1.5;
     // Path tracer: Cycles' clamping and Filter Glossy (0: off; integrators/path.h).
     double clamp_direct = 0, clamp_indirect = 0, filter_glossy = 0;
+    // Path tracer: emitters are picked per shading point by the light tree (lights/
+    // light_tree.h); off, by their power alone (Cycles' Light Tree unchecked).
+    bool light_tree = true;
     // Path tracer: Cycles' bounce limits per kind (Light Paths > Max Bounces; -1: none, the
     // CLI's default: max_depth alone limits the path).
     int diffuse_bounces = -1, glossy_bounces = -1, transmission_bounces = -1,

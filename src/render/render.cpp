@@ -112,6 +112,7 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
         ps.clamp_direct = options.clamp_direct;
         ps.clamp_indirect = options.clamp_indirect;
         ps.filter_glossy = options.filter_glossy;
+        ps.light_tree = options.light_tree;
         ps.diffuse_bounces = options.diffuse_bounces;
         ps.glossy_bounces = options.glossy_bounces;
         ps.transmission_bounces = options.transmission_bounces;

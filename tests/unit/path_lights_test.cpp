@@ -353,6 +353,96 @@ TEST(PathLights, NearTrianglesAreSampledBySolidAngle) {
     }
 }
 
+// The emitters' light tree: a mesh of 200 emitting triangles (one tree item, its triangles
+// chosen by area times emission) and 150 small separate squares (two triangles each, items of
+// their own). From a point just below the squares every sample's pdf is what emitter_pdf()
+// gives a BSDF hit at the same point, the near squares are picked far more often than their
+// share of the power, and the irradiance estimate matches the analytic value (both emitters
+// are rectangles parallel to the receiver).
+TEST(PathLights, LightTreeKeepsPdfsExactAndPrefersNearEmitters) {
+    scene::Scene s;
+    s.materials.push_back(emitter(1));
+    s.materials.push_back(emitter(3));
+    // The mesh: a 10 x 10 grid of quads (200 triangles) at y = 8, emission 3.
+    scene::Mesh grid;
+    for (int j = 0; j <= 10; ++j)
+        for (int i = 0; i <= 10; ++i) grid.positions.emplace_back(i - 5.0, 8.0, j - 5.0);
+    for (int j = 0; j < 10; ++j)
+        for (int i = 0; i < 10; ++i) {
+            const int a = j * 11 + i;
+            grid.faces.push_back({{a, a + 1, a + 12}});
+            grid.faces.push_back({{a, a + 12, a + 11}});
+        }
+    s.meshes.push_back(grid);
+    scene::Object mesh_obj;
+    mesh_obj.shape = scene::MeshRef{0};
+    mesh_obj.material = 1;
+    s.objects.push_back(mesh_obj);
+    // 150 squares 0.1 x 0.2 at y = 1 side by side: the strip x in [-7.5, 7.5], z in
+    // [-0.1, 0.1].
+    for (int k = 0; k < 150; ++k) {
+        const double x = -7.5 + 0.1 * k;
+        scene::Mesh sq;
+        sq.positions = {Vec3(x, 1, -0.1), Vec3(x + 0.1, 1, -0.1), Vec3(x + 0.1, 1, 0.1),
+                        Vec3(x, 1, 0.1)};
+        sq.faces.push_back({{0, 1, 2}});
+        sq.faces.push_back({{0, 2, 3}});
+        s.meshes.push_back(sq);
+        scene::Object o;
+        o.shape = scene::MeshRef{static_cast<int>(s.meshes.size()) - 1};
+        o.material = 0;
+        s.objects.push_back(o);
+    }
+    PathLights lights(s, {Color(1, 1, 1), Color(3, 3, 3)});
+    ASSERT_EQ(lights.count(), 1);
+    std::mt19937_64 rng(21);
+    std::uniform_real_distribution<double> U(0, 1);
+    const Vec3 p(-3.02, 0.8, 0.01);  // just below the squares near x = -3, facing up
+    int near_picks = 0;
+    double sum = 0, sum2 = 0;
+    const int n = 40000;
+    for (int i = 0; i < n; ++i) {
+        PathLightSample ls;
+        if (!lights.sample(0, p, {U(rng), U(rng)}, &ls)) continue;
+        const Vec3 q = p + ls.wi * ls.dist;
+        const bool on_mesh = std::fabs(q.y - 8) < 1e-9;
+        ASSERT_TRUE(on_mesh || std::fabs(q.y - 1) < 1e-9) << q.y;
+        const int object =
+            on_mesh ? 0
+                    : 1 + std::clamp(static_cast<int>(std::floor((q.x + 7.5) / 0.1)), 0, 149);
+        const double pdf = lights.emitter_pdf(object, p, q, Vec3(0, -1, 0),
+                                              on_mesh ? Color(3, 3, 3) : Color(1, 1, 1));
+        // (A point on the edge two squares share may be taken for either: skip those.)
+        const double edge = std::fabs(std::remainder(q.x + 7.5, 0.1));
+        if (on_mesh || edge > 1e-9) {
+            ASSERT_NEAR(pdf / ls.pdf, 1.0, 1e-6) << "object " << object << " at " << q.x;
+        }
+        near_picks += !on_mesh && std::fabs(q.x + 3) < 0.5;
+        const double e = ls.value.r * ls.wi.y;
+        sum += e;
+        sum2 += e * e;
+    }
+    // Irradiance under a rectangle parallel to the receiver at height h, corners relative to
+    // the point: the signed sum of its corners' quadrant integrals (radiance 1).
+    auto quadrant = [](double x, double z, double h) {
+        const double rx = std::sqrt(x * x + h * h), rz = std::sqrt(z * z + h * h);
+        return 0.5 * (x / rx * std::atan(z / rx) + z / rz * std::atan(x / rz));
+    };
+    auto rect = [&](double x0, double x1, double z0, double z1, double h) {
+        return quadrant(x1, z1, h) - quadrant(x0, z1, h) - quadrant(x1, z0, h) +
+               quadrant(x0, z0, h);
+    };
+    const double exact = rect(-7.5 - p.x, 7.5 - p.x, -0.1 - p.z, 0.1 - p.z, 1 - p.y) +
+                         3 * rect(-5 - p.x, 5 - p.x, -5 - p.z, 5 - p.z, 8 - p.y);
+    const double mean = sum / n;
+    const double se = std::sqrt(std::max(0.0, sum2 / n - mean * mean) / n);
+    std::printf("light tree: E = %.5f +- %.2g (analytic %.5f); squares within 0.5 of the "
+                "point: %.3f of the picks (%.4f of the power)\n",
+                mean, se, exact, static_cast<double>(near_picks) / n, 0.2 / 302.0);
+    EXPECT_NEAR(mean, exact, 4 * se);
+    EXPECT_GT(near_picks, n * 10 * (0.2 / 302.0));
+}
+
 // ---------------------------------------------------------------- environment
 
 // POV-Ray's spherical map_type 1 and Blender's world Environment Texture: texels Blender

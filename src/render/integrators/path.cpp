@@ -66,7 +66,7 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
     if (graphs_ && graphs_->world()) world = graphs_->world()->constant() ? 1 : 2;
     lights_.emplace(scene_, materials_.emission(),
                     [this](const Vec3& d) { return environment(d); }, prepared.textures.get(),
-                    world);
+                    world, settings.light_tree);
     setup_media();
 }
 

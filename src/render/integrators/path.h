@@ -38,6 +38,7 @@ struct PathSettings {
     double clamp_direct = 0;
     double clamp_indirect = 0;
     double filter_glossy = 0;
+    bool light_tree = true;  // RenderOptions::light_tree
     // Cycles' bounce limits by kind (-1: none): after a bounce that reaches its kind's limit,
     // the next hit adds its emission and the path ends there. A Blender scene's transparent
     // limit caps the pass-throughs (alpha, transparent closures) instead of kMaxAlphaSkips.

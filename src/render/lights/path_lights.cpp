@@ -114,7 +114,7 @@ double PathLights::tri_solid_angle(const Tri& t, const Vec3& p, Vec3 dirs[3]) {
 
 PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emission,
                        const EnvironmentDistribution::Radiance& environment,
-                       const TextureCache* textures, int world)
+                       const TextureCache* textures, int world, bool light_tree)
     : scene_(scene) {
     for (int i = 0; i < static_cast<int>(scene.lights.size()); ++i) {
         const scene::Light& l = scene.lights[i];
@@ -156,18 +156,51 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
         shapes_.insert(shapes_.end(), g.shapes.begin(), g.shapes.end());
     }
     if (!tris_.empty() || !shapes_.empty()) {
-        double sum = 0;
-        emitter_cdf_.reserve(tris_.size() + shapes_.size());
-        for (const Tri& t : tris_) {
-            sum += t.area * average(t.le);
-            emitter_cdf_.push_back(sum);
+        std::vector<LightTreeItem> items;
+        auto add_item = [&](EmitterItem::Kind kind, int index, const Bounds3& box, double power) {
+            items_.push_back({kind, index});
+            LightTreeItem it;
+            it.box = box;
+            it.power = power;  // two-sided emitters: every direction (theta_o = pi)
+            items.push_back(it);
+            return static_cast<int>(items_.size()) - 1;
+        };
+        auto tri_box = [](const Tri& t) {
+            Bounds3 b;
+            b.extend(t.p0);
+            b.extend(t.p0 + t.e1);
+            b.extend(t.p0 + t.e2);
+            return b;
+        };
+        tri_item_.assign(tris_.size(), -1);
+        shape_item_.assign(shapes_.size(), -1);
+        group_item_.assign(groups_.size(), -1);
+        tri_cdf_.assign(tris_.size(), 0.0);
+        group_weight_.assign(groups_.size(), 0.0);
+        for (int gi = 0; gi < static_cast<int>(groups_.size()); ++gi) {
+            const Group& grp = groups_[gi];
+            if (grp.tri_count > static_cast<int>(kMaxLocatableTris)) {
+                Bounds3 box;
+                double sum = 0;
+                for (int k = grp.first_tri; k < grp.first_tri + grp.tri_count; ++k) {
+                    box.extend(tri_box(tris_[k]));
+                    sum += tris_[k].area * average(tris_[k].le);
+                    tri_cdf_[k] = sum;
+                }
+                for (int k = grp.first_tri; k < grp.first_tri + grp.tri_count; ++k)
+                    tri_cdf_[k] /= sum;
+                group_weight_[gi] = sum;
+                group_item_[gi] = add_item(EmitterItem::Kind::Group, gi, box, sum);
+            } else {
+                for (int k = grp.first_tri; k < grp.first_tri + grp.tri_count; ++k)
+                    tri_item_[k] = add_item(EmitterItem::Kind::Tri, k, tri_box(tris_[k]),
+                                            tris_[k].area * average(tris_[k].le));
+            }
+            for (int k = grp.first_shape; k < grp.first_shape + grp.shape_count; ++k)
+                shape_item_[k] = add_item(EmitterItem::Kind::Shape, k, shape_bounds(shapes_[k]),
+                                          shapes_[k].weight);
         }
-        for (const Shape& e : shapes_) {
-            sum += e.weight;
-            emitter_cdf_.push_back(sum);
-        }
-        for (double& v : emitter_cdf_) v /= sum;
-        emitter_total_ = sum;
+        emitter_tree_ = LightTree(items, light_tree);
         slots_.push_back({SlotKind::Emitters, -1});
     }
     if (world != 0) {
@@ -353,21 +386,26 @@ bool PathLights::sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out
             return !out->value.is_black();
         }
         case SlotKind::Emitters: {
-            const auto it = std::upper_bound(emitter_cdf_.begin(), emitter_cdf_.end(), u.u);
-            const size_t i = std::min<size_t>(it - emitter_cdf_.begin(), emitter_cdf_.size() - 1);
-            const double lo = i > 0 ? emitter_cdf_[i - 1] : 0.0;
-            const double width = emitter_cdf_[i] - lo;
-            const double ur = width > 0 ? std::clamp((u.u - lo) / width, 0.0, 1.0) : 0.5;
-            if (i >= tris_.size()) {
-                const Shape& e = shapes_[i - tris_.size()];
+            double ur = u.u, pick = 0;
+            const int it = emitter_tree_.sample(p, &ur, &pick);
+            if (it < 0 || !(pick > 0)) return false;
+            const EmitterItem& item = items_[static_cast<size_t>(it)];
+            double select = select_prob() * pick;
+            if (item.kind == EmitterItem::Kind::Shape) {
+                const Shape& e = shapes_[item.index];
                 if (!sample_shape(e, p, {ur, u.v}, out)) return false;
-                out->pdf *= select_prob() * e.weight / emitter_total_;
+                out->pdf *= select;
                 if (!(out->pdf > 0) || !std::isfinite(out->pdf)) return false;
                 out->value = e.le / out->pdf;
                 return true;
             }
-            const Tri& t = tris_[i];
-            const double select = select_prob() * t.area * average(t.le) / emitter_total_;
+            int ti = item.index;
+            if (item.kind == EmitterItem::Kind::Group) {
+                double chance = 0;
+                ti = pick_group_tri(item.index, &ur, &chance);
+                select *= chance;
+            }
+            const Tri& t = tris_[ti];
             Vec3 dirs[3];
             if (const double omega = tri_solid_angle(t, p, dirs); omega > 0) {
                 Vec3 w;
@@ -393,7 +431,7 @@ bool PathLights::sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out
             out->dist = dist;
             const double cos_l = std::fabs(dot(t.n, out->wi));
             if (!(cos_l > 0)) return false;
-            out->pdf = select_prob() * average(t.le) / emitter_total_ * dist * dist / cos_l;
+            out->pdf = select / t.area * dist * dist / cos_l;
             if (!(out->pdf > 0) || !std::isfinite(out->pdf)) return false;
             out->value = t.le / out->pdf;
             return true;
@@ -543,10 +581,43 @@ double PathLights::off_surface(const Shape& e, const Vec3& q) {
     return h + ring;
 }
 
+int PathLights::pick_group_tri(int group, double* u, double* prob) const {
+    const Group& grp = groups_[group];
+    const auto first = tri_cdf_.begin() + grp.first_tri;
+    const auto last = first + grp.tri_count;
+    const auto it = std::upper_bound(first, last, *u);
+    const int k = static_cast<int>(std::min(it, last - 1) - tri_cdf_.begin());
+    const double lo = k > grp.first_tri ? tri_cdf_[k - 1] : 0.0;
+    const double width = tri_cdf_[k] - lo;
+    *u = width > 0 ? std::clamp((*u - lo) / width, 0.0, kOneMinusEpsilon) : 0.5;
+    *prob = width;
+    return k;
+}
+
+Bounds3 PathLights::shape_bounds(const Shape& e) {
+    Bounds3 b;
+    if (!e.sphere) {
+        const Vec3 r(std::fabs(e.a1.x) + std::fabs(e.a2.x), std::fabs(e.a1.y) + std::fabs(e.a2.y),
+                     std::fabs(e.a1.z) + std::fabs(e.a2.z));
+        b.extend(e.center - r);
+        b.extend(e.center + r);
+    } else if (e.cone) {
+        b.extend(e.center - Vec3(e.radius, e.radius, e.radius));
+        b.extend(e.center + Vec3(e.radius, e.radius, e.radius));
+    } else {
+        for (int k = 0; k < 8; ++k)
+            b.extend(e.to_world.point(e.center + Vec3(k & 1 ? e.radius : -e.radius,
+                                                      k & 2 ? e.radius : -e.radius,
+                                                      k & 4 ? e.radius : -e.radius)));
+    }
+    return b;
+}
+
 double PathLights::emitter_pdf(int object, const Vec3& from, const Vec3& q, const Vec3& ng,
                                const Color& le) const {
-    if (!emitter_object(object) || !(emitter_total_ > 0)) return 0;
-    const Group& grp = groups_[object_emitter_[object]];
+    if (!emitter_object(object) || emitter_tree_.empty()) return 0;
+    const int gi = object_emitter_[object];
+    const Group& grp = groups_[gi];
     // Which emitter of the object was hit: the sphere or disc the point lies on, else (when
     // the object has emitting triangles) a triangle.
     int hit_shape = -1;
@@ -564,41 +635,51 @@ double PathLights::emitter_pdf(int object, const Vec3& from, const Vec3& q, cons
     }
     if (hit_shape >= 0) {
         const Shape& e = shapes_[hit_shape];
-        return select_prob() * e.weight / emitter_total_ * shape_pdf(e, from, q);
-    }
-    if (grp.tri_count > 0 && grp.tri_count <= static_cast<int>(kMaxLocatableTris)) {
-        // The triangle the point lies on (nearest its plane among those containing it), and
-        // its pdf as sample() would have used it.
-        int hit_tri = -1;
-        double best = kInfinity;
-        for (int k = grp.first_tri; k < grp.first_tri + grp.tri_count; ++k) {
-            const Tri& t = tris_[k];
-            const Vec3 d = q - t.p0;
-            const double g11 = dot(t.e1, t.e1), g12 = dot(t.e1, t.e2), g22 = dot(t.e2, t.e2);
-            const double det = g11 * g22 - g12 * g12;
-            if (!(det > 0)) continue;
-            const double b1 = dot(d, t.e1), b2 = dot(d, t.e2);
-            const double x = (g22 * b1 - g12 * b2) / det, y = (g11 * b2 - g12 * b1) / det;
-            constexpr double kEdge = 1e-7;
-            if (x < -kEdge || y < -kEdge || x + y > 1 + kEdge) continue;
-            const double off = std::fabs(dot(d, t.n));
-            if (off < best) {
-                best = off;
-                hit_tri = k;
-            }
-        }
-        if (hit_tri >= 0) {
-            const Tri& t = tris_[hit_tri];
-            if (const double omega = tri_solid_angle(t, from); omega > 0)
-                return select_prob() * t.area * average(t.le) / emitter_total_ / omega;
-        }
+        return select_prob() * emitter_tree_.pdf(from, shape_item_[hit_shape]) *
+               shape_pdf(e, from, q);
     }
     const Vec3 d = q - from;
     const double dist2 = length_squared(d);
     if (!(dist2 > 0)) return 0;
     const double cos_l = std::fabs(dot(ng, d)) / std::sqrt(dist2);
     if (!(cos_l > 0)) return 0;
-    return select_prob() * average(le) / emitter_total_ * dist2 / cos_l;
+    if (group_item_[gi] >= 0) {
+        // Many triangles: the group's pick, then area times emission within it, uniform
+        // over the triangle's area: the density per area is the same on all of them.
+        return select_prob() * emitter_tree_.pdf(from, group_item_[gi]) * average(le) /
+               group_weight_[gi] * dist2 / cos_l;
+    }
+    // The triangle the point lies on (nearest its plane among those containing it; the
+    // nearest plane when none contains it, as on an edge rounding put outside both), and its
+    // pdf as sample() would have used it.
+    int hit_tri = -1, nearest = -1;
+    double best = kInfinity, best_any = kInfinity;
+    for (int k = grp.first_tri; k < grp.first_tri + grp.tri_count; ++k) {
+        const Tri& t = tris_[k];
+        const Vec3 dq = q - t.p0;
+        const double off = std::fabs(dot(dq, t.n));
+        if (off < best_any) {
+            best_any = off;
+            nearest = k;
+        }
+        const double g11 = dot(t.e1, t.e1), g12 = dot(t.e1, t.e2), g22 = dot(t.e2, t.e2);
+        const double det = g11 * g22 - g12 * g12;
+        if (!(det > 0)) continue;
+        const double b1 = dot(dq, t.e1), b2 = dot(dq, t.e2);
+        const double x = (g22 * b1 - g12 * b2) / det, y = (g11 * b2 - g12 * b1) / det;
+        constexpr double kEdge = 1e-7;
+        if (x < -kEdge || y < -kEdge || x + y > 1 + kEdge) continue;
+        if (off < best) {
+            best = off;
+            hit_tri = k;
+        }
+    }
+    if (hit_tri < 0) hit_tri = nearest;
+    if (hit_tri < 0) return 0;
+    const Tri& t = tris_[hit_tri];
+    const double select = select_prob() * emitter_tree_.pdf(from, tri_item_[hit_tri]);
+    if (const double omega = tri_solid_angle(t, from); omega > 0) return select / omega;
+    return select / t.area * dist2 / cos_l;
 }
 
 }  // namespace glint::render

@@ -10,7 +10,9 @@
 //   camera and BSDF rays that pass through their discs, rectangles, ellipses and sun discs
 //   collect the emission with MIS weights (blender_emission).
 // - Emitting shapes (objects and union parts whose material emits a constant radiance): triangles
-//   and meshes, spheres and discs, chosen in one slot by area times emitted radiance.
+//   and meshes, spheres and discs, in one slot, chosen from the shading point by a light tree
+//   (light_tree.h) over every sphere, disc and triangle (an object with many triangles is one
+//   item whose triangles are then chosen by area times emitted radiance).
 //   Discs (any affine transform) are sampled uniformly by area; triangles too, except where
 //   Cycles 3.4 samples them by solid angle (seen from a point closer to the triangle's plane
 //   than its longest edge, the triangle belonging to an object with at most 64 emitting
@@ -36,6 +38,7 @@
 
 #include "render/lights/blender_lights.h"
 #include "render/lights/environment.h"
+#include "render/lights/light_tree.h"
 #include "render/ray.h"
 #include "render/sampling/sampler.h"
 #include "scene/scene.h"
@@ -58,9 +61,11 @@ public:
     // non-uniform environment is sampled uniformly.
     // `world`: the scene's world is a node graph (Blender) that emits everywhere alike (1) or
     // varies over the sphere (2); 0: the IR's background and sky sphere say.
+    // `light_tree`: emitters are picked from the shading point by the light tree; false: by
+    // their power alone.
     PathLights(const scene::Scene& scene, const std::vector<Color>& emission,
                const EnvironmentDistribution::Radiance& environment = {},
-               const TextureCache* textures = nullptr, int world = 0);
+               const TextureCache* textures = nullptr, int world = 0, bool light_tree = true);
 
     // Light slots: each POV-Ray or Blender light, all emitting shapes together, the
     // environment.
@@ -146,6 +151,8 @@ private:
     static double tri_solid_angle(const Tri& t, const Vec3& p, Vec3 dirs[3] = nullptr);
     // How far q is from the shape's surface, relative to its size (0 on it).
     static double off_surface(const Shape& e, const Vec3& q);
+    // A box around the shape.
+    static Bounds3 shape_bounds(const Shape& e);
     static constexpr int kNotSampled = -1;
 
     Color pov_factor(const scene::Light& l, const Vec3& from_light, double dist) const;
@@ -159,9 +166,22 @@ private:
     bool visible_blender_ = false;
     std::vector<Tri> tris_;
     std::vector<Shape> shapes_;
-    // One CDF over all emitters: triangles first, then shapes_ (area * average emission).
-    std::vector<double> emitter_cdf_;
-    double emitter_total_ = 0;
+    // The emitters as light-tree items (light_tree.h), chosen from the shading point: each
+    // sphere and disc, each triangle of an object with few (a BSDF hit finds its triangle),
+    // and each object with many triangles as one item whose triangles are then chosen by area
+    // times emission (so a hit needs no match: the area density is the same on all of them).
+    struct EmitterItem {
+        enum class Kind { Tri, Shape, Group } kind;
+        int index;  // into tris_, shapes_ or groups_
+    };
+    std::vector<EmitterItem> items_;
+    LightTree emitter_tree_;
+    std::vector<int> tri_item_, shape_item_;  // their item, -1 inside a group item
+    std::vector<int> group_item_;             // a many-triangle group's item, else -1
+    std::vector<double> tri_cdf_;  // group items: cumulative weight within the group, in (0, 1]
+    std::vector<double> group_weight_;  // group items: the sum of area * average emission
+    // The triangle of a group item for u in [0, 1) (*u rescaled) and its chance.
+    int pick_group_tri(int group, double* u, double* prob) const;
     std::vector<Group> groups_;
     std::vector<int> object_emitter_;  // per object: kNotSampled or a groups_ index
     bool has_env_ = false;
