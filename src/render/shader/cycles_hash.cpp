@@ -7,91 +7,9 @@ namespace {
 
 using u32 = std::uint32_t;
 
-constexpr u32 rotl(u32 v, int k) { return (v << k) | (v >> (32 - k)); }
-
-// lookup3's mix() and final() (http://burtleburtle.net/bob/c/lookup3.c), on three words.
-struct Lookup3 {
-    u32 a, b, c;
-
-    explicit constexpr Lookup3(u32 words) : a(0xdeadbeefu + (words << 2) + 13u), b(a), c(a) {}
-
-    void mix() {
-        a -= c;
-        a ^= rotl(c, 4);
-        c += b;
-        b -= a;
-        b ^= rotl(a, 6);
-        a += c;
-        c -= b;
-        c ^= rotl(b, 8);
-        b += a;
-        a -= c;
-        a ^= rotl(c, 16);
-        c += b;
-        b -= a;
-        b ^= rotl(a, 19);
-        a += c;
-        c -= b;
-        c ^= rotl(b, 4);
-        b += a;
-    }
-
-    void finish() {
-        c ^= b;
-        c -= rotl(b, 14);
-        a ^= c;
-        a -= rotl(c, 11);
-        b ^= a;
-        b -= rotl(a, 25);
-        c ^= b;
-        c -= rotl(b, 16);
-        a ^= c;
-        a -= rotl(c, 4);
-        b ^= a;
-        b -= rotl(a, 14);
-        c ^= b;
-        c -= rotl(b, 24);
-    }
-};
-
 u32 bits(float f) { return std::bit_cast<u32>(f); }
 
 }  // namespace
-
-u32 hash_uint(u32 kx) {
-    Lookup3 h(1);
-    h.a += kx;
-    h.finish();
-    return h.c;
-}
-
-u32 hash_uint2(u32 kx, u32 ky) {
-    Lookup3 h(2);
-    h.b += ky;
-    h.a += kx;
-    h.finish();
-    return h.c;
-}
-
-u32 hash_uint3(u32 kx, u32 ky, u32 kz) {
-    Lookup3 h(3);
-    h.c += kz;
-    h.b += ky;
-    h.a += kx;
-    h.finish();
-    return h.c;
-}
-
-u32 hash_uint4(u32 kx, u32 ky, u32 kz, u32 kw) {
-    Lookup3 h(4);
-    h.a += kx;
-    h.b += ky;
-    h.c += kz;
-    h.mix();
-    h.a += kw;
-    h.finish();
-    return h.c;
-}
 
 float uint_to_float_incl(u32 n) {
     return static_cast<float>(n) * (1.0f / static_cast<float>(0xFFFFFFFFu));

@@ -10,11 +10,95 @@
 
 namespace glint::render::shader {
 
+namespace detail {
+
+constexpr std::uint32_t rotl(std::uint32_t v, int k) { return (v << k) | (v >> (32 - k)); }
+
+// lookup3's mix() and final() (http://burtleburtle.net/bob/c/lookup3.c), on three words.
+// Inline: Perlin noise hashes eight corners per call, and volumes call it at every step.
+struct Lookup3 {
+    std::uint32_t a, b, c;
+
+    explicit constexpr Lookup3(std::uint32_t words)
+        : a(0xdeadbeefu + (words << 2) + 13u), b(a), c(a) {}
+
+    constexpr void mix() {
+        a -= c;
+        a ^= rotl(c, 4);
+        c += b;
+        b -= a;
+        b ^= rotl(a, 6);
+        a += c;
+        c -= b;
+        c ^= rotl(b, 8);
+        b += a;
+        a -= c;
+        a ^= rotl(c, 16);
+        c += b;
+        b -= a;
+        b ^= rotl(a, 19);
+        a += c;
+        c -= b;
+        c ^= rotl(b, 4);
+        b += a;
+    }
+
+    constexpr void finish() {
+        c ^= b;
+        c -= rotl(b, 14);
+        a ^= c;
+        a -= rotl(c, 11);
+        b ^= a;
+        b -= rotl(a, 25);
+        c ^= b;
+        c -= rotl(b, 16);
+        a ^= c;
+        a -= rotl(c, 4);
+        b ^= a;
+        b -= rotl(a, 14);
+        c ^= b;
+        c -= rotl(b, 24);
+    }
+};
+
+}  // namespace detail
+
 // lookup3 hashes of one to four words (Cycles' hash_uint .. hash_uint4).
-std::uint32_t hash_uint(std::uint32_t kx);
-std::uint32_t hash_uint2(std::uint32_t kx, std::uint32_t ky);
-std::uint32_t hash_uint3(std::uint32_t kx, std::uint32_t ky, std::uint32_t kz);
-std::uint32_t hash_uint4(std::uint32_t kx, std::uint32_t ky, std::uint32_t kz, std::uint32_t kw);
+constexpr std::uint32_t hash_uint(std::uint32_t kx) {
+    detail::Lookup3 h(1);
+    h.a += kx;
+    h.finish();
+    return h.c;
+}
+
+constexpr std::uint32_t hash_uint2(std::uint32_t kx, std::uint32_t ky) {
+    detail::Lookup3 h(2);
+    h.b += ky;
+    h.a += kx;
+    h.finish();
+    return h.c;
+}
+
+constexpr std::uint32_t hash_uint3(std::uint32_t kx, std::uint32_t ky, std::uint32_t kz) {
+    detail::Lookup3 h(3);
+    h.c += kz;
+    h.b += ky;
+    h.a += kx;
+    h.finish();
+    return h.c;
+}
+
+constexpr std::uint32_t hash_uint4(std::uint32_t kx, std::uint32_t ky, std::uint32_t kz,
+                                   std::uint32_t kw) {
+    detail::Lookup3 h(4);
+    h.a += kx;
+    h.b += ky;
+    h.c += kz;
+    h.mix();
+    h.a += kw;
+    h.finish();
+    return h.c;
+}
 
 // [0, 2^32-1] -> [0, 1] inclusive, and [0, 1) exclusive (dividing by 4294967808).
 float uint_to_float_incl(std::uint32_t n);
