@@ -443,6 +443,92 @@ TEST(PathLights, LightTreeKeepsPdfsExactAndPrefersNearEmitters) {
     EXPECT_GT(near_picks, n * 10 * (0.2 / 302.0));
 }
 
+// Past eight slots the lights join the light tree (one slot stands for it): POV-Ray point,
+// spot and area lights and Blender point, spot and area lights, scattered over a floor. From
+// points on the floor the tree's estimate of the irradiance (one light sample) has the mean
+// of the sum of every light's own (each sampled alone), and a parallel light and a Blender
+// sun keep slots of their own.
+TEST(PathLights, ManyLightsJoinTheTreeAndStayUnbiased) {
+    scene::Scene s;
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> U(0, 1);
+    for (int i = 0; i < 24; ++i) {
+        scene::Light l;
+        l.location = Vec3(8 * U(rng) - 4, 0.5 + 2 * U(rng), 8 * U(rng) - 4);
+        l.color = Color(0.2 + U(rng), 0.2 + U(rng), 0.2 + U(rng));
+        switch (i % 6) {
+            case 0: break;  // POV-Ray point light
+            case 1:
+                l.kind = scene::LightKind::Spot;
+                l.point_at = l.location + Vec3(U(rng) - 0.5, -1, U(rng) - 0.5);
+                l.radius = 20;
+                l.falloff = 35;
+                break;
+            case 2:
+                l.area = scene::AreaLight{Vec3(0.5, 0, 0), Vec3(0, 0, 0.5), 4, 4};
+                break;
+            default: {
+                scene::BlenderLight b;
+                b.type = i % 6 == 3   ? scene::BlenderLightType::Point
+                         : i % 6 == 4 ? scene::BlenderLightType::Spot
+                                      : scene::BlenderLightType::Area;
+                b.direction = normalize(Vec3(U(rng) - 0.5, -1, U(rng) - 0.5));
+                b.power = 50 + 100 * U(rng);
+                b.radius = 0.1;
+                b.size_x = b.size_y = 0.4;
+                b.axis_x = normalize(cross(b.direction, Vec3(0, 0, 1)));
+                b.axis_y = cross(b.axis_x, b.direction);
+                l.blender = b;
+            }
+        }
+        s.lights.push_back(l);
+    }
+    scene::Light parallel;
+    parallel.parallel = true;
+    parallel.location = Vec3(1, 5, 2);
+    parallel.point_at = Vec3(0, 0, 0);
+    parallel.color = Color(0.3, 0.3, 0.3);
+    s.lights.push_back(parallel);
+    const PathLights lights(s, {});
+    ASSERT_EQ(lights.count(), 2);  // the tree and the parallel light
+    auto irradiance = [](const PathLights& pl, const Vec3& p, std::mt19937_64& r, int n) {
+        std::uniform_real_distribution<double> V(0, 1);
+        double sum = 0, sum2 = 0;
+        for (int i = 0; i < n; ++i) {
+            double e = 0;
+            for (int k = 0; k < pl.count(); ++k) {
+                PathLightSample ls;
+                if (pl.sample(k, p, {V(r), V(r)}, &ls) && ls.wi.y > 0)
+                    e += (ls.value.r + ls.value.g + ls.value.b) / 3 * ls.wi.y;
+            }
+            sum += e;
+            sum2 += e * e;
+        }
+        const double mean = sum / n;
+        return std::pair<double, double>(mean, std::sqrt(std::max(0.0, sum2 / n - mean * mean) / n));
+    };
+    for (const Vec3& p : {Vec3(0.3, 0, -0.2), Vec3(-3, 0, 2.5), Vec3(3.5, 0, 3.5)}) {
+        std::mt19937_64 r1(41), r2(42);
+        const auto [tree, tree_se] = irradiance(lights, p, r1, 100000);
+        // Each light alone, summed.
+        double exact = 0, exact_var = 0;
+        for (const scene::Light& l : s.lights) {
+            scene::Scene one;
+            one.lights.push_back(l);
+            const PathLights single(one, {});
+            const auto [m, se] = irradiance(single, p, r2, l.area || (l.blender &&
+                                            l.blender->type != scene::BlenderLightType::Point &&
+                                            l.blender->type != scene::BlenderLightType::Spot)
+                                                               ? 20000 : 1);
+            exact += m;
+            exact_var += se * se;
+        }
+        std::printf("tree of 24 lights at (%g, %g): E = %.5f +- %.2g, each alone %.5f +- %.2g\n",
+                    p.x, p.z, tree, tree_se, exact, std::sqrt(exact_var));
+        EXPECT_NEAR(tree, exact, 4 * std::sqrt(tree_se * tree_se + exact_var));
+    }
+}
+
 // ---------------------------------------------------------------- environment
 
 // POV-Ray's spherical map_type 1 and Blender's world Environment Texture: texels Blender

@@ -58,7 +58,7 @@ LightEmission::LightEmission(const scene::Scene& scene, const PathLights& lights
         w.push_back((e.sphere ? 1 : 2) * kPi * e.area * average(e.le));
     if (!w.empty()) make_cdf(w, &emitter_cdf_, &emitter_total_);
     std::vector<double> power;
-    for (int s = 0; s < lights_.count(); ++s) {
+    for (int s = 0; s < static_cast<int>(lights_.slots_.size()); ++s) {
         if (lights_.slots_[s].kind == PathLights::SlotKind::Blender && unsupported_.empty())
             unsupported_ = "Blender lights";
         power.push_back(slot_power(s));

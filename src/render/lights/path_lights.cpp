@@ -121,6 +121,7 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
         if (l.blender) {
             slots_.push_back({SlotKind::Blender, static_cast<int>(blender_.size())});
             blender_.emplace_back(l);
+            blender_light_index_.push_back(i);
             visible_blender_ = visible_blender_ || blender_.back().visible();
         } else {
             slots_.push_back({SlotKind::Pov, i});
@@ -155,8 +156,8 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
         tris_.insert(tris_.end(), g.tris.begin(), g.tris.end());
         shapes_.insert(shapes_.end(), g.shapes.begin(), g.shapes.end());
     }
+    std::vector<LightTreeItem> items;
     if (!tris_.empty() || !shapes_.empty()) {
-        std::vector<LightTreeItem> items;
         auto add_item = [&](EmitterItem::Kind kind, int index, const Bounds3& box, double power) {
             items_.push_back({kind, index});
             LightTreeItem it;
@@ -200,7 +201,6 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
                 shape_item_[k] = add_item(EmitterItem::Kind::Shape, k, shape_bounds(shapes_[k]),
                                           shapes_[k].weight);
         }
-        emitter_tree_ = LightTree(items, light_tree);
         slots_.push_back({SlotKind::Emitters, -1});
     }
     if (world != 0) {
@@ -210,15 +210,100 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
             slots_.push_back({SlotKind::Environment, -1});
             if (world == 2 && environment) env_.emplace(environment, EnvironmentGrid{256, 128, 2});
         }
-        return;
+    } else {
+        has_env_ = average(scene.background.rgb) > 0 ||
+                   (scene.sky_sphere && !scene.sky_sphere->pigments.empty());
+        if (has_env_) {
+            slots_.push_back({SlotKind::Environment, -1});
+            if (environment && !environment_uniform(scene))
+                env_.emplace(environment, environment_grid(scene, textures));
+        }
     }
-    has_env_ = average(scene.background.rgb) > 0 ||
-               (scene.sky_sphere && !scene.sky_sphere->pigments.empty());
-    if (has_env_) {
-        slots_.push_back({SlotKind::Environment, -1});
-        if (environment && !environment_uniform(scene))
-            env_.emplace(environment, environment_grid(scene, textures));
+    // Next-event estimation samples every slot while there are few. Past that, the lights
+    // that have a place (all but POV-Ray's parallel and cylinder lights and Blender's suns)
+    // join the emitters in the light tree, and one slot stands for the tree.
+    nee_ = slots_;
+    blender_item_.assign(blender_.size(), -1);
+    if (static_cast<int>(slots_.size()) > kSampleAllMax) {
+        std::vector<Slot> rest;
+        for (const Slot& s : slots_) {
+            std::optional<LightTreeItem> it;
+            if (s.kind == SlotKind::Pov) it = pov_tree_item(scene_.lights[s.light]);
+            if (s.kind == SlotKind::Blender) it = blender_tree_item(s.light);
+            if (!it) {
+                if (s.kind != SlotKind::Emitters) rest.push_back(s);
+                continue;
+            }
+            items_.push_back({s.kind == SlotKind::Pov ? EmitterItem::Kind::PovLight
+                                                      : EmitterItem::Kind::BlenderLight,
+                              s.light});
+            items.push_back(*it);
+            if (s.kind == SlotKind::Blender)
+                blender_item_[s.light] = static_cast<int>(items_.size()) - 1;
+        }
+        if (!items.empty()) {
+            const auto env = std::find_if(rest.begin(), rest.end(), [](const Slot& s) {
+                return s.kind == SlotKind::Environment;
+            });
+            rest.insert(env, {SlotKind::Emitters, -1});
+        }
+        nee_ = rest;
     }
+    if (!items.empty()) emitter_tree_ = LightTree(items, light_tree);
+}
+
+// Bounds of a POV-Ray light for the tree: its point or area rectangle, its power as the
+// irradiance it gives a facing surface (pi C, fading left out), a spot's cone up to its
+// falloff. Parallel and cylinder lights have no place: they stay slots of their own.
+std::optional<LightTreeItem> PathLights::pov_tree_item(const scene::Light& l) {
+    if (l.parallel || l.kind == scene::LightKind::Cylinder) return std::nullopt;
+    LightTreeItem it;
+    it.box.extend(l.location);
+    if (l.area) {
+        for (double a : {-0.5, 0.5})
+            for (double b : {-0.5, 0.5})
+                it.box.extend(l.location + l.area->axis1 * a + l.area->axis2 * b);
+    }
+    it.power = kPi * average(l.color);
+    if (l.kind == scene::LightKind::Spot && length_squared(l.point_at - l.location) > 0) {
+        it.axis = normalize(l.point_at - l.location);
+        it.theta_o = 0;
+        it.theta_e = std::clamp(l.falloff, 0.0, 180.0) * (kPi / 180);
+    }
+    if (!(it.power > 0) || !std::isfinite(it.power)) return std::nullopt;
+    return it;
+}
+
+// Bounds of a Blender light: its power as the irradiance it gives a facing surface at
+// distance 1 (measured by a sample from ten sizes away along its axis), its extent, and for
+// spots and area lights the cone they shine into. Suns have no place.
+std::optional<LightTreeItem> PathLights::blender_tree_item(int k) const {
+    const CyclesLight& c = blender_[k];
+    if (c.type() == scene::BlenderLightType::Sun) return std::nullopt;
+    const scene::BlenderLight& b = *scene_.lights[blender_light_index_[k]].blender;
+    const Vec3 at = scene_.lights[blender_light_index_[k]].location;
+    const double size = std::max({b.radius, b.size_x, b.size_y, 1e-3});
+    LightTreeItem it;
+    it.box.extend(at - Vec3(size, size, size));
+    it.box.extend(at + Vec3(size, size, size));
+    const Vec3 dir = length_squared(b.direction) > 0 ? normalize(b.direction) : Vec3(0, 0, -1);
+    const double r = 10 * size + 1;
+    CyclesLight::Sample s;
+    double e = 0;
+    if (c.sample(at + dir * r, {0.5, 0.5}, &s)) e = average(s.value) * r * r;
+    if (s.pdf > 0) e *= std::fabs(dot(s.wi, dir));  // an area light's cosine at the receiver
+    it.power = e;
+    if (b.type == scene::BlenderLightType::Spot) {
+        it.axis = dir;
+        it.theta_o = 0;
+        it.theta_e = std::clamp(b.spot_size, 0.0, 360.0) * (kPi / 360);
+    } else if (b.type == scene::BlenderLightType::Area) {
+        it.axis = dir;
+        it.theta_o = 0;
+        it.theta_e = kPi / 2;
+    }
+    if (!(it.power > 0) || !std::isfinite(it.power)) return std::nullopt;
+    return it;
 }
 
 void PathLights::gather(const scene::Object& o, const Transform& x, int material,
@@ -334,63 +419,72 @@ Color PathLights::pov_factor(const scene::Light& l, const Vec3& from_light, doub
     return l.color * (kPi * att);
 }
 
+bool PathLights::sample_pov(const scene::Light& l, const Vec3& p, Sample2 u, double select,
+                            PathLightSample* out) const {
+    if (l.parallel) {
+        const Vec3 d = l.point_at - l.location;
+        if (!(length_squared(d) > 0)) return false;
+        out->wi = -normalize(d);
+        out->dist = kInfinity;
+        out->value = l.color * (kPi / select);
+        out->pdf = 0;
+        return true;
+    }
+    Vec3 q = l.location;
+    if (l.area) {
+        double a = u.u - 0.5, b = u.v - 0.5;
+        if (l.area->circular) {
+            // The ellipse inscribed in the rectangle (concentric disc mapping).
+            const double x = 2 * a, y = 2 * b;
+            double r = 0, phi = 0;
+            if (std::fabs(x) > std::fabs(y)) {
+                r = x;
+                phi = (kPi / 4) * (y / x);
+            } else if (y != 0) {
+                r = y;
+                phi = kPi / 2 - (kPi / 4) * (x / y);
+            }
+            a = 0.5 * r * std::cos(phi);
+            b = 0.5 * r * std::sin(phi);
+        }
+        q = q + l.area->axis1 * a + l.area->axis2 * b;
+    }
+    const Vec3 d = q - p;
+    const double dist = length(d);
+    if (!(dist > 0)) return false;
+    out->wi = d / dist;
+    out->dist = dist;
+    out->value = pov_factor(l, -out->wi, dist) / select;
+    out->pdf = 0;
+    return !out->value.is_black();
+}
+
+bool PathLights::sample_blender(int k, const Vec3& p, Sample2 u, double select,
+                                PathLightSample* out) const {
+    CyclesLight::Sample cs;
+    if (!blender_[k].sample(p, u, &cs)) return false;
+    out->wi = cs.wi;
+    out->dist = cs.dist;
+    out->value = cs.value / select;
+    out->pdf = cs.pdf * select;
+    return !out->value.is_black();
+}
+
 bool PathLights::sample(int slot, const Vec3& p, Sample2 u, PathLightSample* out) const {
-    const Slot& s = slots_[slot];
+    const Slot& s = nee_[slot];
     switch (s.kind) {
-        case SlotKind::Pov: {
-            const scene::Light& l = scene_.lights[s.light];
-            if (l.parallel) {
-                const Vec3 d = l.point_at - l.location;
-                if (!(length_squared(d) > 0)) return false;
-                out->wi = -normalize(d);
-                out->dist = kInfinity;
-                out->value = l.color * (kPi / select_prob());
-                out->pdf = 0;
-                return true;
-            }
-            Vec3 q = l.location;
-            if (l.area) {
-                double a = u.u - 0.5, b = u.v - 0.5;
-                if (l.area->circular) {
-                    // The ellipse inscribed in the rectangle (concentric disc mapping).
-                    const double x = 2 * a, y = 2 * b;
-                    double r = 0, phi = 0;
-                    if (std::fabs(x) > std::fabs(y)) {
-                        r = x;
-                        phi = (kPi / 4) * (y / x);
-                    } else if (y != 0) {
-                        r = y;
-                        phi = kPi / 2 - (kPi / 4) * (x / y);
-                    }
-                    a = 0.5 * r * std::cos(phi);
-                    b = 0.5 * r * std::sin(phi);
-                }
-                q = q + l.area->axis1 * a + l.area->axis2 * b;
-            }
-            const Vec3 d = q - p;
-            const double dist = length(d);
-            if (!(dist > 0)) return false;
-            out->wi = d / dist;
-            out->dist = dist;
-            out->value = pov_factor(l, -out->wi, dist) / select_prob();
-            out->pdf = 0;
-            return !out->value.is_black();
-        }
-        case SlotKind::Blender: {
-            CyclesLight::Sample cs;
-            if (!blender_[s.light].sample(p, u, &cs)) return false;
-            out->wi = cs.wi;
-            out->dist = cs.dist;
-            out->value = cs.value / select_prob();
-            out->pdf = cs.pdf * select_prob();
-            return !out->value.is_black();
-        }
+        case SlotKind::Pov: return sample_pov(scene_.lights[s.light], p, u, select_prob(), out);
+        case SlotKind::Blender: return sample_blender(s.light, p, u, select_prob(), out);
         case SlotKind::Emitters: {
             double ur = u.u, pick = 0;
             const int it = emitter_tree_.sample(p, &ur, &pick);
             if (it < 0 || !(pick > 0)) return false;
             const EmitterItem& item = items_[static_cast<size_t>(it)];
             double select = select_prob() * pick;
+            if (item.kind == EmitterItem::Kind::PovLight)
+                return sample_pov(scene_.lights[item.index], p, {ur, u.v}, select, out);
+            if (item.kind == EmitterItem::Kind::BlenderLight)
+                return sample_blender(item.index, p, {ur, u.v}, select, out);
             if (item.kind == EmitterItem::Kind::Shape) {
                 const Shape& e = shapes_[item.index];
                 if (!sample_shape(e, p, {ur, u.v}, out)) return false;
@@ -457,14 +551,19 @@ Color PathLights::blender_emission(const Vec3& from, const Vec3& dir, double tmi
                                    double bsdf_pdf, bool camera_ray) const {
     Color sum;
     if (!visible_blender_) return sum;
-    for (const CyclesLight& c : blender_) {
+    for (size_t k = 0; k < blender_.size(); ++k) {
+        const CyclesLight& c = blender_[k];
         if (camera_ray ? !c.visible_camera() : !c.visible()) continue;
         double t, pdf;
         Color le;
         if (!c.intersect(from, dir, tmin, tmax, &t, &le, &pdf)) continue;
         if (bsdf_pdf >= 0) {
-            // Power heuristic against light sampling's pdf of the same direction.
-            const double a = bsdf_pdf * bsdf_pdf, b = pdf * select_prob() * pdf * select_prob();
+            // Power heuristic against light sampling's pdf of the same direction (its chance
+            // in the light tree from `from` when it is there).
+            const double select =
+                blender_item_[k] >= 0 ? select_prob() * emitter_tree_.pdf(from, blender_item_[k])
+                                      : select_prob();
+            const double a = bsdf_pdf * bsdf_pdf, b = pdf * select * pdf * select;
             if (!(a + b > 0)) continue;
             le *= std::isinf(a) ? 1.0 : a / (a + b);
         }

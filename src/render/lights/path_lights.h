@@ -67,9 +67,12 @@ public:
                const EnvironmentDistribution::Radiance& environment = {},
                const TextureCache* textures = nullptr, int world = 0, bool light_tree = true);
 
-    // Light slots: each POV-Ray or Blender light, all emitting shapes together, the
-    // environment.
-    int count() const { return static_cast<int>(slots_.size()); }
+    // Light slots next-event estimation samples: each POV-Ray or Blender light, all emitting
+    // shapes together (one light tree), the environment; every one of them at each vertex
+    // while there are at most kSampleAllMax. Past that the lights with a place (all but
+    // parallel, cylinder and sun lights) join the emitters' tree, which picks one light per
+    // vertex from the shading point.
+    int count() const { return static_cast<int>(nee_.size()); }
     // The probability a slot is chosen for one shading point (1 when all are sampled).
     double select_prob() const { return sample_all() ? 1.0 : 1.0 / std::max(1, count()); }
     bool sample_all() const { return count() <= kSampleAllMax; }
@@ -156,12 +159,22 @@ private:
     static constexpr int kNotSampled = -1;
 
     Color pov_factor(const scene::Light& l, const Vec3& from_light, double dist) const;
+    // One light's sample with its chance of being chosen, `select`, folded in.
+    bool sample_pov(const scene::Light& l, const Vec3& p, Sample2 u, double select,
+                    PathLightSample* out) const;
+    bool sample_blender(int k, const Vec3& p, Sample2 u, double select,
+                        PathLightSample* out) const;
+    // The light tree's bounds of a light; none for those without a place (distant ones).
+    static std::optional<LightTreeItem> pov_tree_item(const scene::Light& l);
+    std::optional<LightTreeItem> blender_tree_item(int k) const;
     bool sample_shape(const Shape& e, const Vec3& p, Sample2 u, PathLightSample* out) const;
     // Solid-angle pdf of sample_shape() choosing the point q from p, selection not included.
     double shape_pdf(const Shape& e, const Vec3& p, const Vec3& q) const;
 
     const scene::Scene& scene_;
-    std::vector<Slot> slots_;
+    std::vector<Slot> slots_;  // every light (photons leave them all: light_emission.h)
+    std::vector<Slot> nee_;    // the slots next-event estimation samples (count(), sample())
+    std::vector<int> blender_light_index_;  // blender_[k] is the scene's light k
     std::vector<CyclesLight> blender_;
     bool visible_blender_ = false;
     std::vector<Tri> tris_;
@@ -171,13 +184,14 @@ private:
     // and each object with many triangles as one item whose triangles are then chosen by area
     // times emission (so a hit needs no match: the area density is the same on all of them).
     struct EmitterItem {
-        enum class Kind { Tri, Shape, Group } kind;
-        int index;  // into tris_, shapes_ or groups_
+        enum class Kind { Tri, Shape, Group, PovLight, BlenderLight } kind;
+        int index;  // into tris_, shapes_, groups_, the scene's lights or blender_
     };
     std::vector<EmitterItem> items_;
     LightTree emitter_tree_;
     std::vector<int> tri_item_, shape_item_;  // their item, -1 inside a group item
     std::vector<int> group_item_;             // a many-triangle group's item, else -1
+    std::vector<int> blender_item_;           // a Blender light's item, -1: a slot of its own
     std::vector<double> tri_cdf_;  // group items: cumulative weight within the group, in (0, 1]
     std::vector<double> group_weight_;  // group items: the sum of area * average emission
     // The triangle of a group item for u in [0, 1) (*u rescaled) and its chance.

@@ -274,7 +274,10 @@ float musgrave_at(P p, const MusgraveTextureParams& params, float H, float lacun
 // instead of a call to libm's fmaf, AVX2 hashes perlin_3d's eight corners in one register
 // (together 1.5x on a volume of Noise). std::fma rounds once either way, the hashes are
 // integer, and nothing else is contracted (ISO C++ mode), so all three give the same bits.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+// (Not under AddressSanitizer: the loader runs the clones' resolver before the sanitizer's
+// runtime is up.)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
+    !defined(__SANITIZE_ADDRESS__)
 #define GLINT_FMA_CLONES __attribute__((target_clones("arch=haswell", "fma", "default")))
 #else
 #define GLINT_FMA_CLONES
