@@ -478,6 +478,12 @@ scene::Scene import_blender(const std::string& path, const ImportLimits& limits,
     settings.volume_max_steps = std::clamp(render.integer("volume_max_steps", 1024), 2, 65536);
     settings.filter_width = render.number("filter_width", 1.5);
     settings.pixel_filter = render.string("pixel_filter", "BLACKMAN_HARRIS");
+    if (render.has("adaptive_sampling")) {
+        const auto& a = render.at("adaptive_sampling");
+        settings.adaptive_sampling = a.boolean("use", false);
+        settings.adaptive_threshold = std::max(0.0, a.number("threshold", 0.01));
+        settings.adaptive_min_samples = std::max(0, a.integer("min_samples", 0));
+    }
     settings.clamp_direct = render.number("clamp_direct", 0);
     settings.clamp_indirect = render.number("clamp_indirect", 10);
     settings.filter_glossy = render.number("filter_glossy", 1);

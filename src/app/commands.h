@@ -29,6 +29,10 @@ struct RenderArgs {
     int max_depth = 8;
     unsigned seed = 0;
     bool no_light_tree = false;  // --no-light-tree
+    // --adaptive, --adaptive-threshold, --adaptive-min-samples (any of them turns it on)
+    bool adaptive = false;
+    double adaptive_threshold = 0;
+    int adaptive_min_samples = 0;
     double time_limit = 0;
     long photons = 0;             // --integrator sppm: photons per pass (0: one per pixel)
     double photon_radius = 2.0;   // --integrator sppm: initial radius in pixel footprints
@@ -58,6 +62,7 @@ struct RenderArgs {
         bool width = false, height = false, aa = false, aa_jitter = false, threads = false;
         bool clock = false;
         bool integrator = false, spp = false, seed = false, max_depth = false;
+        bool adaptive = false;
     } given;
 };
 

@@ -171,6 +171,16 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
         ->capture_default_str()
         ->check(CLI::Range(0, 4096));
     cmd->add_option("--seed", args.seed, "Path tracer: sampler seed")->capture_default_str();
+    cmd->add_flag("--adaptive", args.adaptive,
+                  "Path tracer: adaptive sampling as Cycles' Noise Threshold (a pixel stops "
+                  "once its noise estimate is under the threshold; a Blender scene's own "
+                  "setting applies without it)");
+    cmd->add_option("--adaptive-threshold", args.adaptive_threshold,
+                    "Adaptive sampling: Cycles' noise threshold (0: automatic, from --spp)")
+        ->check(CLI::Range(0.0, 1.0));
+    cmd->add_option("--adaptive-min-samples", args.adaptive_min_samples,
+                    "Adaptive sampling: samples every pixel takes first (0: automatic)")
+        ->check(CLI::Range(0, 1 << 24));
     cmd->add_flag("--no-light-tree", args.no_light_tree,
                   "Path tracer: pick emitting objects by their power alone, not from the shading "
                   "point by the light tree (for comparisons, as Cycles' Light Tree unchecked)");
@@ -239,6 +249,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
         args.given.integrator = cmd->count("--integrator") > 0;
         args.given.spp = cmd->count("--spp") > 0;
         args.given.seed = cmd->count("--seed") > 0;
+        args.given.adaptive = cmd->count("--adaptive") + cmd->count("--adaptive-threshold") +
+                                  cmd->count("--adaptive-min-samples") > 0;
         args.given.max_depth = cmd->count("--max-depth") > 0;
     });
     return cmd;
@@ -504,6 +516,8 @@ std::string job_settings(const RenderArgs& a) {
         s += ";spp=" + std::to_string(a.spp) + ";max_depth=" + std::to_string(a.max_depth) +
              ";seed=" + std::to_string(a.seed) +
              ";light_tree=" + std::to_string(!a.no_light_tree) +
+             ";adaptive=" + std::to_string(a.given.adaptive) + "," + num(a.adaptive_threshold) +
+             "," + std::to_string(a.adaptive_min_samples) +
              ";time_limit=" + num(a.time_limit) + ";aov=" + a.aov +
              ";variance=" + std::to_string(a.variance);
     if (a.integrator == "sppm")
@@ -572,6 +586,9 @@ int render_frame(const RenderArgs& args) {
     options.max_depth = args.max_depth;
     options.seed = args.seed;
     options.light_tree = !args.no_light_tree;
+    options.adaptive = args.given.adaptive;
+    options.adaptive_threshold = args.adaptive_threshold;
+    options.adaptive_min_samples = args.adaptive_min_samples;
     options.time_limit = args.time_limit;
     const std::vector<std::string> aovs =
         args.aov.empty() ? std::vector<std::string>{} : parse_aov_list(args.aov);
@@ -630,6 +647,7 @@ int render_frame(const RenderArgs& args) {
         given.spp = args.given.spp;
         given.seed = args.given.seed;
         given.max_depth = args.given.max_depth;
+        given.adaptive = args.given.adaptive;
         apply_blender_render(*scene.blender_render, given, &options);
     }
     double parse_seconds = seconds_since(start);

@@ -370,7 +370,8 @@ int run_report(const ReportArgs& args) {
             // A Blender scene renders with its own settings (filter, bounce limits, volume
             // steps), as `glint render` renders it; the report's own flags win.
             if (scene.blender_render) {
-                GivenSettings given{true, true, true, true, true, args.given_max_depth};
+                // (Every step takes its full samples: no adaptive sampling.)
+                GivenSettings given{true, true, true, true, true, args.given_max_depth, true};
                 apply_blender_render(*scene.blender_render, given, &options);
                 options.integrator = integrators[which] == "sppm"
                                          ? render::IntegratorKind::Sppm

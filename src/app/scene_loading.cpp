@@ -193,6 +193,11 @@ void apply_blender_render(const scene::BlenderRender& b, const GivenSettings& gi
     options->clamp_direct = b.clamp_direct;
     options->clamp_indirect = b.clamp_indirect;
     options->filter_glossy = b.filter_glossy;
+    if (!given.adaptive) {
+        options->adaptive = b.adaptive_sampling;
+        options->adaptive_threshold = b.adaptive_threshold;
+        options->adaptive_min_samples = b.adaptive_min_samples;
+    }
     // Cycles' limits per kind stay whatever --max-depth says of the total (the add-on
     // passes its own total), as Cycles' own panel keeps them apart.
     options->diffuse_bounces = b.diffuse_bounces;

@@ -61,6 +61,7 @@ scene::Scene load_scene(const SceneRequest& request, bool verbose);
 struct GivenSettings {
     bool width = false, height = false, integrator = false, spp = false, seed = false,
          max_depth = false;
+    bool adaptive = false;  // --adaptive and its settings (or the report's own: off)
 };
 // A Blender scene's render settings (its Cycles panel: filter, clamping, bounce limits,
 // transparent film, volume steps) into `options`; the given ones stay as they are. `render`

@@ -57,6 +57,13 @@ struct RenderOptions {
     int max_depth = 8;
     uint32_t seed = 0;
     double time_limit = 0;
+    // Path tracer: Cycles' adaptive sampling (Noise Threshold): past a minimum, a pixel stops
+    // taking samples once its noise estimate is under the threshold (checked every 16
+    // samples). 0: Cycles' automatic threshold (1 / spp, at least 0.001) and minimum
+    // (16 / threshold^0.3, at least 4).
+    bool adaptive = false;
+    double adaptive_threshold = 0;
+    int adaptive_min_samples = 0;
     // Photon integrator (IntegratorKind::Sppm): photons per pass (0: one per pixel) and the
     // initial gather radius in pixel footprints.
     long photons = 0;

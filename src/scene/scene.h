@@ -115,6 +115,11 @@ struct BlenderRender {
     // steps one segment takes.
     double volume_step_rate = 1.0;
     int volume_max_steps = 1024;
+    // Sampling > Noise Threshold: adaptive sampling, its threshold and minimum samples
+    // (0: Cycles derives them from the sample count).
+    bool adaptive_sampling = false;
+    double adaptive_threshold = 0.01;
+    int adaptive_min_samples = 0;
 };
 
 struct Scene {

@@ -122,6 +122,7 @@ TEST(BlenderImporter, InstancesShareOneMeshAndSlotsBecomeFaceMaterials) {
     EXPECT_DOUBLE_EQ(s.objects[1].transform.point(Vec3(0, 0, 0)).x, 3);
     ASSERT_TRUE(s.blender_render.has_value());
     EXPECT_EQ(s.blender_render->samples, 4);
+    EXPECT_FALSE(s.blender_render->adaptive_sampling);  // not written: off
     EXPECT_EQ(s.shader_graphs[0].nodes[1].type, "ShaderNodeBsdfDiffuse");
 }
 
@@ -191,6 +192,19 @@ std::string replaced(std::string text, const std::string& from, const std::strin
     EXPECT_NE(at, std::string::npos) << from;
     if (at != std::string::npos) text.replace(at, from.size(), to);
     return text;
+}
+
+TEST(BlenderImporter, AdaptiveSamplingSettingsAreRead) {
+    Exchange ex;
+    const std::string text = replaced(
+        Exchange::scene(object(0)), "\"samples\": 4",
+        "\"samples\": 4, \"adaptive_sampling\": {\"use\": true, \"threshold\": 0.05, "
+        "\"min_samples\": 12}");
+    const scene::Scene s = load(ex.write(text));
+    ASSERT_TRUE(s.blender_render.has_value());
+    EXPECT_TRUE(s.blender_render->adaptive_sampling);
+    EXPECT_DOUBLE_EQ(s.blender_render->adaptive_threshold, 0.05);
+    EXPECT_EQ(s.blender_render->adaptive_min_samples, 12);
 }
 
 TEST(BlenderImporter, ErrorsNameTheJsonPath) {

@@ -277,6 +277,60 @@ TEST(Driver, RegionsAreTheWholeRendersPixels) {
     }
 }
 
+// Adaptive sampling (Cycles' Noise Threshold): a pixel whose samples do not vary stops at the
+// minimum, a noisy one goes on to the full count; the noisy pixels' means stay unbiased, and
+// the image is the same at one and two threads and in any region.
+TEST(Driver, AdaptiveSamplingStopsQuietPixelsFirst) {
+    Camera cam(test_camera(), 40, 20);
+    std::mutex m;
+    std::vector<int> samples(40 * 20, 0);
+    PathRadianceFn f = [&](const Ray&, const SampleId& id, FirstHit*) {
+        {
+            std::lock_guard<std::mutex> lock(m);
+            ++samples[static_cast<size_t>(id.y) * 40 + id.x];
+        }
+        if (id.x < 20) return Color(0.5, 0.5, 0.5);  // the left half: no noise at all
+        // The right half: values 0 or 1 with mean 0.5, a hash of the sample.
+        uint32_t h = static_cast<uint32_t>(id.x * 73856093u ^ id.y * 19349663u ^
+                                           (id.index + 1) * 83492791u);
+        h ^= h >> 13;
+        h *= 0x5bd1e995u;
+        h ^= h >> 15;
+        return Color((h & 1) ? 1.0 : 0.0);
+    };
+    RenderOptions o;
+    o.width = 40;
+    o.height = 20;
+    o.spp = 256;
+    o.adaptive = true;  // automatic: threshold 1/256 (x5), minimum 16 / (1/256)^0.3 = 85
+    o.threads = 1;
+    PathFilm one;
+    EXPECT_EQ(run_path_tiles(cam, o, f, &one), 256);
+    // The minimum rounded up to the next check (every 16 samples): 96 on the left; on the
+    // right most pixels go on to 256 (a noisy pixel may pass the test by chance, as in
+    // Cycles).
+    double right = 0;
+    for (int y = 0; y < 20; ++y) {
+        for (int x = 0; x < 20; ++x) EXPECT_EQ(samples[y * 40 + x], 96) << x << "," << y;
+        for (int x = 20; x < 40; ++x) right += samples[y * 40 + x] / 400.0;
+        EXPECT_FLOAT_EQ(one.image.pixel(5, y)[0], 0.5f);
+    }
+    EXPECT_GT(right, 160);  // 197 on this hash
+    double mean = 0;
+    for (int y = 0; y < 20; ++y)
+        for (int x = 20; x < 40; ++x) mean += one.image.pixel(x, y)[0] / 400.0;
+    EXPECT_NEAR(mean, 0.5, 4 * 0.5 / std::sqrt(400.0 * 256));
+    o.threads = 2;
+    PathFilm two;
+    run_path_tiles(cam, o, f, &two);
+    EXPECT_EQ(one.image.rgba, two.image.rgba);
+    const Region r{13, 2, 31, 17};
+    o.region = r;
+    PathFilm part;
+    run_path_tiles(cam, o, f, &part);
+    expect_crop(one.image, part.image, r, "adaptive region");
+}
+
 TEST(Driver, PathRegionsAreTheWholeRendersPixels) {
     Camera cam(test_camera(), 70, 45);
     // Radiance that depends on the sample's pixel and index, as the path tracer's does.

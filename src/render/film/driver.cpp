@@ -469,6 +469,33 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
     const PixelFilter filter(options.pixel_filter, options.filter_width);
     const int total = std::max(1, options.spp);
     int done = 0;
+    // Adaptive sampling (Cycles' Noise Threshold, Integrator::get_adaptive_sampling and
+    // film_adaptive_sampling_convergence_check): the threshold (automatic: 1 / spp, at least
+    // 0.001) and the minimum samples (automatic: 16 / threshold^0.3, at least 4) as Cycles
+    // derives them, the threshold then times 5 as Cycles scales it. Each pixel keeps, beside
+    // its sum, twice the sum of its even samples; every 16 samples past the minimum, a pixel
+    // whose two estimates differ by less than the threshold (relative to the square root of
+    // its brightness) stops. The decision is the pixel's own (Cycles also widens the pixels
+    // still sampling by one in x and y: left out, so that a region renders each pixel as the
+    // whole image does), made between passes, so the image does not depend on the threads.
+    constexpr int kAdaptiveStep = 16;
+    const bool adaptive = options.adaptive;
+    double threshold = 0;
+    int min_samples = 0;
+    std::vector<int> taken;      // adaptive: samples per pixel
+    std::vector<double> half;    // adaptive: 2 x the sum of the even samples, per channel
+    std::vector<char> sampling;  // adaptive: the pixel still takes samples
+    if (adaptive) {
+        float t = options.adaptive_threshold > 0 ? static_cast<float>(options.adaptive_threshold)
+                                                 : std::max(0.001f, 1.0f / total);
+        min_samples = options.adaptive_min_samples > 0
+                          ? std::max(4, options.adaptive_min_samples)
+                          : std::max(4, static_cast<int>(std::ceil(16.0f / std::pow(t, 0.3f))));
+        threshold = t * 5.0f;
+        taken.assign(pixels, 0);
+        half.assign(pixels * 3, 0.0);
+        sampling.assign(pixels, 1);
+    }
     std::atomic<bool> cancelled{false};
     auto cancel_requested = [&options] {
         return options.cancel && options.cancel->load(std::memory_order_relaxed);
@@ -477,20 +504,24 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
     // interruption finds the last pass's film ready (and the last one is the result).
     auto resolve = [&](int n, PathFilm* out) {
         out->image = blank_image(fw, fh);
-        const double inv = 1.0 / n;
-        for (size_t i = 0; i < pixels; ++i)
+        // Adaptive sampling: each pixel over its own samples.
+        auto inv_of = [&](size_t i) { return 1.0 / (adaptive ? std::max(1, taken[i]) : n); };
+        for (size_t i = 0; i < pixels; ++i) {
+            const double inv = inv_of(i);
             for (int c = 0; c < 3; ++c) out->image.rgba[i * 4 + c] = sanitize(sum[i * 3 + c] * inv);
+        }
         // Cycles' film_transparency_to_alpha: clamped, since roulette can push it past 0..1.
         if (!extra.transparent.empty())
             for (size_t i = 0; i < pixels; ++i)
                 out->image.rgba[i * 4 + 3] = static_cast<float>(
-                    std::clamp(1.0 - extra.transparent[i] * inv, 0.0, 1.0));
+                    std::clamp(1.0 - extra.transparent[i] * inv_of(i), 0.0, 1.0));
         if (!extra.aov.empty()) {
             out->albedo = blank_image(fw, fh);
             out->normal = blank_image(fw, fh);
             out->depth = blank_image(fw, fh);
             for (size_t i = 0; i < pixels; ++i) {
                 const double* a = &extra.aov[i * 7];
+                const double inv = inv_of(i);
                 for (int c = 0; c < 3; ++c) {
                     out->albedo.rgba[i * 4 + c] = sanitize(a[c] * inv);
                     out->normal.rgba[i * 4 + c] = finite_signed(a[3 + c] * inv);
@@ -500,18 +531,20 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
         }
         if (!extra.mean.empty()) {
             out->variance = blank_image(fw, fh);
-            if (n >= 2) {
-                const double scale = 1.0 / (static_cast<double>(n) * (n - 1));
-                for (size_t i = 0; i < pixels; ++i)
-                    for (int c = 0; c < 3; ++c)
-                        out->variance.rgba[i * 4 + c] = sanitize(extra.m2[i * 3 + c] * scale);
+            for (size_t i = 0; i < pixels; ++i) {
+                const double k = adaptive ? taken[i] : n;
+                if (k < 2) continue;
+                const double scale = 1.0 / (k * (k - 1));
+                for (int c = 0; c < 3; ++c)
+                    out->variance.rgba[i * 4 + c] = sanitize(extra.m2[i * 3 + c] * scale);
             }
         }
     };
     int threads = options.threads > 0 ? options.threads : tbb::task_arena::automatic;
     tbb::task_arena arena(threads);
     while (done < total) {
-        const int pass = std::min(total - done, std::max(1, done));
+        int pass = std::min(total - done, std::max(1, done));
+        if (adaptive && done >= kAdaptiveStep) pass = std::min(pass, kAdaptiveStep);
         const int s0 = done, s1 = done + pass;
         std::atomic<size_t> finished{0};
         std::vector<char> tile_done(tiles.size(), 0);
@@ -522,6 +555,7 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
                     for (int x = t.x0; x < t.x1; ++x) {
                         const size_t p =
                             static_cast<size_t>(y - region.y0) * fw + (x - region.x0);
+                        if (adaptive && !sampling[p]) continue;
                         double* acc = &sum[p * 3];
                         for (int s = s0; s < s1; ++s) {
                             if (cancel_requested()) {
@@ -544,7 +578,10 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
                                 acc[0] += value[0];
                                 acc[1] += value[1];
                                 acc[2] += value[2];
+                                if (adaptive && s % 2 == 0)
+                                    for (int c = 0; c < 3; ++c) half[p * 3 + c] += 2.0 * value[c];
                             }
+                            if (adaptive) ++taken[p];
                             if (!extra.transparent.empty() && std::isfinite(first.transparent))
                                 extra.transparent[p] += first.transparent;
                             if (!extra.aov.empty() && first.hit) {
@@ -602,7 +639,24 @@ int run_path_tiles(const Camera& camera, const RenderOptions& options,
             throw Interrupted(std::move(partial));
         }
         done = s1;
+        bool any_sampling = true;
+        if (adaptive && done >= min_samples && done % kAdaptiveStep == 0) {
+            any_sampling = false;
+            for (size_t p = 0; p < pixels; ++p) {
+                if (!sampling[p]) continue;
+                const double* I = &sum[p * 3];
+                const double* A = &half[p * 3];
+                const double inv = 1.0 / std::max(1, taken[p]);
+                const double difference =
+                    (std::fabs(I[0] - A[0]) + std::fabs(I[1] - A[1]) + std::fabs(I[2] - A[2])) *
+                    inv;
+                const double normalize = std::sqrt((I[0] + I[1] + I[2]) * inv);
+                if (difference / (0.0001 + normalize) < threshold) sampling[p] = 0;
+                any_sampling = any_sampling || sampling[p];
+            }
+        }
         resolve(done, film);
+        if (!any_sampling) break;  // every pixel converged
         if (options.time_limit > 0 &&
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >=
                 options.time_limit)
