@@ -529,6 +529,38 @@ TEST(PathLights, ManyLightsJoinTheTreeAndStayUnbiased) {
     }
 }
 
+// POV-Ray spots in the tree are cut off at their falloff only when they have a radius; with
+// radius 0 they light the whole half space (their tightness cosine alone), and the tree must
+// still pick them for a point far off their axis.
+TEST(PathLights, SpotsWithoutARadiusKeepTheirHalfSpaceInTheTree) {
+    scene::Scene s;
+    for (int i = 0; i < 10; ++i) {
+        scene::Light l;
+        l.kind = scene::LightKind::Spot;
+        l.location = Vec3(i * 0.5, 2, 0);
+        l.point_at = l.location - Vec3(0, 1, 0);
+        l.radius = 0;
+        l.falloff = 10;
+        l.color = Color(1, 1, 1);
+        s.lights.push_back(l);
+    }
+    scene::Light bulb;  // a point light right above the point, which the tree favours
+    bulb.location = Vec3(30, 3, 0);
+    s.lights.push_back(bulb);
+    const PathLights lights(s, {});
+    ASSERT_EQ(lights.count(), 1);
+    const Vec3 p(30, 1.9, 0);  // 88 degrees off every spot's axis, still lit by them
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> U(0, 1);
+    int spots = 0;
+    for (int i = 0; i < 4000; ++i) {
+        PathLightSample ls;
+        if (lights.sample(0, p, {U(rng), U(rng)}, &ls) && !ls.value.is_black() && ls.wi.x < 0)
+            ++spots;
+    }
+    EXPECT_GT(spots, 0);
+}
+
 // ---------------------------------------------------------------- environment
 
 // POV-Ray's spherical map_type 1 and Blender's world Environment Texture: texels Blender

@@ -254,7 +254,8 @@ PathLights::PathLights(const scene::Scene& scene, const std::vector<Color>& emis
 
 // Bounds of a POV-Ray light for the tree: its point or area rectangle, its power as the
 // irradiance it gives a facing surface (pi C, fading left out), a spot's cone up to its
-// falloff. Parallel and cylinder lights have no place: they stay slots of their own.
+// falloff (pov_factor: with radius 0 there is no falloff edge, only the cosine's, so the
+// half space). Parallel and cylinder lights have no place: they stay slots of their own.
 std::optional<LightTreeItem> PathLights::pov_tree_item(const scene::Light& l) {
     if (l.parallel || l.kind == scene::LightKind::Cylinder) return std::nullopt;
     LightTreeItem it;
@@ -268,7 +269,8 @@ std::optional<LightTreeItem> PathLights::pov_tree_item(const scene::Light& l) {
     if (l.kind == scene::LightKind::Spot && length_squared(l.point_at - l.location) > 0) {
         it.axis = normalize(l.point_at - l.location);
         it.theta_o = 0;
-        it.theta_e = std::clamp(l.falloff, 0.0, 180.0) * (kPi / 180);
+        const double edge = l.radius > 0 ? std::clamp(l.falloff, 0.0, 90.0) : 90.0;
+        it.theta_e = edge * (kPi / 180);
     }
     if (!(it.power > 0) || !std::isfinite(it.power)) return std::nullopt;
     return it;
