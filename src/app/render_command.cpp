@@ -650,6 +650,10 @@ int render_frame(const RenderArgs& args) {
         given.adaptive = args.given.adaptive;
         apply_blender_render(*scene.blender_render, given, &options);
     }
+    if (options.integrator == render::IntegratorKind::Whitted &&
+        (args.given.adaptive || args.no_light_tree))
+        warn("--adaptive and --no-light-tree apply to the path tracer (--integrator path); "
+             "the classic renderer ignores them");
     double parse_seconds = seconds_since(start);
     if (cancel_flag().load()) throw Error(ErrorKind::Cancelled, {}, "interrupted");
 

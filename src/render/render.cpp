@@ -79,6 +79,7 @@ RenderResult render(const scene::Scene& scene, const RenderOptions& options, Dia
         ignore(options.film_transparent, "Film > Transparent");
         ignore(options.clamp_direct > 0 || options.clamp_indirect > 0, "clamping");
         ignore(options.filter_glossy > 0, "Filter Glossy");
+        ignore(options.adaptive, "adaptive sampling");
         ignore(options.diffuse_bounces >= 0 || options.glossy_bounces >= 0 ||
                    options.transmission_bounces >= 0 || options.transparent_bounces >= 0,
                "bounce limits by kind");

@@ -361,7 +361,8 @@ TEST(PovCliEndToEnd, AntiAliasingSwitchesRenderLikeGlintFlags) {
         GlintRun b = run_glint(t, "render scene.pov -o b.png -W 40 -H 30 " + glint_flags);
         EXPECT_EQ(a.exit_code, 0) << a.err;
         EXPECT_EQ(b.exit_code, 0) << b.err;
-        return glint::io::read_rgb8(t.path("a.png")).rgb == glint::io::read_rgb8(t.path("b.png")).rgb;
+        return glint::io::read_rgb8(t.path("a.png")).rgb ==
+               glint::io::read_rgb8(t.path("b.png")).rgb;
     };
     EXPECT_TRUE(same("+A0.1", "--aa adaptive:0.1"));  // jitter 1.0 on both sides
     EXPECT_TRUE(same("+A0.1 -J", "--aa adaptive:0.1 --aa-jitter 0"));

@@ -186,6 +186,18 @@ TEST_F(CliTest, MissingImageModuleFailsBeforeRendering) {
     EXPECT_TRUE(fs::exists(path("out.png")));
 }
 
+TEST_F(CliTest, PathTracerFlagsWarnUnderTheClassicRenderer) {
+    write_text("s.pov", "#version 3.7;\nsphere { 0, 1 }\n");
+    const std::string base = "render '" + path("s.pov") + "' -o '" + path("o.png") + "' -W 8 -H 6 ";
+    const auto r = run(base + "--adaptive");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("--adaptive and --no-light-tree apply to the path tracer"),
+              std::string::npos) << r.err;
+    const auto p = run(base + "--integrator path --spp 4 --adaptive --no-light-tree");
+    EXPECT_EQ(p.exit_code, 0) << p.err;
+    EXPECT_EQ(p.err.find("apply to the path tracer"), std::string::npos) << p.err;
+}
+
 TEST_F(CliTest, RenderRejectsBadFlags) {
     write_text("s.pov", "#version 3.7;\nsphere { 0, 1 }\n");
     std::string base = "render '" + path("s.pov") + "' -o '" + path("o.png") + "' ";

@@ -505,7 +505,8 @@ TEST(PathLights, ManyLightsJoinTheTreeAndStayUnbiased) {
             sum2 += e * e;
         }
         const double mean = sum / n;
-        return std::pair<double, double>(mean, std::sqrt(std::max(0.0, sum2 / n - mean * mean) / n));
+        const double se = std::sqrt(std::max(0.0, sum2 / n - mean * mean) / n);
+        return std::pair<double, double>(mean, se);
     };
     for (const Vec3& p : {Vec3(0.3, 0, -0.2), Vec3(-3, 0, 2.5), Vec3(3.5, 0, 3.5)}) {
         std::mt19937_64 r1(41), r2(42);

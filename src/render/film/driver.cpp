@@ -285,7 +285,9 @@ private:
         const int depth = std::max(1, opt_.aa_depth);
         const int w = t.x1 - t.x0 + 1;
         std::vector<Color> corner(static_cast<size_t>(w) * (t.y1 - t.y0 + 1));
-        auto at = [&](int x, int y) -> size_t { return static_cast<size_t>(y - t.y0) * w + (x - t.x0); };
+        auto at = [&](int x, int y) -> size_t {
+            return static_cast<size_t>(y - t.y0) * w + (x - t.x0);
+        };
         for (int y = t.y0; y <= t.y1; ++y) {
             if (cancelled()) return false;
             for (int x = t.x0; x <= t.x1; ++x) corner[at(x, y)] = sample(x - 0.5, y - 0.5, x, y, 0);

@@ -142,12 +142,15 @@ int LightTree::build(std::vector<int>& order, int begin, int end, int parent, in
     // surface-area-orientation cost (Conty Estevez and Kulla's SAOH); the middle of the list
     // when the centroids coincide or every boundary leaves one side empty.
     const Vec3 extent = centroids.diagonal();
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0
+                     : extent.y >= extent.z                       ? 1
+                                                                  : 2;
     const double lo = centroids.lo[axis], width = extent[axis];
     int mid = (begin + end) / 2;
     if (width > 0) {
         auto bucket = [&](int item) {
-            const int b = static_cast<int>(kBuckets * (items_[item].box.centroid()[axis] - lo) / width);
+            const double at = items_[item].box.centroid()[axis] - lo;
+            const int b = static_cast<int>(kBuckets * at / width);
             return std::clamp(b, 0, kBuckets - 1);
         };
         Bounds buckets[kBuckets];
