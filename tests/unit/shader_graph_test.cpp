@@ -97,7 +97,7 @@ TEST(ShaderGraph, MixShaderKeepsBothClosuresWeighted) {
     auto p = ShaderProgram::compile(b.g, nullptr, diag);
     ClosureList cl;
     p->evaluate(ShaderGlobals(), &cl);
-    ASSERT_EQ(cl.count, 2);
+    ASSERT_EQ(cl.count(), 2);
     EXPECT_EQ(cl.items[0].kind, ClosureKind::Diffuse);
     EXPECT_DOUBLE_EQ(cl.items[0].weight.r, 0.75);
     EXPECT_EQ(cl.items[1].kind, ClosureKind::Glossy);
@@ -115,9 +115,62 @@ TEST(ShaderGraph, PrincipledAlphaBecomesTransparency) {
     auto p = ShaderProgram::compile(b.g, nullptr, diag);
     ClosureList cl;
     p->evaluate(ShaderGlobals(), &cl);
-    ASSERT_EQ(cl.count, 1);
+    ASSERT_EQ(cl.count(), 1);
     EXPECT_NEAR(cl.items[0].weight.g, 0.4, 1e-6);
     EXPECT_NEAR(cl.transparent.g, 0.6, 1e-6);
+}
+
+// Whether shadow rays may pass a surface is read off the graph once: only graphs that can make
+// a transparent closure send shadow rays through the slower walk that evaluates them.
+TEST(ShaderGraph, TransparencyIsKnownFromTheGraph) {
+    auto compile = [](G& b) {
+        Diagnostics diag;
+        return ShaderProgram::compile(b.g, nullptr, diag);
+    };
+    {  // A plain Diffuse BSDF (its normal varies): opaque.
+        G b;
+        const int d = b.node("ShaderNodeBsdfDiffuse", {{"BSDF", SocketType::Shader}});
+        b.in(d, "Color", SocketType::Rgba, 0.5, 0.5, 0.5);
+        b.link(b.output_node(), "Surface", d, "BSDF");
+        auto p = compile(b);
+        EXPECT_FALSE(p->constant());
+        EXPECT_FALSE(p->can_be_transparent());
+    }
+    {  // Principled with Alpha 1: opaque; below 1: transparent.
+        for (double alpha : {1.0, 0.999}) {
+            G b;
+            const int pr = b.node("ShaderNodeBsdfPrincipled", {{"BSDF", SocketType::Shader}});
+            b.in(pr, "Alpha", SocketType::Value, alpha);
+            b.link(b.output_node(), "Surface", pr, "BSDF");
+            EXPECT_EQ(compile(b)->can_be_transparent(), alpha < 1) << alpha;
+        }
+    }
+    {  // Alpha from a texture coordinate (varies): may be transparent.
+        G b;
+        const int tc = b.node("ShaderNodeTexCoord", {{"Generated", SocketType::Vector}});
+        const int pr = b.node("ShaderNodeBsdfPrincipled", {{"BSDF", SocketType::Shader}});
+        b.link(pr, "Alpha", tc, "Generated");
+        b.link(b.output_node(), "Surface", pr, "BSDF");
+        EXPECT_TRUE(compile(b)->can_be_transparent());
+    }
+    {  // A Transparent BSDF mixed in, however little; a black one lets nothing through.
+        for (double c : {1.0, 0.0}) {
+            G b;
+            const int d = b.node("ShaderNodeBsdfDiffuse", {{"BSDF", SocketType::Shader}});
+            const int t = b.node("ShaderNodeBsdfTransparent", {{"BSDF", SocketType::Shader}});
+            b.in(t, "Color", SocketType::Rgba, c, c, c);
+            const int mix = b.node("ShaderNodeMixShader", {{"Shader", SocketType::Shader}});
+            b.in(mix, "Fac", SocketType::Value, 0.01);
+            b.link(mix, "Shader", d, "BSDF");
+            b.link(mix, "Shader_001", t, "BSDF");
+            b.link(b.output_node(), "Surface", mix, "Shader");
+            auto p = compile(b);
+            EXPECT_EQ(p->can_be_transparent(), c > 0) << c;
+            ClosureList cl;
+            p->evaluate(ShaderGlobals(), &cl);
+            EXPECT_EQ(cl.transparent.is_black(), !p->can_be_transparent());
+        }
+    }
 }
 
 TEST(ShaderGraph, BumpLeansAgainstTheHeightGradient) {
@@ -144,7 +197,7 @@ TEST(ShaderGraph, BumpLeansAgainstTheHeightGradient) {
     sg.dPdy = float3(0, 1e-3f, 0);
     ClosureList cl;
     p->evaluate(sg, &cl);
-    ASSERT_EQ(cl.count, 1);
+    ASSERT_EQ(cl.count(), 1);
     // Height x, distance 1: the normal (-1, 0, 1) / sqrt(2).
     EXPECT_NEAR(cl.items[0].N.x, -std::sqrt(0.5), 1e-3);
     EXPECT_NEAR(cl.items[0].N.z, std::sqrt(0.5), 1e-3);
@@ -172,7 +225,7 @@ TEST(ShaderGraph, AMissingNodeIsOneWarningNamingItNeverACrash) {
     EXPECT_NE(diag.all()[0].message.find("Rusty"), std::string::npos);
     ClosureList cl;
     p->evaluate(ShaderGlobals(), &cl);
-    EXPECT_EQ(cl.count, 0);  // black colour: no closure worth sampling
+    EXPECT_EQ(cl.count(), 0);  // black colour: no closure worth sampling
 }
 
 TEST(ShaderGraph, ALinkCycleIsCutWithAWarning) {
@@ -237,7 +290,7 @@ TEST(ShaderGraph, VolumeShadersGiveCyclesCoefficients) {
     // Without a surface the boundary lets rays through.
     ClosureList cl;
     p->evaluate(ShaderGlobals(), &cl);
-    EXPECT_EQ(cl.count, 0);
+    EXPECT_EQ(cl.count(), 0);
     EXPECT_EQ(cl.transparent, Color(1, 1, 1));
 }
 

@@ -8,8 +8,8 @@
 namespace glint::render {
 
 ClosureSet::Item* ClosureSet::push(const Vec3& n, double sample_weight, const Vec3* tangent) {
-    if (count_ >= kMax || !(sample_weight > 0)) return nullptr;
-    Item& it = items_[count_];
+    if (items_.full() || !(sample_weight > 0)) return nullptr;
+    Item& it = items_.emplace_back();
     const Vec3 nv = valid_reflection_normal(ng_, wo_, n);
     it.frame = Frame::from_normal(nv);
     if (tangent) {
@@ -35,7 +35,6 @@ void ClosureSet::add(const Bsdf& bsdf, const Color& weight, const Vec3& n, doubl
     it->bsdf = bsdf;
     it->weight = weight;
     total_ += it->share;
-    ++count_;
 }
 
 void ClosureSet::add(const Lobe& lobe, const Color& weight, const Vec3& n, double sample_weight,
@@ -43,18 +42,20 @@ void ClosureSet::add(const Lobe& lobe, const Color& weight, const Vec3& n, doubl
     Item* it = push(n, sample_weight, tangent);
     if (!it) return;
     it->share *= lobe.sample_scale(it->wo);
-    if (!(it->share > 0)) return;
+    if (!(it->share > 0)) {
+        items_.pop_back();
+        return;
+    }
     it->is_lobe = true;
     it->lobe = lobe;
     it->weight = weight;
     total_ += it->share;
-    ++count_;
 }
 
 void ClosureSet::add(const Bssrdf& bssrdf) {
     const double share = bssrdf.sample_weight();
-    if (bssrdf_count_ >= kMaxBssrdf || !(share > 0)) return;
-    Bssrdf& b = bssrdfs_[bssrdf_count_++];
+    if (bssrdfs_.full() || !(share > 0)) return;
+    Bssrdf& b = bssrdfs_.emplace_back();
     b = bssrdf;
     // Bent like the BSDFs' normals, then turned to the viewer's side.
     const Vec3 nv = valid_reflection_normal(ng_, wo_, bssrdf.n);
@@ -75,7 +76,7 @@ double ClosureSet::shadowing(const Item& it, const Vec3& wi) const {
 }
 
 bool ClosureSet::all_delta() const {
-    for (int i = 0; i < count_; ++i)
+    for (int i = 0; i < items_.size(); ++i)
         if (items_[i].is_lobe ? !items_[i].lobe.delta() : !items_[i].bsdf.all_delta())
             return false;
     return true;
@@ -84,7 +85,7 @@ bool ClosureSet::all_delta() const {
 double ClosureSet::delta_probability() const {
     if (!(total_ > 0)) return 0;
     double p = 0;
-    for (int i = 0; i < count_; ++i) {
+    for (int i = 0; i < items_.size(); ++i) {
         const Item& it = items_[i];
         const double pick = it.share / total_;
         if (it.is_lobe)
@@ -98,7 +99,7 @@ double ClosureSet::delta_probability() const {
 Color ClosureSet::eval(const Vec3& wi, double* pdf) const {
     Color f;
     double p = 0;
-    for (int i = 0; i < count_; ++i) {
+    for (int i = 0; i < items_.size(); ++i) {
         const Item& it = items_[i];
         const Vec3 w = it.frame.to_local(wi);
         if (it.is_lobe) {
@@ -123,14 +124,14 @@ bool ClosureSet::sample(double u1, double u2, ClosureSample* out) const {
     // The BSSRDFs come after the BSDFs.
     double u = u1 * total_;
     double bsdf_total = total_;
-    if (bssrdf_count_ > 0) {  // (only then: BSDF samples are the hot path)
+    if (bssrdfs_.size() > 0) {  // (only then: BSDF samples are the hot path)
         bsdf_total = 0;
-        for (int i = 0; i < count_; ++i) bsdf_total += items_[i].share;
+        for (int i = 0; i < items_.size(); ++i) bsdf_total += items_[i].share;
     }
-    if (bssrdf_count_ > 0 && (u >= bsdf_total || count_ == 0)) {
+    if (bssrdfs_.size() > 0 && (u >= bsdf_total || items_.size() == 0)) {
         u -= bsdf_total;
         int b = 0;
-        while (b < bssrdf_count_ - 1 && u >= bssrdfs_[b].sample_weight())
+        while (b < bssrdfs_.size() - 1 && u >= bssrdfs_[b].sample_weight())
             u -= bssrdfs_[b++].sample_weight();
         out->bssrdf = &bssrdfs_[b];
         out->weight = bssrdfs_[b].weight * (total_ / bssrdfs_[b].sample_weight());
@@ -140,7 +141,7 @@ bool ClosureSet::sample(double u1, double u2, ClosureSample* out) const {
     }
     out->bssrdf = nullptr;
     int k = 0;
-    while (k < count_ - 1 && u >= items_[k].share) u -= items_[k++].share;
+    while (k < items_.size() - 1 && u >= items_[k].share) u -= items_[k++].share;
     const Item& it = items_[k];
     const double uk = std::min(u / it.share, 0x1.fffffffffffffp-1);
     BsdfSample bs;

@@ -5,6 +5,7 @@
 // with light sampling sees the whole mixture. Directions are world space.
 #pragma once
 
+#include "core/fixed_list.h"
 #include "render/bsdf/bsdf.h"
 #include "render/bsdf/bssrdf.h"
 #include "render/bsdf/lobe.h"
@@ -53,9 +54,9 @@ public:
     // At most kMaxBssrdf are kept.
     static constexpr int kMaxBssrdf = 4;
     void add(const Bssrdf& bssrdf);
-    int count() const { return count_ + bssrdf_count_; }
+    int count() const { return items_.size() + bssrdfs_.size(); }
     bool all_delta() const;
-    bool has_bssrdf() const { return bssrdf_count_ > 0; }
+    bool has_bssrdf() const { return !bssrdfs_.empty(); }
     // The chance that sample() picks a delta lobe (a mirror, a smooth refraction).
     double delta_probability() const;
 
@@ -82,10 +83,8 @@ private:
     Vec3 ng_, wo_;
     Vec3 ns_;
     bool has_ns_ = false;
-    Item items_[kMax];
-    int count_ = 0;
-    Bssrdf bssrdfs_[kMaxBssrdf];
-    int bssrdf_count_ = 0;
+    FixedList<Item, kMax> items_;
+    FixedList<Bssrdf, kMaxBssrdf> bssrdfs_;
     double total_ = 0;
 };
 

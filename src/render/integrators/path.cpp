@@ -45,7 +45,7 @@ double transparent_share(const shader::ClosureList& cl) {
     const double tw = average(cl.transparent);
     if (!(tw > 0)) return 0;
     double sw = 0;
-    for (int i = 0; i < cl.count; ++i) sw += cl.items[i].sample_weight;
+    for (int i = 0; i < cl.count(); ++i) sw += cl.items[i].sample_weight;
     return sw > 0 ? tw / (tw + sw) : 1.0;
 }
 
@@ -91,7 +91,7 @@ Vec3 PathIntegrator::subsurface_exit_normal(const PathMaterial* row, const Hit& 
     shader::ClosureList cl;
     graph_closures(*row, hit, dir, state, &cl);
     Vec3 sum;
-    for (int i = 0; i < cl.count; ++i) {
+    for (int i = 0; i < cl.count(); ++i) {
         const shader::Closure& c = cl.items[i];
         const bool bssrdf = c.kind == shader::ClosureKind::Subsurface ||
                             (c.kind == shader::ClosureKind::Principled && c.subsurface > 1e-5);
@@ -270,7 +270,7 @@ bool PathIntegrator::photon_surface(Hit& hit, const Vec3& dir, double coin,
         const bool back = dot(hit.ng, dir) > 0;
         const Vec3 ns = length_squared(cl.N) > 0 ? normalize(cl.N) : hit.n;
         out->set.set_smooth_normal(back ? -ns : ns);
-        for (int i = 0; i < cl.count; ++i) {
+        for (int i = 0; i < cl.count(); ++i) {
             const shader::Closure& c = cl.items[i];
             Vec3 n = length_squared(c.N) > 0 ? normalize(c.N) : hit.n;
             if (back) n = -n;
@@ -576,7 +576,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler, Fir
                 const double blur_pdf = settings_.filter_glossy * min_pdf;
                 if (blur_pdf < 1) blur_alpha = std::sqrt(1 - blur_pdf) * 0.5;
             }
-            for (int i = 0; i < cl.count; ++i) {
+            for (int i = 0; i < cl.count(); ++i) {
                 shader::Closure c = cl.items[i];
                 if (blur_alpha > 0 && (c.kind == shader::ClosureKind::Principled ||
                                        c.kind == shader::ClosureKind::Glossy ||

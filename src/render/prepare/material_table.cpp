@@ -63,7 +63,8 @@ PathMaterial prepare_path(const scene::Material& m, TextureCache* textures,
 PathMaterial prepare_graph(const shader::ShaderProgram& program) {
     PathMaterial row;
     row.program = &program;
-    if (!program.constant()) return row;  // has_alpha stays: it may let shadow rays through
+    row.has_alpha = program.can_be_transparent();
+    if (!program.constant()) return row;
     auto closures = std::make_shared<shader::ClosureList>();
     program.evaluate(shader::ShaderGlobals(), closures.get());
     row.emission = closures->emission;

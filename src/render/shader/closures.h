@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string_view>
 
+#include "core/fixed_list.h"
 #include "core/math.h"
 #include "render/ray.h"
 #include "render/shader/float3.h"
@@ -126,8 +127,7 @@ struct Closure {
 // handful), the emitted radiance, the transparent (straight-through) weight and the holdout.
 struct ClosureList {
     static constexpr int kMax = 16;
-    Closure items[kMax];
-    int count = 0;
+    FixedList<Closure, kMax> items;  // (unused slots cost nothing to make or copy)
     Color emission;
     Color transparent;
     Color holdout;
@@ -136,9 +136,9 @@ struct ClosureList {
     Vec3 N;
     bool overflow = false;  // a closure past kMax was dropped
 
+    int count() const { return items.size(); }
     void add(const Closure& c) {
-        if (count < kMax) items[count++] = c;
-        else overflow = true;
+        if (!items.push_back(c)) overflow = true;
     }
 };
 

@@ -310,6 +310,35 @@ std::unique_ptr<ShaderProgram> ShaderProgram::compile(const scene::ShaderGraph& 
             if (c.varying(r)) program->closure_varying_ = true;
     for (const ClosureNode& n : program->closures_)
         if (c.varying(n.fac)) program->closure_varying_ = true;
+    // Transparency, from the surface's closures (a Mix's factor is not followed: any mixed-in
+    // transparency counts).
+    {
+        auto opaque_reg = [&](int reg, float opaque_value) {
+            return reg >= 0 && !c.varying(reg) &&
+                   program->init_[static_cast<size_t>(reg)].x == opaque_value;
+        };
+        bool transparent = program->root_ < 0 && program->volume_root_ >= 0;
+        std::vector<int> stack{program->root_};
+        std::vector<bool> visited(program->closures_.size(), false);
+        while (!stack.empty() && !transparent) {
+            const int i = stack.back();
+            stack.pop_back();
+            if (i < 0 || visited[static_cast<size_t>(i)]) continue;
+            visited[static_cast<size_t>(i)] = true;
+            const ClosureNode& n = program->closures_[static_cast<size_t>(i)];
+            if (n.kind == ClosureNode::Kind::Transparent) {
+                const int col = n.in[0];
+                transparent = !(col >= 0 && !c.varying(col) &&
+                                program->init_[static_cast<size_t>(col)] == float3(0.0f));
+            } else if (n.kind == ClosureNode::Kind::Bsdf &&
+                       n.bsdf == ClosureKind::Principled && n.in[ClosureNode::kAlpha] >= 0) {
+                transparent = !opaque_reg(n.in[ClosureNode::kAlpha], 1.0f);
+            }
+            stack.push_back(n.a);
+            stack.push_back(n.b);
+        }
+        program->can_be_transparent_ = transparent;
+    }
     // The volume varies where any value its closures read does.
     std::vector<int> todo{program->volume_root_};
     std::vector<bool> seen(program->closures_.size(), false);

@@ -93,6 +93,10 @@ public:
     bool has_surface() const { return root_ >= 0; }
     // Whether a Holdout closure is in the graph (the film then carries alpha).
     bool has_holdout() const;
+    // Whether the surface can let shadow rays through anywhere: a Transparent BSDF that is not
+    // black, a Principled BSDF whose Alpha is linked or below 1, or no surface but a volume.
+    // False lets shadow rays stop at the first surface they meet (an any-hit query).
+    bool can_be_transparent() const { return can_be_transparent_; }
     // The volume shader (the output's Volume socket): whether there is one, whether it is
     // the same everywhere, and its closures at `sg` (the program's values run first).
     bool has_volume() const { return volume_root_ >= 0; }
@@ -127,6 +131,7 @@ private:
     int volume_root_ = -1;
     bool volume_varying_ = false;
     bool volume_grids_ = false;
+    bool can_be_transparent_ = true;
     int varying_ops_ = 0;
     bool closure_varying_ = false;
 };
