@@ -657,7 +657,8 @@ BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "volume": more.build_volume, "volume_noise": more.build_volume_noise,
             "volume_world": more.build_volume_world,
             "world_fog": more.build_world_fog, "subsurface": more.build_subsurface,
-            "vdb_volume": more.build_vdb_volume, "smoke": more.build_smoke}
+            "vdb_volume": more.build_vdb_volume, "smoke": more.build_smoke,
+            "many_lights": more.build_many_lights}
 
 
 def build(name, out_dir):

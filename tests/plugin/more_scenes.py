@@ -473,3 +473,50 @@ def build_smoke(out_dir):
 
 
 AFTER_SETUP["smoke"] = lambda scene: setattr(scene.cycles, "volume_bounces", 1)
+
+
+def build_many_lights(out_dir):
+    """(issue 34) A street of 100 lights at night: 60 point lights (radius 0.05-0.15 m, 2-40 W)
+    in rows of lanterns at heights 0.4-2.2 m and 40 spot lights (30-60 degree cones, 20-200 W)
+    aimed down at the ground, all of different colours, over a floor with boxes and spheres
+    (Lambert, one glossy metal) and a near-black world. Placed by a fixed random generator, so
+    the scene is the same on every build. What many-light sampling is for: most lights are
+    far from most shading points."""
+    import random
+    rng = random.Random(34)
+    ms.floor(ms.cy.diffuse_material("ground", (0.5, 0.5, 0.5)), half=8.0)
+    for i in range(8):
+        x, y = rng.uniform(-4.0, 4.0), rng.uniform(-2.0, 6.0)
+        size = rng.uniform(0.4, 1.2)
+        ms.cy.add_box("box%d" % i, (x, y, size / 2), (size, size * 0.8, size),
+                      rng.uniform(0, 90), ms.cy.diffuse_material(
+                          "box%d" % i, (rng.uniform(0.2, 0.8), rng.uniform(0.2, 0.8),
+                                        rng.uniform(0.2, 0.8))))
+    for i in range(6):
+        r = rng.uniform(0.25, 0.5)
+        mat = (ms.cy.principled_material("metal%d" % i, base=(0.8, 0.8, 0.8), metallic=1.0,
+                                         roughness=0.25) if i == 0 else
+               ms.cy.diffuse_material("ball%d" % i, (0.7, 0.7, 0.7)))
+        ms.add_sphere("ball%d" % i, (rng.uniform(-4, 4), rng.uniform(-2, 6), r), r, mat,
+                      segments=24, rings=12)
+
+    def colour():
+        c = [rng.uniform(0.3, 1.0) for _ in range(3)]
+        c[rng.randrange(3)] = 1.0
+        return tuple(c)
+
+    for i in range(60):
+        ms.add_light("lantern%d" % i, "POINT",
+                     (rng.uniform(-6, 6), rng.uniform(-3, 9), rng.uniform(0.4, 2.2)),
+                     color=colour(), energy=rng.uniform(2.0, 40.0),
+                     shadow_soft_size=rng.uniform(0.05, 0.15))
+    for i in range(40):
+        spot = ms.add_light("street%d" % i, "SPOT",
+                            (rng.uniform(-6, 6), rng.uniform(-3, 9), rng.uniform(2.0, 3.5)),
+                            color=colour(), energy=rng.uniform(20.0, 200.0),
+                            spot_size=math.radians(rng.uniform(30, 60)),
+                            spot_blend=rng.uniform(0.1, 0.5), shadow_soft_size=0.1)
+        x, y, _ = spot.location
+        ms.aim(spot, (x + rng.uniform(-1, 1), y + rng.uniform(-1, 1), 0.0))
+    ms.cy.add_camera((0.0, -7.0, 3.2), (0.0, 2.5, 0.3), lens_mm=30.0)
+    ms.cy.set_world_color((0.002, 0.002, 0.003))
