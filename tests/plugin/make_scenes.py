@@ -658,7 +658,8 @@ BUILDERS = {"cornell": build_cornell, "principled": build_principled,
             "volume_world": more.build_volume_world,
             "world_fog": more.build_world_fog, "subsurface": more.build_subsurface,
             "vdb_volume": more.build_vdb_volume, "smoke": more.build_smoke,
-            "many_lights": more.build_many_lights}
+            "many_lights": more.build_many_lights,
+            "world_camera": more.build_world_camera}
 
 
 def build(name, out_dir):

@@ -520,3 +520,33 @@ def build_many_lights(out_dir):
         ms.aim(spot, (x + rng.uniform(-1, 1), y + rng.uniform(-1, 1), 0.0))
     ms.cy.add_camera((0.0, -7.0, 3.2), (0.0, 2.5, 0.3), lens_mm=30.0)
     ms.cy.set_world_color((0.002, 0.002, 0.003))
+
+
+def build_world_camera(out_dir):
+    """A world that shows the camera one background and lights the scene with another, the
+    Light Path trick Blender users reach for: Mix Shader of an orange Background (what bounces
+    and glossy reflections see) and a blue one, by Is Camera Ray. A Lambert floor and sphere
+    lit by the world alone, and a sharp-ish metal sphere that mirrors the orange one."""
+    ms.floor(ms.cy.diffuse_material("floor", (0.7, 0.7, 0.7)))
+    ms.add_sphere("ball", (-0.6, 0.2, 0.6), 0.6, ms.cy.diffuse_material("ball", (0.8, 0.8, 0.8)))
+    ms.add_sphere("mirror", (0.8, 0.0, 0.5), 0.5, ms.cy.principled_material(
+        "mirror", base=(0.9, 0.9, 0.9), metallic=1.0, roughness=0.1))
+    world = bpy.data.worlds.new("World")
+    world.use_nodes = True
+    nt = world.node_tree
+    nt.nodes.clear()
+    out = nt.nodes.new("ShaderNodeOutputWorld")
+    lighting = nt.nodes.new("ShaderNodeBackground")
+    lighting.inputs["Color"].default_value = (1.0, 0.55, 0.2, 1.0)
+    lighting.inputs["Strength"].default_value = 1.0
+    seen = nt.nodes.new("ShaderNodeBackground")
+    seen.inputs["Color"].default_value = (0.1, 0.25, 0.8, 1.0)
+    seen.inputs["Strength"].default_value = 1.0
+    path = nt.nodes.new("ShaderNodeLightPath")
+    mix = nt.nodes.new("ShaderNodeMixShader")
+    nt.links.new(path.outputs["Is Camera Ray"], mix.inputs["Fac"])
+    nt.links.new(lighting.outputs["Background"], mix.inputs[1])
+    nt.links.new(seen.outputs["Background"], mix.inputs[2])
+    nt.links.new(mix.outputs["Shader"], out.inputs["Surface"])
+    bpy.context.scene.world = world
+    ms.cy.add_camera((0.0, -4.0, 1.6), (0.0, 0.2, 0.5), lens_mm=35.0)

@@ -165,10 +165,10 @@ SurfacePbr PathIntegrator::surface(Hit& hit, const Vec3& dir) const {
 
 Color PathIntegrator::environment(const Vec3& dir) const {
     if (graphs_ && graphs_->world()) {
+        // As Cycles evaluates the world for light sampling and its importance map
+        // (PATH_RAY_EMISSION): no ray-type flag is set.
         shader::RayState state;
         state.camera = false;
-        state.diffuse = true;
-        state.reflection = true;
         return environment(dir, state);
     }
     return sky_radiance(scene_, pigments_, dir);
@@ -359,6 +359,25 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler, Fir
     bool at_exit = false, exit_fresnel = false;
     Hit exit_hit;
     bool diffuse_ancestor = false;  // a diffuse bounce so far (subsurface is diffuse after)
+    // What a node graph's Light Path node reads of the ray that arrives at the next vertex (or
+    // leaves the scene): Cycles' path flags and bounce counters.
+    auto ray_state = [&] {
+        shader::RayState state;
+        state.camera = scatterings == 0;
+        state.singular = specular && scatterings > 0;
+        state.diffuse = last_diffuse;
+        state.glossy = !last_diffuse && scatterings > 0;
+        state.reflection = last_reflected && scatterings > 0;
+        state.transmission = !last_reflected && scatterings > 0;
+        state.length = seg_dist;
+        state.travelled = travelled + seg_dist;
+        state.depth = depth;
+        state.diffuse_depth = diffuse_depth;
+        state.glossy_depth = glossy_depth;
+        state.transmission_depth = transmission_depth;
+        state.transparent_depth = skips;
+        return state;
+    };
     for (int v = 0; v < max_vertices; ++v) {
         const uint32_t base = 1 + scatterings * kPairsPerVertex;
         Hit hit;
@@ -494,7 +513,9 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler, Fir
             if (lights.has_environment()) {
                 const double w =
                     specular ? 1.0 : power_heuristic(prev_pdf, lights.environment_pdf(r.dir));
-                add(beta * environment(r.dir) * w);
+                // The world sees the ray as it is (a Light Path node's Is Camera Ray shows one
+                // background to the camera and lights with another).
+                add(beta * environment(r.dir, ray_state()) * w);
             }
             break;
         }
@@ -511,20 +532,7 @@ Color PathIntegrator::li(const Ray& camera_ray, const PixelSampler& sampler, Fir
             if (exit_fresnel) set.add(Lobe::subsurface_exit(), Color(1, 1, 1), n, 1);
             else set.add(Bsdf::lambert(Color(1, 1, 1)), Color(1, 1, 1), n, 1);
         } else if (row && row->program) {
-            shader::RayState state;
-            state.camera = scatterings == 0;
-            state.singular = specular && scatterings > 0;
-            state.diffuse = last_diffuse;
-            state.glossy = !last_diffuse && scatterings > 0;
-            state.reflection = last_reflected && scatterings > 0;
-            state.transmission = !last_reflected && scatterings > 0;
-            state.length = seg_dist;
-            state.travelled = travelled + seg_dist;
-            state.depth = depth;
-            state.diffuse_depth = diffuse_depth;
-            state.glossy_depth = glossy_depth;
-            state.transmission_depth = transmission_depth;
-            state.transparent_depth = skips;
+            const shader::RayState state = ray_state();
             shader::ClosureList cl;
             graph_closures(*row, hit, r.dir, state, &cl);
             // Transparency (transparent closures, Principled alpha): straight through with the
