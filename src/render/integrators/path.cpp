@@ -63,7 +63,10 @@ PathIntegrator::PathIntegrator(const PreparedScene& prepared, const PathSettings
       settings_(settings),
       rays_(64) {
     int world = 0;
-    if (graphs_ && graphs_->world()) world = graphs_->world()->constant() ? 1 : 2;
+    if (graphs_ && graphs_->world()) {
+        world = graphs_->world()->constant() ? 1 : 2;
+        if (world == 1) world_constant_ = environment(Vec3(0, 0, 1));
+    }
     lights_.emplace(scene_, materials_.emission(),
                     [this](const Vec3& d) { return environment(d); }, prepared.textures.get(),
                     world, settings.light_tree);
@@ -104,6 +107,7 @@ Vec3 PathIntegrator::subsurface_exit_normal(const PathMaterial* row, const Hit& 
 }
 
 Color PathIntegrator::environment(const Vec3& dir, const shader::RayState& state) const {
+    if (world_constant_) return *world_constant_;
     if (graphs_ && graphs_->world()) {
         shader::ClosureList cl;
         graphs_->world()->evaluate(graphs_->world_globals(dir, state), &cl);

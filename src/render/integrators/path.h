@@ -203,6 +203,9 @@ private:
     const Geometry& geometry_;
     const MaterialTable& materials_;
     const shader::GraphShading* graphs_;
+    // The world graph's emission where it is the same in every direction and for every ray
+    // (a plain colour): evaluated once instead of at every escaped ray and world sample.
+    std::optional<Color> world_constant_;
     PigmentEvaluator pigments_;
     PathSettings settings_;
     std::optional<PathLights> lights_;
