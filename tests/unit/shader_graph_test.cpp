@@ -173,6 +173,59 @@ TEST(ShaderGraph, TransparencyIsKnownFromTheGraph) {
     }
 }
 
+// Graphs whose closures vary only by the shading normal are evaluated once: the path tracer
+// copies those closures and gives the ones that read N the point's normal. That must equal a
+// full evaluation, and only such graphs may be marked.
+TEST(ShaderGraph, NormalOnlyGraphsAreMarkedAndTheirClosuresReadN) {
+    auto principled = [](double anisotropic, bool textured) {
+        G b;
+        const int pr = b.node("ShaderNodeBsdfPrincipled", {{"BSDF", SocketType::Shader}});
+        b.in(pr, "Base Color", SocketType::Rgba, 0.8, 0.5, 0.2);
+        b.in(pr, "Roughness", SocketType::Value, 0.4);
+        b.in(pr, "Clearcoat", SocketType::Value, 0.5);
+        b.in(pr, "Anisotropic", SocketType::Value, anisotropic);
+        if (textured) {
+            const int tc = b.node("ShaderNodeTexCoord", {{"Generated", SocketType::Vector}});
+            b.link(pr, "Base Color", tc, "Generated");
+        }
+        b.link(b.output_node(), "Surface", pr, "BSDF");
+        Diagnostics diag;
+        return ShaderProgram::compile(b.g, nullptr, diag);
+    };
+    auto plain = principled(0, false);
+    EXPECT_FALSE(plain->constant());
+    ASSERT_TRUE(plain->normal_only());
+    // Evaluated at two normals, the closures differ in their normals alone, which are N.
+    ShaderGlobals up, tilted;
+    up.N = float3(0, 0, 1);
+    tilted.N = float3(0.6f, 0, 0.8f);
+    tilted.tangent = float3(0, 1, 0);
+    ClosureList a, c;
+    plain->evaluate(up, &a);
+    plain->evaluate(tilted, &c);
+    ASSERT_EQ(a.count(), 1);
+    ASSERT_EQ(c.count(), 1);
+    EXPECT_TRUE(c.items[0].n_from_globals);
+    EXPECT_TRUE(c.items[0].clearcoat_n_from_globals);
+    EXPECT_EQ(c.items[0].N, tilted.N.to_vec3());
+    EXPECT_EQ(c.items[0].clearcoat_N, tilted.N.to_vec3());
+    EXPECT_EQ(c.N, tilted.N.to_vec3());
+    EXPECT_EQ(a.items[0].weight, c.items[0].weight);
+    EXPECT_EQ(a.items[0].color, c.items[0].color);
+    EXPECT_EQ(a.items[0].T, c.items[0].T);  // no anisotropy: the tangent is not read
+    // Anisotropy reads the tangent, a texture varies the colour: not marked.
+    EXPECT_FALSE(principled(0.5, false)->normal_only());
+    EXPECT_FALSE(principled(0, true)->normal_only());
+    // A linked Normal (a Normal Map, a Bump) is not N: not marked.
+    G b;
+    const int d = b.node("ShaderNodeBsdfDiffuse", {{"BSDF", SocketType::Shader}});
+    const int tc = b.node("ShaderNodeTexCoord", {{"Normal", SocketType::Vector}});
+    b.link(d, "Normal", tc, "Normal");
+    b.link(b.output_node(), "Surface", d, "BSDF");
+    Diagnostics diag;
+    EXPECT_FALSE(ShaderProgram::compile(b.g, nullptr, diag)->normal_only());
+}
+
 TEST(ShaderGraph, BumpLeansAgainstTheHeightGradient) {
     G b;
     const int tc = b.node("ShaderNodeTexCoord", {{"Object", SocketType::Vector}});

@@ -81,6 +81,18 @@ void PathIntegrator::graph_closures(const PathMaterial& row, const Hit& hit, con
         *out = *row.constant_closures;
         return;
     }
+    if (row.normal_closures) {
+        // The same values the program gives with ShaderGlobals' N: the shading normal turned
+        // to the viewer, in single precision (GraphShading::globals).
+        *out = *row.normal_closures;
+        const Vec3 n = shader::GraphShading::normal(hit, dir).to_vec3();
+        out->N = n;
+        for (shader::Closure& c : out->items) {
+            if (c.n_from_globals) c.N = n;
+            if (c.clearcoat_n_from_globals) c.clearcoat_N = n;
+        }
+        return;
+    }
     row.program->evaluate(graphs_->globals(hit, dir, state), out);
 }
 

@@ -64,6 +64,11 @@ PathMaterial prepare_graph(const shader::ShaderProgram& program) {
     PathMaterial row;
     row.program = &program;
     row.has_alpha = program.can_be_transparent();
+    if (program.normal_only()) {
+        auto closures = std::make_shared<shader::ClosureList>();
+        program.evaluate(shader::ShaderGlobals(), closures.get());
+        row.normal_closures = std::move(closures);
+    }
     if (!program.constant()) return row;
     auto closures = std::make_shared<shader::ClosureList>();
     program.evaluate(shader::ShaderGlobals(), closures.get());

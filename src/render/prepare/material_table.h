@@ -33,6 +33,9 @@ struct PathMaterial {
     // A node graph (Blender), and its closures where they are the same everywhere.
     const shader::ShaderProgram* program = nullptr;
     std::shared_ptr<const shader::ClosureList> constant_closures;
+    // Its closures where only the shading normal varies (ShaderProgram::normal_only): the
+    // point's N goes into those that read it.
+    std::shared_ptr<const shader::ClosureList> normal_closures;
 };
 
 // Per material, each half in an array of its own, so that a render keeps only what its

@@ -121,6 +121,8 @@ struct Closure {
     double subsurface_anisotropy = 0;
     SubsurfaceMethod subsurface_method = SubsurfaceMethod::RandomWalk;
     double sample_weight = 0;  // |average(weight)|: the share of BSDF samples it gets
+    // N and clearcoat_N are the shading point's normal (the inputs are unlinked, no bump).
+    bool n_from_globals = false, clearcoat_n_from_globals = false;
 };
 
 // What one evaluation leaves: at most kMax closures (Cycles' default is 64; real graphs have a

@@ -339,6 +339,38 @@ std::unique_ptr<ShaderProgram> ShaderProgram::compile(const scene::ShaderGraph& 
         }
         program->can_be_transparent_ = transparent;
     }
+    // Constant but for the normal: no operation varies, and the only varying values the
+    // surface's closures read are N itself (unlinked Normal inputs, no bump) and the default
+    // tangent where walk() leaves it unread (no anisotropy, not a Glossy BSDF).
+    if (program->varying_ops_ == 0 && program->normal_reg_ == kRegN) {
+        bool ok = true;
+        std::vector<int> stack{program->root_};
+        std::vector<bool> visited(program->closures_.size(), false);
+        while (!stack.empty() && ok) {
+            const int i = stack.back();
+            stack.pop_back();
+            if (i < 0 || visited[static_cast<size_t>(i)]) continue;
+            visited[static_cast<size_t>(i)] = true;
+            const ClosureNode& n = program->closures_[static_cast<size_t>(i)];
+            ok = !c.varying(n.fac);
+            const int aniso = n.in[ClosureNode::kAnisotropy];
+            const bool tangent_unread =
+                n.bsdf != ClosureKind::Glossy &&
+                (aniso < 0 || (!c.varying(aniso) &&
+                               program->init_[static_cast<size_t>(aniso)].x == 0.0f));
+            for (int slot = 0; slot < ClosureNode::kSlots && ok; ++slot) {
+                const int r = n.in[slot];
+                if (!c.varying(r)) continue;
+                const bool normal = (slot == ClosureNode::kNormal ||
+                                     slot == ClosureNode::kClearcoatNormal) && r == kRegN;
+                const bool tangent = slot == ClosureNode::kTangent && tangent_unread;
+                ok = n.kind == ClosureNode::Kind::Bsdf && (normal || tangent);
+            }
+            stack.push_back(n.a);
+            stack.push_back(n.b);
+        }
+        program->normal_only_ = ok && !program->constant();
+    }
     // The volume varies where any value its closures read does.
     std::vector<int> todo{program->volume_root_};
     std::vector<bool> seen(program->closures_.size(), false);
@@ -415,6 +447,7 @@ void ShaderProgram::walk(int index, const Color& weight, const float3* r,
     c.weight = w;
     c.color = n.in[S::kColor] >= 0 ? to_color(r[n.in[S::kColor]]) : Color(1, 1, 1);
     c.N = vec(S::kNormal);
+    c.n_from_globals = n.in[S::kNormal] == kRegN;
     c.roughness = std::clamp(value(S::kRoughness, 0), 0.0, 1.0);
     if (n.bsdf == ClosureKind::Velvet) c.roughness = value(S::kRoughness, 1);  // sigma
     c.ior = std::max(value(S::kIor, 1.45), 1e-5);
@@ -428,6 +461,7 @@ void ShaderProgram::walk(int index, const Color& weight, const float3* r,
     c.clearcoat = value(S::kClearcoat, 0);
     c.clearcoat_roughness = value(S::kClearcoatRoughness, 0.03);
     c.clearcoat_N = vec(S::kClearcoatNormal);
+    c.clearcoat_n_from_globals = n.in[S::kClearcoatNormal] == kRegN;
     c.transmission_roughness = value(S::kTransmissionRoughness, 0);
     c.smooth = value(S::kSmooth, 0);
     if (principled || n.bsdf == ClosureKind::Subsurface) {

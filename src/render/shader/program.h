@@ -89,6 +89,11 @@ public:
     void evaluate(const ShaderGlobals& sg, ClosureList* out) const;
     // Whether no value depends on the shading point: one evaluation holds everywhere.
     bool constant() const { return varying_ops_ == 0 && !closure_varying_; }
+    // Whether the closures depend on the shading point only through its shading normal (a
+    // Diffuse or Principled BSDF with constant inputs, no bump): one evaluation holds
+    // everywhere once the closures that read the normal (Closure::n_from_globals) get the
+    // point's N (ShaderGlobals::N), and the list's N too.
+    bool normal_only() const { return normal_only_; }
     // Whether the graph has a surface at all (an output with a linked Surface).
     bool has_surface() const { return root_ >= 0; }
     // Whether a Holdout closure is in the graph (the film then carries alpha).
@@ -132,6 +137,7 @@ private:
     bool volume_varying_ = false;
     bool volume_grids_ = false;
     bool can_be_transparent_ = true;
+    bool normal_only_ = false;
     int varying_ops_ = 0;
     bool closure_varying_ = false;
 };

@@ -169,6 +169,10 @@ ShaderGlobals GraphShading::volume_globals(int object, const Vec3& p, const Vec3
     return sg;
 }
 
+float3 GraphShading::normal(const Hit& hit, const Vec3& dir) {
+    return float3(dot(hit.ng, dir) > 0 ? -hit.n : hit.n);
+}
+
 ShaderGlobals GraphShading::globals(const Hit& hit, const Vec3& dir,
                                     const RayState& ray) const {
     ShaderGlobals sg;
@@ -176,7 +180,7 @@ ShaderGlobals GraphShading::globals(const Hit& hit, const Vec3& dir,
     // Cycles turns N and Ng towards the viewer and says when it did.
     sg.backfacing = dot(hit.ng, dir) > 0;
     const double s = sg.backfacing ? -1 : 1;
-    sg.N = float3(hit.n * s);
+    sg.N = normal(hit, dir);
     sg.Ng = float3(hit.ng * s);
     sg.I = float3(-dir);
     sg.uv = hit.has_uv ? float3(static_cast<float>(hit.uv.x), static_cast<float>(hit.uv.y), 0)

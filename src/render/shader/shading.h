@@ -43,6 +43,8 @@ public:
 
     // The globals at `hit` seen along the unit `dir`.
     ShaderGlobals globals(const Hit& hit, const Vec3& dir, const RayState& ray) const;
+    // Their N: the shading normal turned towards the viewer (Cycles' sd->N).
+    static float3 normal(const Hit& hit, const Vec3& dir);
     // The world's globals for a ray leaving along `dir`.
     ShaderGlobals world_globals(const Vec3& dir, const RayState& ray) const;
     // A volume shader's globals at `p` inside `object` (-1: the world's volume), on a ray
