@@ -82,8 +82,7 @@ void PathIntegrator::graph_closures(const PathMaterial& row, const Hit& hit, con
         return;
     }
     if (row.normal_closures) {
-        // The same values the program gives with ShaderGlobals' N: the shading normal turned
-        // to the viewer, in single precision (GraphShading::globals).
+        // What the program gives with GraphShading::normal() as its N, bit for bit.
         *out = *row.normal_closures;
         const Vec3 n = shader::GraphShading::normal(hit, dir).to_vec3();
         out->N = n;
