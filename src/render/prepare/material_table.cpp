@@ -67,6 +67,9 @@ PathMaterial prepare_graph(const shader::ShaderProgram& program) {
     if (program.normal_only()) {
         auto closures = std::make_shared<shader::ClosureList>();
         program.evaluate(shader::ShaderGlobals(), closures.get());
+        // Its emission is the same everywhere (a Principled BSDF's Emission, an Emission mixed
+        // with a BSDF): light-sampled, as Cycles samples every emitting mesh.
+        row.emission = closures->emission;
         row.normal_closures = std::move(closures);
     }
     if (!program.constant()) return row;
