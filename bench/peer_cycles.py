@@ -31,6 +31,9 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
+# Blender's environment as the add-on tests make it (no pyenv Python shadowing Debian's).
+sys.path.insert(0, os.path.join(ROOT, "tests", "plugin"))
+from run_scene import blender_env  # noqa: E402
 DEFAULT_SCENES = ("cycles:cornell,cycles:spheres,cycles:hdr,cornell,principled,textured,lamps,"
                   "msglass,many_lights")
 
@@ -46,17 +49,6 @@ def run(cmd, log=None, **kw):
     return r.stdout
 
 
-def blender_env():
-    """The environment without pyenv's or a virtualenv's Python, which would shadow the system
-    Python (and its numpy) that Debian's Blender runs on."""
-    env = dict(os.environ)
-    env["PATH"] = os.pathsep.join(p for p in env.get("PATH", "").split(os.pathsep)
-                                  if "/.pyenv/" not in p and p != os.environ.get("VIRTUAL_ENV"))
-    for k in ("PYTHONHOME", "PYTHONPATH", "VIRTUAL_ENV"):
-        env.pop(k, None)
-    return env
-
-
 def addon_export(build, name):
     """The scene.json the add-on exported for NAME in its CTest's folder (run it if absent)."""
     pattern = os.path.join(build, "tests", "plugin", "out", name, "tmp", "*", "scene.json")
@@ -68,7 +60,7 @@ def addon_export(build, name):
     return found[-1]
 
 
-def fine_reference(args, name, blend, refs):
+def fine_reference(args, name, refs):
     """Cycles' mean of seeds 1..16 at --reference-spp, rendered once into refs/."""
     path = os.path.join(refs, "%s_%d_mean.exr" % (name, args.reference_spp))
     if not os.path.exists(path):
@@ -100,7 +92,7 @@ def scene_command(args, scene, refs):
                                                             "peer_cycles.py"), glint_threads))
     ref = os.path.join(ROOT, "tests", "plugin", "ref", scene + "_mean.exr")
     if scene in args.fine:
-        ref = fine_reference(args, scene, blend, refs)
+        ref = fine_reference(args, scene, refs)
     return export, ref, peer
 
 
