@@ -195,7 +195,7 @@ scene::Scene Parser::one_object_scene(const PovObject& po) const {
         o.material = top ? 0 : -1;
         if (auto csg = std::get_if<scene::Csg>(&o.shape)) {
             csg->children.clear();
-            for (const auto& c : p.children) csg->children.push_back(conv(c, false));
+            for (const auto& c : p.children.given()) csg->children.push_back(conv(c, false));
         }
         return o;
     };

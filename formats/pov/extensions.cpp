@@ -188,7 +188,7 @@ void Parser::parse_obj_file(PovObject& po, const FileLoc& opened) {
         // A texture given here replaces the MTL materials of every face.
         for (size_t m = meshes_before; m < scene.meshes.size(); ++m)
             for (auto& f : scene.meshes[m].faces) f.material = -1;
-        for (auto& c : po.children) c.obj.material = -1;
+        for (auto& c : po.children.edit()) c.obj.material = -1;
     }
 }
 

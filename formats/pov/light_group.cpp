@@ -30,7 +30,7 @@ bool is_csg(const PovObject& o) { return std::holds_alternative<scene::Csg>(o.ob
 // The group's objects, down to the shapes inside CSG.
 void mark_objects(PovObject& o, int group, bool no_global) {
     if (is_csg(o) && !o.children.empty()) {
-        for (PovObject& c : o.children) mark_objects(c, group, no_global);
+        for (PovObject& c : o.children.edit()) mark_objects(c, group, no_global);
         return;
     }
     if (o.obj.light_group < 0) o.obj.light_group = group;
@@ -45,7 +45,7 @@ void outermost_groups(const PovObject& o, std::vector<int>* ids) {
         ids->push_back(o.obj.light_group);
         return;
     }
-    for (const PovObject& c : o.children) outermost_groups(c, ids);
+    for (const PovObject& c : o.children.given()) outermost_groups(c, ids);
 }
 
 void let_in(std::vector<scene::Light>& lights, int group, const std::vector<int>& nested) {
@@ -58,17 +58,17 @@ void let_in(std::vector<scene::Light>& lights, int group, const std::vector<int>
 void link_copied(const PovObject& o, std::vector<scene::Light>& lights) {
     if (is_group(o)) {
         std::vector<int> nested;
-        for (const PovObject& c : o.children) outermost_groups(c, &nested);
+        for (const PovObject& c : o.children.given()) outermost_groups(c, &nested);
         let_in(lights, o.obj.light_group, nested);
     }
-    for (const PovObject& c : o.children) link_copied(c, lights);
+    for (const PovObject& c : o.children.given()) link_copied(c, lights);
 }
 
 void collect_groups(const PovObject& o, std::vector<int>* ids) {
     if (o.obj.light_group >= 0) ids->push_back(o.obj.light_group);
     for (const scene::Light& l : o.lights)
         if (l.group >= 0) ids->push_back(l.group);
-    for (const PovObject& c : o.children) collect_groups(c, ids);
+    for (const PovObject& c : o.children.given()) collect_groups(c, ids);
 }
 
 void renumber(PovObject& o, const std::vector<std::pair<int, int>>& map) {
@@ -84,7 +84,7 @@ void renumber(PovObject& o, const std::vector<std::pair<int, int>>& map) {
         if (l.group >= 0) remap(l.group);
         for (int& g : l.also_groups) remap(g);
     }
-    for (PovObject& c : o.children) renumber(c, map);
+    for (PovObject& c : o.children.edit()) renumber(c, map);
 }
 
 }  // namespace
@@ -129,9 +129,9 @@ BodyEnd light_group_body(Parser& p, const ObjectStart& start, PovObject& po) {
         break;
     }
     p.expect_close("light_group", start.opened);
-    for (PovObject& c : po.children) mark_objects(c, group, !global_lights);
+    for (PovObject& c : po.children.edit()) mark_objects(c, group, !global_lights);
     std::vector<int> nested, copied;
-    for (const PovObject& c : po.children) outermost_groups(c, &nested);
+    for (const PovObject& c : po.children.given()) outermost_groups(c, &nested);
     for (int id : nested)
         if (p.is_copied_light_group(id)) copied.push_back(id);
     let_in(po.lights, group, copied);

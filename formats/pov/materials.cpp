@@ -37,6 +37,15 @@ void transform_texture(scene::Texture& tex, const Transform& t) {
     for (auto& l : tex.layers) transform_texture(l, t);
 }
 
+bool texture_is_uniform(const scene::Texture& tex) {
+    if (tex.kind != scene::PatternKind::Plain || tex.pigment.kind != scene::PatternKind::Plain ||
+        tex.normal.kind != scene::PatternKind::Plain)
+        return false;
+    for (const scene::Texture& l : tex.layers)
+        if (!texture_is_uniform(l)) return false;
+    return true;
+}
+
 bool Parser::parse_transform_item(Transform& t) {
     const Token& k = next();
     if (k.is("translate")) {

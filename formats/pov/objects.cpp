@@ -42,7 +42,16 @@ void transform_child_textures(PovObject& o, const Transform& t) {
         if (o.interior_texture) transform_texture(*o.interior_texture, t);
     }
     if (o.interior) transform_interior(*o.interior, t);
-    for (auto& c : o.children) transform_child_textures(c, t);
+    o.children.transform_textures(t);
+}
+
+bool has_component_materials(const PovObject& o) {
+    if (const auto* blob = std::get_if<scene::Blob>(&o.obj.shape))
+        for (const scene::BlobComponent& c : blob->components)
+            if (c.material >= 0) return true;
+    for (const PovObject& c : o.children.given())
+        if (has_component_materials(c)) return true;
+    return false;
 }
 
 // Blob::Transform moves the components' textures with the blob. A declared blob's copies
@@ -57,10 +66,35 @@ void transform_component_materials(scene::Scene& scene, PovObject& o, const Tran
             c.material = static_cast<int>(scene.materials.size()) - 1;
         }
     }
-    for (auto& c : o.children) transform_component_materials(scene, c, t);
+    for (const PovObject& c : o.children.given())
+        if (has_component_materials(c)) {
+            for (PovObject& e : o.children.edit()) transform_component_materials(scene, e, t);
+            return;
+        }
 }
 
 }  // namespace
+
+std::vector<PovObject>& PovChildren::edit() {
+    if (!items_)
+        items_ = std::make_shared<std::vector<PovObject>>();
+    else if (items_.use_count() > 1)
+        items_ = std::make_shared<std::vector<PovObject>>(*items_);
+    for (const Transform& t : owed_)
+        for (PovObject& c : *items_) transform_child_textures(c, t);
+    owed_.clear();
+    return *items_;
+}
+
+void PovChildren::push_back(PovObject child) { edit().push_back(std::move(child)); }
+
+const PovObject& with_owed_transforms(const PovChildren& parent, const PovObject& c,
+                                      std::optional<PovObject>* storage) {
+    if (parent.owed().empty()) return c;
+    storage->emplace(c);
+    for (const Transform& t : parent.owed()) transform_child_textures(**storage, t);
+    return **storage;
+}
 
 // extensions.cpp: after the keyword `blender_light` (at kloc).
 scene::Light parse_blender_light(Parser& p, const FileLoc& kloc);
@@ -127,7 +161,7 @@ void Parser::apply_transform(PovObject& o, const Transform& t) {
         if (o.interior_texture) transform_texture(*o.interior_texture, t);
     }
     if (o.interior) transform_interior(*o.interior, t);
-    for (auto& c : o.children) transform_child_textures(c, t);
+    o.children.transform_textures(t);
     for (auto& l : o.lights) transform_light(l, t);
     for (auto& b : o.obj.bounded_by) b.transform = b.transform.then(t);
     for (auto& c : o.obj.clipped_by) c.transform = c.transform.then(t);
@@ -137,7 +171,8 @@ scene::Object object_without_materials(const PovObject& p) {
     scene::Object o = p.obj;
     if (auto csg = std::get_if<scene::Csg>(&o.shape)) {
         csg->children.clear();
-        for (const auto& c : p.children) csg->children.push_back(object_without_materials(c));
+        for (const auto& c : p.children.given())
+            csg->children.push_back(object_without_materials(c));
     }
     o.material = -1;
     return o;

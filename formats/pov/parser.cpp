@@ -5,6 +5,7 @@
 
 #include <pthread.h>
 
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <functional>
@@ -42,28 +43,63 @@ int Parser::add_material(const scene::Texture& t, const scene::Interior& in, con
 // Post_Process hands each of the three down on its own, and the parent's uv_mapping with
 // an inherited texture. An object that declares an interior (and each top-level object)
 // starts a new interior id; the others share their parent's.
-static scene::Object to_ir(Parser& p, const PovObject& po, const scene::Texture& inh_tex,
-                           const scene::Texture* inh_inside, const scene::Interior& inh_in,
-                           int inh_id, bool inh_uv, bool top, int* next_id) {
+// A uniform texture's material where the object's copies can share it (Parser::
+// uniform_materials_): its key, or an empty one where they cannot.
+static std::vector<uint64_t> shared_material_key(const scene::Texture* source,
+                                                 const scene::Texture& tex,
+                                                 const scene::Texture* inside,
+                                                 const scene::Interior& in, int id, bool uv) {
+    if (!source || inside || !in.media.empty() || !texture_is_uniform(tex)) return {};
+    std::vector<uint64_t> key{reinterpret_cast<uintptr_t>(source), static_cast<uint64_t>(id),
+                              uv};
+    for (double v : {in.ior, in.dispersion, in.caustics, in.fade_distance, in.fade_power,
+                     in.fade_color.r, in.fade_color.g, in.fade_color.b, in.old_refraction}) {
+        uint64_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        key.push_back(bits);
+    }
+    return key;
+}
+
+// `source`: the texture po's own texture was copied from, in a child shared by copies of a
+// declared object (null for the object placed).
+static scene::Object to_ir(Parser& p, const PovObject& po, const scene::Texture* source,
+                           const scene::Texture& inh_tex, const scene::Texture* inh_inside,
+                           const scene::Interior& inh_in, int inh_id, bool inh_uv, bool top,
+                           int* next_id) {
     scene::Object o = po.obj;
     const scene::Texture& tex = po.texture ? *po.texture : inh_tex;
     const scene::Texture* inside = po.interior_texture ? &*po.interior_texture : inh_inside;
     const scene::Interior& in = po.interior ? *po.interior : inh_in;
     const int id = top || po.interior ? (*next_id)++ : inh_id;
     const bool uv = po.uv_mapping || (!po.texture && inh_uv);
-    if (top || po.texture || po.interior || po.interior_texture || uv != inh_uv)
-        o.material = p.add_material(tex, in, po.texture ? po.texture->loc : po.obj.loc, id,
-                                    inside, uv);
-    else
+    if (top || po.texture || po.interior || po.interior_texture || uv != inh_uv) {
+        const std::vector<uint64_t> key =
+            shared_material_key(po.texture ? source : nullptr, tex, inside, in, id, uv);
+        auto shared = key.empty() ? p.uniform_materials_.end() : p.uniform_materials_.find(key);
+        if (shared != p.uniform_materials_.end()) {
+            o.material = shared->second;
+        } else {
+            o.material = p.add_material(tex, in, po.texture ? po.texture->loc : po.obj.loc, id,
+                                        inside, uv);
+            if (!key.empty()) p.uniform_materials_.emplace(key, o.material);
+        }
+    } else {
         o.material = -1;
+    }
     if (auto* ref = std::get_if<scene::MeshRef>(&o.shape); ref && inside)
         p.give_faces_interior_texture(*ref, *inside);
     if (auto* ref = std::get_if<scene::MeshRef>(&o.shape); ref && uv) p.give_faces_uv_points(*ref);
     if (auto csg = std::get_if<scene::Csg>(&o.shape)) {
         csg->children.clear();
-        csg->children.reserve(po.children.size());
-        for (const auto& c : po.children)
-            csg->children.push_back(to_ir(p, c, tex, inside, in, id, uv, false, next_id));
+        csg->children.reserve(po.children.given().size());
+        for (const PovObject& given : po.children.given()) {
+            std::optional<PovObject> moved;
+            const PovObject& c = with_owed_transforms(po.children, given, &moved);
+            const scene::Texture* c_source = given.texture ? &*given.texture : nullptr;
+            csg->children.push_back(
+                to_ir(p, c, c_source, tex, inside, in, id, uv, false, next_id));
+        }
     }
     return o;
 }
@@ -91,8 +127,10 @@ void Parser::place_object(PovObject o) {
         fail_limit(o.obj.loc,
                    "the scene has more than " + std::to_string(options.max_objects) + " objects",
                    "--max-objects");
-    scene.objects.push_back(
-        to_ir(*this, o, def, nullptr, scene::Interior{}, -1, false, true, &next_interior_id_));
+    uniform_materials_.clear();
+    scene.objects.push_back(to_ir(*this, o, nullptr, def, nullptr, scene::Interior{}, -1, false,
+                                  true, &next_interior_id_));
+    uniform_materials_.clear();
     propagate_flags(scene.objects.back());
 }
 

@@ -48,6 +48,9 @@ void transform_pigment(scene::Pigment& p, const Transform& t);
 void transform_media(scene::Media& m, const Transform& t);
 void transform_interior(scene::Interior& in, const Transform& t);
 void transform_texture(scene::Texture& tex, const Transform& t);
+// No pattern anywhere in it (pigment, normal and every layer plain): the same at every point,
+// whatever its transforms.
+bool texture_is_uniform(const scene::Texture& tex);
 // An object as an IR object with no materials (clipped_by, bounded_by, object patterns).
 scene::Object object_without_materials(const PovObject& p);
 // POV-Ray's Link_Textures: `top` (with its own layers) is drawn over `base`.
@@ -233,6 +236,12 @@ public:
     scene::Scene scene;
     scene::Texture default_texture_;
     int next_interior_id_ = 0;  // scene::Material::interior_id of the next declaration
+    // The materials made for uniform textures (texture_is_uniform) of the object being placed,
+    // keyed by the address of the texture they came from, in a child that the copies of a
+    // declared object share (PovChildren), and by the rest of what a material holds: such
+    // copies differ only by transforms, which cannot change a uniform texture, so they share
+    // one material. place_object() empties it: the addresses are the placed object's.
+    std::map<std::vector<uint64_t>, int> uniform_materials_;
     // A fresh scene::Light::group id (light_group.cpp), of a group that is a copy or not.
     int new_light_group(bool copy) {
         copied_light_groups_.push_back(copy);
