@@ -3,7 +3,6 @@
 // every component, a shorter vector pads with zeros); strings are a separate kind.
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <unordered_set>
 
 #include "core/noise.h"
@@ -190,16 +189,10 @@ scene::Scene Parser::one_object_scene(const PovObject& po) const {
     one.functions = scene.functions;  // an isosurface's function and those it calls
     one.global.noise_generator = scene.global.noise_generator;
     one.materials.resize(1);
-    std::function<scene::Object(const PovObject&, bool)> conv = [&](const PovObject& p, bool top) {
-        scene::Object o = p.obj;
-        o.material = top ? 0 : -1;
-        if (auto csg = std::get_if<scene::Csg>(&o.shape)) {
-            csg->children.clear();
-            for (const auto& c : p.children.given()) csg->children.push_back(conv(c, false));
-        }
-        return o;
-    };
-    if (!po.is_light) one.objects.push_back(conv(po, true));
+    if (!po.is_light) {
+        one.objects.push_back(object_without_materials(po));
+        one.objects.back().material = 0;
+    }
     return one;
 }
 
