@@ -19,8 +19,8 @@ double half_area(const Bounds3& b) {
 
 }  // namespace
 
-Bvh::Bvh(const std::vector<Bounds3>& prim_bounds, int max_leaf, int block)
-    : block_(std::max(block, 1)) {
+Bvh::Bvh(const std::vector<Bounds3>& prim_bounds, int max_leaf, int block, double node_cost)
+    : block_(std::max(block, 1)), node_cost_(node_cost) {
     std::vector<int> ids;
     std::vector<Vec3> centroids(prim_bounds.size());
     for (size_t i = 0; i < prim_bounds.size(); ++i) {
@@ -119,7 +119,7 @@ int Bvh::build(std::vector<int>& ids, int begin, int end, const std::vector<Boun
         }
         double leaf_cost = half_area(box) * blocks(count);
         if (count <= max_leaf * 4 && count <= 255 &&
-            leaf_cost <= best + half_area(box)) {  // a node visit costs one test
+            leaf_cost <= best + node_cost_ * half_area(box)) {
             set_leaf();
             return self;
         }

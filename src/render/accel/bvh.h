@@ -29,7 +29,10 @@ public:
     // together at the cost of one (the mesh kernels test four triangles at once), so the SAH
     // counts a leaf of n as ceil(n / block) tests (Embree's builders do the same), and a node
     // visit as one: a split must save more than that to be made.
-    explicit Bvh(const std::vector<Bounds3>& prim_bounds, int max_leaf = 4, int block = 1);
+    // `node_cost`: a node visit's cost in primitive tests (1 for triangles; far less for the
+    // top level, where a primitive is a whole object behind a virtual call).
+    explicit Bvh(const std::vector<Bounds3>& prim_bounds, int max_leaf = 4, int block = 1,
+                 double node_cost = 1.0);
 
     bool empty() const { return nodes_.empty(); }
     const std::vector<Node>& nodes() const { return nodes_; }
@@ -119,6 +122,7 @@ private:
     int build(std::vector<int>& ids, int begin, int end, const std::vector<Bounds3>& bounds,
               const std::vector<Vec3>& centroids, int max_leaf, int depth);
     int block_ = 1;
+    double node_cost_ = 1.0;
 
     std::vector<Node> nodes_;
     std::vector<int> order_;
