@@ -110,6 +110,14 @@ void TokenStream::handle_declare(bool local, const FileLoc& dloc) {
         auto keep = *arr;
         std::string display;
         size_t idx = parse_array_index(*keep, name, display);
+        // #declare A[i][j] = value, where A[i] is an array of its own.
+        while (keep->items[idx] && raw_next_is("[")) {
+            auto inner = std::get_if<std::shared_ptr<ArrayValue>>(keep->items[idx].get());
+            if (!inner) break;
+            keep = *inner;
+            const std::string outer = display;
+            idx = parse_array_index(*keep, outer, display);
+        }
         expect("=", ("after '" + display + "'").c_str());
         size_t saved = declare_frame_;
         declare_frame_ = size_t(-1);
@@ -354,7 +362,7 @@ void TokenStream::call_macro(const Macro& m, const FileLoc& cloc) {
 
 double TokenStream::parse_cond_paren() {
     expect("(", "before the condition");
-    double v = parse_float();
+    double v = parse_condition();
     expect(")", "after the condition");
     return v;
 }
@@ -537,7 +545,7 @@ void TokenStream::handle_switch(const FileLoc& dloc) {
             if (std::fabs(parse_cond_paren() - v) < 1e-10) return;
         } else {
             expect("(", "after #range");
-            double lo = parse_float();
+            double lo = parse_float();  // POV-Ray's Parse_Float_Param2: no comparisons
             skip_comma();
             double hi = parse_float();
             expect(")", "to close #range");

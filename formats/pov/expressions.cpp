@@ -86,10 +86,14 @@ double srgb_decode(double c) {
 
 Value Parser::parse_expression_value() { return ExprParser(*this).expr(); }
 
+// Floats and vectors where the grammar asks for one are additive expressions, as POV-Ray's
+// Parse_Float and Parse_Vector read them (Parse_Rel_Factor): comparisons, & | and ?: need
+// parentheses there, so `cone { 0, 1 <0, 2, 0>, 0 }` is a radius and then a point.
 Num Parser::parse_num(int terms) {
     ExprParser e(*this);
     FileLoc at = e.start();
-    Num n = e.num(e.expr(), terms == 1 ? "a float" : terms == 3 ? "a vector" : "a number", at);
+    Num n = e.num(e.additive(), terms == 1 ? "a float" : terms == 3 ? "a vector" : "a number",
+                  at);
     n.promote(terms);
     return n;
 }
@@ -97,13 +101,15 @@ Num Parser::parse_num(int terms) {
 double Parser::parse_float() {
     ExprParser e(*this);
     FileLoc at = e.start();
-    return e.as_float(e.expr(), "a float", at);
+    return e.as_float(e.additive(), "a float", at);
 }
 
-double Parser::parse_float_no_compare() {
+// The whole expression grammar (POV-Ray's Parse_Express): #if, #while, #switch and #case
+// conditions, inside their parentheses.
+double Parser::parse_condition() {
     ExprParser e(*this);
     FileLoc at = e.start();
-    return e.as_float(e.additive(), "a float", at);
+    return e.as_float(e.expr(), "a float", at);
 }
 
 double Parser::parse_float_in_angle_brackets() {

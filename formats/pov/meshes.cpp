@@ -61,7 +61,7 @@ void parse_counted(Parser& p, const char* name, F item, int dims, Ok ok, Take ta
         }
         p.give_back_number_list(*list);
     }
-    int n = to_int(parse_float_before_points(p));
+    int n = to_int(p.parse_float());
     if (n < 0) p.fail(std::string("negative count in ") + name);
     for (int i = 0; i < n; ++i) {
         p.skip_comma();

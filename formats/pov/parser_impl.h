@@ -65,10 +65,9 @@ public:
 
     // ---- expressions (expressions.cpp)
     Num parse_num(int terms);  // an expression promoted to `terms` components
+    // An additive expression, as POV-Ray's Parse_Float reads it (expressions.cpp).
     double parse_float() override;
-    // An additive expression only, as POV-Ray's Parse_Float reads it: a comparison needs
-    // parentheses there. For counts before point lists (`N <x, y>`).
-    double parse_float_no_compare();
+    double parse_condition() override;
     double parse_float_in_angle_brackets();  // where '>' closes instead of comparing
     Vec3 parse_vector();
     std::string parse_string() override;

@@ -14,14 +14,9 @@
 
 namespace glint::pov {
 
-double parse_float_before_points(Parser& p) { return p.parse_float_no_compare(); }
-
 namespace {
 
 constexpr double kEps = 1e-10;  // POV-Ray's EPSILON for "same point" tests
-
-// A float that may be followed directly by a point list (`4 <1, 2>`): POV-Ray compares only
-// inside parentheses, so a literal number right before '<' is the whole value.
 
 Vec2 parse_uv(Parser& p) {
     Num n = p.parse_num(2);
@@ -32,7 +27,7 @@ Vec2 parse_uv(Parser& p) {
 int parse_count(Parser& p, int min, const std::string& too_few) {
     p.peek();
     FileLoc at = p.loc();
-    double v = parse_float_before_points(p);
+    double v = p.parse_float();
     // Checked as a double first: casting 1e19 or NaN to int is undefined (found by fuzz_pov).
     if (!(v < 10000001)) p.fail_at(at, "point count is too large (at most 10000000)");
     if (v < min) p.fail_at(at, too_few);
@@ -105,7 +100,7 @@ scene::Prism parse_prism(Parser& p, const FileLoc& kw) {
     if (s.height1 > s.height2) std::swap(s.height1, s.height2);
     p.peek();
     FileLoc at = p.loc();
-    int n = to_int(parse_float_before_points(p));
+    int n = to_int(p.parse_float());
     switch (s.spline) {
         case SplineType::Linear:
             if (n < 3) p.fail_at(at, "prism needs at least 3 points");
@@ -168,7 +163,7 @@ scene::Lathe parse_lathe(Parser& p) {
     spline_keyword(p, &s.spline);
     p.peek();
     FileLoc at = p.loc();
-    int n = to_int(parse_float_before_points(p));
+    int n = to_int(p.parse_float());
     switch (s.spline) {
         case SplineType::Linear:
             if (n < 2) p.fail_at(at, "lathe needs at least 2 points");
@@ -240,7 +235,7 @@ scene::SphereSweep parse_sphere_sweep(Parser& p) {
         p.skip_comma();
         p.peek();
         FileLoc rl = p.loc();
-        c.radius = p.parse_float_no_compare();
+        c.radius = p.parse_float();
         if (c.radius < 0)
             p.fail_at(rl, "sphere_sweep sphere " + std::to_string(i + 1) +
                               " has a negative radius");
@@ -334,7 +329,7 @@ scene::BicubicPatch parse_bicubic_patch(Parser& p, const FileLoc& kw) {
     auto steps = [&](int* out) {
         p.peek();
         FileLoc at = p.loc();
-        double v = parse_float_before_points(p);
+        double v = p.parse_float();
         if (!(v > -1e6 && v < 1e6)) p.fail_at(at, "bicubic_patch steps out of range");
         *out = static_cast<int>(v);
     };
@@ -342,22 +337,22 @@ scene::BicubicPatch parse_bicubic_patch(Parser& p, const FileLoc& kw) {
         const Token& t = p.peek();
         if (t.kind == TokKind::Number || t.is("(") || t.is("-") || t.is("+")) {
             p.diag.warning(p.loc(), "should use keywords for bicubic parameters");
-            s.type = static_cast<int>(parse_float_before_points(p));
-            s.flatness = s.type == 2 || s.type == 3 ? parse_float_before_points(p) : 0.1;
+            s.type = static_cast<int>(p.parse_float());
+            s.flatness = s.type == 2 || s.type == 3 ? p.parse_float() : 0.1;
             steps(&s.u_steps);
             steps(&s.v_steps);
             break;
         }
         if (p.accept("type")) {
-            s.type = static_cast<int>(parse_float_before_points(p));
+            s.type = static_cast<int>(p.parse_float());
         } else if (p.accept("flatness")) {
-            s.flatness = parse_float_before_points(p);
+            s.flatness = p.parse_float();
         } else if (p.accept("u_steps")) {
             steps(&s.u_steps);
         } else if (p.accept("v_steps")) {
             steps(&s.v_steps);
         } else if (p.accept("accuracy")) {
-            parse_float_before_points(p);  // type 0's old per-ray accuracy: no effect in 3.7
+            p.parse_float();  // type 0's old per-ray accuracy: no effect in 3.7
         } else if (p.accept("uv_vectors")) {
             for (int i = 0; i < 4; ++i) {
                 if (i > 0) p.skip_comma();
@@ -602,7 +597,7 @@ scene::Poly parse_poly(Parser& p, const std::string& w) {
         FileLoc at = p.loc();
         // `poly { 4 <...> }` (no comma, as in POV-Ray's primitiv.pov): a literal order right
         // before '<' is not the start of a comparison.
-        s.order = to_int(parse_float_before_points(p));
+        s.order = to_int(p.parse_float());
         p.skip_comma();
         if (s.order < 2 || s.order > 35)
             p.fail_at(at, "order of " + w + " is out of range (2 to 35)");

@@ -23,9 +23,6 @@ void parse_contained_by(Parser& p, scene::Container* c);
 // After `parametric {` (parametric_grammar.cpp); `kw`: the keyword's location.
 scene::Parametric parse_parametric(Parser& p, const FileLoc& kw);
 
-// A count written before a point list, `4 <1, 0>` as well as `4, <1, 0>`: POV-Ray compares only
-// inside parentheses, so a number followed by `<` is the count, not `4 < ...`.
-double parse_float_before_points(Parser& p);
 
 // Parses the body of the solid named `word` into `out`. `kw`: the keyword's location. A body
 // glint cannot render (a height_field from a function) is read over with a warning and named

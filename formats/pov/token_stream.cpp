@@ -230,8 +230,18 @@ const Token& TokenStream::next() {
                     int file = cur_file_;
                     std::string display;
                     size_t idx = parse_array_index(*keep, at.text, display);
-                    if (!keep->items[idx])
-                        fail_at(aloc, "array element " + display + " is not initialized");
+                    // An element that is an array itself (POV-Ray 3.7's arrays of arrays,
+                    // `array[2] { array[2] {..}, .. }`) is indexed on: A[i][j].
+                    for (;;) {
+                        if (!keep->items[idx])
+                            fail_at(aloc, "array element " + display + " is not initialized");
+                        auto inner =
+                            std::get_if<std::shared_ptr<ArrayValue>>(keep->items[idx].get());
+                        if (!inner || !raw_next_is("[")) break;
+                        keep = *inner;
+                        const std::string outer = display;
+                        idx = parse_array_index(*keep, outer, display);
+                    }
                     Symbol& es = element_syms_[display];
                     es.value = *keep->items[idx];
                     es.loc = aloc;

@@ -221,6 +221,7 @@ public:
 protected:
     // What the directives read with the grammar.
     virtual double parse_float() = 0;
+    virtual double parse_condition() = 0;  // the full expression grammar, comparisons and all
     virtual std::string parse_string() = 0;
     virtual Value parse_rvalue() = 0;            // #declare's right-hand side
     virtual Value parse_expression_value() = 0;  // #write's items

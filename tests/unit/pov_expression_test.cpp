@@ -43,6 +43,33 @@ TEST(PovExpression, LogicAndComparison) {
     EXPECT_DOUBLE_EQ(eval("(true ? 5 : 7) + on + yes + off"), 7);
 }
 
+// A parameter is an additive expression, as POV-Ray's Parse_Float reads it: `1 <0, 2, 0>` is a
+// radius and then a point, and a comparison needs parentheses. #declare and the conditions of
+// #if, #while, #switch and #case take the whole grammar (#range's bounds do not).
+TEST(PovExpression, ComparisonsOnlyWhereTheGrammarTakesThem) {
+    auto s = parse("cone { <0, 0, 0>, 1 <0, 1.5, 0>, 0.25 }");
+    const auto& cone = std::get<scene::Cone>(s.objects.at(0).shape);
+    EXPECT_DOUBLE_EQ(cone.base_radius, 1);
+    EXPECT_EQ(cone.cap, Vec3(0, 1.5, 0));
+    EXPECT_DOUBLE_EQ(cone.cap_radius, 0.25);
+    EXPECT_DOUBLE_EQ(eval("B + 1", "#declare B = 1 < 2;"), 2);
+    EXPECT_DOUBLE_EQ(eval("R", "#declare R = 1; #if (R < 2 & R > 0) #declare R = 3; #end"), 3);
+    EXPECT_DOUBLE_EQ(eval("R", "#declare R = 1; #while (R < 4) #declare R = R + 1; #end"), 4);
+    EXPECT_DOUBLE_EQ(
+        eval("R", "#declare R = 1; #switch (R < 2) #case (R = 1) #declare R = 5; #break #end"),
+        5);
+}
+
+// POV-Ray 3.7's arrays whose elements are arrays: A[i][j] reads and assigns through them.
+TEST(PovExpression, ArraysOfArrays) {
+    const std::string a = "#declare A = array[2] { array[2] {0.5, 1}, array[3] {1.5, 2, 2.5} };";
+    EXPECT_DOUBLE_EQ(eval("A[1][2]", a), 2.5);
+    EXPECT_DOUBLE_EQ(eval("A[0][1] + dimension_size(A[1], 1)", a), 4);
+    EXPECT_DOUBLE_EQ(eval("A[1][0]", a + " #declare A[1][0] = 0.75;"), 0.75);
+    EXPECT_EQ(error_of(a + "\nsphere { 0, A[1][3] }"),
+              "2:18: index 3 is outside the array 'A[1]' (size 3)");
+}
+
 TEST(PovExpression, Functions) {
     EXPECT_DOUBLE_EQ(eval("abs(-3)"), 3);
     EXPECT_DOUBLE_EQ(eval("sqrt(16)"), 4);
