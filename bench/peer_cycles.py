@@ -53,7 +53,10 @@ def addon_export(build, name):
     """The scene.json the add-on exported for NAME in its CTest's folder (run it if absent)."""
     pattern = os.path.join(build, "tests", "plugin", "out", name, "tmp", "*", "scene.json")
     if not glob.glob(pattern):
-        run(["ctest", "--test-dir", build, "-R", "^plugin\\.(scenes|%s)$" % name])
+        # Blender's environment: run from a pyenv Python, the tests' Blender would take that
+        # Python's standard library, which lacks numpy.
+        run(["ctest", "--test-dir", build, "-R", "^plugin\\.(scenes|%s)$" % name],
+            env=blender_env())
     found = sorted(glob.glob(pattern), key=os.path.getmtime)
     if not found:
         sys.exit("bench/peer_cycles.py: no export for %s under %s" % (name, pattern))
