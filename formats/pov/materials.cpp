@@ -245,10 +245,7 @@ void Parser::parse_finish_body(scene::Finish& f, bool one_item) {
         } else if (w == "diffuse") {
             if (accept("albedo")) warn_unsupported(*this, "albedo", loc(), "ignored");
             f.diffuse = parse_float();
-            if (accept(",")) {
-                warn_unsupported(*this, "diffuse backside illumination", loc(), "ignored");
-                parse_float();
-            }
+            if (accept(",")) f.diffuse_back = parse_float();
         } else if (w == "brilliance") {
             f.brilliance = parse_float();
         } else if (w == "phong") {

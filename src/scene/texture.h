@@ -277,6 +277,9 @@ struct Finish {
     Color ambient{0.1, 0.1, 0.1};
     Color emission{0, 0, 0};
     double diffuse = 0.6;
+    // `diffuse A, B`: B lights the surface from lights on its far side (POV-Ray 3.7's diffuse
+    // backside illumination, for thin things such as leaves and paper); no highlights there.
+    double diffuse_back = 0;
     double brilliance = 1;
     double phong = 0;
     double phong_size = 40;

@@ -139,6 +139,7 @@ TEST(PovUnsupported, FinishFeatures) {
     ASSERT_EQ(p.scene.objects.size(), 1u);
     const auto& f = p.scene.materials[p.scene.objects[0].material].texture.finish;
     EXPECT_DOUBLE_EQ(f.diffuse, 0.6);
+    EXPECT_DOUBLE_EQ(f.diffuse_back, 0.2);  // diffuse backside illumination: read, no warning
     EXPECT_DOUBLE_EQ(f.phong, 0.5);
     // (Subsurface light transport is supported: parsed, no warning.)
     EXPECT_TRUE(f.subsurface);
@@ -146,7 +147,6 @@ TEST(PovUnsupported, FinishFeatures) {
     EXPECT_EQ(p.warnings,
               (std::vector<std::string>{
                   "2:32: 'albedo' is not supported: ignored",
-                  "2:42: 'diffuse backside illumination' is not supported: ignored",
                   "3:35: finish ior is POV-Ray 3.0 syntax: write it in interior { }"}));
     // ... and the object's interior takes it, as POV-Ray 3.7's Post_Process does.
     EXPECT_DOUBLE_EQ(p.scene.materials[p.scene.objects[0].material].interior.ior, 1.5);

@@ -552,7 +552,8 @@ Color Whitted::photon_light(const ClassicFinish& f, const Hit& hit, const Ray& r
                             double att, bool highlights, PhotonGather* gathered) const {
     // ComputePhotonDiffuseLight: each photon lights the point like a light from where it came
     // (the Lambert cosine undone, at most tenfold), over the disc it was gathered from.
-    if (f.diffuse == 0.0 && f.specular == 0.0 && f.phong == 0.0) return Color();
+    if (f.diffuse == 0.0 && f.diffuse_back == 0.0 && f.specular == 0.0 && f.phong == 0.0)
+        return Color();
     if (gathered->radius == 0 && gathered->photons.empty())
         photons_->gather(hit.p, &lay_n, gathered);
     if (!(gathered->radius > 0)) return Color();
@@ -562,9 +563,10 @@ Color Whitted::photon_light(const ClassicFinish& f, const Hit& hit, const Ray& r
         const Vec3& dir = ph->to_source;
         const double c = std::clamp(dot(raw_n, dir), 0.1, 1.0);
         const Color lc = ph->power / c;
-        if (!double_illuminate && dot(lay_n, dir) < kPovEpsilon) continue;
-        sum += diffuse_term(f, lay_n, dir, pigment, lc, att);
-        if (!highlights) continue;
+        const bool backside = !double_illuminate && dot(lay_n, dir) < kPovEpsilon;
+        if (backside && f.diffuse_back == 0.0) continue;
+        sum += diffuse_term(f, lay_n, dir, pigment, lc, att, backside);
+        if (!highlights || backside) continue;
         if (f.phong > 0.0) sum += phong_term(f, lay_n, dir, ray.dir, pigment, lc);
         if (f.specular > 0.0) sum += specular_term(f, lay_n, dir, ray.dir, pigment, lc);
     }

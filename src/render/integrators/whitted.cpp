@@ -339,8 +339,8 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
     const bool double_illuminate = (hit.flags & kDoubleIlluminate) != 0;
     // Radiosity's indirect light, once per hit (the first layer that can show enough of it).
     const bool radiosity_needed = state.rad && radiosity_->recurses(*state.rad);
-    bool radiosity_done = false;
-    Color ambient_light;
+    bool radiosity_done[2] = {false, false};  // the near side; the far side (diffuse_back)
+    Color ambient_light[2];
     // The photons around the hit, gathered once (for the first layer that asks).
     PhotonGather gathered;
     const bool collects = photons_ && photons_->size() > 0 &&
@@ -381,22 +381,27 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
             if (dot(raw_n, ray.dir) > 0) raw_n = -raw_n;
             tmp = subsurface(f, pig.rgb, ray, hit, raw_n, state);
         }
-        if (radiosity_needed) {
-            if (!radiosity_done) {
-                const double most = greyscale(fil_col * pig.rgb) * att * f.diffuse;
-                if (most > state.adc) {
-                    ambient_light = radiosity_ambient(hit, n, lay_n, weight * most, state);
-                    radiosity_done = true;
-                }
+        // Indirect light on the near side and, for diffuse backside illumination, on the far
+        // side, the normals flipped (ComputeLightedTexture).
+        for (int side = 0; radiosity_needed && side < 2; ++side) {
+            const double d = side ? f.diffuse_back : f.diffuse;
+            if (side && d == 0.0) break;
+            const double most = greyscale(fil_col * pig.rgb) * att * d;
+            if (!radiosity_done[side] && most > state.adc) {
+                const double s = side ? -1.0 : 1.0;
+                ambient_light[side] =
+                    radiosity_ambient(hit, n * s, lay_n * s, weight * most, state);
+                radiosity_done[side] = true;
             }
-            tmp += pig.rgb * ambient_light * (att * f.diffuse);
+            tmp += pig.rgb * ambient_light[side] * (att * d);
         }
         // 3.7 scenes with radiosity keep `ambient` out: radiosity is their ambient light.
         if (!radiosity_ || legacy_) tmp += pig.rgb * f.ambient * scene_.global.ambient_light * att;
         tmp += pig.rgb * f.emission * att;
         // A pretrace camera ray only feeds the cache: no direct light.
         const bool lit = !(state.rad && state.rad->pretrace && !state.radiosity);
-        if (lit && features_.lights && (f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0)) {
+        if (lit && features_.lights &&
+            (f.diffuse != 0.0 || f.diffuse_back != 0.0 || f.specular != 0.0 || f.phong != 0.0)) {
             for (size_t light_index = 0; light_index < lights_.size(); ++light_index) {
                 const PreparedLight& light = lights_[light_index];
                 if (!light.lights_object(hit.flags)) continue;
@@ -406,8 +411,9 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
                 if (light.light().blender &&
                     !whitted_blender_color(light.light(), hit.p, &ls.color))
                     continue;
-                // Light on the far side of the surface from the viewer.
-                if (!double_illuminate && dot(lay_n, ls.dir) < kPovEpsilon) continue;
+                // Light on the far side of the surface from the viewer: only diffuse_back.
+                const bool backside = !double_illuminate && dot(lay_n, ls.dir) < kPovEpsilon;
+                if (backside && f.diffuse_back == 0.0) continue;
                 Color lc = ls.color;
                 if (features_.shadows && light.casts_shadows()) {
                     // Radiosity's rays see area lights as point lights (no Q_AREA_LIGHT).
@@ -432,10 +438,10 @@ Color Whitted::lighted_texture(const Ray& ray, const Hit& hit, const scene::Text
                         continue;
                 }
                 Color one;
-                if (!sslt) one += diffuse_term(f, lay_n, ls.dir, pig.rgb, lc, att);
+                if (!sslt) one += diffuse_term(f, lay_n, ls.dir, pig.rgb, lc, att, backside);
                 // shadowless lights are POV-Ray's FILL_LIGHT_SOURCE: diffuse only; and
-                // radiosity's rays see no highlights.
-                if (light.casts_shadows() && !state.radiosity) {
+                // radiosity's rays and the backside see no highlights.
+                if (light.casts_shadows() && !state.radiosity && !backside) {
                     if (f.phong > 0.0) one += phong_term(f, lay_n, ls.dir, ray.dir, pig.rgb, lc);
                     if (f.specular > 0.0)
                         one += specular_term(f, lay_n, ls.dir, ray.dir, pig.rgb, lc);

@@ -10,6 +10,7 @@ ClassicFinish::ClassicFinish(const scene::Finish& f)
     : ambient(f.ambient),
       emission(f.emission),
       diffuse(f.diffuse),
+      diffuse_back(f.diffuse_back),
       brilliance(f.brilliance),
       phong(f.phong),
       phong_size(f.phong_size),
@@ -63,11 +64,12 @@ Color metallic_tint(double metallic, double cos_angle, const Color& pigment, con
 }
 
 Color diffuse_term(const ClassicFinish& f, const Vec3& n, const Vec3& to_light,
-                   const Color& pigment, const Color& light, double attenuation) {
-    if (f.diffuse <= 0.0) return Color();
+                   const Color& pigment, const Color& light, double attenuation, bool backside) {
+    const double diffuse = backside ? f.diffuse_back : f.diffuse;
+    if (diffuse <= 0.0) return Color();
     double c = dot(n, to_light);
     double intensity = f.brilliance != 1.0 ? std::pow(std::fabs(c), f.brilliance) : std::fabs(c);
-    intensity *= f.diffuse * attenuation;
+    intensity *= diffuse * attenuation;
     return pigment * light * intensity;
 }
 

@@ -13,6 +13,7 @@ struct ClassicFinish {
     Color ambient;
     Color emission;
     double diffuse = 0.6;
+    double diffuse_back = 0;  // for lights on the far side (scene::Finish::diffuse_back)
     double brilliance = 1;
     double phong = 0;
     double phong_size = 40;
@@ -42,9 +43,11 @@ struct ClassicFinish {
 Color irid_factor(const ClassicFinish& f, const Vec3& to_light, const Vec3& eye_dir,
                   const Vec3& n, const Vec3& p, const Color& wavelength, int noise_generator);
 
-// Diffuse term for one light: |n.l|^brilliance * diffuse * attenuation * pigment * light.
+// Diffuse term for one light: |n.l|^brilliance * diffuse * attenuation * pigment * light;
+// `backside`: a light on the far side of the surface, with diffuse_back for diffuse.
 Color diffuse_term(const ClassicFinish& f, const Vec3& n, const Vec3& to_light,
-                   const Color& pigment, const Color& light, double attenuation);
+                   const Color& pigment, const Color& light, double attenuation,
+                   bool backside = false);
 
 // Phong highlight: phong * (r.l)^phong_size with r the mirrored eye ray; `eye_dir` is the
 // incoming ray direction (unit).
