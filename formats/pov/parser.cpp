@@ -38,11 +38,6 @@ int Parser::add_material(const scene::Texture& t, const scene::Interior& in, con
     return static_cast<int>(scene.materials.size()) - 1;
 }
 
-// Children without a texture, interior_texture or interior of their own inherit (material
-// -1); those with one get a material completed from what they inherit. POV-Ray's
-// Post_Process hands each of the three down on its own, and the parent's uv_mapping with
-// an inherited texture. An object that declares an interior (and each top-level object)
-// starts a new interior id; the others share their parent's.
 // A uniform texture's material where the object's copies can share it (Parser::
 // uniform_materials_): its key, or an empty one where they cannot.
 static std::vector<uint64_t> shared_material_key(const scene::Texture* source,
@@ -61,6 +56,11 @@ static std::vector<uint64_t> shared_material_key(const scene::Texture* source,
     return key;
 }
 
+// Children without a texture, interior_texture or interior of their own inherit (material
+// -1); those with one get a material completed from what they inherit. POV-Ray's
+// Post_Process hands each of the three down on its own, and the parent's uv_mapping with
+// an inherited texture. An object that declares an interior (and each top-level object)
+// starts a new interior id; the others share their parent's.
 // `source`: the texture po's own texture was copied from, in a child shared by copies of a
 // declared object (null for the object placed).
 static scene::Object to_ir(Parser& p, const PovObject& po, const scene::Texture* source,
